@@ -1,0 +1,307 @@
+//! Dimensional analysis of formulas: the dimension of `-m*g*Dmg*v*abs(v)` given the dimensions
+//! of its names, and an error when a formula adds metres to seconds.
+
+use std::fmt;
+
+use crate::ast::{BinOp, Expr, Func};
+use crate::error::{ExprError, ExprErrorKind};
+use crate::formula::Formula;
+use crate::scope::builtin_constant;
+use crate::units::Dimension;
+
+/// The dimension of a (sub)formula, as far as it is known.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dim {
+    /// Known exactly.
+    Known(Dimension),
+    /// A number written in the formula: dimensionless as a factor (`0.5*k*x^2`), but it takes
+    /// the dimension of what it is added to or compared with (`x - 1`, `max(0, F)`).
+    Literal,
+    /// Not known: a value given without units, whose dimension the user did not state.
+    Unknown,
+}
+
+impl Dim {
+    /// Dimensionless.
+    pub const NONE: Dim = Dim::Known(Dimension::NONE);
+
+    /// The known dimension, if any.
+    pub fn known(self) -> Option<Dimension> {
+        match self {
+            Dim::Known(d) => Some(d),
+            _ => None,
+        }
+    }
+
+    /// Whether a value of this dimension may stand where `want` is required.
+    pub fn fits(self, want: Dimension) -> bool {
+        match self {
+            Dim::Known(d) => d == want,
+            Dim::Literal | Dim::Unknown => true,
+        }
+    }
+}
+
+impl fmt::Display for Dim {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Dim::Known(d) => write!(f, "{}", d.describe()),
+            Dim::Literal => write!(f, "a plain number"),
+            Dim::Unknown => write!(f, "unknown (given without units)"),
+        }
+    }
+}
+
+impl Formula {
+    /// The dimension of the formula, given the dimension of each name (`pi` and `e` are
+    /// dimensionless). Fails where the formula combines dimensions that do not fit.
+    ///
+    /// # Example
+    /// ```
+    /// use mechkit_expr::{Dim, Formula, units::Dimension};
+    /// let f = Formula::parse("-m*g*Dmg*v*abs(v)").unwrap();
+    /// let dims = |n: &str| match n {
+    ///     "m" => Dim::Known(Dimension::MASS),
+    ///     "g" => Dim::Known(Dimension::ACCELERATION),
+    ///     "Dmg" => Dim::Known(Dimension::VELOCITY.powi(-2)),
+    ///     "v" => Dim::Known(Dimension::VELOCITY),
+    ///     _ => Dim::Unknown,
+    /// };
+    /// assert_eq!(f.dimension(&dims).unwrap(), Dim::Known(Dimension::FORCE));
+    /// assert!(Formula::parse("m + v").unwrap().dimension(&dims).is_err());
+    /// ```
+    pub fn dimension(&self, dims: &dyn Fn(&str) -> Dim) -> Result<Dim, ExprError> {
+        infer(self.expr(), dims)
+            .map_err(|msg| self.error(ExprErrorKind::Dimension(msg), self.full_span()))
+    }
+
+    /// Checks that the formula has dimension `want`; the error says what it has instead.
+    pub fn expect_dimension(
+        &self,
+        want: Dimension,
+        what: &str,
+        dims: &dyn Fn(&str) -> Dim,
+    ) -> Result<(), ExprError> {
+        let got = self.dimension(dims)?;
+        if got.fits(want) {
+            Ok(())
+        } else {
+            Err(self.error(
+                ExprErrorKind::Dimension(format!(
+                    "{what} must have dimension {}, but this formula has {got}",
+                    want.describe()
+                )),
+                self.full_span(),
+            ))
+        }
+    }
+}
+
+fn same(op: &str, a: Dim, b: Dim, ea: &Expr, eb: &Expr) -> Result<Dim, String> {
+    match (a, b) {
+        (Dim::Known(x), Dim::Known(y)) if x != y => Err(format!(
+            "cannot {op} `{ea}` ({}) and `{eb}` ({})",
+            x.describe(),
+            y.describe()
+        )),
+        (Dim::Known(x), _) | (_, Dim::Known(x)) => Ok(Dim::Known(x)),
+        (Dim::Unknown, _) | (_, Dim::Unknown) => Ok(Dim::Unknown),
+        (Dim::Literal, Dim::Literal) => Ok(Dim::Literal),
+    }
+}
+
+fn dimensionless(func: &str, a: Dim, e: &Expr) -> Result<(), String> {
+    match a {
+        Dim::Known(d) if !d.is_none() => Err(format!(
+            "`{func}` needs a dimensionless argument, but `{e}` has dimension {}",
+            d.describe()
+        )),
+        _ => Ok(()),
+    }
+}
+
+fn constant_value(e: &Expr) -> Option<f64> {
+    e.eval_with(&builtin_constant).ok()
+}
+
+fn infer(e: &Expr, dims: &dyn Fn(&str) -> Dim) -> Result<Dim, String> {
+    Ok(match e {
+        Expr::Num(_) => Dim::Literal,
+        Expr::Var(name) => match builtin_constant(name) {
+            Some(_) if matches!(dims(name), Dim::Unknown) => Dim::NONE,
+            _ => dims(name),
+        },
+        Expr::Neg(a) => infer(a, dims)?,
+        Expr::Not(a) => {
+            infer(a, dims)?;
+            Dim::NONE
+        }
+        Expr::Binary(op, a, b) => {
+            let (da, db) = (infer(a, dims)?, infer(b, dims)?);
+            match op {
+                BinOp::Add => same("add", da, db, a, b)?,
+                BinOp::Sub => same("subtract", da, db, a, b)?,
+                op if op.is_comparison() => {
+                    same("compare", da, db, a, b)?;
+                    Dim::NONE
+                }
+                BinOp::And | BinOp::Or => Dim::NONE,
+                BinOp::Mul | BinOp::Div => match (da, db) {
+                    (Dim::Unknown, _) | (_, Dim::Unknown) => Dim::Unknown,
+                    (Dim::Literal, Dim::Literal) => Dim::Literal,
+                    (Dim::Known(x), Dim::Literal) => Dim::Known(x),
+                    (Dim::Literal, Dim::Known(y)) => {
+                        Dim::Known(if *op == BinOp::Mul { y } else { y.powi(-1) })
+                    }
+                    (Dim::Known(x), Dim::Known(y)) => {
+                        Dim::Known(if *op == BinOp::Mul { x * y } else { x / y })
+                    }
+                },
+                BinOp::Pow => power(da, db, a, b)?,
+                _ => unreachable!("all operators covered"),
+            }
+        }
+        Expr::Call(func, args) => {
+            let ds = args
+                .iter()
+                .map(|a| infer(a, dims))
+                .collect::<Result<Vec<_>, _>>()?;
+            match func {
+                Func::Abs | Func::Floor | Func::Ceil => ds[0],
+                Func::Sign | Func::Heaviside => Dim::NONE,
+                Func::Sqrt => root(ds[0], 2, &args[0])?,
+                Func::Cbrt => root(ds[0], 3, &args[0])?,
+                Func::Min | Func::Max => {
+                    let mut acc = ds[0];
+                    for (d, a) in ds.iter().zip(args).skip(1) {
+                        acc = same("compare", acc, *d, &args[0], a)?;
+                    }
+                    acc
+                }
+                Func::Atan2 => {
+                    same("compare", ds[0], ds[1], &args[0], &args[1])?;
+                    Dim::NONE
+                }
+                Func::If => same("choose between", ds[1], ds[2], &args[1], &args[2])?,
+                _ => {
+                    dimensionless(func.name(), ds[0], &args[0])?;
+                    Dim::NONE
+                }
+            }
+        }
+    })
+}
+
+fn root(d: Dim, n: i32, e: &Expr) -> Result<Dim, String> {
+    match d {
+        Dim::Known(x) => x.root(n).map(Dim::Known).ok_or_else(|| {
+            format!(
+                "the {} root of `{e}` ({}) has no dimension in powers of 1/6",
+                if n == 2 { "square" } else { "cube" },
+                x.describe()
+            )
+        }),
+        other => Ok(other),
+    }
+}
+
+fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr) -> Result<Dim, String> {
+    dimensionless("^", exponent, b)
+        .map_err(|_| format!("the exponent `{b}` must be dimensionless"))?;
+    let Dim::Known(d) = base else {
+        return Ok(base);
+    };
+    if d.is_none() {
+        return Ok(base);
+    }
+    let Some(p) = constant_value(b) else {
+        return Err(format!(
+            "`{a}` has dimension {} and can only be raised to a fixed number, not to `{b}`",
+            d.describe()
+        ));
+    };
+    for den in [1, 2, 3, 6] {
+        let num = p * f64::from(den);
+        if (num - num.round()).abs() < 1e-9
+            && num.abs() < 1000.0
+            && let Some(r) = d.pow_ratio(num.round() as i32, den)
+        {
+            return Ok(Dim::Known(r));
+        }
+    }
+    Err(format!(
+        "`{a}` ({}) raised to {p} has no dimension in powers of 1/6",
+        d.describe()
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dims(n: &str) -> Dim {
+        match n {
+            "x" | "L" => Dim::Known(Dimension::LENGTH),
+            "t" => Dim::Known(Dimension::TIME),
+            "k" => Dim::Known(Dimension::STIFFNESS),
+            "m" => Dim::Known(Dimension::MASS),
+            "v" => Dim::Known(Dimension::VELOCITY),
+            _ => Dim::Unknown,
+        }
+    }
+
+    fn dim(src: &str) -> Result<Dim, ExprError> {
+        Formula::parse(src).unwrap().dimension(&dims)
+    }
+
+    #[test]
+    fn products_sums_and_powers() {
+        assert_eq!(dim("-k*(x - L)").unwrap(), Dim::Known(Dimension::FORCE));
+        assert_eq!(dim("0.5*k*x^2").unwrap(), Dim::Known(Dimension::ENERGY));
+        assert_eq!(dim("0.5*m*v^2").unwrap(), Dim::Known(Dimension::ENERGY));
+        assert_eq!(dim("sqrt(k/m)").unwrap(), Dim::Known(Dimension::FREQUENCY));
+        assert_eq!(dim("x - 1").unwrap(), Dim::Known(Dimension::LENGTH));
+        assert_eq!(dim("max(0, -k*x)").unwrap(), Dim::Known(Dimension::FORCE));
+        assert_eq!(dim("sin(2*pi*t/t)").unwrap(), Dim::NONE);
+        assert_eq!(
+            dim("x^(1/2)*x^(3/2)").unwrap(),
+            Dim::Known(Dimension::LENGTH.powi(2))
+        );
+        assert_eq!(dim("q*x").unwrap(), Dim::Unknown);
+        assert_eq!(
+            dim("if(x > 0, -k*x, 0)").unwrap(),
+            Dim::Known(Dimension::FORCE)
+        );
+    }
+
+    #[test]
+    fn mismatches_are_explained() {
+        let e = dim("x + t").unwrap_err();
+        assert!(
+            e.message()
+                .contains("cannot add `x` (m (length)) and `t` (s (time))"),
+            "{e}"
+        );
+        assert!(dim("sin(x)").is_err());
+        assert_eq!(
+            dim("sqrt(x)*sqrt(x)").unwrap(),
+            Dim::Known(Dimension::LENGTH)
+        );
+        assert!(dim("x^0.1").is_err());
+        assert!(dim("x^t").is_err());
+        assert!(dim("x < t").is_err());
+    }
+
+    #[test]
+    fn expected_dimension() {
+        let f = Formula::parse("-k*x*v").unwrap();
+        let e = f
+            .expect_dimension(Dimension::FORCE, "a force", &dims)
+            .unwrap_err();
+        assert!(
+            e.message()
+                .starts_with("a force must have dimension kg*m/s^2 (force, N)"),
+            "{e}"
+        );
+    }
+}

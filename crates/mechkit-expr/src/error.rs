@@ -1,0 +1,176 @@
+//! Errors in formulas, each pointing at the offending part of the text.
+
+use std::fmt;
+
+use crate::span::{Span, caret_lines};
+use crate::suggest::did_you_mean;
+
+/// What went wrong in a formula.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ExprErrorKind {
+    /// The formula is empty.
+    Empty,
+    /// A character that is not part of the language.
+    UnexpectedChar(char),
+    /// `=` where `==` (comparison) was probably meant.
+    SingleEquals,
+    /// A number that does not parse.
+    BadNumber(String),
+    /// A token where something else was expected.
+    UnexpectedToken {
+        /// The token found.
+        found: String,
+        /// What would have fit.
+        expected: String,
+    },
+    /// The text ended where more was expected.
+    UnexpectedEnd {
+        /// What would have fit.
+        expected: String,
+    },
+    /// Two operands side by side, e.g. `2 x`.
+    MissingOperator {
+        /// The operand after the gap.
+        found: String,
+    },
+    /// An unclosed `(`.
+    UnclosedParen,
+    /// A call of a function that does not exist.
+    UnknownFunction {
+        /// The name used.
+        name: String,
+        /// Known functions with similar names.
+        suggestions: Vec<String>,
+    },
+    /// A function called with the wrong number of arguments.
+    Arity {
+        /// The function.
+        name: String,
+        /// What it takes.
+        expected: String,
+        /// How many it got.
+        found: usize,
+    },
+    /// A name that is not defined where the formula is used.
+    UndefinedName {
+        /// The name.
+        name: String,
+        /// Defined names that are close to it.
+        suggestions: Vec<String>,
+        /// Extra context: what names are available here.
+        context: Option<String>,
+    },
+    /// A name used as a value that is a function.
+    FunctionAsValue(String),
+    /// The formula is too deeply nested to evaluate.
+    TooDeep,
+    /// Dimensions that do not fit together (e.g. metres plus seconds).
+    Dimension(String),
+}
+
+/// An error in a formula: what, where (a byte span into the formula), and the formula itself.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExprError {
+    /// What went wrong.
+    pub kind: ExprErrorKind,
+    /// Where, as bytes of `source`.
+    pub span: Span,
+    /// The formula.
+    pub source: String,
+}
+
+impl ExprError {
+    /// An error of `kind` at `span` of `source`.
+    pub fn new(kind: ExprErrorKind, span: Span, source: &str) -> Self {
+        Self {
+            kind,
+            span,
+            source: source.to_string(),
+        }
+    }
+
+    /// 1-based column of the error in the formula.
+    pub fn column(&self) -> usize {
+        self.span.column(&self.source)
+    }
+
+    /// The problem in one line, without location.
+    pub fn message(&self) -> String {
+        match &self.kind {
+            ExprErrorKind::Empty => "the formula is empty".into(),
+            ExprErrorKind::UnexpectedChar(c) => format!("unexpected character `{c}`"),
+            ExprErrorKind::SingleEquals => "`=` is not an operator here".into(),
+            ExprErrorKind::BadNumber(s) => format!("`{s}` is not a number"),
+            ExprErrorKind::UnexpectedToken { found, expected } => {
+                format!("expected {expected}, found {found}")
+            }
+            ExprErrorKind::UnexpectedEnd { expected } => {
+                format!("the formula ends where {expected} was expected")
+            }
+            ExprErrorKind::MissingOperator { found } => {
+                format!("missing operator before {found}")
+            }
+            ExprErrorKind::UnclosedParen => "this `(` is never closed".into(),
+            ExprErrorKind::UnknownFunction { name, .. } => format!("unknown function `{name}`"),
+            ExprErrorKind::Arity {
+                name,
+                expected,
+                found,
+            } => format!("`{name}` takes {expected}, but {found} were given"),
+            ExprErrorKind::UndefinedName { name, .. } => format!("undefined name `{name}`"),
+            ExprErrorKind::FunctionAsValue(name) => {
+                format!("`{name}` is a function; call it as `{name}(…)`")
+            }
+            ExprErrorKind::TooDeep => "the formula is nested too deeply".into(),
+            ExprErrorKind::Dimension(msg) => msg.clone(),
+        }
+    }
+
+    /// What would fix it, when something useful can be said.
+    pub fn hint(&self) -> Option<String> {
+        match &self.kind {
+            ExprErrorKind::SingleEquals => Some("write `==` to compare".into()),
+            ExprErrorKind::MissingOperator { .. } => {
+                Some("write `*` to multiply, e.g. `2*x` rather than `2 x`".into())
+            }
+            ExprErrorKind::UnknownFunction { suggestions, .. } => did_you_mean(suggestions)
+                .or_else(|| {
+                    let names: Vec<&str> = crate::ast::Func::ALL.iter().map(|f| f.name()).collect();
+                    Some(format!("functions: {}", names.join(", ")))
+                }),
+            ExprErrorKind::UndefinedName {
+                suggestions,
+                context,
+                ..
+            } => match (did_you_mean(suggestions), context) {
+                (Some(s), Some(c)) => Some(format!("{s} ({c})")),
+                (Some(s), None) => Some(s),
+                (None, Some(c)) => Some(c.clone()),
+                (None, None) => None,
+            },
+            ExprErrorKind::UnexpectedEnd { .. } | ExprErrorKind::UnclosedParen => {
+                Some("check that every `(` has its `)` and every operator its operands".into())
+            }
+            _ => None,
+        }
+    }
+
+    /// The formula with a caret line under the problem.
+    pub fn snippet(&self) -> String {
+        caret_lines(&self.source, self.span)
+    }
+}
+
+impl fmt::Display for ExprError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "{} (column {})", self.message(), self.column())?;
+        write!(f, "  {}", self.snippet().replace('\n', "\n  "))?;
+        if let Some(h) = self.hint() {
+            write!(f, "\n  hint: {h}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for ExprError {}

@@ -1,0 +1,522 @@
+//! Quantities written with units, `"9.8 m/s^2"`, `"60 km/h"`, `"30 1/m"`, `"4.0 s^2/m^2"`,
+//! converted to SI.
+
+use std::fmt;
+
+use super::dimension::Dimension;
+use super::table::{known_misspelling, lookup, suggestion_candidates};
+use crate::span::{Span, caret_lines};
+use crate::suggest::{did_you_mean, nearest};
+
+/// A value in SI units with its dimension.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Quantity {
+    /// The value in SI units.
+    pub value: f64,
+    /// Its dimension.
+    pub dim: Dimension,
+}
+
+impl Quantity {
+    /// A quantity of `value` SI units of dimension `dim`.
+    pub fn new(value: f64, dim: Dimension) -> Self {
+        Self { value, dim }
+    }
+
+    /// A pure number.
+    pub fn number(value: f64) -> Self {
+        Self::new(value, Dimension::NONE)
+    }
+
+    /// Parses `"<number> <unit>"`; a bare number is dimensionless.
+    ///
+    /// # Example
+    /// ```
+    /// use mechkit_expr::units::{Dimension, Quantity};
+    /// let v = Quantity::parse("60 km/h").unwrap();
+    /// assert!((v.value - 16.666_666_666_666_668).abs() < 1e-12);
+    /// assert_eq!(v.dim, Dimension::VELOCITY);
+    /// assert_eq!(Quantity::parse("30 1/m").unwrap().dim, Dimension::LENGTH.powi(-1));
+    /// ```
+    pub fn parse(text: &str) -> Result<Quantity, UnitError> {
+        let (number, rest_start) = leading_number(text).ok_or_else(|| UnitError {
+            kind: UnitErrorKind::NoNumber,
+            span: Span::new(0, text.len()),
+            source: text.to_string(),
+        })?;
+        let rest = &text[rest_start..];
+        if rest.trim().is_empty() {
+            return Ok(Quantity::number(number));
+        }
+        let unit = Unit::parse_at(text, rest_start)?;
+        Ok(Quantity::new(number * unit.factor, unit.dim))
+    }
+
+    /// This quantity expressed in `unit` (e.g. metres per second in km/h); `None` if the
+    /// dimensions differ.
+    pub fn value_in(&self, unit: &Unit) -> Option<f64> {
+        (self.dim == unit.dim).then(|| self.value / unit.factor)
+    }
+}
+
+impl fmt::Display for Quantity {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.dim.is_none() {
+            write!(f, "{}", self.value)
+        } else {
+            write!(f, "{} {}", self.value, self.dim)
+        }
+    }
+}
+
+/// A unit expression such as `km/h` or `N*m^2`: its size in SI and its dimension.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Unit {
+    /// Size of one of these in SI units.
+    pub factor: f64,
+    /// Dimension.
+    pub dim: Dimension,
+}
+
+impl Unit {
+    /// Parses a unit expression: names joined by `*`, `·`, spaces or `/`, powers `^n` (also
+    /// `^-1`, `^(-1)`, `²`, `³`), parentheses, and `1` as in `1/s`.
+    pub fn parse(text: &str) -> Result<Unit, UnitError> {
+        Unit::parse_at(text, 0)
+    }
+
+    fn parse_at(source: &str, start: usize) -> Result<Unit, UnitError> {
+        let mut p = UnitParser {
+            src: source,
+            pos: start,
+            depth: 0,
+        };
+        p.skip_ws();
+        if p.pos >= source.len() {
+            return Err(p.err(
+                UnitErrorKind::Syntax("a unit".into()),
+                Span::new(start, source.len()),
+            ));
+        }
+        let unit = p.product()?;
+        p.skip_ws();
+        if p.pos < source.len() {
+            let c = p.peek().unwrap_or(' ');
+            return Err(p.err(
+                UnitErrorKind::Syntax(format!("`*`, `/` or the end of the unit, found `{c}`")),
+                Span::new(p.pos, p.pos + c.len_utf8()),
+            ));
+        }
+        Ok(unit)
+    }
+}
+
+/// What went wrong reading a quantity or unit.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum UnitErrorKind {
+    /// The text does not start with a number.
+    NoNumber,
+    /// A unit name that is not in the table.
+    UnknownUnit {
+        /// The name.
+        name: String,
+        /// Known units with similar names.
+        suggestions: Vec<String>,
+    },
+    /// Malformed unit expression; says what was expected.
+    Syntax(String),
+}
+
+/// An error reading a quantity or unit, pointing into the text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UnitError {
+    /// What went wrong.
+    pub kind: UnitErrorKind,
+    /// Where, as bytes of `source`.
+    pub span: Span,
+    /// The text.
+    pub source: String,
+}
+
+impl UnitError {
+    /// The problem in one line.
+    pub fn message(&self) -> String {
+        match &self.kind {
+            UnitErrorKind::NoNumber => format!("`{}` does not start with a number", self.source),
+            UnitErrorKind::UnknownUnit { name, .. } => format!("unknown unit `{name}`"),
+            UnitErrorKind::Syntax(expected) => format!("expected {expected} in the unit"),
+        }
+    }
+
+    /// What would fix it.
+    pub fn hint(&self) -> Option<String> {
+        match &self.kind {
+            UnitErrorKind::UnknownUnit { suggestions, .. } => did_you_mean(suggestions)
+                .or_else(|| Some("units: m, kg, g, s, N, J, W, km/h, rpm, deg, eV, u, Å, AU, … (see docs/scenario.md)".into())),
+            UnitErrorKind::NoNumber => Some("write a number followed by its unit, e.g. \"9.8 m/s^2\"".into()),
+            UnitErrorKind::Syntax(_) => Some("units combine with `*`, `/` and `^`, e.g. \"kg*m/s^2\" or \"30 1/m\"".into()),
+        }
+    }
+
+    /// The text with a caret line under the problem.
+    pub fn snippet(&self) -> String {
+        caret_lines(&self.source, self.span)
+    }
+}
+
+impl fmt::Display for UnitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}\n  {}",
+            self.message(),
+            self.snippet().replace('\n', "\n  ")
+        )?;
+        if let Some(h) = self.hint() {
+            write!(f, "\n  hint: {h}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for UnitError {}
+
+/// Parses a leading real number; returns it and the byte index after it.
+fn leading_number(text: &str) -> Option<(f64, usize)> {
+    let b = text.as_bytes();
+    let mut i = 0;
+    while i < b.len() && b[i].is_ascii_whitespace() {
+        i += 1;
+    }
+    let start = i;
+    if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
+        i += 1;
+    }
+    let digits_start = i;
+    while i < b.len() && b[i].is_ascii_digit() {
+        i += 1;
+    }
+    if i < b.len() && b[i] == b'.' {
+        i += 1;
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+    }
+    if i == digits_start || (i == digits_start + 1 && b[digits_start] == b'.') {
+        return None;
+    }
+    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+        let mut j = i + 1;
+        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
+            j += 1;
+        }
+        if j < b.len() && b[j].is_ascii_digit() {
+            while j < b.len() && b[j].is_ascii_digit() {
+                j += 1;
+            }
+            i = j;
+        }
+    }
+    let value = text[start..i].parse().ok()?;
+    Some((value, i))
+}
+
+struct UnitParser<'a> {
+    src: &'a str,
+    pos: usize,
+    depth: usize,
+}
+
+fn is_unit_char(c: char) -> bool {
+    c.is_alphabetic() || c == '°' || c == 'Ω' || c == 'µ' || c == 'μ' || c == 'Å'
+}
+
+impl UnitParser<'_> {
+    fn peek(&self) -> Option<char> {
+        self.src[self.pos..].chars().next()
+    }
+
+    fn skip_ws(&mut self) {
+        while self.peek().is_some_and(char::is_whitespace) {
+            self.pos += 1;
+        }
+    }
+
+    fn err(&self, kind: UnitErrorKind, span: Span) -> UnitError {
+        UnitError {
+            kind,
+            span,
+            source: self.src.to_string(),
+        }
+    }
+
+    /// product := power (('*' | '·' | ' ' | '/') power)*
+    fn product(&mut self) -> Result<Unit, UnitError> {
+        let mut acc = self.power()?;
+        loop {
+            let save = self.pos;
+            self.skip_ws();
+            match self.peek() {
+                Some('*' | '·' | '×') => {
+                    self.pos += self.peek().map_or(1, char::len_utf8);
+                    let rhs = self.power()?;
+                    acc = Unit {
+                        factor: acc.factor * rhs.factor,
+                        dim: acc.dim * rhs.dim,
+                    };
+                }
+                Some('/') => {
+                    self.pos += 1;
+                    let rhs = self.power()?;
+                    acc = Unit {
+                        factor: acc.factor / rhs.factor,
+                        dim: acc.dim / rhs.dim,
+                    };
+                }
+                Some(c) if save != self.pos && (is_unit_char(c) || c == '(') => {
+                    // juxtaposition after a space: "N m"
+                    let rhs = self.power()?;
+                    acc = Unit {
+                        factor: acc.factor * rhs.factor,
+                        dim: acc.dim * rhs.dim,
+                    };
+                }
+                _ => {
+                    self.pos = save;
+                    return Ok(acc);
+                }
+            }
+        }
+    }
+
+    /// power := atom ('^' int | '²' | '³' | '⁻¹')?
+    fn power(&mut self) -> Result<Unit, UnitError> {
+        let base = self.atom()?;
+        let n = match self.peek() {
+            Some('^') => {
+                self.pos += 1;
+                self.integer()?
+            }
+            Some('*') if self.src[self.pos..].starts_with("**") => {
+                self.pos += 2;
+                self.integer()?
+            }
+            Some('²') => {
+                self.pos += '²'.len_utf8();
+                2
+            }
+            Some('³') => {
+                self.pos += '³'.len_utf8();
+                3
+            }
+            _ if self.src[self.pos..].starts_with("⁻¹") => {
+                self.pos += "⁻¹".len();
+                -1
+            }
+            _ => return Ok(base),
+        };
+        Ok(Unit {
+            factor: base.factor.powi(n),
+            dim: base.dim.powi(n),
+        })
+    }
+
+    fn integer(&mut self) -> Result<i32, UnitError> {
+        let start = self.pos;
+        let parens = self.peek() == Some('(');
+        if parens {
+            self.pos += 1;
+        }
+        let num_start = self.pos;
+        if matches!(self.peek(), Some('-' | '+')) {
+            self.pos += 1;
+        }
+        while self.peek().is_some_and(|c| c.is_ascii_digit()) {
+            self.pos += 1;
+        }
+        let value: Option<i32> = self.src[num_start..self.pos]
+            .parse()
+            .ok()
+            .filter(|n: &i32| n.abs() <= 12);
+        if parens {
+            if self.peek() == Some(')') {
+                self.pos += 1;
+            } else {
+                return Err(self.err(
+                    UnitErrorKind::Syntax("`)`".into()),
+                    Span::new(self.pos, self.pos),
+                ));
+            }
+        }
+        value.ok_or_else(|| {
+            self.err(
+                UnitErrorKind::Syntax("a whole-number power between -12 and 12 after `^`".into()),
+                Span::new(start, self.pos.max(start + 1).min(self.src.len())),
+            )
+        })
+    }
+
+    fn atom(&mut self) -> Result<Unit, UnitError> {
+        self.skip_ws();
+        let start = self.pos;
+        match self.peek() {
+            Some('(') => {
+                self.depth += 1;
+                if self.depth > 16 {
+                    return Err(self.err(
+                        UnitErrorKind::Syntax("less nesting".into()),
+                        Span::new(start, start + 1),
+                    ));
+                }
+                self.pos += 1;
+                let inner = self.product()?;
+                self.skip_ws();
+                if self.peek() != Some(')') {
+                    return Err(self.err(
+                        UnitErrorKind::Syntax("`)`".into()),
+                        Span::new(self.pos, self.pos),
+                    ));
+                }
+                self.pos += 1;
+                self.depth -= 1;
+                Ok(inner)
+            }
+            Some('1') => {
+                self.pos += 1;
+                Ok(Unit {
+                    factor: 1.0,
+                    dim: Dimension::NONE,
+                })
+            }
+            Some(c) if is_unit_char(c) => {
+                while self.peek().is_some_and(is_unit_char) {
+                    self.pos += self.peek().map_or(1, char::len_utf8);
+                }
+                let name = &self.src[start..self.pos];
+                match lookup(name) {
+                    Some((factor, dim)) => Ok(Unit { factor, dim }),
+                    None => Err(self.unknown(name, Span::new(start, self.pos))),
+                }
+            }
+            Some(c) => Err(self.err(
+                UnitErrorKind::Syntax(format!("a unit name, found `{c}`")),
+                Span::new(start, start + c.len_utf8()),
+            )),
+            None => Err(self.err(
+                UnitErrorKind::Syntax("a unit name".into()),
+                Span::new(start, start),
+            )),
+        }
+    }
+
+    fn unknown(&self, name: &str, span: Span) -> UnitError {
+        let mut suggestions: Vec<String> = known_misspelling(name)
+            .map(str::to_string)
+            .into_iter()
+            .collect();
+        if suggestions.is_empty() {
+            // Two units run together, e.g. "kgm" for "kg*m".
+            for split in 1..name.len() {
+                if name.is_char_boundary(split) {
+                    let (a, b) = name.split_at(split);
+                    if lookup(a).is_some() && lookup(b).is_some() {
+                        suggestions.push(format!("{a}*{b}"));
+                        break;
+                    }
+                }
+            }
+        }
+        let candidates = suggestion_candidates();
+        for s in nearest(name, candidates.iter().map(String::as_str)) {
+            if !suggestions.contains(&s) {
+                suggestions.push(s);
+            }
+        }
+        suggestions.truncate(3);
+        self.err(
+            UnitErrorKind::UnknownUnit {
+                name: name.to_string(),
+                suggestions,
+            },
+            span,
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    fn q(s: &str) -> Quantity {
+        Quantity::parse(s).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    #[test]
+    fn course_quantities() {
+        assert_eq!(q("9.8 m/s^2"), Quantity::new(9.8, Dimension::ACCELERATION));
+        assert_relative_eq!(q("60 km/h").value, 60.0 / 3.6);
+        assert_relative_eq!(q("1 g").value, 1e-3);
+        assert_eq!(q("2.4 m"), Quantity::new(2.4, Dimension::LENGTH));
+        assert_eq!(
+            q("4.0 s^2/m^2").dim,
+            Dimension::base([-2, 0, 2, 0, 0, 0, 0])
+        );
+        assert_eq!(q("30 1/m").dim, Dimension::LENGTH.powi(-1));
+        assert_eq!(q("30 m^-1"), q("30 1/m"));
+        assert_eq!(q("1 N*m^2").dim, Dimension::base([3, 1, -2, 0, 0, 0, 0]));
+        assert_relative_eq!(q("1e-8 s").value, 1e-8);
+        assert_relative_eq!(q("3000 rpm").value, 100.0 * std::f64::consts::PI);
+        assert_relative_eq!(q("90 deg").value, std::f64::consts::FRAC_PI_2);
+        assert_relative_eq!(q("2 rev").value, 4.0 * std::f64::consts::PI);
+        assert_relative_eq!(q("1.5 h").value, 5400.0);
+        assert_relative_eq!(q("16 u").value, 16.0 * 1.660_539_066_60e-27);
+        assert_relative_eq!(q("1 eV").value, 1.602_176_634e-19);
+        assert_relative_eq!(q("74 pm").value, 74e-12, max_relative = 1e-15);
+        assert_relative_eq!(q("1.2 Å").value, 1.2e-10);
+        assert_relative_eq!(q("1 AU").value, 1.495_978_707e11);
+        assert_eq!(q("-3.5"), Quantity::number(-3.5));
+        assert_eq!(q("5 N m").dim, Dimension::ENERGY);
+        assert_eq!(q("5 m²").dim, Dimension::base([2, 0, 0, 0, 0, 0, 0]));
+        assert_eq!(
+            q("1 J/(kg*K)").dim,
+            Dimension::base([2, 0, -2, 0, -1, 0, 0])
+        );
+        assert_eq!(q("1 kg m s⁻¹").dim, Dimension::MOMENTUM);
+    }
+
+    #[test]
+    fn unknown_unit_suggests_near_names() {
+        let e = Quantity::parse("3 mps").unwrap_err();
+        assert_eq!(e.message(), "unknown unit `mps`");
+        assert!(e.hint().unwrap().starts_with("did you mean `m/s`"), "{e}");
+        assert_eq!(e.span, Span::new(2, 5));
+
+        let e = Quantity::parse("3 kgg").unwrap_err();
+        assert!(e.hint().unwrap().contains("`kg`"), "{e}");
+
+        let e = Quantity::parse("2 Nm").unwrap_err();
+        assert!(e.hint().unwrap().contains("`N*m`"), "{e}");
+    }
+
+    #[test]
+    fn syntax_errors() {
+        assert!(matches!(
+            Quantity::parse("m/s").unwrap_err().kind,
+            UnitErrorKind::NoNumber
+        ));
+        assert!(Quantity::parse("3 m/").is_err());
+        assert!(Quantity::parse("3 m^x").is_err());
+        assert!(Quantity::parse("3 m^99").is_err());
+        assert!(Quantity::parse("3 (m").is_err());
+        assert!(Quantity::parse("3 m $").is_err());
+    }
+
+    #[test]
+    fn value_in_other_unit() {
+        let v = q("10 m/s");
+        assert_relative_eq!(v.value_in(&Unit::parse("km/h").unwrap()).unwrap(), 36.0);
+        assert!(v.value_in(&Unit::parse("kg").unwrap()).is_none());
+    }
+}
