@@ -1,1 +1,72 @@
-//! stub
+//! # mechkit: computational classical mechanics
+//!
+//! Forces, integrators, energy ledgers and scenario files for the computational side of a
+//! university mechanics course. All quantities are SI (m, kg, s, N, J).
+//!
+//! ## Quick start
+//!
+//! A feather falling with quadratic air resistance, stopped when it reaches the floor:
+//!
+//! ```
+//! use mechkit::prelude::*;
+//!
+//! let (g, dmg, m) = (9.8, 4.0, 1e-3);
+//! let system = ParticleSystem::builder(1)
+//!     .body("feather", m)
+//!     .force(UniformGravity::new("gravity", vec![0], g))
+//!     .force(QuadraticDrag::new("air", vec![Target::new(0, m * g * dmg)]))
+//!     .build()
+//!     .unwrap();
+//! let report = Simulation::new(&system, Method::EulerCromer, 1e-3)
+//!     .t_max(10.0)
+//!     .stop_when(Condition::below(0, 0, 0.0)) // feather.x < 0
+//!     .run(State::from_qv(0.0, &[2.4], &[0.0]), &mut [])
+//!     .unwrap();
+//! let landing = report.event.as_ref().unwrap();
+//! assert!((landing.t - 4.8354).abs() < 1e-3);       // exact: 4.8354 s
+//! assert!((landing.last_step.t - 4.834).abs() < 1e-9); // the textbook loop's last step
+//! // The work of gravity and of the air, measured along the path, add up to ΔK:
+//! let gravity = report.ledger.work_of("gravity").unwrap();
+//! assert!(report.ledger.work_energy_residual().abs() < 1e-4 * gravity);
+//! ```
+//!
+//! ## Modules
+//! - [`ode`]: systems, states, and the fixed-step methods (Euler, Euler-Cromer, velocity
+//!   Verlet, RK4).
+//! - [`particles`]: bodies in 1-3 dimensions, the names formulas use for their state.
+//! - [`forces`]: gravity, springs, drag with wind, constant and formula forces.
+//! - [`energy`]: the energy ledger (work of each force, kinetic and potential energy).
+//! - [`simulate`]: the run loop: stop conditions located between steps, observers, divergence
+//!   diagnosis.
+//! - [`roots`]: Brent's method.
+//! - [`scenario`] (feature `scenario`): TOML scenario files → model → run → summary.
+//! - [`units`]: re-export of the unit system of `mechkit-expr`.
+
+pub mod energy;
+mod error;
+pub mod forces;
+pub mod ode;
+pub mod particles;
+pub mod roots;
+#[cfg(feature = "scenario")]
+pub mod scenario;
+pub mod simulate;
+
+pub use error::Error;
+pub use mechkit_expr as expr;
+pub use mechkit_expr::units;
+
+/// The real number type used throughout.
+pub type Real = f64;
+
+/// The names most programs need.
+pub mod prelude {
+    pub use crate::Real;
+    pub use crate::forces::{
+        ConstantForce, ExpressionForce, Force, LinearDrag, NewtonianGravity, QuadraticDrag, Spring,
+        SpringEnds, Target, UniformGravity, Wind,
+    };
+    pub use crate::ode::{Method, State};
+    pub use crate::particles::ParticleSystem;
+    pub use crate::simulate::{Condition, Simulation, StopReason};
+}

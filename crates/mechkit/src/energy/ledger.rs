@@ -1,0 +1,148 @@
+//! The energy ledger of a run.
+//!
+//! The work of force `i` is the time integral of its power, `W_i = ∫ F_i·v dt`, accumulated
+//! with the trapezoidal rule over the steps actually taken (the power evaluated at each step's
+//! end state). It is an independent measurement along the computed path, not a consequence of
+//! the update formula, so the work-energy residual `Σ W_i - ΔK` measures how consistent the
+//! trajectory is: it shrinks as `h` shrinks (as `h²` for second-order and higher methods, as
+//! `h` for Euler and Euler-Cromer). For conservative forces `W_i = -ΔU_i` is a second check,
+//! and `ΔE = Δ(K + U)` is the energy drift of the method.
+
+use crate::Real;
+use crate::particles::Evaluation;
+
+/// Work, kinetic and potential energy of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EnergyLedger {
+    names: Vec<String>,
+    work: Vec<Real>,
+    last_power: Vec<Real>,
+    last_t: Real,
+    kinetic_start: Real,
+    kinetic_end: Real,
+    potential_start: Option<Real>,
+    potential_end: Option<Real>,
+    potential_each_start: Vec<Real>,
+    potential_each_end: Vec<Real>,
+}
+
+impl EnergyLedger {
+    /// Opens the ledger at time `t` with the evaluation of the initial state.
+    pub fn start(names: Vec<String>, t: Real, eval: &Evaluation) -> Self {
+        let n = names.len();
+        assert_eq!(eval.power.len(), n, "one power value per force");
+        Self {
+            names,
+            work: vec![0.0; n],
+            last_power: eval.power.clone(),
+            last_t: t,
+            kinetic_start: eval.kinetic,
+            kinetic_end: eval.kinetic,
+            potential_start: eval.potential_total,
+            potential_end: eval.potential_total,
+            potential_each_start: eval.potential.clone(),
+            potential_each_end: eval.potential.clone(),
+        }
+    }
+
+    /// Records the state reached at time `t`.
+    pub fn advance(&mut self, t: Real, eval: &Evaluation) {
+        let h = t - self.last_t;
+        for ((w, p0), p1) in self.work.iter_mut().zip(&mut self.last_power).zip(&eval.power) {
+            *w += 0.5 * h * (*p0 + p1);
+            *p0 = *p1;
+        }
+        self.last_t = t;
+        self.kinetic_end = eval.kinetic;
+        self.potential_end = eval.potential_total;
+        self.potential_each_end.clone_from(&eval.potential);
+    }
+
+    /// The work each force would have done had the run reached time `t` with power `power`
+    /// there (without recording it), into `out`.
+    pub fn preview_into(&self, t: Real, power: &[Real], out: &mut Vec<Real>) {
+        let h = t - self.last_t;
+        out.clear();
+        out.extend(
+            self.work
+                .iter()
+                .zip(&self.last_power)
+                .zip(power)
+                .map(|((w, p0), p1)| w + 0.5 * h * (p0 + p1)),
+        );
+    }
+
+    /// Force names, in ledger order.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// Work done by each force so far (J).
+    pub fn work(&self) -> &[Real] {
+        &self.work
+    }
+
+    /// Work done by the force named `name`.
+    pub fn work_of(&self, name: &str) -> Option<Real> {
+        self.names.iter().position(|n| n == name).map(|i| self.work[i])
+    }
+
+    /// Sum of the work of all forces.
+    pub fn net_work(&self) -> Real {
+        self.work.iter().sum()
+    }
+
+    /// Kinetic energy at the start.
+    pub fn kinetic_start(&self) -> Real {
+        self.kinetic_start
+    }
+
+    /// Kinetic energy now.
+    pub fn kinetic_end(&self) -> Real {
+        self.kinetic_end
+    }
+
+    /// Potential energy at the start (`None` when no force has a potential).
+    pub fn potential_start(&self) -> Option<Real> {
+        self.potential_start
+    }
+
+    /// Potential energy now.
+    pub fn potential_end(&self) -> Option<Real> {
+        self.potential_end
+    }
+
+    /// Change of the potential energy of force `i` (`None` if it has none).
+    pub fn potential_change(&self, i: usize) -> Option<Real> {
+        let d = self.potential_each_end[i] - self.potential_each_start[i];
+        (!self.potential_each_start[i].is_nan()).then_some(d)
+    }
+
+    /// `W_net - ΔK`: zero for an exact trajectory.
+    pub fn work_energy_residual(&self) -> Real {
+        self.net_work() - (self.kinetic_end - self.kinetic_start)
+    }
+
+    /// Mechanical energy `K + U` at the start and now (`U = 0` without potentials).
+    pub fn energy(&self) -> (Real, Real) {
+        (
+            self.kinetic_start + self.potential_start.unwrap_or(0.0),
+            self.kinetic_end + self.potential_end.unwrap_or(0.0),
+        )
+    }
+
+    /// `ΔE = Δ(K + U)`: the energy the method gained or lost, plus the work of the
+    /// non-conservative forces (which is its exact value when only those act).
+    pub fn energy_change(&self) -> Real {
+        let (e0, e1) = self.energy();
+        e1 - e0
+    }
+
+    /// Work of the forces without a potential (drag, formulas): equals `ΔE` exactly.
+    pub fn non_conservative_work(&self) -> Real {
+        (0..self.work.len())
+            .filter(|&i| self.potential_each_start[i].is_nan())
+            .map(|i| self.work[i])
+            .sum()
+    }
+}

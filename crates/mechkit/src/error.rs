@@ -1,0 +1,22 @@
+//! The crate-level error, wrapping each module's.
+
+use thiserror::Error;
+
+/// Any error of this crate.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// An invalid particle system.
+    #[error(transparent)]
+    System(#[from] crate::particles::SystemError),
+    /// A stepper failed.
+    #[error(transparent)]
+    Integrate(#[from] crate::ode::IntegrateError),
+    /// A simulation could not run.
+    #[error(transparent)]
+    Simulate(#[from] crate::simulate::SimulateError),
+    /// A scenario file is invalid or its run failed.
+    #[cfg(feature = "scenario")]
+    #[error(transparent)]
+    Scenario(#[from] crate::scenario::ScenarioError),
+}

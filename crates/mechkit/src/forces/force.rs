@@ -1,0 +1,51 @@
+//! The force trait.
+
+use std::fmt::Debug;
+
+use crate::Real;
+use crate::particles::Kinematics;
+
+/// A force law acting on some bodies of a particle system.
+pub trait Force: Debug + Send + Sync {
+    /// The force's name, as in the energy ledger (`gravity`, `air`).
+    fn name(&self) -> &str;
+
+    /// Adds this force, `dim` components per body, into `out` (one slot per coordinate of the
+    /// system).
+    fn add_forces(&self, k: &Kinematics<'_>, out: &mut [Real]);
+
+    /// Potential energy, for conservative forces; `None` otherwise.
+    fn potential(&self, _k: &Kinematics<'_>) -> Option<Real> {
+        None
+    }
+
+    /// Whether the force depends on velocities.
+    fn velocity_dependent(&self) -> bool {
+        false
+    }
+
+    /// Indices of the bodies it acts on (for diagnostics).
+    fn bodies(&self) -> Vec<usize>;
+}
+
+/// A body a single-body force acts on, with the force's coefficient for that body (a drag
+/// coefficient may depend on the body's own mass).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Target {
+    /// Body index.
+    pub body: usize,
+    /// The force's coefficient for this body.
+    pub coefficient: Real,
+}
+
+impl Target {
+    /// Body `body` with coefficient `coefficient`.
+    pub fn new(body: usize, coefficient: Real) -> Self {
+        Self { body, coefficient }
+    }
+
+    /// The same coefficient for each of `bodies`.
+    pub fn all(bodies: &[usize], coefficient: Real) -> Vec<Target> {
+        bodies.iter().map(|&b| Target::new(b, coefficient)).collect()
+    }
+}

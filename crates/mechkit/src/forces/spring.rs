@@ -1,0 +1,116 @@
+//! Linear springs with a rest length (Hooke's law), `F = -k (r - L) r̂`, potential
+//! `k (r - L)² / 2`, where `r` is the spring's length.
+
+use super::force::Force;
+use crate::Real;
+use crate::particles::Kinematics;
+
+/// What a spring connects.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SpringEnds {
+    /// Each of `bodies` is tied to the fixed point `anchor` by its own spring.
+    Anchor {
+        /// The bodies.
+        bodies: Vec<usize>,
+        /// The fixed end.
+        anchor: Vec<Real>,
+    },
+    /// A spring between two bodies.
+    Pair(usize, usize),
+}
+
+/// A linear spring.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Spring {
+    name: String,
+    k: Real,
+    rest_length: Real,
+    ends: SpringEnds,
+}
+
+impl Spring {
+    /// A spring of stiffness `k` (N/m) and rest length `rest_length` (m).
+    pub fn new(name: impl Into<String>, k: Real, rest_length: Real, ends: SpringEnds) -> Self {
+        Self {
+            name: name.into(),
+            k,
+            rest_length,
+            ends,
+        }
+    }
+
+    /// Adds the force of a spring from `b_pos` to `a_pos` on `a` into `fa` (and `-` that on b).
+    #[inline]
+    fn pull(&self, a_pos: &[Real], b_pos: &[Real], f: &mut [Real; 3]) {
+        let dim = a_pos.len();
+        let mut r2 = 0.0;
+        for i in 0..dim {
+            f[i] = a_pos[i] - b_pos[i];
+            r2 += f[i] * f[i];
+        }
+        let r = r2.sqrt();
+        // At r = 0 the direction is undefined; a zero-length spring pulls with -k r, finite.
+        let s = if r > 0.0 {
+            -self.k * (r - self.rest_length) / r
+        } else {
+            -self.k
+        };
+        for c in f.iter_mut().take(dim) {
+            *c *= s;
+        }
+    }
+
+    fn energy(&self, a_pos: &[Real], b_pos: &[Real]) -> Real {
+        let r = a_pos
+            .iter()
+            .zip(b_pos)
+            .map(|(a, b)| (a - b) * (a - b))
+            .sum::<Real>()
+            .sqrt();
+        0.5 * self.k * (r - self.rest_length).powi(2)
+    }
+}
+
+impl Force for Spring {
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    fn add_forces(&self, k: &Kinematics<'_>, out: &mut [Real]) {
+        let dim = k.dim;
+        let mut f = [0.0; 3];
+        match &self.ends {
+            SpringEnds::Anchor { bodies, anchor } => {
+                for &b in bodies {
+                    self.pull(k.position(b), anchor, &mut f);
+                    for i in 0..dim {
+                        out[b * dim + i] += f[i];
+                    }
+                }
+            }
+            SpringEnds::Pair(a, b) => {
+                self.pull(k.position(*a), k.position(*b), &mut f);
+                for i in 0..dim {
+                    out[a * dim + i] += f[i];
+                    out[b * dim + i] -= f[i];
+                }
+            }
+        }
+    }
+
+    fn potential(&self, k: &Kinematics<'_>) -> Option<Real> {
+        Some(match &self.ends {
+            SpringEnds::Anchor { bodies, anchor } => {
+                bodies.iter().map(|&b| self.energy(k.position(b), anchor)).sum()
+            }
+            SpringEnds::Pair(a, b) => self.energy(k.position(*a), k.position(*b)),
+        })
+    }
+
+    fn bodies(&self) -> Vec<usize> {
+        match &self.ends {
+            SpringEnds::Anchor { bodies, .. } => bodies.clone(),
+            SpringEnds::Pair(a, b) => vec![*a, *b],
+        }
+    }
+}

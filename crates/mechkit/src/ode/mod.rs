@@ -1,0 +1,38 @@
+//! Ordinary differential equations: systems, states and the steppers that advance them.
+//!
+//! A first-order system is `y' = f(t, y)` ([`OdeSystem`]); a mechanical system is second order,
+//! `q'' = a(t, q, q')` ([`SecondOrderSystem`]), with the state laid out as `y = [q, v]`.
+//! Every second-order system is also a first-order one, so general methods (Euler, RK4) run
+//! on both, while Euler-Cromer and velocity Verlet use the split into positions and
+//! velocities.
+//!
+//! Fixed-step methods, with `h` the step and `a_n = a(t_n, q_n, v_n)`:
+//!
+//! | method | update | global order |
+//! |---|---|---|
+//! | [`Euler`] | `y_{n+1} = y_n + h f(t_n, y_n)` | 1 |
+//! | [`EulerCromer`] | `v_{n+1} = v_n + h a_n`, then `q_{n+1} = q_n + h v_{n+1}` | 1 (symplectic) |
+//! | [`VelocityVerlet`] | `q_{n+1} = q_n + h v_n + h²/2 a_n`, `v_{n+1} = v_n + h/2 (a_n + a_{n+1})` | 2 (symplectic) |
+//! | [`Rk4`] | classical fourth-order Runge-Kutta | 4 |
+
+mod euler;
+mod euler_cromer;
+mod hermite;
+mod method;
+pub mod reference;
+mod rk4;
+mod state;
+mod stepper;
+mod system;
+mod verlet;
+
+pub use euler::Euler;
+pub use euler_cromer::EulerCromer;
+pub use hermite::{hermite, hermite_derivative};
+pub use method::Method;
+pub use rk4::Rk4;
+pub use state::State;
+pub use stepper::{IntegrateError, StepInfo, Stepper, steps_to_cover};
+pub use system::{OdeSystem, SecondOrderSystem};
+pub use verlet::VelocityVerlet;
+

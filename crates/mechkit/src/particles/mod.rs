@@ -1,0 +1,15 @@
+//! Systems of point particles in 1, 2 or 3 dimensions: bodies, their state, the forces on them,
+//! and the names by which formulas refer to them.
+//!
+//! Positions and velocities are flat arrays, body after body: `q = [x₀, y₀, x₁, y₁, …]`, and
+//! the state vector of the system is `[q, v]` ([`crate::ode::State`]).
+
+mod kinematics;
+mod sample;
+mod system;
+mod vars;
+
+pub use kinematics::{Kinematics, dot, norm};
+pub use sample::{Evaluation, Sample};
+pub use system::{Body, ParticleSystem, ParticleSystemBuilder, SystemError};
+pub use vars::{BodyRef, NameContext, StateExpr, StateVar, VarLevel};

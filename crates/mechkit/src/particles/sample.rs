@@ -1,0 +1,43 @@
+//! Everything known about the system at one instant: the state and what follows from it
+//! (accelerations, energies, power and accumulated work of each force).
+
+use crate::Real;
+
+/// Quantities derived from a state by evaluating the forces; reused buffers.
+#[derive(Debug, Clone, Default)]
+pub struct Evaluation {
+    /// Acceleration of every coordinate.
+    pub a: Vec<Real>,
+    /// Power `F·v` of each force (summed over the bodies it acts on).
+    pub power: Vec<Real>,
+    /// Potential energy of each force; `NaN` for forces without one.
+    pub potential: Vec<Real>,
+    /// Total kinetic energy.
+    pub kinetic: Real,
+    /// Sum of the potentials of the conservative forces; `None` if no force has one.
+    pub potential_total: Option<Real>,
+}
+
+/// The state at one instant with its derived quantities, as passed to observers.
+#[derive(Debug, Clone, Copy)]
+pub struct Sample<'a> {
+    /// Index of the step that produced this sample (0 for the initial state).
+    pub step: u64,
+    /// Time.
+    pub t: Real,
+    /// Positions.
+    pub q: &'a [Real],
+    /// Velocities.
+    pub v: &'a [Real],
+    /// Accelerations, power and energies here.
+    pub eval: &'a Evaluation,
+    /// Work done by each force from the start until now.
+    pub work: &'a [Real],
+}
+
+impl Sample<'_> {
+    /// Total mechanical energy `K + U` (just `K` without potentials).
+    pub fn energy(&self) -> Real {
+        self.eval.kinetic + self.eval.potential_total.unwrap_or(0.0)
+    }
+}

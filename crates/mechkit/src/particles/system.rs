@@ -1,0 +1,273 @@
+//! A system of point particles under a set of forces.
+
+use thiserror::Error;
+
+use super::kinematics::{Kinematics, dot};
+use super::sample::Evaluation;
+use crate::Real;
+use crate::forces::{Force, ForceSet};
+use crate::ode::SecondOrderSystem;
+
+/// A point mass.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Body {
+    /// Name, unique in its system.
+    pub name: String,
+    /// Mass in kg (positive).
+    pub mass: Real,
+}
+
+/// Invalid system description.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum SystemError {
+    /// Dimension other than 1, 2 or 3.
+    #[error("dimensions must be 1, 2 or 3, not {0}")]
+    BadDimension(usize),
+    /// Mass not positive and finite.
+    #[error("the mass of `{name}` must be positive and finite, not {mass} kg")]
+    BadMass {
+        /// Body.
+        name: String,
+        /// Mass given.
+        mass: Real,
+    },
+    /// Two bodies with one name.
+    #[error("two bodies are named `{0}`")]
+    DuplicateBody(String),
+    /// Two forces with one name.
+    #[error("two forces are named `{0}`")]
+    DuplicateForce(String),
+    /// A force refers to a body that does not exist.
+    #[error("force `{force}` acts on body {body}, but the system has {n} bodies")]
+    NoSuchBody {
+        /// Force.
+        force: String,
+        /// Body index.
+        body: usize,
+        /// Number of bodies.
+        n: usize,
+    },
+    /// No bodies.
+    #[error("the system has no bodies")]
+    Empty,
+}
+
+/// Bodies and forces in 1, 2 or 3 dimensions.
+#[derive(Debug)]
+pub struct ParticleSystem {
+    dim: usize,
+    bodies: Vec<Body>,
+    mass: Vec<Real>,
+    inv_mass: Vec<Real>,
+    forces: ForceSet,
+    velocity_dependent: bool,
+}
+
+/// Builds a [`ParticleSystem`].
+///
+/// # Example
+/// ```
+/// use mechkit::particles::ParticleSystem;
+/// use mechkit::forces::UniformGravity;
+/// let sys = ParticleSystem::builder(1)
+///     .body("ball", 0.1)
+///     .force(UniformGravity::new("gravity", vec![0], 9.81))
+///     .build()
+///     .unwrap();
+/// let mut a = [0.0];
+/// use mechkit::ode::SecondOrderSystem;
+/// sys.accel_into(0.0, &[1.0], &[0.0], &mut a);
+/// assert_eq!(a[0], -9.81);
+/// ```
+#[derive(Debug, Default)]
+pub struct ParticleSystemBuilder {
+    dim: usize,
+    bodies: Vec<Body>,
+    forces: ForceSet,
+}
+
+impl ParticleSystemBuilder {
+    /// Adds a body.
+    #[must_use]
+    pub fn body(mut self, name: impl Into<String>, mass: Real) -> Self {
+        self.bodies.push(Body {
+            name: name.into(),
+            mass,
+        });
+        self
+    }
+
+    /// Adds a force.
+    #[must_use]
+    pub fn force(mut self, force: impl Force + 'static) -> Self {
+        self.forces.push(Box::new(force));
+        self
+    }
+
+    /// Adds a boxed force.
+    #[must_use]
+    pub fn boxed_force(mut self, force: Box<dyn Force>) -> Self {
+        self.forces.push(force);
+        self
+    }
+
+    /// Validates and builds.
+    pub fn build(self) -> Result<ParticleSystem, SystemError> {
+        if !(1..=3).contains(&self.dim) {
+            return Err(SystemError::BadDimension(self.dim));
+        }
+        if self.bodies.is_empty() {
+            return Err(SystemError::Empty);
+        }
+        for (i, b) in self.bodies.iter().enumerate() {
+            if !(b.mass > 0.0 && b.mass.is_finite()) {
+                return Err(SystemError::BadMass {
+                    name: b.name.clone(),
+                    mass: b.mass,
+                });
+            }
+            if self.bodies[..i].iter().any(|o| o.name == b.name) {
+                return Err(SystemError::DuplicateBody(b.name.clone()));
+            }
+        }
+        let n = self.bodies.len();
+        for (i, f) in self.forces.iter().enumerate() {
+            if self.forces.iter().take(i).any(|o| o.name() == f.name()) {
+                return Err(SystemError::DuplicateForce(f.name().to_string()));
+            }
+            if let Some(&body) = f.bodies().iter().find(|&&b| b >= n) {
+                return Err(SystemError::NoSuchBody {
+                    force: f.name().to_string(),
+                    body,
+                    n,
+                });
+            }
+        }
+        let mass: Vec<Real> = self.bodies.iter().map(|b| b.mass).collect();
+        let inv_mass = self
+            .bodies
+            .iter()
+            .flat_map(|b| std::iter::repeat_n(1.0 / b.mass, self.dim))
+            .collect();
+        let velocity_dependent = self.forces.velocity_dependent();
+        Ok(ParticleSystem {
+            dim: self.dim,
+            bodies: self.bodies,
+            mass,
+            inv_mass,
+            forces: self.forces,
+            velocity_dependent,
+        })
+    }
+}
+
+impl ParticleSystem {
+    /// Starts a system in `dim` dimensions.
+    pub fn builder(dim: usize) -> ParticleSystemBuilder {
+        ParticleSystemBuilder {
+            dim,
+            ..Default::default()
+        }
+    }
+
+    /// Spatial dimensions.
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
+    /// The bodies.
+    pub fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+
+    /// Masses, one per body.
+    pub fn masses(&self) -> &[Real] {
+        &self.mass
+    }
+
+    /// Index of the body named `name`.
+    pub fn body_index(&self, name: &str) -> Option<usize> {
+        self.bodies.iter().position(|b| b.name == name)
+    }
+
+    /// The forces.
+    pub fn forces(&self) -> &ForceSet {
+        &self.forces
+    }
+
+    /// Whether any potential is defined (so `U` and `E` mean something).
+    pub fn has_potential(&self, q: &[Real], v: &[Real]) -> bool {
+        let k = self.kinematics(0.0, q, v);
+        self.forces.iter().any(|f| f.potential(&k).is_some())
+    }
+
+    /// The force view of a state.
+    pub fn kinematics<'a>(&'a self, t: Real, q: &'a [Real], v: &'a [Real]) -> Kinematics<'a> {
+        Kinematics {
+            t,
+            dim: self.dim,
+            x: q,
+            v,
+            mass: &self.mass,
+        }
+    }
+
+    /// Kinetic energy `Σ m v²/2`.
+    pub fn kinetic_energy(&self, v: &[Real]) -> Real {
+        self.mass
+            .iter()
+            .enumerate()
+            .map(|(i, m)| {
+                let vi = &v[i * self.dim..(i + 1) * self.dim];
+                0.5 * m * dot(vi, vi)
+            })
+            .sum()
+    }
+
+    /// Evaluates accelerations, the power and potential of each force, and the energies at a
+    /// state, into `out` (buffers are resized once and reused).
+    pub fn evaluate(&self, t: Real, q: &[Real], v: &[Real], out: &mut Evaluation, scratch: &mut Vec<Real>) {
+        let n = q.len();
+        let nf = self.forces.len();
+        out.a.resize(n, 0.0);
+        out.power.resize(nf, 0.0);
+        out.potential.resize(nf, Real::NAN);
+        scratch.resize(n, 0.0);
+        let k = self.kinematics(t, q, v);
+        self.forces
+            .total_and_power_into(&k, &mut out.a, &mut out.power, scratch);
+        for (a, w) in out.a.iter_mut().zip(&self.inv_mass) {
+            *a *= w;
+        }
+        let mut total = None;
+        for (i, f) in self.forces.iter().enumerate() {
+            let u = f.potential(&k);
+            out.potential[i] = u.unwrap_or(Real::NAN);
+            if let Some(u) = u {
+                total = Some(total.unwrap_or(0.0) + u);
+            }
+        }
+        out.potential_total = total;
+        out.kinetic = self.kinetic_energy(v);
+    }
+}
+
+impl SecondOrderSystem for ParticleSystem {
+    fn dof(&self) -> usize {
+        self.dim * self.bodies.len()
+    }
+
+    #[inline]
+    fn accel_into(&self, t: Real, q: &[Real], v: &[Real], a: &mut [Real]) {
+        let k = self.kinematics(t, q, v);
+        self.forces.total_into(&k, a);
+        for (ai, w) in a.iter_mut().zip(&self.inv_mass) {
+            *ai *= w;
+        }
+    }
+
+    fn velocity_dependent(&self) -> bool {
+        self.velocity_dependent
+    }
+}

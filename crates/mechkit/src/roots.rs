@@ -1,0 +1,119 @@
+//! Root finding: Brent's method (Brent, *Algorithms for Minimization without Derivatives*,
+//! 1973, ch. 4), which combines bisection's guarantee with the speed of inverse quadratic
+//! interpolation.
+
+use crate::Real;
+
+/// A root of `f` in `[a, b]`, where `f(a)` and `f(b)` have opposite signs (or one is zero),
+/// to within `tol` in `x`. `None` if the signs do not bracket a root.
+///
+/// # Example
+/// ```
+/// let root = mechkit::roots::brent(|x| x * x - 2.0, 0.0, 2.0, 1e-14).unwrap();
+/// assert!((root - 2f64.sqrt()).abs() < 1e-14);
+/// ```
+pub fn brent(f: impl FnMut(Real) -> Real, a: Real, b: Real, tol: Real) -> Option<Real> {
+    brent_with_values(f, a, b, None, tol)
+}
+
+/// As [`brent`], with `f(a)` and `f(b)` already known.
+pub fn brent_with_values(
+    mut f: impl FnMut(Real) -> Real,
+    a: Real,
+    b: Real,
+    values: Option<(Real, Real)>,
+    tol: Real,
+) -> Option<Real> {
+    let (mut a, mut b) = (a, b);
+    let (mut fa, mut fb) = values.unwrap_or_else(|| (f(a), f(b)));
+    if fa == 0.0 {
+        return Some(a);
+    }
+    if fb == 0.0 {
+        return Some(b);
+    }
+    if fa.signum() == fb.signum() || fa.is_nan() || fb.is_nan() {
+        return None;
+    }
+    let (mut c, mut fc) = (a, fa);
+    let mut d = b - a;
+    let mut e = d;
+    for _ in 0..200 {
+        if fb.signum() == fc.signum() {
+            c = a;
+            fc = fa;
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            (a, b, c) = (b, c, b);
+            (fa, fb, fc) = (fb, fc, fb);
+        }
+        let tol1 = 2.0 * Real::EPSILON * b.abs() + 0.5 * tol;
+        let m = 0.5 * (c - b);
+        if m.abs() <= tol1 || fb == 0.0 {
+            return Some(b);
+        }
+        if e.abs() >= tol1 && fa.abs() > fb.abs() {
+            let s = fb / fa;
+            let (mut p, mut q);
+            if a == c {
+                p = 2.0 * m * s;
+                q = 1.0 - s;
+            } else {
+                let qa = fa / fc;
+                let r = fb / fc;
+                p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
+                q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+            }
+            if p > 0.0 {
+                q = -q;
+            } else {
+                p = -p;
+            }
+            if 2.0 * p < (3.0 * m * q - (tol1 * q).abs()).min((e * q).abs()) {
+                e = d;
+                d = p / q;
+            } else {
+                d = m;
+                e = m;
+            }
+        } else {
+            d = m;
+            e = m;
+        }
+        a = b;
+        fa = fb;
+        b += if d.abs() > tol1 { d } else { tol1.copysign(m) };
+        fb = f(b);
+        if fb.is_nan() {
+            return None;
+        }
+    }
+    Some(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_roots() {
+        let r = brent(f64::cos, 0.0, 3.0, 1e-15).unwrap();
+        assert!((r - std::f64::consts::FRAC_PI_2).abs() < 1e-14);
+        let r = brent(|x| x.powi(3) - x - 1.0, 1.0, 2.0, 1e-15).unwrap();
+        assert!((r - 1.324_717_957_244_746).abs() < 1e-14);
+    }
+
+    #[test]
+    fn step_functions_converge_like_bisection() {
+        let r = brent(|x| if x < 0.3 { -1.0 } else { 1.0 }, 0.0, 1.0, 1e-12).unwrap();
+        assert!((r - 0.3).abs() < 1e-11);
+    }
+
+    #[test]
+    fn rejects_non_brackets() {
+        assert!(brent(|x| x * x + 1.0, -1.0, 1.0, 1e-12).is_none());
+        assert_eq!(brent(|x| x, 0.0, 1.0, 1e-12), Some(0.0));
+    }
+}

@@ -1,0 +1,497 @@
+//! From TOML text to a runnable [`Scenario`]: every key checked, every value resolved to SI
+//! with its dimension checked, every formula compiled, every error located.
+
+use mechkit_expr::units::{Dimension, Quantity};
+use mechkit_expr::{BinOp, Dim, Expr, Formula, nearest};
+use toml::de::{DeTable, DeValue};
+
+use super::doc::{Source, Table};
+use super::error::{ErrorKind, ScenarioError};
+use super::forces::{ForceContext, build_force};
+use super::observe::Observable;
+use super::plot::PlotSpec;
+use super::values::{Constant, ValueEnv, formula_error, resolve, scalar, vector};
+use super::Scenario;
+use crate::Real;
+use crate::ode::{Method, State};
+use crate::particles::{BodyRef, NameContext, ParticleSystem, StateExpr, VarLevel};
+use crate::simulate::{Condition, Reduction};
+
+const TOP_KEYS: &[&str] = &[
+    "title",
+    "description",
+    "dimensions",
+    "constants",
+    "body",
+    "force",
+    "integrator",
+    "stop",
+    "observe",
+    "output",
+];
+const BODY_KEYS: &[&str] = &["name", "mass", "position", "velocity"];
+const INTEGRATOR_KEYS: &[&str] = &["method", "dt"];
+const STOP_KEYS: &[&str] = &["when", "t_max", "max_steps"];
+const OUTPUT_KEYS: &[&str] = &["every", "plots"];
+
+/// State names a constant may not take (formulas would become ambiguous).
+const RESERVED: &[&str] = &["t", "x", "y", "z", "vx", "vy", "vz", "v", "r", "speed", "ax", "ay", "az"];
+
+/// Methods that exist in the design but not yet in this build.
+const PLANNED_METHODS: &[&str] = &["yoshida4", "dopri5", "dop853", "rk45", "forest-ruth", "pefrl"];
+
+pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
+    let src = Source { name, text };
+    let doc = DeTable::parse(text).map_err(|e| {
+        let span = e.span().unwrap_or(0..0);
+        src.error(ErrorKind::Syntax, format!("invalid TOML: {}", e.message().trim()), span)
+            .with_hint("see docs/scenario.md for the file format")
+    })?;
+    let root = Table::new(src, doc.get_ref(), 0..0, "the scenario");
+    root.check_keys(TOP_KEYS)?;
+    let mut warnings = Vec::new();
+
+    let title = root.string("title")?.map_or_else(|| name.to_string(), |(s, _)| s.to_string());
+    if let Some(d) = root.get("description")
+        && !matches!(d.get_ref(), DeValue::String(_))
+    {
+        return Err(root.wrong_type("description", d, "a string"));
+    }
+    let dim = match root.count("dimensions")? {
+        None => 1,
+        Some((d @ 1..=3, _)) => d as usize,
+        Some((d, span)) => {
+            return Err(src
+                .error(ErrorKind::Invalid, format!("`dimensions` must be 1, 2 or 3, not {d}"), span));
+        }
+    };
+
+    let constants = constants(&root)?;
+    let (bodies, masses, q, v) = bodies(&root, dim, &constants)?;
+    for (n, value, _) in &constants {
+        if n == "m" && masses.iter().any(|m| (m - value).abs() > 1e-12 * value.abs()) {
+            warnings.push(format!(
+                "the constant `m` = {value} kg hides the body mass `m` in formulas, and some body has a different mass"
+            ));
+        }
+    }
+
+    let ctx = ForceContext {
+        dim,
+        bodies: &bodies,
+        masses: &masses,
+        constants: &constants,
+    };
+    let mut builder = ParticleSystem::builder(dim);
+    for (b, m) in bodies.iter().zip(&masses) {
+        builder = builder.body(b.clone(), *m);
+    }
+    let mut force_names: Vec<String> = Vec::new();
+    for (i, t) in root.tables("force")?.iter().enumerate() {
+        let f = build_force(t, &ctx, i)?;
+        if force_names.iter().any(|n| n == f.name()) {
+            return Err(src
+                .error(ErrorKind::Invalid, format!("two forces are named `{}`", f.name()), t.key_span("name"))
+                .with_hint("give each [[force]] its own `name`; the energy ledger lists work by name"));
+        }
+        force_names.push(f.name().to_string());
+        builder = builder.boxed_force(f);
+    }
+    if force_names.is_empty() {
+        warnings.push("no [[force]] is defined: the bodies move in straight lines".into());
+    }
+    let system = builder
+        .build()
+        .map_err(|e| ScenarioError::new(ErrorKind::Invalid, e.to_string()))?;
+
+    let env = ValueEnv {
+        constants: &constants,
+        mass: None,
+    };
+    let (method, dt) = integrator(&root, env)?;
+    let names = NameContext {
+        dim,
+        bodies: &bodies,
+        forces: &force_names,
+        constants: &constants,
+        bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
+        level: VarLevel::Derived,
+    };
+    let (stop, t_max, max_steps) = stop(&root, env, &names)?;
+    let observables = observe(&root, &names)?;
+    let (every, plots) = output(&root, &names, dim)?;
+    if t_max.is_none() && max_steps.is_none() {
+        warnings.push(format!(
+            "[stop] has no t_max: the run is bounded by {} steps; set t_max",
+            crate::simulate::DEFAULT_MAX_STEPS
+        ));
+    }
+
+    Ok(Scenario {
+        name: name.to_string(),
+        title,
+        dim,
+        constants,
+        system,
+        initial: State::from_qv(0.0, &q, &v),
+        method,
+        dt,
+        t_max,
+        max_steps,
+        stop,
+        observables,
+        every,
+        plots,
+        warnings,
+    })
+}
+
+fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
+    let Some(t) = root.table("constants")? else {
+        return Ok(Vec::new());
+    };
+    let mut out: Vec<Constant> = Vec::new();
+    for (key, value) in t.table.iter() {
+        let name: &str = key.get_ref();
+        let valid = name.chars().next().is_some_and(|c| c.is_alphabetic() || c == '_')
+            && name.chars().all(|c| c.is_alphanumeric() || c == '_');
+        if !valid {
+            return Err(t.src.error(
+                ErrorKind::Invalid,
+                format!("constant name `{name}` must be a letter or `_` followed by letters, digits or `_`"),
+                key.span(),
+            ));
+        }
+        if RESERVED.contains(&name) || mechkit_expr::Func::from_name(name).is_some() {
+            return Err(t
+                .src
+                .error(ErrorKind::Invalid, format!("`{name}` cannot be a constant: formulas use it for the state or as a function"), key.span())
+                .with_hint(format!("choose another name, e.g. `{name}0`")));
+        }
+        let env = ValueEnv {
+            constants: &out,
+            mass: None,
+        };
+        let dim = constant_dimension(value.get_ref());
+        let v = match dim {
+            Some(d) => resolve(&t.src, name, value, d, env)?,
+            None => {
+                // A formula of earlier constants: its dimension is whatever it comes out as.
+                let (text, span) = match value.get_ref() {
+                    DeValue::String(s) => (s.as_ref(), value.span()),
+                    _ => return Err(t.wrong_type(name, value, "a number or a string")),
+                };
+                let f = Formula::parse(text).map_err(|e| formula_error(&t.src, &span, &e))?;
+                for n in f.names() {
+                    if !out.iter().any(|(c, _, _)| c == n) && mechkit_expr::builtin_constant(n).is_none() {
+                        let later = t.table.iter().any(|(k, _)| k.get_ref() == n);
+                        let hint = if later {
+                            format!("`{n}` is defined further down; a constant may only use the constants above it")
+                        } else {
+                            mechkit_expr::did_you_mean(&nearest(n, out.iter().map(|(c, _, _)| c.as_str())))
+                                .unwrap_or_else(|| "constants may use numbers, units and the constants above them".into())
+                        };
+                        let span_in = f.span_of(n).unwrap_or(f.full_span());
+                        let start = t.src.string_content_start(&span);
+                        return Err(t
+                            .src
+                            .error(ErrorKind::Formula, format!("undefined name `{n}` in constant `{name}`"), start + span_in.start..start + span_in.end)
+                            .with_hint(hint));
+                    }
+                }
+                let d = f
+                    .dimension(&|n| out.iter().find(|(c, _, _)| c == n).map_or(Dim::Unknown, |(_, _, d)| *d))
+                    .map_err(|e| formula_error(&t.src, &span, &e))?;
+                let d = if d == Dim::Literal { Dim::Unknown } else { d };
+                let value = f
+                    .eval_with(&|n| out.iter().find(|(c, _, _)| c == n).map(|(_, v, _)| *v))
+                    .map_err(|e| formula_error(&t.src, &span, &e))?;
+                out.push((name.to_string(), value, d));
+                continue;
+            }
+        };
+        let d = match value.get_ref() {
+            DeValue::String(s) if s.trim().parse::<f64>().is_err() => Quantity::parse(s).map_or(Dim::Unknown, |q| Dim::Known(q.dim)),
+            _ => Dim::Unknown,
+        };
+        out.push((name.to_string(), v, d));
+    }
+    Ok(out)
+}
+
+/// The dimension a constant's value declares by itself: `Some` for numbers and quantities,
+/// `None` for formulas.
+fn constant_dimension(v: &DeValue<'_>) -> Option<Dimension> {
+    match v {
+        DeValue::String(s) => match Quantity::parse(s) {
+            Ok(q) => Some(q.dim),
+            Err(_) => None,
+        },
+        _ => Some(Dimension::NONE),
+    }
+}
+
+type Bodies = (Vec<String>, Vec<Real>, Vec<Real>, Vec<Real>);
+
+fn bodies(root: &Table<'_, '_>, dim: usize, constants: &[Constant]) -> Result<Bodies, ScenarioError> {
+    let tables = root.tables("body")?;
+    if tables.is_empty() {
+        return Err(ScenarioError::new(ErrorKind::Missing, "the scenario has no [[body]]").with_hint(
+            "add a body:\n  [[body]]\n  name = \"ball\"\n  mass = \"0.1 kg\"\n  position = \"0 m\"\n  velocity = \"0 m/s\"",
+        ));
+    }
+    let (mut names, mut masses, mut q, mut v) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for (i, t) in tables.iter().enumerate() {
+        t.check_keys(BODY_KEYS)?;
+        let name = match t.string("name")? {
+            Some((n, span)) => {
+                let valid = n.chars().next().is_some_and(|c| c.is_alphabetic() || c == '_')
+                    && n.chars().all(|c| c.is_alphanumeric() || c == '_');
+                if !valid {
+                    return Err(t.src.error(ErrorKind::Invalid, format!("body name `{n}` must be a letter or `_` followed by letters, digits or `_` (it is used in formulas as `{n}.x`)"), span));
+                }
+                if ["work", "power"].contains(&n) {
+                    return Err(t.src.error(ErrorKind::Invalid, format!("`{n}` cannot name a body: `{n}.F` means the {n} of force F"), span));
+                }
+                if names.iter().any(|b: &String| b == n) {
+                    return Err(t.src.error(ErrorKind::Invalid, format!("two bodies are named `{n}`"), span));
+                }
+                n.to_string()
+            }
+            None if tables.len() == 1 => "body".to_string(),
+            None => format!("body{}", i + 1),
+        };
+        let env = ValueEnv { constants, mass: None };
+        let mass = scalar(t, "mass", Dimension::MASS, env)?.ok_or_else(|| {
+            t.missing("mass", "\"1 kg\"").with_hint(format!("every body needs a mass: add `mass = \"1 kg\"` to the body `{name}`"))
+        })?;
+        if !(mass > 0.0 && mass.is_finite()) {
+            return Err(t
+                .src
+                .error(ErrorKind::Invalid, format!("the mass of `{name}` must be positive, not {mass} kg"), t.get("mass").map_or(t.span.clone(), toml::Spanned::span))
+                .with_hint("a body's mass is a positive number of kilograms, e.g. \"0.145 kg\""));
+        }
+        let x = vector(t, "position", Dimension::LENGTH, dim, env)?.unwrap_or_else(|| vec![0.0; dim]);
+        let u = vector(t, "velocity", Dimension::VELOCITY, dim, env)?.unwrap_or_else(|| vec![0.0; dim]);
+        names.push(name);
+        masses.push(mass);
+        q.extend(x);
+        v.extend(u);
+    }
+    Ok((names, masses, q, v))
+}
+
+fn integrator(root: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<(Method, Real), ScenarioError> {
+    let Some(t) = root.table("integrator")? else {
+        return Err(ScenarioError::new(ErrorKind::Missing, "the scenario has no [integrator]")
+            .with_hint("add:\n  [integrator]\n  method = \"rk4\"      # euler | euler-cromer | verlet | rk4\n  dt = \"1 ms\""));
+    };
+    t.check_keys(INTEGRATOR_KEYS).map_err(|mut e| {
+        if e.message.contains("`rtol`") || e.message.contains("`atol`") {
+            e.hint = Some("adaptive step control (rtol/atol) is not in this version yet; give a fixed `dt`".into());
+        }
+        e
+    })?;
+    let method = match t.string("method")? {
+        None => Method::Rk4,
+        Some((m, span)) => Method::from_name(m).ok_or_else(|| {
+            let names: Vec<&str> = Method::ALL.iter().map(|m| m.name()).collect();
+            if PLANNED_METHODS.contains(&m) {
+                t.src
+                    .error(ErrorKind::Invalid, format!("the method `{m}` is not available in this version"), span)
+                    .with_hint(format!("available: {}", names.join(", ")))
+            } else {
+                let hint = mechkit_expr::did_you_mean(&nearest(m, names.iter().copied()))
+                    .unwrap_or_else(|| format!("available: {}", names.join(", ")));
+                t.src.error(ErrorKind::Invalid, format!("unknown integration method `{m}`"), span).with_hint(hint)
+            }
+        })?,
+    };
+    let dt = scalar(&t, "dt", Dimension::TIME, env)?
+        .ok_or_else(|| t.missing("dt", "\"1 ms\"").with_hint("add the time step, e.g. `dt = \"1 ms\"`"))?;
+    if !(dt > 0.0 && dt.is_finite()) {
+        return Err(t
+            .src
+            .error(ErrorKind::Invalid, format!("the time step `dt` must be positive, not {dt} s"), t.get("dt").map_or(t.span.clone(), toml::Spanned::span))
+            .with_hint("e.g. `dt = \"1 ms\"`"));
+    }
+    Ok((method, dt))
+}
+
+type Stop = (Option<Condition>, Option<Real>, Option<u64>);
+
+fn stop(root: &Table<'_, '_>, env: ValueEnv<'_>, names: &NameContext<'_>) -> Result<Stop, ScenarioError> {
+    let Some(t) = root.table("stop")? else {
+        return Ok((None, None, None));
+    };
+    t.check_keys(STOP_KEYS)?;
+    let t_max = scalar(&t, "t_max", Dimension::TIME, env)?;
+    if let Some(tm) = t_max
+        && !(tm > 0.0 && tm.is_finite())
+    {
+        return Err(t.src.error(ErrorKind::Invalid, format!("`t_max` must be positive, not {tm} s"), t.get("t_max").map_or(t.span.clone(), toml::Spanned::span)));
+    }
+    let max_steps = match t.count("max_steps")? {
+        Some((0, span)) => return Err(t.src.error(ErrorKind::Invalid, "`max_steps` must be at least 1", span)),
+        other => other.map(|(n, _)| n),
+    };
+    let condition = match t.string("when")? {
+        None => None,
+        Some((text, span)) => Some(condition(&t, text, &span, names)?),
+    };
+    Ok((condition, t_max, max_steps))
+}
+
+fn compile_state(t: &Table<'_, '_>, f: &Formula, span: &std::ops::Range<usize>, names: &NameContext<'_>) -> Result<StateExpr, ScenarioError> {
+    names.compile(f).map_err(|e| formula_error(&t.src, span, &e))
+}
+
+/// A stop condition: a comparison becomes a continuous event function (`a < b` has
+/// `g = b - a`), anything else a boolean one located by bisection.
+fn condition(t: &Table<'_, '_>, text: &str, span: &std::ops::Range<usize>, names: &NameContext<'_>) -> Result<Condition, ScenarioError> {
+    let f = Formula::parse(text).map_err(|e| formula_error(&t.src, span, &e))?;
+    let whole = compile_state(t, &f, span, names)?;
+    if let Expr::Binary(op, a, b) = f.expr() {
+        if *op == BinOp::Eq || *op == BinOp::Ne {
+            return Err(t
+                .src
+                .error(ErrorKind::Invalid, format!("a stop condition cannot use `{}`: an exact equality is never hit between steps", op.symbol()), span.clone())
+                .with_hint("write the crossing as an inequality, e.g. `x < 0` or `vy < 0`"));
+        }
+        if op.is_comparison() {
+            let lhs = compile_state(t, &Formula::parse(&a.to_string()).expect("printed expressions re-parse"), span, names)?;
+            let rhs = compile_state(t, &Formula::parse(&b.to_string()).expect("printed expressions re-parse"), span, names)?;
+            let needs = !(lhs.is_kinematic() && rhs.is_kinematic());
+            let (first, second) = if matches!(op, BinOp::Lt | BinOp::Le) { (rhs, lhs) } else { (lhs, rhs) };
+            let inclusive = matches!(op, BinOp::Le | BinOp::Ge);
+            return Ok(Condition::from_fn(text, inclusive, needs, move |s, sys| {
+                let (dim, mass) = (sys.dim(), sys.masses());
+                first.eval_sample(s, dim, mass, None) - second.eval_sample(s, dim, mass, None)
+            }));
+        }
+    }
+    let needs = !whole.is_kinematic();
+    Ok(Condition::from_fn(text, true, needs, move |s, sys| {
+        if whole.eval_sample(s, sys.dim(), sys.masses(), None) != 0.0 { 1.0 } else { -1.0 }
+    }))
+}
+
+fn observe(root: &Table<'_, '_>, names: &NameContext<'_>) -> Result<Vec<Observable>, ScenarioError> {
+    let Some(t) = root.table("observe")? else {
+        return Ok(Vec::new());
+    };
+    let mut out = Vec::new();
+    for (key, value) in t.table.iter() {
+        let name: &str = key.get_ref();
+        let DeValue::String(text) = value.get_ref() else {
+            return Err(t.wrong_type(name, value, "a string such as \"max(x)\""));
+        };
+        let span = value.span();
+        let f = Formula::parse(text).map_err(|e| formula_error(&t.src, &span, &e))?;
+        // `max(x)` with one argument is a reduction; anything else is `final(...)`.
+        let (reduction, inner) = match reduction_call(text) {
+            Some((r, inner_text, offset)) => {
+                let inner = Formula::parse(inner_text).map_err(|e| {
+                    let mut e = e;
+                    e.span = e.span.shifted(offset);
+                    e.source = text.to_string();
+                    formula_error(&t.src, &span, &e)
+                })?;
+                (r, inner)
+            }
+            None => (Reduction::Final, f),
+        };
+        let expr = names.compile(&inner).map_err(|e| {
+            let mut e = e;
+            if let Some((_, _, offset)) = reduction_call(text) {
+                e.span = e.span.shifted(offset);
+                e.source = text.to_string();
+            }
+            formula_error(&t.src, &span, &e)
+        })?;
+        out.push(Observable::new(name.to_string(), text.to_string(), reduction, expr));
+    }
+    Ok(out)
+}
+
+/// `name(inner)` where `name` is a reduction and the parentheses enclose the rest: returns the
+/// reduction, the inner text and its byte offset.
+fn reduction_call(text: &str) -> Option<(Reduction, &str, usize)> {
+    let trimmed_start = text.len() - text.trim_start().len();
+    let t = text.trim();
+    let open = t.find('(')?;
+    let r = Reduction::from_name(t[..open].trim())?;
+    let inner = t[open + 1..].strip_suffix(')')?;
+    // the closing parenthesis must match the opening one
+    let mut depth = 0i32;
+    for c in inner.chars() {
+        depth += match c {
+            '(' => 1,
+            ')' => -1,
+            _ => 0,
+        };
+        if depth < 0 {
+            return None;
+        }
+    }
+    if depth != 0 {
+        return None;
+    }
+    // `max(a, b)` with two arguments is the function, not the reduction
+    let mut depth = 0;
+    for c in inner.chars() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ',' if depth == 0 => return None,
+            _ => {}
+        }
+    }
+    Some((r, inner, trimmed_start + open + 1))
+}
+
+fn output(root: &Table<'_, '_>, names: &NameContext<'_>, dim: usize) -> Result<(u64, Vec<PlotSpec>), ScenarioError> {
+    let t = root.table("output")?;
+    let every = match &t {
+        Some(t) => {
+            t.check_keys(OUTPUT_KEYS)?;
+            match t.count("every")? {
+                Some((0, span)) => return Err(t.src.error(ErrorKind::Invalid, "`every` must be at least 1", span)),
+                Some((n, _)) => n,
+                None => 1,
+            }
+        }
+        None => 1,
+    };
+    let specs: Vec<(String, Option<std::ops::Range<usize>>)> = match t.as_ref().and_then(|t| t.get("plots")) {
+        Some(v) => match v.get_ref() {
+            DeValue::Array(items) => items
+                .iter()
+                .map(|item| match item.get_ref() {
+                    DeValue::String(s) => Ok((s.to_string(), Some(item.span()))),
+                    _ => Err(t.as_ref().expect("plots came from the table").wrong_type("plots", item, "a string such as \"x(t)\"")),
+                })
+                .collect::<Result<_, _>>()?,
+            _ => return Err(t.as_ref().expect("plots came from the table").wrong_type("plots", v, "a list such as [\"x(t)\", \"v(t)\"]")),
+        },
+        None => default_plots(dim).into_iter().map(|s| (s.to_string(), None)).collect(),
+    };
+    let src = root.src;
+    let mut plots = Vec::new();
+    for (spec, span) in specs {
+        let p = PlotSpec::parse(&spec, names).map_err(|(msg, hint)| match &span {
+            Some(span) => src.error(ErrorKind::Invalid, msg, span.clone()).with_hint(hint),
+            None => ScenarioError::new(ErrorKind::Invalid, msg).with_hint(hint),
+        })?;
+        plots.push(p);
+    }
+    Ok((every, plots))
+}
+
+fn default_plots(dim: usize) -> Vec<&'static str> {
+    match dim {
+        1 => vec!["x(t)", "v(t)", "energy(t)"],
+        2 => vec!["y(x)", "v(t)", "energy(t)"],
+        _ => vec!["z(t)", "v(t)", "energy(t)"],
+    }
+}

@@ -1,0 +1,134 @@
+//! Output files: the trajectory CSV, streamed during the run, and atomic writes (a temporary
+//! file renamed into place, so a reader never sees half a file).
+//!
+//! The CSV is written to `trajectory.csv.partial` and renamed to `trajectory.csv` when the run
+//! ends for any reason (including divergence), so everything computed is kept.
+
+use std::fs::{self, File};
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+use crate::Real;
+use crate::particles::{ParticleSystem, Sample};
+use crate::simulate::{Observer, ObserverError};
+
+/// Writes `bytes` to `path` atomically: to a temporary file beside it, then renamed.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let tmp = temp_path(path);
+    {
+        let mut f = File::create(&tmp)?;
+        f.write_all(bytes)?;
+        f.sync_all()?;
+    }
+    fs::rename(&tmp, path)
+}
+
+fn temp_path(path: &Path) -> PathBuf {
+    let mut name = path.file_name().map(|n| n.to_os_string()).unwrap_or_default();
+    name.push(".partial");
+    path.with_file_name(name)
+}
+
+/// The CSV header for a system: `t`, positions, velocities, then `K`, `U`, `E` and the work of
+/// each force.
+pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
+    let axes = &["x", "y", "z"][..sys.dim()];
+    let mut cols = vec!["t".to_string()];
+    for b in sys.bodies() {
+        cols.extend(axes.iter().map(|a| format!("{}.{a}", b.name)));
+        cols.extend(axes.iter().map(|a| format!("{}.v{a}", b.name)));
+    }
+    cols.push("K".into());
+    if has_potential {
+        cols.push("U".into());
+        cols.push("E".into());
+    }
+    cols.extend(sys.forces().iter().map(|f| format!("work.{}", f.name())));
+    cols
+}
+
+/// Streams samples to a CSV file (every `every`-th step and the last).
+pub(crate) struct CsvWriter {
+    out: BufWriter<File>,
+    tmp: PathBuf,
+    path: PathBuf,
+    every: u64,
+    dim: usize,
+    has_potential: bool,
+    last_t: Option<Real>,
+    line: String,
+    rows: u64,
+}
+
+impl CsvWriter {
+    pub fn create(path: &Path, sys: &ParticleSystem, has_potential: bool, every: u64) -> std::io::Result<Self> {
+        let tmp = temp_path(path);
+        let mut out = BufWriter::with_capacity(1 << 16, File::create(&tmp)?);
+        writeln!(out, "{}", csv_header(sys, has_potential).join(","))?;
+        Ok(Self {
+            out,
+            tmp,
+            path: path.to_path_buf(),
+            every: every.max(1),
+            dim: sys.dim(),
+            has_potential,
+            last_t: None,
+            line: String::with_capacity(256),
+            rows: 0,
+        })
+    }
+
+    fn write(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        use std::fmt::Write as _;
+        self.line.clear();
+        let _ = write!(self.line, "{}", s.t);
+        let n = s.q.len() / self.dim;
+        for b in 0..n {
+            for x in &s.q[b * self.dim..(b + 1) * self.dim] {
+                let _ = write!(self.line, ",{x}");
+            }
+            for v in &s.v[b * self.dim..(b + 1) * self.dim] {
+                let _ = write!(self.line, ",{v}");
+            }
+        }
+        let _ = write!(self.line, ",{}", s.eval.kinetic);
+        if self.has_potential {
+            let u = s.eval.potential_total.unwrap_or(Real::NAN);
+            let _ = write!(self.line, ",{u},{}", s.eval.kinetic + u);
+        }
+        for w in s.work {
+            let _ = write!(self.line, ",{w}");
+        }
+        self.line.push('\n');
+        self.out
+            .write_all(self.line.as_bytes())
+            .map_err(|e| ObserverError(format!("writing {}: {e}", self.tmp.display())))?;
+        self.last_t = Some(s.t);
+        self.rows += 1;
+        Ok(())
+    }
+
+    /// Flushes and renames the file into place; returns the number of rows written.
+    pub fn close(mut self) -> std::io::Result<u64> {
+        self.out.flush()?;
+        self.out.get_ref().sync_all()?;
+        fs::rename(&self.tmp, &self.path)?;
+        Ok(self.rows)
+    }
+}
+
+impl Observer for CsvWriter {
+    fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        if s.step % self.every == 0 {
+            self.write(s)?;
+        }
+        Ok(())
+    }
+
+    fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        if self.last_t != Some(s.t) {
+            self.write(s)?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,260 @@
+//! Plots as data: `"x(t)"`, `"v(x)"`, `"y(x)"`, `"energy(t)"` name what to draw against what;
+//! the samples are collected during the run, and a front end (the CLI) renders them.
+//!
+//! A name without a body (`x`) is drawn for every body; `feather.x` for one. `energy(t)`
+//! draws `K`, `U`, `E` and the work of each force.
+
+use mechkit_expr::nearest;
+
+use crate::Real;
+use crate::particles::{BodyRef, NameContext, Sample, StateVar, VarLevel};
+use crate::simulate::{Observer, ObserverError};
+
+/// Points kept per series before thinning (every other point is dropped, and the stride
+/// doubles).
+const MAX_POINTS: usize = 20_000;
+
+/// One curve: `y` against `x`, for a body when the names are body-local.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeriesSpec {
+    /// Legend label.
+    pub label: String,
+    /// Horizontal quantity.
+    pub x: StateVar,
+    /// Vertical quantity.
+    pub y: StateVar,
+    /// The body bare names refer to.
+    pub body: Option<usize>,
+}
+
+/// A requested plot.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotSpec {
+    /// As written, e.g. `v(x)`.
+    pub spec: String,
+    /// Axis label of `x` with unit, e.g. `t [s]`.
+    pub x_label: String,
+    /// Axis label of `y` with unit.
+    pub y_label: String,
+    /// The curves.
+    pub series: Vec<SeriesSpec>,
+}
+
+impl PlotSpec {
+    /// Parses `Y(X)` against the scenario's names. Errors carry a message and a hint.
+    pub fn parse(spec: &str, names: &NameContext<'_>) -> Result<PlotSpec, (String, String)> {
+        let usage = "a plot is written `y(x)` with quantities such as t, x, y, vx, v, a, K, U, E: \"x(t)\", \"v(x)\", \"y(x)\", \"energy(t)\"".to_string();
+        let s = spec.trim();
+        let open = s.rfind('(').filter(|_| s.ends_with(')')).ok_or_else(|| (format!("`{spec}` is not a plot"), usage.clone()))?;
+        let y_name = s[..open].trim();
+        let x_name = s[open + 1..s.len() - 1].trim();
+        if y_name.is_empty() || x_name.is_empty() {
+            return Err((format!("`{spec}` is not a plot"), usage));
+        }
+        let local = NameContext {
+            bare: Some(BodyRef::Local),
+            level: VarLevel::Derived,
+            constants: &[],
+            ..names.clone()
+        };
+        let resolve = |n: &str| {
+            local.resolve(n).ok_or_else(|| {
+                let all = local.all_names();
+                let mut candidates: Vec<&str> = all.iter().map(String::as_str).collect();
+                candidates.push("energy");
+                let hint = mechkit_expr::did_you_mean(&nearest(n, candidates)).unwrap_or(usage.clone());
+                (format!("`{n}` in the plot `{spec}` is not a quantity of this scenario"), hint)
+            })
+        };
+        let x = resolve(x_name)?;
+        let x_label = format!("{x_name} [{}]", x.unit());
+        let n_bodies = names.bodies.len();
+        let expand = |y: StateVar, label: &str| -> Vec<SeriesSpec> {
+            let local_names = is_local(x) || is_local(y);
+            if local_names && n_bodies > 1 {
+                (0..n_bodies)
+                    .map(|b| SeriesSpec {
+                        label: names.bodies[b].clone(),
+                        x,
+                        y,
+                        body: Some(b),
+                    })
+                    .collect()
+            } else {
+                vec![SeriesSpec {
+                    label: label.to_string(),
+                    x,
+                    y,
+                    body: local_names.then_some(0),
+                }]
+            }
+        };
+        if y_name == "energy" {
+            let mut series = expand(StateVar::Kinetic, "K");
+            series.extend(expand(StateVar::Potential, "U"));
+            series.extend(expand(StateVar::Energy, "E = K + U"));
+            for (i, f) in names.forces.iter().enumerate() {
+                series.extend(expand(StateVar::Work(i), &format!("work of {f}")));
+            }
+            return Ok(PlotSpec {
+                spec: spec.to_string(),
+                x_label,
+                y_label: "energy [J]".into(),
+                series,
+            });
+        }
+        let y = resolve(y_name)?;
+        let label = if n_bodies == 1 { names.bodies[0].clone() } else { y_name.to_string() };
+        Ok(PlotSpec {
+            spec: spec.to_string(),
+            x_label,
+            y_label: format!("{y_name} [{}]", y.unit()),
+            series: expand(y, &label),
+        })
+    }
+
+    /// A file name for the plot: `v(x)` → `v_x`, `feather.x(t)` → `feather.x_t`.
+    pub fn file_stem(&self) -> String {
+        let mut s: String = self
+            .spec
+            .trim()
+            .chars()
+            .map(|c| if c.is_alphanumeric() || c == '.' || c == '_' || c == '-' { c } else { '_' })
+            .collect();
+        while s.ends_with('_') {
+            s.pop();
+        }
+        s.replace("__", "_")
+    }
+}
+
+fn is_local(v: StateVar) -> bool {
+    matches!(
+        v,
+        StateVar::Position(BodyRef::Local, _)
+            | StateVar::Velocity(BodyRef::Local, _)
+            | StateVar::Speed(BodyRef::Local)
+            | StateVar::Distance(BodyRef::Local)
+            | StateVar::Mass(BodyRef::Local)
+            | StateVar::Acceleration(BodyRef::Local, _)
+            | StateVar::AccelerationMagnitude(BodyRef::Local)
+            | StateVar::BodyKinetic(BodyRef::Local)
+    )
+}
+
+/// A curve's points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend label.
+    pub label: String,
+    /// Points `(x, y)`.
+    pub points: Vec<(Real, Real)>,
+}
+
+/// The data of one plot, ready to render.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotData {
+    /// As written, e.g. `v(x)`; used as the title.
+    pub spec: String,
+    /// Suggested file name without extension.
+    pub file_stem: String,
+    /// Axis labels with units.
+    pub x_label: String,
+    /// Axis labels with units.
+    pub y_label: String,
+    /// The curves (a curve whose values are all NaN, such as `U` without potentials, is left
+    /// out).
+    pub series: Vec<Series>,
+}
+
+/// Collects the points of every plot during a run.
+pub(crate) struct PlotRecorder<'a> {
+    specs: &'a [PlotSpec],
+    points: Vec<Vec<Vec<(Real, Real)>>>,
+    every: u64,
+    stride: u64,
+    seen: u64,
+    dim: usize,
+    mass: &'a [Real],
+}
+
+impl<'a> PlotRecorder<'a> {
+    pub fn new(specs: &'a [PlotSpec], every: u64, dim: usize, mass: &'a [Real]) -> Self {
+        Self {
+            points: specs.iter().map(|p| vec![Vec::new(); p.series.len()]).collect(),
+            specs,
+            every: every.max(1),
+            stride: 1,
+            seen: 0,
+            dim,
+            mass,
+        }
+    }
+
+    fn push(&mut self, s: &Sample<'_>) {
+        for (spec, pts) in self.specs.iter().zip(&mut self.points) {
+            for (series, p) in spec.series.iter().zip(pts.iter_mut()) {
+                let x = series.x.value(s, self.dim, self.mass, series.body);
+                let y = series.y.value(s, self.dim, self.mass, series.body);
+                p.push((x, y));
+            }
+        }
+    }
+
+    fn thin(&mut self) {
+        let full = self.points.iter().flatten().any(|p| p.len() > MAX_POINTS);
+        if full {
+            for p in self.points.iter_mut().flatten() {
+                let mut i = 0;
+                p.retain(|_| {
+                    i += 1;
+                    i % 2 == 1
+                });
+            }
+            self.stride *= 2;
+        }
+    }
+
+    pub fn into_data(self) -> Vec<PlotData> {
+        self.specs
+            .iter()
+            .zip(self.points)
+            .map(|(spec, pts)| PlotData {
+                spec: spec.spec.clone(),
+                file_stem: spec.file_stem(),
+                x_label: spec.x_label.clone(),
+                y_label: spec.y_label.clone(),
+                series: spec
+                    .series
+                    .iter()
+                    .zip(pts)
+                    .filter(|(_, p)| p.iter().any(|(x, y)| x.is_finite() && y.is_finite()))
+                    .map(|(s, p)| Series {
+                        label: s.label.clone(),
+                        points: p,
+                    })
+                    .collect(),
+            })
+            .collect()
+    }
+}
+
+impl Observer for PlotRecorder<'_> {
+    fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        if s.step % self.every == 0 {
+            if self.seen % self.stride == 0 {
+                self.push(s);
+                self.thin();
+            }
+            self.seen += 1;
+        }
+        Ok(())
+    }
+
+    fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        // Always end on the final state (an event, t_max), whatever the stride; a repeated
+        // last point draws nothing extra.
+        self.push(s);
+        Ok(())
+    }
+}

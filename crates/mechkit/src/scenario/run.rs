@@ -1,0 +1,114 @@
+//! Running a scenario: the simulation with its observers (CSV, observables, plots), then the
+//! summary.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use super::Scenario;
+use super::error::{ErrorKind, ScenarioError};
+use super::observe::ObservableSet;
+use super::output::{CsvWriter, write_atomic};
+use super::plot::{PlotData, PlotRecorder};
+use super::summary::Summary;
+use crate::simulate::{Observer, RunReport, SimulateError, Simulation, StopReason};
+
+/// What a run produced.
+#[derive(Debug, Clone)]
+pub struct RunOutput {
+    /// The summary (also written to `summary.json` by [`Scenario::run_to_dir`]).
+    pub summary: Summary,
+    /// Data of the requested plots.
+    pub plots: Vec<PlotData>,
+    /// The raw run report.
+    pub report: RunReport,
+}
+
+impl RunOutput {
+    /// Whether the computation failed (diverged): the CLI exits with 1.
+    pub fn failed(&self) -> bool {
+        self.report.stop_reason == StopReason::Diverged
+    }
+}
+
+fn io_error(what: &str, path: &Path, e: &std::io::Error) -> ScenarioError {
+    ScenarioError::new(ErrorKind::Io, format!("cannot {what} {}: {e}", path.display()))
+        .with_hint("choose a directory you can write to with --out")
+}
+
+impl Scenario {
+    fn simulation(&self) -> Simulation<'_> {
+        let mut sim = Simulation::new(&self.system, self.method, self.dt);
+        if let Some(t) = self.t_max {
+            sim = sim.t_max(t);
+        }
+        if let Some(n) = self.max_steps {
+            sim = sim.max_steps(n);
+        }
+        if let Some(c) = &self.stop {
+            sim = sim.stop_when(c.clone());
+        }
+        sim
+    }
+
+    fn run_with(&self, extra: Option<&mut CsvWriter>) -> Result<RunOutput, ScenarioError> {
+        let dim = self.dim;
+        let mass = self.system.masses();
+        let mut observables = ObservableSet::new(&self.observables, dim, mass);
+        let mut plots = PlotRecorder::new(&self.plots, self.every, dim, mass);
+        let mut observers: Vec<&mut dyn Observer> = vec![&mut observables, &mut plots];
+        if let Some(csv) = extra {
+            observers.push(csv);
+        }
+        let report = self
+            .simulation()
+            .run(self.initial.clone(), &mut observers)
+            .map_err(|e| match e {
+                SimulateError::Observer(o) => ScenarioError::new(ErrorKind::Io, o.0),
+                other => ScenarioError::new(ErrorKind::Invalid, other.to_string()),
+            })?;
+        let mut warnings = self.warnings.clone();
+        for w in &report.warnings {
+            if !warnings.iter().any(|x| x.contains("no t_max")) || !w.starts_with("no t_max") {
+                warnings.push(w.clone());
+            }
+        }
+        let summary = Summary::new(&self.title, &self.name, &self.system, &report, observables.values(), warnings);
+        Ok(RunOutput {
+            summary,
+            plots: plots.into_data(),
+            report,
+        })
+    }
+
+    /// Runs in memory: summary and plot data, no files.
+    pub fn run(&self) -> Result<RunOutput, ScenarioError> {
+        self.run_with(None)
+    }
+
+    /// Runs and writes `dir/trajectory.csv` (streamed, kept even if the run diverges) and
+    /// `dir/summary.json` (atomically). Plots are returned as data for the caller to render.
+    pub fn run_to_dir(&self, dir: &Path) -> Result<RunOutput, ScenarioError> {
+        fs::create_dir_all(dir).map_err(|e| io_error("create the output directory", dir, &e))?;
+        let csv_path = dir.join("trajectory.csv");
+        let has_potential = {
+            let (q, v) = self.initial.qv();
+            self.system.has_potential(q, v)
+        };
+        let mut csv = CsvWriter::create(&csv_path, &self.system, has_potential, self.every)
+            .map_err(|e| io_error("write", &csv_path, &e))?;
+        let result = self.run_with(Some(&mut csv));
+        let rows = csv.close().map_err(|e| io_error("write", &csv_path, &e))?;
+        let mut out = result?;
+        out.summary.files.trajectory = Some(csv_path.display().to_string());
+        out.summary.files.trajectory_rows = rows;
+        self.write_summary(dir, &out.summary)?;
+        Ok(out)
+    }
+
+    /// Writes `summary.json` into `dir` atomically; returns its path.
+    pub fn write_summary(&self, dir: &Path, summary: &super::Summary) -> Result<PathBuf, ScenarioError> {
+        let path = dir.join("summary.json");
+        write_atomic(&path, summary.to_json().as_bytes()).map_err(|e| io_error("write", &path, &e))?;
+        Ok(path)
+    }
+}

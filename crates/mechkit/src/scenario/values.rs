@@ -1,0 +1,274 @@
+//! Values in scenario files: plain numbers (SI), quantities with units (`"9.8 m/s^2"`), or
+//! formulas of the constants (`"g"`, `"2*k"`, `"m*g*Dmg"` with `m` the body's mass), each
+//! checked against the dimension its key needs.
+
+use std::ops::Range;
+
+use mechkit_expr::units::{Dimension, Quantity, UnitErrorKind};
+use mechkit_expr::{Dim, ExprError, ExprErrorKind, Formula, nearest};
+use toml::de::DeValue;
+
+use super::doc::{Source, Table, Value, type_name};
+use super::error::{ErrorKind, ScenarioError};
+use crate::Real;
+
+/// A named constant: value in SI and dimension (unknown when given as a bare number).
+pub(crate) type Constant = (String, Real, Dim);
+
+/// What names a parameter value may use: the constants and, for a value that belongs to one
+/// body (a drag coefficient), that body's mass `m`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ValueEnv<'c> {
+    pub constants: &'c [Constant],
+    pub mass: Option<Real>,
+}
+
+impl ValueEnv<'_> {
+    fn lookup(&self, name: &str) -> Option<(Real, Dim)> {
+        if let Some((_, v, d)) = self.constants.iter().find(|(n, _, _)| n == name) {
+            return Some((*v, *d));
+        }
+        match (name, self.mass) {
+            ("m", Some(m)) => Some((m, Dim::Known(Dimension::MASS))),
+            _ => None,
+        }
+    }
+
+    fn candidates(&self) -> Vec<&str> {
+        let mut c: Vec<&str> = self.constants.iter().map(|(n, _, _)| n.as_str()).collect();
+        if self.mass.is_some() {
+            c.push("m");
+        }
+        c
+    }
+}
+
+/// Names a dimension for messages: "kg (mass)".
+pub(crate) fn dim_text(d: Dimension) -> String {
+    d.describe()
+}
+
+/// Converts an error in a formula inside a TOML string to a located scenario error.
+pub(crate) fn formula_error(src: &Source<'_>, string_span: &Range<usize>, e: &ExprError) -> ScenarioError {
+    let start = src.string_content_start(string_span);
+    let kind = match e.kind {
+        ExprErrorKind::Dimension(_) => ErrorKind::Dimension,
+        _ => ErrorKind::Formula,
+    };
+    let span = (start + e.span.start)..(start + e.span.end.max(e.span.start + 1));
+    src.error(kind, e.message(), span).with_hint_opt(e.hint())
+}
+
+fn is_plain_number(text: &str) -> bool {
+    text.trim().parse::<f64>().is_ok()
+}
+
+/// Resolves one value (a TOML number or a string) to SI, checking its dimension.
+pub(crate) fn resolve(
+    src: &Source<'_>,
+    key: &str,
+    v: &Value<'_>,
+    want: Dimension,
+    env: ValueEnv<'_>,
+) -> Result<Real, ScenarioError> {
+    match v.get_ref() {
+        DeValue::Integer(i) => i64::from_str_radix(i.as_str(), i.radix())
+            .map(|n| n as Real)
+            .map_err(|_| src.error(ErrorKind::Invalid, format!("`{key}`: {i} is too large"), v.span())),
+        DeValue::Float(f) => f.as_str().replace('_', "").parse::<Real>().map_err(|_| {
+            src.error(ErrorKind::Invalid, format!("`{key}`: {f} is not a number"), v.span())
+        }),
+        DeValue::String(s) => resolve_text(src, key, s, &v.span(), want, env),
+        other => Err(src.error(
+            ErrorKind::WrongType,
+            format!(
+                "`{key}` must be a number or a string such as \"{}\", not {}",
+                example(want),
+                type_name(other)
+            ),
+            v.span(),
+        )),
+    }
+}
+
+/// An example value of a dimension, for hints.
+pub(crate) fn example(want: Dimension) -> &'static str {
+    match want {
+        d if d == Dimension::MASS => "1.5 kg",
+        d if d == Dimension::LENGTH => "2.4 m",
+        d if d == Dimension::TIME => "10 s",
+        d if d == Dimension::VELOCITY => "3 m/s",
+        d if d == Dimension::ACCELERATION => "9.81 m/s^2",
+        d if d == Dimension::FORCE => "5 N",
+        d if d == Dimension::STIFFNESS => "100 N/m",
+        d if d == Dimension::LINEAR_DRAG => "0.1 kg/s",
+        d if d == Dimension::QUADRATIC_DRAG => "0.01 kg/m",
+        d if d == Dimension::GRAVITATIONAL_PARAMETER => "3.986e14 m^3/s^2",
+        _ => "1.0",
+    }
+}
+
+fn resolve_text(
+    src: &Source<'_>,
+    key: &str,
+    text: &str,
+    span: &Range<usize>,
+    want: Dimension,
+    env: ValueEnv<'_>,
+) -> Result<Real, ScenarioError> {
+    let start = src.string_content_start(span);
+    let located = |s: mechkit_expr::Span| (start + s.start)..(start + s.end.max(s.start + 1));
+    match Quantity::parse(text) {
+        Ok(q) if is_plain_number(text) => Ok(q.value),
+        Ok(q) if q.dim == want => Ok(q.value),
+        Ok(q) => Err(src
+            .error(
+                ErrorKind::Dimension,
+                format!(
+                    "`{key}` must have dimension {}, but \"{text}\" has {}",
+                    dim_text(want),
+                    dim_text(q.dim)
+                ),
+                span.clone(),
+            )
+            .with_hint(format!("write it like \"{}\"", example(want)))),
+        Err(unit_error) => {
+            let formula = Formula::parse(text);
+            let names_known = formula
+                .as_ref()
+                .is_ok_and(|f| f.names().iter().all(|n| env.lookup(n).is_some() || mechkit_expr::builtin_constant(n).is_some()));
+            if matches!(unit_error.kind, UnitErrorKind::NoNumber) || names_known {
+                resolve_formula(src, key, text, span, want, env)
+            } else {
+                let mut e = src.error(ErrorKind::Unit, unit_error.message(), located(unit_error.span));
+                e.hint = unit_error.hint();
+                if let UnitErrorKind::UnknownUnit { name, .. } = &unit_error.kind
+                    && env.lookup(name).is_some()
+                {
+                    e.hint = Some(format!(
+                        "`{name}` here reads as a unit; to multiply by the constant `{name}` write \"{}\"",
+                        text.replacen(' ', "*", 1)
+                    ));
+                }
+                Err(e)
+            }
+        }
+    }
+}
+
+fn resolve_formula(
+    src: &Source<'_>,
+    key: &str,
+    text: &str,
+    span: &Range<usize>,
+    want: Dimension,
+    env: ValueEnv<'_>,
+) -> Result<Real, ScenarioError> {
+    let f = Formula::parse(text).map_err(|e| formula_error(src, span, &e))?;
+    for name in f.names() {
+        if env.lookup(name).is_none() && mechkit_expr::builtin_constant(name).is_none() {
+            let suggestions = nearest(name, env.candidates());
+            let kind = ExprErrorKind::UndefinedName {
+                name: name.to_string(),
+                suggestions,
+                context: Some(if env.mass.is_some() {
+                    "values may use the constants and `m`, the mass of the body".into()
+                } else {
+                    "values may use the constants defined in [constants]".into()
+                }),
+            };
+            let e = f.error(kind, f.span_of(name).unwrap_or(f.full_span()));
+            return Err(formula_error(src, span, &e));
+        }
+    }
+    let d = f
+        .dimension(&|n| env.lookup(n).map_or(Dim::Unknown, |(_, d)| d))
+        .map_err(|e| formula_error(src, span, &e))?;
+    if let Dim::Known(got) = d
+        && got != want
+    {
+        return Err(src.error(
+            ErrorKind::Dimension,
+            format!(
+                "`{key}` must have dimension {}, but `{text}` has {}",
+                dim_text(want),
+                dim_text(got)
+            ),
+            span.clone(),
+        ));
+    }
+    f.eval_with(&|n| env.lookup(n).map(|(v, _)| v))
+        .map_err(|e| formula_error(src, span, &e))
+}
+
+/// An optional scalar parameter.
+pub(crate) fn scalar(
+    t: &Table<'_, '_>,
+    key: &str,
+    want: Dimension,
+    env: ValueEnv<'_>,
+) -> Result<Option<Real>, ScenarioError> {
+    t.get(key).map(|v| resolve(&t.src, key, v, want, env)).transpose()
+}
+
+/// A required scalar parameter.
+pub(crate) fn required_scalar(
+    t: &Table<'_, '_>,
+    key: &str,
+    want: Dimension,
+    env: ValueEnv<'_>,
+) -> Result<Real, ScenarioError> {
+    scalar(t, key, want, env)?.ok_or_else(|| t.missing(key, &format!("\"{}\"", example(want))))
+}
+
+/// A vector parameter: an array of `dim` values, one value in 1-D, or in 2-D a polar
+/// `{ magnitude = …, angle = … }` (angle from the x axis towards y).
+pub(crate) fn vector(
+    t: &Table<'_, '_>,
+    key: &str,
+    want: Dimension,
+    dim: usize,
+    env: ValueEnv<'_>,
+) -> Result<Option<Vec<Real>>, ScenarioError> {
+    let Some(v) = t.get(key) else {
+        return Ok(None);
+    };
+    let src = &t.src;
+    let hint = || {
+        let one = format!("\"{}\"", example(want));
+        match dim {
+            1 => format!("write `{key} = {one}`"),
+            2 => format!("write `{key} = [{one}, {one}]` or `{key} = {{ magnitude = {one}, angle = \"30 deg\" }}`"),
+            _ => format!("write `{key} = [{one}, {one}, {one}]`"),
+        }
+    };
+    match v.get_ref() {
+        DeValue::Array(items) => {
+            if items.len() != dim {
+                return Err(src
+                    .error(
+                        ErrorKind::Invalid,
+                        format!("`{key}` has {} components, but the scenario has {dim} dimensions", items.len()),
+                        v.span(),
+                    )
+                    .with_hint(hint()));
+            }
+            items.iter().map(|item| resolve(src, key, item, want, env)).collect::<Result<Vec<_>, _>>().map(Some)
+        }
+        DeValue::Table(polar) if dim == 2 => {
+            let p = Table::new(*src, polar, v.span(), format!("`{key}`"));
+            p.check_keys(&["magnitude", "angle"])?;
+            let r = required_scalar(&p, "magnitude", want, env)?;
+            let a = required_scalar(&p, "angle", Dimension::NONE, env)?;
+            Ok(Some(vec![r * a.cos(), r * a.sin()]))
+        }
+        _ if dim == 1 => resolve(src, key, v, want, env).map(|x| Some(vec![x])),
+        other => Err(src
+            .error(
+                ErrorKind::WrongType,
+                format!("`{key}` must be a list of {dim} values, not {}", type_name(other)),
+                v.span(),
+            )
+            .with_hint(hint())),
+    }
+}

@@ -1,0 +1,88 @@
+//! Stop conditions as event functions.
+
+use std::fmt;
+use std::sync::Arc;
+
+use crate::Real;
+use crate::particles::{ParticleSystem, Sample};
+
+type EventFn = dyn Fn(&Sample<'_>, &ParticleSystem) -> Real + Send + Sync;
+
+/// A condition on the state: it holds where its event function `g` is positive (or
+/// non-negative, when inclusive). `g` should be continuous where possible (`x < 0` has
+/// `g = -x`), so the crossing can be located precisely.
+#[derive(Clone)]
+pub struct Condition {
+    description: String,
+    g: Arc<EventFn>,
+    inclusive: bool,
+    needs_forces: bool,
+}
+
+impl fmt::Debug for Condition {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Condition")
+            .field("description", &self.description)
+            .field("inclusive", &self.inclusive)
+            .finish_non_exhaustive()
+    }
+}
+
+impl Condition {
+    /// A condition from an event function. `needs_forces` says whether `g` reads
+    /// accelerations, energies, work or power (which must then be evaluated at interpolated
+    /// states too).
+    pub fn from_fn(
+        description: impl Into<String>,
+        inclusive: bool,
+        needs_forces: bool,
+        g: impl Fn(&Sample<'_>, &ParticleSystem) -> Real + Send + Sync + 'static,
+    ) -> Self {
+        Self {
+            description: description.into(),
+            g: Arc::new(g),
+            inclusive,
+            needs_forces,
+        }
+    }
+
+    /// Coordinate `axis` of body `body` below `level`.
+    pub fn below(body: usize, axis: usize, level: Real) -> Self {
+        Self::from_fn(
+            format!("body {body} axis {axis} < {level}"),
+            false,
+            false,
+            move |s, sys| level - s.q[body * sys.dim() + axis],
+        )
+    }
+
+    /// Coordinate `axis` of body `body` above `level`.
+    pub fn above(body: usize, axis: usize, level: Real) -> Self {
+        Self::from_fn(
+            format!("body {body} axis {axis} > {level}"),
+            false,
+            false,
+            move |s, sys| s.q[body * sys.dim() + axis] - level,
+        )
+    }
+
+    /// What it tests, for reports.
+    pub fn description(&self) -> &str {
+        &self.description
+    }
+
+    /// The event function.
+    pub fn value(&self, s: &Sample<'_>, sys: &ParticleSystem) -> Real {
+        (self.g)(s, sys)
+    }
+
+    /// Whether the condition holds for the function value `g`.
+    pub fn holds_for(&self, g: Real) -> bool {
+        if self.inclusive { g >= 0.0 } else { g > 0.0 }
+    }
+
+    /// Whether `g` depends on force evaluations.
+    pub fn needs_forces(&self) -> bool {
+        self.needs_forces
+    }
+}

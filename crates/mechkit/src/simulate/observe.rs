@@ -1,0 +1,69 @@
+//! Observers receive every sample of a run: writers of trajectory files, recorders, reductions.
+
+use thiserror::Error;
+
+use crate::Real;
+use crate::particles::Sample;
+
+/// An observer could not take a sample (typically an output file could not be written).
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("{0}")]
+pub struct ObserverError(pub String);
+
+/// Receives the samples of a run.
+pub trait Observer {
+    /// Called with the initial state (step 0), after every step, and with a located event
+    /// (which replaces the step that crossed it).
+    fn observe(&mut self, sample: &Sample<'_>) -> Result<(), ObserverError>;
+
+    /// Called once at the end with the final sample (already passed to `observe`).
+    fn finish(&mut self, _last: &Sample<'_>) -> Result<(), ObserverError> {
+        Ok(())
+    }
+}
+
+/// Keeps `t`, positions and velocities of every `every`-th sample (and the last) in memory.
+#[derive(Debug, Clone, Default)]
+pub struct Recorder {
+    every: u64,
+    /// Times.
+    pub t: Vec<Real>,
+    /// Positions per kept sample.
+    pub q: Vec<Vec<Real>>,
+    /// Velocities per kept sample.
+    pub v: Vec<Vec<Real>>,
+    last_step: Option<u64>,
+}
+
+impl Recorder {
+    /// Keeps every `every`-th step.
+    pub fn new(every: u64) -> Self {
+        Self {
+            every: every.max(1),
+            ..Self::default()
+        }
+    }
+
+    fn push(&mut self, s: &Sample<'_>) {
+        self.t.push(s.t);
+        self.q.push(s.q.to_vec());
+        self.v.push(s.v.to_vec());
+        self.last_step = Some(s.step);
+    }
+}
+
+impl Observer for Recorder {
+    fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        if s.step % self.every == 0 {
+            self.push(s);
+        }
+        Ok(())
+    }
+
+    fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        if self.t.last() != Some(&s.t) {
+            self.push(s);
+        }
+        Ok(())
+    }
+}
