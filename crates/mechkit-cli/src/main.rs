@@ -1,1 +1,28 @@
-fn main() {}
+//! `mechkit`: the command-line front end of the mechkit library.
+//!
+//! Exit codes:
+//! - 0: success;
+//! - 1: the computation failed (the simulation diverged; the output so far is kept);
+//! - 2: bad input (usage, unreadable or invalid file, units, unwritable output directory).
+//!
+//! Errors go to stderr with their location and a hint.
+
+mod args;
+mod commands;
+mod plot;
+
+use std::process::ExitCode;
+
+use clap::Parser;
+
+fn main() -> ExitCode {
+    let cli = args::Cli::parse();
+    match commands::dispatch(cli) {
+        Ok(commands::Outcome::Success) => ExitCode::SUCCESS,
+        Ok(commands::Outcome::ComputationFailed) => ExitCode::from(1),
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -387,7 +387,6 @@ fn observe(root: &Table<'_, '_>, names: &NameContext<'_>) -> Result<Vec<Observab
             return Err(t.wrong_type(name, value, "a string such as \"max(x)\""));
         };
         let span = value.span();
-        let f = Formula::parse(text).map_err(|e| formula_error(&t.src, &span, &e))?;
         // `max(x)` with one argument is a reduction; anything else is `final(...)`.
         let (reduction, inner) = match reduction_call(text) {
             Some((r, inner_text, offset)) => {
@@ -399,7 +398,10 @@ fn observe(root: &Table<'_, '_>, names: &NameContext<'_>) -> Result<Vec<Observab
                 })?;
                 (r, inner)
             }
-            None => (Reduction::Final, f),
+            None => (
+                Reduction::Final,
+                Formula::parse(text).map_err(|e| formula_error(&t.src, &span, &e))?,
+            ),
         };
         let expr = names.compile(&inner).map_err(|e| {
             let mut e = e;

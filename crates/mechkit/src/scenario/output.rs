@@ -47,6 +47,18 @@ pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
     cols
 }
 
+/// Appends `x` with the fewest digits that read back as the same number, in exponent form
+/// when that is shorter (`1.5e-9`, not `0.0000000015`).
+pub fn push_number(out: &mut String, x: Real) {
+    use std::fmt::Write as _;
+    let a = x.abs();
+    if a == 0.0 || (1e-4..1e16).contains(&a) || !x.is_finite() {
+        let _ = write!(out, "{x}");
+    } else {
+        let _ = write!(out, "{x:e}");
+    }
+}
+
 /// Streams samples to a CSV file (every `every`-th step and the last).
 pub(crate) struct CsvWriter {
     out: BufWriter<File>,
@@ -79,25 +91,30 @@ impl CsvWriter {
     }
 
     fn write(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        use std::fmt::Write as _;
         self.line.clear();
-        let _ = write!(self.line, "{}", s.t);
+        push_number(&mut self.line, s.t);
         let n = s.q.len() / self.dim;
         for b in 0..n {
-            for x in &s.q[b * self.dim..(b + 1) * self.dim] {
-                let _ = write!(self.line, ",{x}");
-            }
-            for v in &s.v[b * self.dim..(b + 1) * self.dim] {
-                let _ = write!(self.line, ",{v}");
+            for &x in s.q[b * self.dim..(b + 1) * self.dim]
+                .iter()
+                .chain(&s.v[b * self.dim..(b + 1) * self.dim])
+            {
+                self.line.push(',');
+                push_number(&mut self.line, x);
             }
         }
-        let _ = write!(self.line, ",{}", s.eval.kinetic);
+        self.line.push(',');
+        push_number(&mut self.line, s.eval.kinetic);
         if self.has_potential {
             let u = s.eval.potential_total.unwrap_or(Real::NAN);
-            let _ = write!(self.line, ",{u},{}", s.eval.kinetic + u);
+            self.line.push(',');
+            push_number(&mut self.line, u);
+            self.line.push(',');
+            push_number(&mut self.line, s.eval.kinetic + u);
         }
-        for w in s.work {
-            let _ = write!(self.line, ",{w}");
+        for &w in s.work {
+            self.line.push(',');
+            push_number(&mut self.line, w);
         }
         self.line.push('\n');
         self.out
@@ -130,5 +147,22 @@ impl Observer for CsvWriter {
             self.write(s)?;
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::push_number;
+
+    #[test]
+    fn numbers_round_trip_compactly() {
+        for (x, text) in [(0.0, "0"), (2.4, "2.4"), (1.5e-9, "1.5e-9"), (-4.8e-21, "-4.8e-21"), (1e20, "1e20"), (f64::NAN, "NaN")] {
+            let mut s = String::new();
+            push_number(&mut s, x);
+            assert_eq!(s, text);
+            if x.is_finite() {
+                assert_eq!(s.parse::<f64>().unwrap(), x);
+            }
+        }
     }
 }

@@ -254,7 +254,8 @@ impl Summary {
         serde_json::to_string_pretty(self).expect("a summary always serializes")
     }
 
-    /// A short report for people: final state, stop reason, energy ledger, observables.
+    /// A short report for people: final state, stop reason, energy ledger, observables
+    /// (warnings are left to the caller, for stderr).
     pub fn to_text(&self) -> String {
         let mut s = String::new();
         let _ = writeln!(s, "{}", self.title);
@@ -305,9 +306,6 @@ impl Summary {
             for (name, v) in &self.observables {
                 let _ = writeln!(s, "  {name} = {}", num(*v));
             }
-        }
-        for w in &self.warnings {
-            let _ = writeln!(s, "warning: {w}");
         }
         s
     }

@@ -1,0 +1,46 @@
+//! `mechkit run FILE`: simulate, write the trajectory, summary and plots, print the summary.
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use mechkit::scenario::Scenario;
+
+use super::Outcome;
+use crate::args::RunArgs;
+use crate::plot;
+
+pub fn run(args: &RunArgs) -> Result<Outcome> {
+    let scenario = Scenario::load(&args.file)?;
+    let dir = args.out.clone().unwrap_or_else(|| {
+        let stem = args
+            .file
+            .file_stem()
+            .map_or_else(|| "run".into(), |s| s.to_string_lossy().into_owned());
+        PathBuf::from("out").join(stem)
+    });
+    let mut out = scenario.run_to_dir(&dir)?;
+    if !args.no_plots {
+        for p in &out.plots {
+            let path = dir.join(format!("{}.svg", p.file_stem));
+            plot::render_svg(p, &scenario.title, &path)?;
+            out.summary.files.plots.push(path.display().to_string());
+        }
+        scenario.write_summary(&dir, &out.summary)?;
+    }
+    for w in &out.summary.warnings {
+        eprintln!("warning: {w}");
+    }
+    if args.json {
+        println!("{}", out.summary.to_json());
+    } else {
+        print!("{}", out.summary.to_text());
+        println!("wrote {}", dir.display());
+    }
+    if out.failed() {
+        if let Some(d) = &out.summary.divergence {
+            eprintln!("error: the simulation diverged: {}", d.message);
+        }
+        return Ok(Outcome::ComputationFailed);
+    }
+    Ok(Outcome::Success)
+}
