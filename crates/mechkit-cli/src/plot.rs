@@ -34,7 +34,9 @@ fn register_font() {
 fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = values
         .filter(|v| v.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
     if !lo.is_finite() {
         return (0.0, 1.0);
     }
@@ -47,6 +49,36 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
+/// Tick label: plain for ordinary magnitudes, `1.5e11` for very large or small ones.
+fn tick(v: f64, scale: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    if !(1e-3..1e5).contains(&scale) {
+        let s = format!("{v:.2e}");
+        // 1.50e11 -> 1.5e11
+        match s.split_once('e') {
+            Some((m, e)) => format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.')),
+            None => s,
+        }
+    } else {
+        let s = format!("{v:.6}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    }
+}
+
+/// Widens one of the ranges so that a unit has the same length on both axes.
+fn equalize(x: (f64, f64), y: (f64, f64), width: f64, height: f64) -> ((f64, f64), (f64, f64)) {
+    let (dx, dy) = (x.1 - x.0, y.1 - y.0);
+    if dx <= 0.0 || dy <= 0.0 {
+        return (x, y);
+    }
+    let per_px = (dx / width).max(dy / height);
+    let (cx, cy) = ((x.0 + x.1) / 2.0, (y.0 + y.1) / 2.0);
+    let (hx, hy) = (per_px * width / 2.0, per_px * height / 2.0);
+    ((cx - hx, cx + hx), (cy - hy, cy + hy))
+}
+
 /// Draws `plot` into an SVG file at `path` (written atomically).
 pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
     register_font();
@@ -55,8 +87,18 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
         let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| anyhow!("{e}"))?;
         let points = || plot.series.iter().flat_map(|s| s.points.iter());
-        let (x0, x1) = range(points().map(|p| p.0));
-        let (y0, y1) = range(points().map(|p| p.1));
+        let (mut xr, mut yr) = (range(points().map(|p| p.0)), range(points().map(|p| p.1)));
+        if plot.equal_aspect {
+            // plotting area: 900 x 600 minus margins and label areas
+            (xr, yr) = equalize(
+                xr,
+                yr,
+                900.0 - 2.0 * 16.0 - 80.0,
+                600.0 - 2.0 * 16.0 - 48.0 - 30.0,
+            );
+        }
+        let ((x0, x1), (y0, y1)) = (xr, yr);
+        let (xs, ys) = (x0.abs().max(x1.abs()), y0.abs().max(y1.abs()));
         let mut chart = ChartBuilder::on(&root)
             .caption(format!("{title}: {}", plot.spec), ("sans-serif", 22))
             .margin(16)
@@ -66,6 +108,8 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
             .map_err(|e| anyhow!("{e}"))?;
         chart
             .configure_mesh()
+            .x_label_formatter(&|v| tick(*v, xs))
+            .y_label_formatter(&|v| tick(*v, ys))
             .x_desc(&plot.x_label)
             .y_desc(&plot.y_label)
             .label_style(("sans-serif", 14))
@@ -85,7 +129,9 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
                 .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))
                 .map_err(|e| anyhow!("{e}"))?
                 .label(s.label.clone())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                });
             if let Some(&last) = pts.last() {
                 chart
                     .draw_series(std::iter::once(Circle::new(last, 4, color.filled())))

@@ -300,7 +300,12 @@ mod tests {
     #[test]
     fn expected_dimension() {
         let f = Formula::parse("-k*x*v").unwrap();
-        assert!(Formula::parse("-k*x").unwrap().expect_dimension(Dimension::FORCE, "a force", &dims).is_ok());
+        assert!(
+            Formula::parse("-k*x")
+                .unwrap()
+                .expect_dimension(Dimension::FORCE, "a force", &dims)
+                .is_ok()
+        );
         let e = f
             .expect_dimension(Dimension::FORCE, "a force", &dims)
             .unwrap_err();

@@ -48,7 +48,12 @@ impl EnergyLedger {
     /// Records the state reached at time `t`.
     pub fn advance(&mut self, t: Real, eval: &Evaluation) {
         let h = t - self.last_t;
-        for ((w, p0), p1) in self.work.iter_mut().zip(&mut self.last_power).zip(&eval.power) {
+        for ((w, p0), p1) in self
+            .work
+            .iter_mut()
+            .zip(&mut self.last_power)
+            .zip(&eval.power)
+        {
             *w += 0.5 * h * (*p0 + p1);
             *p0 = *p1;
         }
@@ -84,7 +89,10 @@ impl EnergyLedger {
 
     /// Work done by the force named `name`.
     pub fn work_of(&self, name: &str) -> Option<Real> {
-        self.names.iter().position(|n| n == name).map(|i| self.work[i])
+        self.names
+            .iter()
+            .position(|n| n == name)
+            .map(|i| self.work[i])
     }
 
     /// Sum of the work of all forces.

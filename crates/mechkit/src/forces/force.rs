@@ -46,6 +46,9 @@ impl Target {
 
     /// The same coefficient for each of `bodies`.
     pub fn all(bodies: &[usize], coefficient: Real) -> Vec<Target> {
-        bodies.iter().map(|&b| Target::new(b, coefficient)).collect()
+        bodies
+            .iter()
+            .map(|&b| Target::new(b, coefficient))
+            .collect()
     }
 }

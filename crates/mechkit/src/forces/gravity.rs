@@ -84,7 +84,12 @@ impl NewtonianGravity {
     pub const G: Real = 6.674_30e-11;
 
     /// Attraction of `bodies` towards a fixed centre with `G M = gm`.
-    pub fn fixed_centre(name: impl Into<String>, bodies: Vec<usize>, gm: Real, center: Vec<Real>) -> Self {
+    pub fn fixed_centre(
+        name: impl Into<String>,
+        bodies: Vec<usize>,
+        gm: Real,
+        center: Vec<Real>,
+    ) -> Self {
         Self {
             name: name.into(),
             bodies,
@@ -158,7 +163,8 @@ impl Force for NewtonianGravity {
                 let mut u = 0.0;
                 for (n, &a) in self.bodies.iter().enumerate() {
                     for &b in &self.bodies[n + 1..] {
-                        u -= g * k.mass[a] * k.mass[b] / separation(k.position(a), k.position(b), &mut d);
+                        u -= g * k.mass[a] * k.mass[b]
+                            / separation(k.position(a), k.position(b), &mut d);
                     }
                 }
                 u

@@ -100,9 +100,10 @@ impl Force for Spring {
 
     fn potential(&self, k: &Kinematics<'_>) -> Option<Real> {
         Some(match &self.ends {
-            SpringEnds::Anchor { bodies, anchor } => {
-                bodies.iter().map(|&b| self.energy(k.position(b), anchor)).sum()
-            }
+            SpringEnds::Anchor { bodies, anchor } => bodies
+                .iter()
+                .map(|&b| self.energy(k.position(b), anchor))
+                .sum(),
             SpringEnds::Pair(a, b) => self.energy(k.position(*a), k.position(*b)),
         })
     }

@@ -48,8 +48,12 @@ impl Method {
     pub fn description(self) -> &'static str {
         match self {
             Method::Euler => "forward Euler, 1st order",
-            Method::EulerCromer => "Euler-Cromer (semi-implicit Euler: v first, then x with the new v), 1st order, symplectic",
-            Method::VelocityVerlet => "velocity Verlet, 2nd order, symplectic for position-only forces",
+            Method::EulerCromer => {
+                "Euler-Cromer (semi-implicit Euler: v first, then x with the new v), 1st order, symplectic"
+            }
+            Method::VelocityVerlet => {
+                "velocity Verlet, 2nd order, symplectic for position-only forces"
+            }
             Method::Rk4 => "classical Runge-Kutta, 4th order",
         }
     }

@@ -35,4 +35,3 @@ pub use state::State;
 pub use stepper::{IntegrateError, StepInfo, Stepper, steps_to_cover};
 pub use system::{OdeSystem, SecondOrderSystem};
 pub use verlet::VelocityVerlet;
-

@@ -20,7 +20,11 @@ impl State {
 
     /// A second-order state from positions and velocities of equal length.
     pub fn from_qv(t: Real, q: &[Real], v: &[Real]) -> Self {
-        assert_eq!(q.len(), v.len(), "positions and velocities differ in length");
+        assert_eq!(
+            q.len(),
+            v.len(),
+            "positions and velocities differ in length"
+        );
         let mut y = Vec::with_capacity(2 * q.len());
         y.extend_from_slice(q);
         y.extend_from_slice(v);

@@ -33,6 +33,9 @@ pub struct Sample<'a> {
     pub eval: &'a Evaluation,
     /// Work done by each force from the start until now.
     pub work: &'a [Real],
+    /// Whether this is a located event (a state interpolated between two steps) rather than a
+    /// step.
+    pub located: bool,
 }
 
 impl Sample<'_> {

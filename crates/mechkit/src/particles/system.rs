@@ -227,7 +227,14 @@ impl ParticleSystem {
 
     /// Evaluates accelerations, the power and potential of each force, and the energies at a
     /// state, into `out` (buffers are resized once and reused).
-    pub fn evaluate(&self, t: Real, q: &[Real], v: &[Real], out: &mut Evaluation, scratch: &mut Vec<Real>) {
+    pub fn evaluate(
+        &self,
+        t: Real,
+        q: &[Real],
+        v: &[Real],
+        out: &mut Evaluation,
+        scratch: &mut Vec<Real>,
+    ) {
         let n = q.len();
         let nf = self.forces.len();
         out.a.resize(n, 0.0);

@@ -102,7 +102,9 @@ impl StateVar {
             StateVar::Position(..) | StateVar::Distance(_) => Dimension::LENGTH,
             StateVar::Velocity(..) | StateVar::Speed(_) => Dimension::VELOCITY,
             StateVar::Mass(_) => Dimension::MASS,
-            StateVar::Acceleration(..) | StateVar::AccelerationMagnitude(_) => Dimension::ACCELERATION,
+            StateVar::Acceleration(..) | StateVar::AccelerationMagnitude(_) => {
+                Dimension::ACCELERATION
+            }
             StateVar::BodyKinetic(_)
             | StateVar::Kinetic
             | StateVar::Potential
@@ -223,7 +225,11 @@ impl NameContext<'_> {
             for (prefix, power) in [("work.", false), ("power.", true)] {
                 if let Some(force) = name.strip_prefix(prefix) {
                     let i = self.forces.iter().position(|f| f == force)?;
-                    return Some(if power { StateVar::Power(i) } else { StateVar::Work(i) });
+                    return Some(if power {
+                        StateVar::Power(i)
+                    } else {
+                        StateVar::Work(i)
+                    });
                 }
             }
         }
@@ -445,7 +451,13 @@ impl StateExpr {
     }
 
     /// Evaluates on a sample.
-    pub fn eval_sample(&self, s: &Sample<'_>, dim: usize, mass: &[Real], local: Option<usize>) -> Real {
+    pub fn eval_sample(
+        &self,
+        s: &Sample<'_>,
+        dim: usize,
+        mass: &[Real],
+        local: Option<usize>,
+    ) -> Real {
         self.eval_with(|v| v.value(s, dim, mass, local))
     }
 }
@@ -454,7 +466,12 @@ impl StateExpr {
 mod tests {
     use super::*;
 
-    fn ctx<'a>(bodies: &'a [String], forces: &'a [String], constants: &'a [(String, Real, Dim)], level: VarLevel) -> NameContext<'a> {
+    fn ctx<'a>(
+        bodies: &'a [String],
+        forces: &'a [String],
+        constants: &'a [(String, Real, Dim)],
+        level: VarLevel,
+    ) -> NameContext<'a> {
         NameContext {
             dim: 2,
             bodies,
@@ -472,11 +489,17 @@ mod tests {
         let c = ctx(&bodies, &forces, &[], VarLevel::Derived);
         assert_eq!(c.resolve("y"), Some(StateVar::Position(BodyRef::Local, 1)));
         assert_eq!(c.resolve("z"), None);
-        assert_eq!(c.resolve("moon.vx"), Some(StateVar::Velocity(BodyRef::Index(1), 0)));
+        assert_eq!(
+            c.resolve("moon.vx"),
+            Some(StateVar::Velocity(BodyRef::Index(1), 0))
+        );
         assert_eq!(c.resolve("v"), Some(StateVar::Speed(BodyRef::Local)));
         assert_eq!(c.resolve("work.air"), Some(StateVar::Work(0)));
         assert_eq!(c.resolve("work.wind"), None);
-        assert_eq!(c.resolve("ball.K"), Some(StateVar::BodyKinetic(BodyRef::Index(0))));
+        assert_eq!(
+            c.resolve("ball.K"),
+            Some(StateVar::BodyKinetic(BodyRef::Index(0)))
+        );
         let k = ctx(&bodies, &forces, &[], VarLevel::Kinematic);
         assert_eq!(k.resolve("ax"), None);
         assert_eq!(k.resolve("K"), None);
@@ -503,7 +526,9 @@ mod tests {
     fn errors_suggest_and_describe() {
         let bodies = vec!["ball".to_string()];
         let c = ctx(&bodies, &[], &[], VarLevel::Kinematic);
-        let err = c.compile(&Formula::parse("-ball.vxx").unwrap()).unwrap_err();
+        let err = c
+            .compile(&Formula::parse("-ball.vxx").unwrap())
+            .unwrap_err();
         let text = err.to_string();
         assert!(text.contains("did you mean `ball.vx`"), "{text}");
         let err = c.compile(&Formula::parse("K").unwrap()).unwrap_err();

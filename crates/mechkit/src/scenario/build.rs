@@ -5,17 +5,17 @@ use mechkit_expr::units::{Dimension, Quantity};
 use mechkit_expr::{BinOp, Dim, Expr, Formula, nearest};
 use toml::de::{DeTable, DeValue};
 
+use super::Scenario;
 use super::doc::{Source, Table};
 use super::error::{ErrorKind, ScenarioError};
 use super::forces::{ForceContext, build_force};
 use super::observe::Observable;
 use super::plot::PlotSpec;
 use super::values::{Constant, ValueEnv, formula_error, resolve, scalar, vector};
-use super::Scenario;
 use crate::Real;
 use crate::ode::{Method, State};
 use crate::particles::{BodyRef, NameContext, ParticleSystem, StateExpr, VarLevel};
-use crate::simulate::{Condition, Reduction};
+use crate::simulate::Condition;
 
 const TOP_KEYS: &[&str] = &[
     "title",
@@ -35,23 +35,38 @@ const STOP_KEYS: &[&str] = &["when", "t_max", "max_steps"];
 const OUTPUT_KEYS: &[&str] = &["every", "plots"];
 
 /// State names a constant may not take (formulas would become ambiguous).
-const RESERVED: &[&str] = &["t", "x", "y", "z", "vx", "vy", "vz", "v", "r", "speed", "ax", "ay", "az"];
+const RESERVED: &[&str] = &[
+    "t", "x", "y", "z", "vx", "vy", "vz", "v", "r", "speed", "ax", "ay", "az",
+];
 
 /// Methods that exist in the design but not yet in this build.
-const PLANNED_METHODS: &[&str] = &["yoshida4", "dopri5", "dop853", "rk45", "forest-ruth", "pefrl"];
+const PLANNED_METHODS: &[&str] = &[
+    "yoshida4",
+    "dopri5",
+    "dop853",
+    "rk45",
+    "forest-ruth",
+    "pefrl",
+];
 
 pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
     let src = Source { name, text };
     let doc = DeTable::parse(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
-        src.error(ErrorKind::Syntax, format!("invalid TOML: {}", e.message().trim()), span)
-            .with_hint("see docs/scenario.md for the file format")
+        src.error(
+            ErrorKind::Syntax,
+            format!("invalid TOML: {}", e.message().trim()),
+            span,
+        )
+        .with_hint("see docs/scenario.md for the file format")
     })?;
     let root = Table::new(src, doc.get_ref(), 0..0, "the scenario");
     root.check_keys(TOP_KEYS)?;
     let mut warnings = Vec::new();
 
-    let title = root.string("title")?.map_or_else(|| name.to_string(), |(s, _)| s.to_string());
+    let title = root
+        .string("title")?
+        .map_or_else(|| name.to_string(), |(s, _)| s.to_string());
     if let Some(d) = root.get("description")
         && !matches!(d.get_ref(), DeValue::String(_))
     {
@@ -61,15 +76,22 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         None => 1,
         Some((d @ 1..=3, _)) => d as usize,
         Some((d, span)) => {
-            return Err(src
-                .error(ErrorKind::Invalid, format!("`dimensions` must be 1, 2 or 3, not {d}"), span));
+            return Err(src.error(
+                ErrorKind::Invalid,
+                format!("`dimensions` must be 1, 2 or 3, not {d}"),
+                span,
+            ));
         }
     };
 
     let constants = constants(&root)?;
     let (bodies, masses, q, v) = bodies(&root, dim, &constants)?;
     for (n, value, _) in &constants {
-        if n == "m" && masses.iter().any(|m| (m - value).abs() > 1e-12 * value.abs()) {
+        if n == "m"
+            && masses
+                .iter()
+                .any(|m| (m - value).abs() > 1e-12 * value.abs())
+        {
             warnings.push(format!(
                 "the constant `m` = {value} kg hides the body mass `m` in formulas, and some body has a different mass"
             ));
@@ -91,8 +113,14 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         let f = build_force(t, &ctx, i)?;
         if force_names.iter().any(|n| n == f.name()) {
             return Err(src
-                .error(ErrorKind::Invalid, format!("two forces are named `{}`", f.name()), t.key_span("name"))
-                .with_hint("give each [[force]] its own `name`; the energy ledger lists work by name"));
+                .error(
+                    ErrorKind::Invalid,
+                    format!("two forces are named `{}`", f.name()),
+                    t.key_span("name"),
+                )
+                .with_hint(
+                    "give each [[force]] its own `name`; the energy ledger lists work by name",
+                ));
         }
         force_names.push(f.name().to_string());
         builder = builder.boxed_force(f);
@@ -153,7 +181,10 @@ fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
     let mut out: Vec<Constant> = Vec::new();
     for (key, value) in t.table.iter() {
         let name: &str = key.get_ref();
-        let valid = name.chars().next().is_some_and(|c| c.is_alphabetic() || c == '_')
+        let valid = name
+            .chars()
+            .next()
+            .is_some_and(|c| c.is_alphabetic() || c == '_')
             && name.chars().all(|c| c.is_alphanumeric() || c == '_');
         if !valid {
             return Err(t.src.error(
@@ -183,24 +214,42 @@ fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
                 };
                 let f = Formula::parse(text).map_err(|e| formula_error(&t.src, &span, &e))?;
                 for n in f.names() {
-                    if !out.iter().any(|(c, _, _)| c == n) && mechkit_expr::builtin_constant(n).is_none() {
+                    if !out.iter().any(|(c, _, _)| c == n)
+                        && mechkit_expr::builtin_constant(n).is_none()
+                    {
                         let later = t.table.iter().any(|(k, _)| k.get_ref() == n);
                         let hint = if later {
-                            format!("`{n}` is defined further down; a constant may only use the constants above it")
+                            format!(
+                                "`{n}` is defined further down; a constant may only use the constants above it"
+                            )
                         } else {
-                            mechkit_expr::did_you_mean(&nearest(n, out.iter().map(|(c, _, _)| c.as_str())))
-                                .unwrap_or_else(|| "constants may use numbers, units and the constants above them".into())
+                            mechkit_expr::did_you_mean(&nearest(
+                                n,
+                                out.iter().map(|(c, _, _)| c.as_str()),
+                            ))
+                            .unwrap_or_else(|| {
+                                "constants may use numbers, units and the constants above them"
+                                    .into()
+                            })
                         };
                         let span_in = f.span_of(n).unwrap_or(f.full_span());
                         let start = t.src.string_content_start(&span);
                         return Err(t
                             .src
-                            .error(ErrorKind::Formula, format!("undefined name `{n}` in constant `{name}`"), start + span_in.start..start + span_in.end)
+                            .error(
+                                ErrorKind::Formula,
+                                format!("undefined name `{n}` in constant `{name}`"),
+                                start + span_in.start..start + span_in.end,
+                            )
                             .with_hint(hint));
                     }
                 }
                 let d = f
-                    .dimension(&|n| out.iter().find(|(c, _, _)| c == n).map_or(Dim::Unknown, |(_, _, d)| *d))
+                    .dimension(&|n| {
+                        out.iter()
+                            .find(|(c, _, _)| c == n)
+                            .map_or(Dim::Unknown, |(_, _, d)| *d)
+                    })
                     .map_err(|e| formula_error(&t.src, &span, &e))?;
                 let d = if d == Dim::Literal { Dim::Unknown } else { d };
                 let value = f
@@ -211,7 +260,9 @@ fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
             }
         };
         let d = match value.get_ref() {
-            DeValue::String(s) if s.trim().parse::<f64>().is_err() => Quantity::parse(s).map_or(Dim::Unknown, |q| Dim::Known(q.dim)),
+            DeValue::String(s) if s.trim().parse::<f64>().is_err() => {
+                Quantity::parse(s).map_or(Dim::Unknown, |q| Dim::Known(q.dim))
+            }
             _ => Dim::Unknown,
         };
         out.push((name.to_string(), v, d));
@@ -233,7 +284,11 @@ fn constant_dimension(v: &DeValue<'_>) -> Option<Dimension> {
 
 type Bodies = (Vec<String>, Vec<Real>, Vec<Real>, Vec<Real>);
 
-fn bodies(root: &Table<'_, '_>, dim: usize, constants: &[Constant]) -> Result<Bodies, ScenarioError> {
+fn bodies(
+    root: &Table<'_, '_>,
+    dim: usize,
+    constants: &[Constant],
+) -> Result<Bodies, ScenarioError> {
     let tables = root.tables("body")?;
     if tables.is_empty() {
         return Err(ScenarioError::new(ErrorKind::Missing, "the scenario has no [[body]]").with_hint(
@@ -245,34 +300,56 @@ fn bodies(root: &Table<'_, '_>, dim: usize, constants: &[Constant]) -> Result<Bo
         t.check_keys(BODY_KEYS)?;
         let name = match t.string("name")? {
             Some((n, span)) => {
-                let valid = n.chars().next().is_some_and(|c| c.is_alphabetic() || c == '_')
+                let valid = n
+                    .chars()
+                    .next()
+                    .is_some_and(|c| c.is_alphabetic() || c == '_')
                     && n.chars().all(|c| c.is_alphanumeric() || c == '_');
                 if !valid {
                     return Err(t.src.error(ErrorKind::Invalid, format!("body name `{n}` must be a letter or `_` followed by letters, digits or `_` (it is used in formulas as `{n}.x`)"), span));
                 }
                 if ["work", "power"].contains(&n) {
-                    return Err(t.src.error(ErrorKind::Invalid, format!("`{n}` cannot name a body: `{n}.F` means the {n} of force F"), span));
+                    return Err(t.src.error(
+                        ErrorKind::Invalid,
+                        format!("`{n}` cannot name a body: `{n}.F` means the {n} of force F"),
+                        span,
+                    ));
                 }
                 if names.iter().any(|b: &String| b == n) {
-                    return Err(t.src.error(ErrorKind::Invalid, format!("two bodies are named `{n}`"), span));
+                    return Err(t.src.error(
+                        ErrorKind::Invalid,
+                        format!("two bodies are named `{n}`"),
+                        span,
+                    ));
                 }
                 n.to_string()
             }
             None if tables.len() == 1 => "body".to_string(),
             None => format!("body{}", i + 1),
         };
-        let env = ValueEnv { constants, mass: None };
+        let env = ValueEnv {
+            constants,
+            mass: None,
+        };
         let mass = scalar(t, "mass", Dimension::MASS, env)?.ok_or_else(|| {
-            t.missing("mass", "\"1 kg\"").with_hint(format!("every body needs a mass: add `mass = \"1 kg\"` to the body `{name}`"))
+            t.missing("mass", "\"1 kg\"").with_hint(format!(
+                "every body needs a mass: add `mass = \"1 kg\"` to the body `{name}`"
+            ))
         })?;
         if !(mass > 0.0 && mass.is_finite()) {
             return Err(t
                 .src
-                .error(ErrorKind::Invalid, format!("the mass of `{name}` must be positive, not {mass} kg"), t.get("mass").map_or(t.span.clone(), toml::Spanned::span))
+                .error(
+                    ErrorKind::Invalid,
+                    format!("the mass of `{name}` must be positive, not {mass} kg"),
+                    t.get("mass").map_or(t.span.clone(), toml::Spanned::span),
+                )
                 .with_hint("a body's mass is a positive number of kilograms, e.g. \"0.145 kg\""));
         }
-        let x = vector(t, "position", Dimension::LENGTH, dim, env)?.unwrap_or_else(|| vec![0.0; dim]);
-        let u = vector(t, "velocity", Dimension::VELOCITY, dim, env)?.unwrap_or_else(|| vec![0.0; dim]);
+        let x =
+            vector(t, "position", Dimension::LENGTH, dim, env)?.unwrap_or_else(|| vec![0.0; dim]);
+        let u =
+            vector(t, "velocity", Dimension::VELOCITY, dim, env)?.unwrap_or_else(|| vec![0.0; dim]);
         names.push(name);
         masses.push(mass);
         q.extend(x);
@@ -288,7 +365,10 @@ fn integrator(root: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<(Method, Real),
     };
     t.check_keys(INTEGRATOR_KEYS).map_err(|mut e| {
         if e.message.contains("`rtol`") || e.message.contains("`atol`") {
-            e.hint = Some("adaptive step control (rtol/atol) is not in this version yet; give a fixed `dt`".into());
+            e.hint = Some(
+                "adaptive step control (rtol/atol) is not in this version yet; give a fixed `dt`"
+                    .into(),
+            );
         }
         e
     })?;
@@ -298,21 +378,37 @@ fn integrator(root: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<(Method, Real),
             let names: Vec<&str> = Method::ALL.iter().map(|m| m.name()).collect();
             if PLANNED_METHODS.contains(&m) {
                 t.src
-                    .error(ErrorKind::Invalid, format!("the method `{m}` is not available in this version"), span)
+                    .error(
+                        ErrorKind::Invalid,
+                        format!("the method `{m}` is not available in this version"),
+                        span,
+                    )
                     .with_hint(format!("available: {}", names.join(", ")))
             } else {
                 let hint = mechkit_expr::did_you_mean(&nearest(m, names.iter().copied()))
                     .unwrap_or_else(|| format!("available: {}", names.join(", ")));
-                t.src.error(ErrorKind::Invalid, format!("unknown integration method `{m}`"), span).with_hint(hint)
+                t.src
+                    .error(
+                        ErrorKind::Invalid,
+                        format!("unknown integration method `{m}`"),
+                        span,
+                    )
+                    .with_hint(hint)
             }
         })?,
     };
-    let dt = scalar(&t, "dt", Dimension::TIME, env)?
-        .ok_or_else(|| t.missing("dt", "\"1 ms\"").with_hint("add the time step, e.g. `dt = \"1 ms\"`"))?;
+    let dt = scalar(&t, "dt", Dimension::TIME, env)?.ok_or_else(|| {
+        t.missing("dt", "\"1 ms\"")
+            .with_hint("add the time step, e.g. `dt = \"1 ms\"`")
+    })?;
     if !(dt > 0.0 && dt.is_finite()) {
         return Err(t
             .src
-            .error(ErrorKind::Invalid, format!("the time step `dt` must be positive, not {dt} s"), t.get("dt").map_or(t.span.clone(), toml::Spanned::span))
+            .error(
+                ErrorKind::Invalid,
+                format!("the time step `dt` must be positive, not {dt} s"),
+                t.get("dt").map_or(t.span.clone(), toml::Spanned::span),
+            )
             .with_hint("e.g. `dt = \"1 ms\"`"));
     }
     Ok((method, dt))
@@ -320,7 +416,11 @@ fn integrator(root: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<(Method, Real),
 
 type Stop = (Option<Condition>, Option<Real>, Option<u64>);
 
-fn stop(root: &Table<'_, '_>, env: ValueEnv<'_>, names: &NameContext<'_>) -> Result<Stop, ScenarioError> {
+fn stop(
+    root: &Table<'_, '_>,
+    env: ValueEnv<'_>,
+    names: &NameContext<'_>,
+) -> Result<Stop, ScenarioError> {
     let Some(t) = root.table("stop")? else {
         return Ok((None, None, None));
     };
@@ -329,10 +429,18 @@ fn stop(root: &Table<'_, '_>, env: ValueEnv<'_>, names: &NameContext<'_>) -> Res
     if let Some(tm) = t_max
         && !(tm > 0.0 && tm.is_finite())
     {
-        return Err(t.src.error(ErrorKind::Invalid, format!("`t_max` must be positive, not {tm} s"), t.get("t_max").map_or(t.span.clone(), toml::Spanned::span)));
+        return Err(t.src.error(
+            ErrorKind::Invalid,
+            format!("`t_max` must be positive, not {tm} s"),
+            t.get("t_max").map_or(t.span.clone(), toml::Spanned::span),
+        ));
     }
     let max_steps = match t.count("max_steps")? {
-        Some((0, span)) => return Err(t.src.error(ErrorKind::Invalid, "`max_steps` must be at least 1", span)),
+        Some((0, span)) => {
+            return Err(t
+                .src
+                .error(ErrorKind::Invalid, "`max_steps` must be at least 1", span));
+        }
         other => other.map(|(n, _)| n),
     };
     let condition = match t.string("when")? {
@@ -342,13 +450,25 @@ fn stop(root: &Table<'_, '_>, env: ValueEnv<'_>, names: &NameContext<'_>) -> Res
     Ok((condition, t_max, max_steps))
 }
 
-fn compile_state(t: &Table<'_, '_>, f: &Formula, span: &std::ops::Range<usize>, names: &NameContext<'_>) -> Result<StateExpr, ScenarioError> {
-    names.compile(f).map_err(|e| formula_error(&t.src, span, &e))
+fn compile_state(
+    t: &Table<'_, '_>,
+    f: &Formula,
+    span: &std::ops::Range<usize>,
+    names: &NameContext<'_>,
+) -> Result<StateExpr, ScenarioError> {
+    names
+        .compile(f)
+        .map_err(|e| formula_error(&t.src, span, &e))
 }
 
 /// A stop condition: a comparison becomes a continuous event function (`a < b` has
 /// `g = b - a`), anything else a boolean one located by bisection.
-fn condition(t: &Table<'_, '_>, text: &str, span: &std::ops::Range<usize>, names: &NameContext<'_>) -> Result<Condition, ScenarioError> {
+fn condition(
+    t: &Table<'_, '_>,
+    text: &str,
+    span: &std::ops::Range<usize>,
+    names: &NameContext<'_>,
+) -> Result<Condition, ScenarioError> {
     let f = Formula::parse(text).map_err(|e| formula_error(&t.src, span, &e))?;
     let whole = compile_state(t, &f, span, names)?;
     if let Expr::Binary(op, a, b) = f.expr() {
@@ -359,10 +479,24 @@ fn condition(t: &Table<'_, '_>, text: &str, span: &std::ops::Range<usize>, names
                 .with_hint("write the crossing as an inequality, e.g. `x < 0` or `vy < 0`"));
         }
         if op.is_comparison() {
-            let lhs = compile_state(t, &Formula::parse(&a.to_string()).expect("printed expressions re-parse"), span, names)?;
-            let rhs = compile_state(t, &Formula::parse(&b.to_string()).expect("printed expressions re-parse"), span, names)?;
+            let lhs = compile_state(
+                t,
+                &Formula::parse(&a.to_string()).expect("printed expressions re-parse"),
+                span,
+                names,
+            )?;
+            let rhs = compile_state(
+                t,
+                &Formula::parse(&b.to_string()).expect("printed expressions re-parse"),
+                span,
+                names,
+            )?;
             let needs = !(lhs.is_kinematic() && rhs.is_kinematic());
-            let (first, second) = if matches!(op, BinOp::Lt | BinOp::Le) { (rhs, lhs) } else { (lhs, rhs) };
+            let (first, second) = if matches!(op, BinOp::Lt | BinOp::Le) {
+                (rhs, lhs)
+            } else {
+                (lhs, rhs)
+            };
             let inclusive = matches!(op, BinOp::Le | BinOp::Ge);
             return Ok(Condition::from_fn(text, inclusive, needs, move |s, sys| {
                 let (dim, mass) = (sys.dim(), sys.masses());
@@ -372,11 +506,18 @@ fn condition(t: &Table<'_, '_>, text: &str, span: &std::ops::Range<usize>, names
     }
     let needs = !whole.is_kinematic();
     Ok(Condition::from_fn(text, true, needs, move |s, sys| {
-        if whole.eval_sample(s, sys.dim(), sys.masses(), None) != 0.0 { 1.0 } else { -1.0 }
+        if whole.eval_sample(s, sys.dim(), sys.masses(), None) != 0.0 {
+            1.0
+        } else {
+            -1.0
+        }
     }))
 }
 
-fn observe(root: &Table<'_, '_>, names: &NameContext<'_>) -> Result<Vec<Observable>, ScenarioError> {
+fn observe(
+    root: &Table<'_, '_>,
+    names: &NameContext<'_>,
+) -> Result<Vec<Observable>, ScenarioError> {
     let Some(t) = root.table("observe")? else {
         return Ok(Vec::new());
     };
@@ -387,102 +528,68 @@ fn observe(root: &Table<'_, '_>, names: &NameContext<'_>) -> Result<Vec<Observab
             return Err(t.wrong_type(name, value, "a string such as \"max(x)\""));
         };
         let span = value.span();
-        // `max(x)` with one argument is a reduction; anything else is `final(...)`.
-        let (reduction, inner) = match reduction_call(text) {
-            Some((r, inner_text, offset)) => {
-                let inner = Formula::parse(inner_text).map_err(|e| {
-                    let mut e = e;
-                    e.span = e.span.shifted(offset);
-                    e.source = text.to_string();
-                    formula_error(&t.src, &span, &e)
-                })?;
-                (r, inner)
-            }
-            None => (
-                Reduction::Final,
-                Formula::parse(text).map_err(|e| formula_error(&t.src, &span, &e))?,
-            ),
-        };
-        let expr = names.compile(&inner).map_err(|e| {
-            let mut e = e;
-            if let Some((_, _, offset)) = reduction_call(text) {
-                e.span = e.span.shifted(offset);
-                e.source = text.to_string();
-            }
-            formula_error(&t.src, &span, &e)
-        })?;
-        out.push(Observable::new(name.to_string(), text.to_string(), reduction, expr));
+        let o =
+            Observable::compile(name, text, names).map_err(|e| formula_error(&t.src, &span, &e))?;
+        out.push(o);
     }
     Ok(out)
 }
 
-/// `name(inner)` where `name` is a reduction and the parentheses enclose the rest: returns the
-/// reduction, the inner text and its byte offset.
-fn reduction_call(text: &str) -> Option<(Reduction, &str, usize)> {
-    let trimmed_start = text.len() - text.trim_start().len();
-    let t = text.trim();
-    let open = t.find('(')?;
-    let r = Reduction::from_name(t[..open].trim())?;
-    let inner = t[open + 1..].strip_suffix(')')?;
-    // the closing parenthesis must match the opening one
-    let mut depth = 0i32;
-    for c in inner.chars() {
-        depth += match c {
-            '(' => 1,
-            ')' => -1,
-            _ => 0,
-        };
-        if depth < 0 {
-            return None;
-        }
-    }
-    if depth != 0 {
-        return None;
-    }
-    // `max(a, b)` with two arguments is the function, not the reduction
-    let mut depth = 0;
-    for c in inner.chars() {
-        match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            ',' if depth == 0 => return None,
-            _ => {}
-        }
-    }
-    Some((r, inner, trimmed_start + open + 1))
-}
-
-fn output(root: &Table<'_, '_>, names: &NameContext<'_>, dim: usize) -> Result<(u64, Vec<PlotSpec>), ScenarioError> {
+fn output(
+    root: &Table<'_, '_>,
+    names: &NameContext<'_>,
+    dim: usize,
+) -> Result<(u64, Vec<PlotSpec>), ScenarioError> {
     let t = root.table("output")?;
     let every = match &t {
         Some(t) => {
             t.check_keys(OUTPUT_KEYS)?;
             match t.count("every")? {
-                Some((0, span)) => return Err(t.src.error(ErrorKind::Invalid, "`every` must be at least 1", span)),
+                Some((0, span)) => {
+                    return Err(t
+                        .src
+                        .error(ErrorKind::Invalid, "`every` must be at least 1", span));
+                }
                 Some((n, _)) => n,
                 None => 1,
             }
         }
         None => 1,
     };
-    let specs: Vec<(String, Option<std::ops::Range<usize>>)> = match t.as_ref().and_then(|t| t.get("plots")) {
-        Some(v) => match v.get_ref() {
-            DeValue::Array(items) => items
-                .iter()
-                .map(|item| match item.get_ref() {
-                    DeValue::String(s) => Ok((s.to_string(), Some(item.span()))),
-                    _ => Err(t.as_ref().expect("plots came from the table").wrong_type("plots", item, "a string such as \"x(t)\"")),
-                })
-                .collect::<Result<_, _>>()?,
-            _ => return Err(t.as_ref().expect("plots came from the table").wrong_type("plots", v, "a list such as [\"x(t)\", \"v(t)\"]")),
-        },
-        None => default_plots(dim).into_iter().map(|s| (s.to_string(), None)).collect(),
-    };
+    let specs: Vec<(String, Option<std::ops::Range<usize>>)> =
+        match t.as_ref().and_then(|t| t.get("plots")) {
+            Some(v) => match v.get_ref() {
+                DeValue::Array(items) => items
+                    .iter()
+                    .map(|item| match item.get_ref() {
+                        DeValue::String(s) => Ok((s.to_string(), Some(item.span()))),
+                        _ => Err(t.as_ref().expect("plots came from the table").wrong_type(
+                            "plots",
+                            item,
+                            "a string such as \"x(t)\"",
+                        )),
+                    })
+                    .collect::<Result<_, _>>()?,
+                _ => {
+                    return Err(t.as_ref().expect("plots came from the table").wrong_type(
+                        "plots",
+                        v,
+                        "a list such as [\"x(t)\", \"v(t)\"]",
+                    ));
+                }
+            },
+            None => default_plots(dim)
+                .into_iter()
+                .map(|s| (s.to_string(), None))
+                .collect(),
+        };
     let src = root.src;
     let mut plots = Vec::new();
     for (spec, span) in specs {
         let p = PlotSpec::parse(&spec, names).map_err(|(msg, hint)| match &span {
-            Some(span) => src.error(ErrorKind::Invalid, msg, span.clone()).with_hint(hint),
+            Some(span) => src
+                .error(ErrorKind::Invalid, msg, span.clone())
+                .with_hint(hint),
             None => ScenarioError::new(ErrorKind::Invalid, msg).with_hint(hint),
         })?;
         plots.push(p);

@@ -3,7 +3,7 @@
 
 use std::ops::Range;
 
-use mechkit_expr::{nearest, did_you_mean};
+use mechkit_expr::{did_you_mean, nearest};
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
@@ -45,7 +45,12 @@ impl<'a> Source<'a> {
     }
 
     /// An error at `span`.
-    pub fn error(&self, kind: ErrorKind, message: impl Into<String>, span: Range<usize>) -> ScenarioError {
+    pub fn error(
+        &self,
+        kind: ErrorKind,
+        message: impl Into<String>,
+        span: Range<usize>,
+    ) -> ScenarioError {
         ScenarioError {
             kind,
             message: message.into(),
@@ -100,7 +105,12 @@ pub(crate) struct Table<'s, 'a> {
 }
 
 impl<'s, 'a> Table<'s, 'a> {
-    pub fn new(src: Source<'s>, table: &'s DeTable<'a>, span: Range<usize>, what: impl Into<String>) -> Self {
+    pub fn new(
+        src: Source<'s>,
+        table: &'s DeTable<'a>,
+        span: Range<usize>,
+        what: impl Into<String>,
+    ) -> Self {
         Self {
             src,
             table,
@@ -143,16 +153,15 @@ impl<'s, 'a> Table<'s, 'a> {
     }
 
     pub fn wrong_type(&self, key: &str, v: &Value<'a>, expected: &str) -> ScenarioError {
-        self.src
-            .error(
-                ErrorKind::WrongType,
-                format!(
-                    "`{key}` in {} must be {expected}, not {}",
-                    self.what,
-                    type_name(v.get_ref())
-                ),
-                v.span(),
-            )
+        self.src.error(
+            ErrorKind::WrongType,
+            format!(
+                "`{key}` in {} must be {expected}, not {}",
+                self.what,
+                type_name(v.get_ref())
+            ),
+            v.span(),
+        )
     }
 
     pub fn missing(&self, key: &str, example: &str) -> ScenarioError {
@@ -200,7 +209,9 @@ impl<'s, 'a> Table<'s, 'a> {
         match self.get(key) {
             None => Ok(None),
             Some(v) => match v.get_ref() {
-                DeValue::Table(t) => Ok(Some(Table::new(self.src, t, v.span(), format!("[{key}]")))),
+                DeValue::Table(t) => {
+                    Ok(Some(Table::new(self.src, t, v.span(), format!("[{key}]"))))
+                }
                 _ => Err(self.wrong_type(key, v, &format!("a table (`[{key}]`)"))),
             },
         }
@@ -224,7 +235,9 @@ impl<'s, 'a> Table<'s, 'a> {
                         _ => Err(self.wrong_type(key, item, &format!("a table (`[[{key}]]`)"))),
                     })
                     .collect(),
-                DeValue::Table(t) => Ok(vec![Table::new(self.src, t, v.span(), format!("[{key}]"))]),
+                DeValue::Table(t) => {
+                    Ok(vec![Table::new(self.src, t, v.span(), format!("[{key}]"))])
+                }
                 _ => Err(self.wrong_type(key, v, &format!("an array of tables (`[[{key}]]`)"))),
             },
         }

@@ -2,8 +2,8 @@
 
 use std::ops::Range;
 
-use mechkit_expr::units::Dimension;
 use mechkit_expr::Formula;
+use mechkit_expr::units::Dimension;
 use mechkit_expr::units::Quantity;
 use toml::de::DeValue;
 
@@ -19,8 +19,16 @@ use crate::particles::{BodyRef, NameContext, VarLevel};
 
 /// The force kinds and the parameters each takes (besides `name`, `kind`, `on`).
 pub(crate) const KINDS: &[(&str, &[&str], &str)] = &[
-    ("constant", &["F"], "a constant force F (vector; scalar in 1-D)"),
-    ("uniform-gravity", &["g"], "-m g along the last axis (default g = 9.81 m/s^2)"),
+    (
+        "constant",
+        &["F"],
+        "a constant force F (vector; scalar in 1-D)",
+    ),
+    (
+        "uniform-gravity",
+        &["g"],
+        "-m g along the last axis (default g = 9.81 m/s^2)",
+    ),
     (
         "newtonian-gravity",
         &["GM", "M", "G", "center", "between"],
@@ -33,7 +41,11 @@ pub(crate) const KINDS: &[(&str, &[&str], &str)] = &[
     ),
     ("linear-drag", &["b", "wind"], "-b (v - wind)"),
     ("quadratic-drag", &["D", "wind"], "-D |v - wind| (v - wind)"),
-    ("expression", &["F"], "a formula of t, x, v, m, … per component"),
+    (
+        "expression",
+        &["F"],
+        "a formula of t, x, v, m, … per component",
+    ),
 ];
 
 const ALIASES: &[(&str, &str)] = &[
@@ -61,7 +73,12 @@ impl ForceContext<'_> {
         }
     }
 
-    fn body(&self, t: &Table<'_, '_>, name: &str, span: Range<usize>) -> Result<usize, ScenarioError> {
+    fn body(
+        &self,
+        t: &Table<'_, '_>,
+        name: &str,
+        span: Range<usize>,
+    ) -> Result<usize, ScenarioError> {
         self.bodies.iter().position(|b| b == name).ok_or_else(|| {
             let hint = mechkit_expr::did_you_mean(&mechkit_expr::nearest(
                 name,
@@ -69,7 +86,11 @@ impl ForceContext<'_> {
             ))
             .unwrap_or_else(|| format!("the bodies are: {}", self.bodies.join(", ")));
             t.src
-                .error(ErrorKind::Invalid, format!("there is no body named `{name}`"), span)
+                .error(
+                    ErrorKind::Invalid,
+                    format!("there is no body named `{name}`"),
+                    span,
+                )
                 .with_hint(hint)
         })
     }
@@ -83,7 +104,11 @@ impl ForceContext<'_> {
         for (name, span) in list {
             let b = self.body(t, name, span.clone())?;
             if out.contains(&b) {
-                return Err(t.src.error(ErrorKind::Invalid, format!("`{name}` is listed twice"), span));
+                return Err(t.src.error(
+                    ErrorKind::Invalid,
+                    format!("`{name}` is listed twice"),
+                    span,
+                ));
             }
             out.push(b);
         }
@@ -100,7 +125,11 @@ fn canonical_kind(kind: &str) -> Option<&'static str> {
 }
 
 /// Reads one `[[force]]` table.
-pub(crate) fn build_force(t: &Table<'_, '_>, ctx: &ForceContext<'_>, index: usize) -> Result<Box<dyn Force>, ScenarioError> {
+pub(crate) fn build_force(
+    t: &Table<'_, '_>,
+    ctx: &ForceContext<'_>,
+    index: usize,
+) -> Result<Box<dyn Force>, ScenarioError> {
     let (kind_text, kind_span) = t.string("kind")?.ok_or_else(|| {
         let kinds: Vec<&str> = KINDS.iter().map(|(k, _, _)| *k).collect();
         t.missing("kind", "\"uniform-gravity\"")
@@ -108,27 +137,37 @@ pub(crate) fn build_force(t: &Table<'_, '_>, ctx: &ForceContext<'_>, index: usiz
     })?;
     let kind = canonical_kind(kind_text).ok_or_else(|| {
         let kinds: Vec<&str> = KINDS.iter().map(|(k, _, _)| *k).collect();
-        let hint = mechkit_expr::did_you_mean(&mechkit_expr::nearest(kind_text, kinds.iter().copied()))
-            .unwrap_or_else(|| format!("kinds: {}", kinds.join(", ")));
+        let hint =
+            mechkit_expr::did_you_mean(&mechkit_expr::nearest(kind_text, kinds.iter().copied()))
+                .unwrap_or_else(|| format!("kinds: {}", kinds.join(", ")));
         t.src
-            .error(ErrorKind::Invalid, format!("unknown force kind `{kind_text}`"), kind_span)
+            .error(
+                ErrorKind::Invalid,
+                format!("unknown force kind `{kind_text}`"),
+                kind_span,
+            )
             .with_hint(hint)
     })?;
-    let params = KINDS.iter().find(|(k, _, _)| *k == kind).map(|(_, p, _)| *p).unwrap_or(&[]);
+    let params = KINDS
+        .iter()
+        .find(|(k, _, _)| *k == kind)
+        .map(|(_, p, _)| *p)
+        .unwrap_or(&[]);
     let mut allowed = vec!["name", "kind", "on"];
     allowed.extend_from_slice(params);
     t.check_keys(&allowed).map_err(|mut e| {
         if e.hint.as_deref().is_none_or(|h| h.starts_with("the keys")) {
-            e.hint = Some(format!(
-                "a `{kind}` force takes: {}",
-                allowed.join(", ")
-            ));
+            e.hint = Some(format!("a `{kind}` force takes: {}", allowed.join(", ")));
         }
         e
     })?;
     let name = match t.string("name")? {
         Some((n, span)) => {
-            if n.is_empty() || !n.chars().all(|c| c.is_alphanumeric() || c == '_' || c == '-') {
+            if n.is_empty()
+                || !n
+                    .chars()
+                    .all(|c| c.is_alphanumeric() || c == '_' || c == '-')
+            {
                 return Err(t.src.error(
                     ErrorKind::Invalid,
                     format!("force name `{n}` must be letters, digits, `_` or `-`"),
@@ -138,7 +177,11 @@ pub(crate) fn build_force(t: &Table<'_, '_>, ctx: &ForceContext<'_>, index: usiz
             n.to_string()
         }
         None if index == 0 => kind.split('-').next_back().unwrap_or(kind).to_string(),
-        None => format!("{}{}", kind.split('-').next_back().unwrap_or(kind), index + 1),
+        None => format!(
+            "{}{}",
+            kind.split('-').next_back().unwrap_or(kind),
+            index + 1
+        ),
     };
     let all: Vec<usize> = (0..ctx.bodies.len()).collect();
     let on = ctx.body_list(t, "on")?;
@@ -190,7 +233,11 @@ pub(crate) fn build_force(t: &Table<'_, '_>, ctx: &ForceContext<'_>, index: usiz
     })
 }
 
-fn formula_components(t: &Table<'_, '_>, key: &str, dim: usize) -> Result<Option<Vec<(String, Range<usize>)>>, ScenarioError> {
+fn formula_components(
+    t: &Table<'_, '_>,
+    key: &str,
+    dim: usize,
+) -> Result<Option<Vec<(String, Range<usize>)>>, ScenarioError> {
     let Some(v) = t.get(key) else {
         return Ok(None);
     };
@@ -214,13 +261,19 @@ fn formula_components(t: &Table<'_, '_>, key: &str, dim: usize) -> Result<Option
             .src
             .error(
                 ErrorKind::Invalid,
-                format!("`{key}` has {} components, but the scenario has {dim} dimensions", items.len()),
+                format!(
+                    "`{key}` has {} components, but the scenario has {dim} dimensions",
+                    items.len()
+                ),
                 v.span(),
             )
             .with_hint(if dim == 1 {
                 format!("write `{key} = \"…\"`")
             } else {
-                format!("write one formula per component: `{key} = [{}]`", vec!["\"…\""; dim].join(", "))
+                format!(
+                    "write one formula per component: `{key} = [{}]`",
+                    vec!["\"…\""; dim].join(", ")
+                )
             }));
     }
     Ok(Some(items))
@@ -247,7 +300,9 @@ fn compile_components(
     let mut out = Vec::new();
     for (text, span) in items {
         let f = Formula::parse(&text).map_err(|e| formula_error(&t.src, &span, &e))?;
-        let expr = names.compile(&f).map_err(|e| formula_error(&t.src, &span, &e))?;
+        let expr = names
+            .compile(&f)
+            .map_err(|e| formula_error(&t.src, &span, &e))?;
         f.expect_dimension(want, what, &|n| names.dim_of(n))
             .map_err(|e| formula_error(&t.src, &span, &e))?;
         out.push(expr);
@@ -267,12 +322,20 @@ fn wind(t: &Table<'_, '_>, ctx: &ForceContext<'_>) -> Result<Wind, ScenarioError
     };
     if t.get("wind").is_some_and(quantities) {
         let w = vector(t, "wind", Dimension::VELOCITY, ctx.dim, ctx.env(None))?.unwrap_or_default();
-        return Ok(if w.iter().all(|x| *x == 0.0) { Wind::Calm } else { Wind::Constant(w) });
+        return Ok(if w.iter().all(|x| *x == 0.0) {
+            Wind::Calm
+        } else {
+            Wind::Constant(w)
+        });
     }
     match compile_components(t, ctx, "wind", Dimension::VELOCITY, "the wind")? {
         None => Ok(Wind::Calm),
         Some(exprs) => {
-            if let Some(c) = exprs.iter().map(|e| e.as_constant()).collect::<Option<Vec<Real>>>() {
+            if let Some(c) = exprs
+                .iter()
+                .map(|e| e.as_constant())
+                .collect::<Option<Vec<Real>>>()
+            {
                 return Ok(Wind::Constant(c));
             }
             if exprs.iter().any(|e| e.reads_velocity()) {
@@ -287,9 +350,21 @@ fn wind(t: &Table<'_, '_>, ctx: &ForceContext<'_>) -> Result<Wind, ScenarioError
     }
 }
 
-fn expression(t: &Table<'_, '_>, ctx: &ForceContext<'_>, name: String, targets: Vec<usize>) -> Result<Box<dyn Force>, ScenarioError> {
+fn expression(
+    t: &Table<'_, '_>,
+    ctx: &ForceContext<'_>,
+    name: String,
+    targets: Vec<usize>,
+) -> Result<Box<dyn Force>, ScenarioError> {
     let comps = compile_components(t, ctx, "F", Dimension::FORCE, "a force")?.ok_or_else(|| {
-        t.missing("F", if ctx.dim == 1 { "\"-k*x\"" } else { "[\"-k*x\", \"-k*y\"]" })
+        t.missing(
+            "F",
+            if ctx.dim == 1 {
+                "\"-k*x\""
+            } else {
+                "[\"-k*x\", \"-k*y\"]"
+            },
+        )
     })?;
     Ok(Box::new(ExpressionForce::new(name, targets, comps)))
 }
@@ -313,15 +388,30 @@ fn newtonian(
             }
         }
         if between.len() < 2 {
-            return Err(t.src.error(ErrorKind::Invalid, "`between` needs at least two bodies", t.key_span("between")));
+            return Err(t.src.error(
+                ErrorKind::Invalid,
+                "`between` needs at least two bodies",
+                t.key_span("between"),
+            ));
         }
-        return Ok(Box::new(NewtonianGravity::mutual(name, between, g.unwrap_or(NewtonianGravity::G))));
+        return Ok(Box::new(NewtonianGravity::mutual(
+            name,
+            between,
+            g.unwrap_or(NewtonianGravity::G),
+        )));
     }
-    let gm = match (scalar(t, "GM", Dimension::GRAVITATIONAL_PARAMETER, env)?, scalar(t, "M", Dimension::MASS, env)?) {
+    let gm = match (
+        scalar(t, "GM", Dimension::GRAVITATIONAL_PARAMETER, env)?,
+        scalar(t, "M", Dimension::MASS, env)?,
+    ) {
         (Some(gm), None) => gm,
         (None, Some(m)) => g.unwrap_or(NewtonianGravity::G) * m,
         (Some(_), Some(_)) => {
-            return Err(t.src.error(ErrorKind::Invalid, "give either `GM` or `M`, not both", t.key_span("M")));
+            return Err(t.src.error(
+                ErrorKind::Invalid,
+                "give either `GM` or `M`, not both",
+                t.key_span("M"),
+            ));
         }
         (None, None) => {
             return Err(t
@@ -329,9 +419,12 @@ fn newtonian(
                 .with_hint("give the attracting mass as `GM` (m^3/s^2) or `M` (kg, with G defaulting to 6.6743e-11), or write `between = [\"a\", \"b\"]` for mutual attraction"));
         }
     };
-    let center = vector(t, "center", Dimension::LENGTH, ctx.dim, env)?.unwrap_or_else(|| vec![0.0; ctx.dim]);
+    let center =
+        vector(t, "center", Dimension::LENGTH, ctx.dim, env)?.unwrap_or_else(|| vec![0.0; ctx.dim]);
     let _ = on;
-    Ok(Box::new(NewtonianGravity::fixed_centre(name, targets, gm, center)))
+    Ok(Box::new(NewtonianGravity::fixed_centre(
+        name, targets, gm, center,
+    )))
 }
 
 fn spring(
@@ -345,7 +438,11 @@ fn spring(
     let k = required_scalar(t, "k", Dimension::STIFFNESS, env)?;
     let rest = scalar(t, "rest_length", Dimension::LENGTH, env)?.unwrap_or(0.0);
     if rest < 0.0 {
-        return Err(t.src.error(ErrorKind::Invalid, format!("`rest_length` must not be negative (it is {rest} m)"), t.key_span("rest_length")));
+        return Err(t.src.error(
+            ErrorKind::Invalid,
+            format!("`rest_length` must not be negative (it is {rest} m)"),
+            t.key_span("rest_length"),
+        ));
     }
     let ends = if let Some(between) = ctx.body_list(t, "between")? {
         if on.is_some() || t.get("anchor").is_some() {
@@ -360,13 +457,24 @@ fn spring(
             _ => {
                 return Err(t
                     .src
-                    .error(ErrorKind::Invalid, format!("a spring joins exactly two bodies, `between` lists {}", between.len()), t.key_span("between"))
+                    .error(
+                        ErrorKind::Invalid,
+                        format!(
+                            "a spring joins exactly two bodies, `between` lists {}",
+                            between.len()
+                        ),
+                        t.key_span("between"),
+                    )
                     .with_hint("add one [[force]] per spring"));
             }
         }
     } else {
-        let anchor = vector(t, "anchor", Dimension::LENGTH, ctx.dim, env)?.unwrap_or_else(|| vec![0.0; ctx.dim]);
-        SpringEnds::Anchor { bodies: targets, anchor }
+        let anchor = vector(t, "anchor", Dimension::LENGTH, ctx.dim, env)?
+            .unwrap_or_else(|| vec![0.0; ctx.dim]);
+        SpringEnds::Anchor {
+            bodies: targets,
+            anchor,
+        }
     };
     Ok(Box::new(Spring::new(name, k, rest, ends)))
 }

@@ -109,8 +109,11 @@ impl Scenario {
     /// Reads and checks a scenario file.
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
         let text = std::fs::read_to_string(path).map_err(|e| {
-            ScenarioError::new(ErrorKind::Io, format!("cannot read {}: {e}", path.display()))
-                .with_hint("check the file name")
+            ScenarioError::new(
+                ErrorKind::Io,
+                format!("cannot read {}: {e}", path.display()),
+            )
+            .with_hint("check the file name")
         })?;
         Scenario::from_str(&path.display().to_string(), &text)
     }

@@ -1,7 +1,11 @@
-//! `[observe]`: named reductions of formulas over every sample of a run.
+//! `[observe]`: named results of a run. Each is a formula of reductions over the run's samples:
+//! `max(x)`, `final(v)`, `max(x) - min(x)`, `initial(U) - final(U)`. A formula without any
+//! reduction is reduced with `final`.
+
+use mechkit_expr::{Formula, MapScope, Program};
 
 use crate::Real;
-use crate::particles::{Sample, StateExpr};
+use crate::particles::{NameContext, Sample, StateExpr};
 use crate::simulate::{Observer, ObserverError, Reducer, Reduction};
 
 /// One `[observe]` entry.
@@ -9,33 +13,180 @@ use crate::simulate::{Observer, ObserverError, Reducer, Reduction};
 pub struct Observable {
     /// Its name (the key).
     pub name: String,
-    /// The text as written, e.g. `max(x)`.
+    /// The text as written, e.g. `max(x) - min(x)`.
     pub source: String,
-    /// How it reduces.
-    pub reduction: Reduction,
-    expr: StateExpr,
+    parts: Vec<(Reduction, StateExpr)>,
+    outer: Program,
 }
 
 impl Observable {
-    pub(crate) fn new(name: String, source: String, reduction: Reduction, expr: StateExpr) -> Self {
-        Self {
-            name,
-            source,
-            reduction,
-            expr,
-        }
+    /// The reductions it combines.
+    pub fn parts(&self) -> &[(Reduction, StateExpr)] {
+        &self.parts
     }
 
-    /// The formula being reduced.
-    pub fn expr(&self) -> &StateExpr {
-        &self.expr
+    /// Compiles `text` against the scenario's names.
+    pub(crate) fn compile(
+        name: &str,
+        text: &str,
+        names: &NameContext<'_>,
+    ) -> Result<Observable, mechkit_expr::ExprError> {
+        let calls = extract_reductions(text)?;
+        if calls.is_empty() {
+            let f = Formula::parse(text)?;
+            let expr = names.compile(&f)?;
+            return Ok(Observable {
+                name: name.to_string(),
+                source: text.to_string(),
+                parts: vec![(Reduction::Final, expr)],
+                outer: Formula::parse("_r0")?.compile(&MapScope::new().slot("_r0", 0))?,
+            });
+        }
+        let mut outer_text = text.to_string();
+        let mut parts = Vec::new();
+        let mut scope = MapScope::new();
+        for (k, call) in calls.iter().enumerate() {
+            let inner = Formula::parse(&text[call.inner.clone()])
+                .map_err(|e| shift(e, text, call.inner.start))?;
+            let expr = names
+                .compile(&inner)
+                .map_err(|e| shift(e, text, call.inner.start))?;
+            parts.push((call.reduction, expr));
+            let mut placeholder = format!("_r{k}");
+            let width = call.whole.len();
+            while placeholder.len() < width {
+                placeholder.push('_');
+            }
+            outer_text.replace_range(call.whole.clone(), &placeholder);
+            scope.insert(&placeholder, mechkit_expr::Binding::Slot(k));
+        }
+        for (c, v, _) in names.constants {
+            scope.insert(c, mechkit_expr::Binding::Const(*v));
+        }
+        let outer = Formula::parse(&outer_text).map_err(|e| restore(e, text))?;
+        for n in outer.names() {
+            if names.resolve(n).is_some() && names.constants.iter().all(|(c, _, _)| c != n) {
+                let span = outer.span_of(n).unwrap_or(outer.full_span());
+                return Err(mechkit_expr::ExprError::new(
+                    mechkit_expr::ExprErrorKind::UndefinedName {
+                        name: n.to_string(),
+                        suggestions: vec![format!("final({n})")],
+                        context: Some(format!(
+                            "`{n}` changes during the run: use it inside a reduction such as final({n}) or max({n})"
+                        )),
+                    },
+                    span,
+                    text,
+                ));
+            }
+        }
+        let outer = outer.compile(&scope).map_err(|e| restore(e, text))?;
+        Ok(Observable {
+            name: name.to_string(),
+            source: text.to_string(),
+            parts,
+            outer,
+        })
     }
+
+    /// The result from the reduced values of its parts.
+    pub fn value(&self, reduced: &[Real]) -> Real {
+        self.outer.eval(reduced)
+    }
+}
+
+fn shift(mut e: mechkit_expr::ExprError, text: &str, offset: usize) -> mechkit_expr::ExprError {
+    e.span = e.span.shifted(offset);
+    e.source = text.to_string();
+    e
+}
+
+fn restore(mut e: mechkit_expr::ExprError, text: &str) -> mechkit_expr::ExprError {
+    e.source = text.to_string();
+    e
+}
+
+/// A reduction call found in the text.
+struct Call {
+    reduction: Reduction,
+    whole: std::ops::Range<usize>,
+    inner: std::ops::Range<usize>,
+}
+
+/// Finds the reduction calls (`max(x)` with one argument; `max(a, b)` is the function).
+fn extract_reductions(text: &str) -> Result<Vec<Call>, mechkit_expr::ExprError> {
+    let b = text.as_bytes();
+    let is_ident = |c: u8| c.is_ascii_alphanumeric() || c == b'_' || c == b'.';
+    let mut out: Vec<Call> = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        if !(b[i].is_ascii_alphabetic() || b[i] == b'_') || (i > 0 && is_ident(b[i - 1])) {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < b.len() && is_ident(b[i]) {
+            i += 1;
+        }
+        let Some(reduction) = Reduction::from_name(&text[start..i]) else {
+            continue;
+        };
+        let mut j = i;
+        while j < b.len() && b[j] == b' ' {
+            j += 1;
+        }
+        if j >= b.len() || b[j] != b'(' {
+            continue;
+        }
+        let open = j;
+        let (mut depth, mut top_comma, mut close) = (0i32, false, None);
+        for (k, &c) in b.iter().enumerate().skip(open) {
+            match c {
+                b'(' => depth += 1,
+                b')' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        close = Some(k);
+                        break;
+                    }
+                }
+                b',' if depth == 1 => top_comma = true,
+                _ => {}
+            }
+        }
+        let Some(close) = close else {
+            break; // the parser reports the unclosed parenthesis
+        };
+        if top_comma {
+            continue; // min(a, b): the function; look inside it for reductions
+        }
+        if let Some(outer) = out
+            .iter()
+            .find(|c| c.whole.start <= start && close < c.whole.end)
+        {
+            return Err(mechkit_expr::ExprError::new(
+                mechkit_expr::ExprErrorKind::UnexpectedToken {
+                    found: format!("`{}` inside `{}`", &text[start..i], outer.reduction.name()),
+                    expected: "reductions side by side, not nested".into(),
+                },
+                mechkit_expr::Span::new(start, i),
+                text,
+            ));
+        }
+        out.push(Call {
+            reduction,
+            whole: start..close + 1,
+            inner: open + 1..close,
+        });
+        i = open + 1;
+    }
+    Ok(out)
 }
 
 /// Evaluates every observable on every sample.
 pub(crate) struct ObservableSet<'a> {
     items: &'a [Observable],
-    reducers: Vec<Reducer>,
+    reducers: Vec<Vec<Reducer>>,
     dim: usize,
     mass: &'a [Real],
 }
@@ -44,7 +195,10 @@ impl<'a> ObservableSet<'a> {
     pub fn new(items: &'a [Observable], dim: usize, mass: &'a [Real]) -> Self {
         Self {
             items,
-            reducers: items.iter().map(|o| Reducer::new(o.reduction)).collect(),
+            reducers: items
+                .iter()
+                .map(|o| o.parts.iter().map(|(r, _)| Reducer::new(*r)).collect())
+                .collect(),
             dim,
             mass,
         }
@@ -55,16 +209,39 @@ impl<'a> ObservableSet<'a> {
         self.items
             .iter()
             .zip(&self.reducers)
-            .map(|(o, r)| (o.name.clone(), r.value()))
+            .map(|(o, rs)| {
+                let reduced: Vec<Real> = rs.iter().map(Reducer::value).collect();
+                (o.name.clone(), o.value(&reduced))
+            })
             .collect()
     }
 }
 
 impl Observer for ObservableSet<'_> {
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        for (o, r) in self.items.iter().zip(&mut self.reducers) {
-            r.push(s.t, o.expr.eval_sample(s, self.dim, self.mass, None));
+        for (o, rs) in self.items.iter().zip(&mut self.reducers) {
+            for ((_, expr), r) in o.parts.iter().zip(rs.iter_mut()) {
+                r.push_sample(
+                    s.t,
+                    expr.eval_sample(s, self.dim, self.mass, None),
+                    s.located,
+                );
+            }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_reductions_but_not_functions() {
+        let calls = extract_reductions("max(x) - min(x, y) + final(min(a, b))").unwrap();
+        let found: Vec<_> = calls.iter().map(|c| c.reduction).collect();
+        assert_eq!(found, vec![Reduction::Max, Reduction::Final]);
+        assert!(extract_reductions("max(final(x))").is_err());
+        assert!(extract_reductions("xmax(t)").unwrap().is_empty());
     }
 }

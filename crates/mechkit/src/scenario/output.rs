@@ -24,7 +24,10 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 }
 
 fn temp_path(path: &Path) -> PathBuf {
-    let mut name = path.file_name().map(|n| n.to_os_string()).unwrap_or_default();
+    let mut name = path
+        .file_name()
+        .map(|n| n.to_os_string())
+        .unwrap_or_default();
     name.push(".partial");
     path.with_file_name(name)
 }
@@ -73,7 +76,12 @@ pub(crate) struct CsvWriter {
 }
 
 impl CsvWriter {
-    pub fn create(path: &Path, sys: &ParticleSystem, has_potential: bool, every: u64) -> std::io::Result<Self> {
+    pub fn create(
+        path: &Path,
+        sys: &ParticleSystem,
+        has_potential: bool,
+        every: u64,
+    ) -> std::io::Result<Self> {
         let tmp = temp_path(path);
         let mut out = BufWriter::with_capacity(1 << 16, File::create(&tmp)?);
         writeln!(out, "{}", csv_header(sys, has_potential).join(","))?;
@@ -156,7 +164,14 @@ mod tests {
 
     #[test]
     fn numbers_round_trip_compactly() {
-        for (x, text) in [(0.0, "0"), (2.4, "2.4"), (1.5e-9, "1.5e-9"), (-4.8e-21, "-4.8e-21"), (1e20, "1e20"), (f64::NAN, "NaN")] {
+        for (x, text) in [
+            (0.0, "0"),
+            (2.4, "2.4"),
+            (1.5e-9, "1.5e-9"),
+            (-4.8e-21, "-4.8e-21"),
+            (1e20, "1e20"),
+            (f64::NAN, "NaN"),
+        ] {
             let mut s = String::new();
             push_number(&mut s, x);
             assert_eq!(s, text);

@@ -45,7 +45,10 @@ impl PlotSpec {
     pub fn parse(spec: &str, names: &NameContext<'_>) -> Result<PlotSpec, (String, String)> {
         let usage = "a plot is written `y(x)` with quantities such as t, x, y, vx, v, a, K, U, E: \"x(t)\", \"v(x)\", \"y(x)\", \"energy(t)\"".to_string();
         let s = spec.trim();
-        let open = s.rfind('(').filter(|_| s.ends_with(')')).ok_or_else(|| (format!("`{spec}` is not a plot"), usage.clone()))?;
+        let open = s
+            .rfind('(')
+            .filter(|_| s.ends_with(')'))
+            .ok_or_else(|| (format!("`{spec}` is not a plot"), usage.clone()))?;
         let y_name = s[..open].trim();
         let x_name = s[open + 1..s.len() - 1].trim();
         if y_name.is_empty() || x_name.is_empty() {
@@ -62,8 +65,12 @@ impl PlotSpec {
                 let all = local.all_names();
                 let mut candidates: Vec<&str> = all.iter().map(String::as_str).collect();
                 candidates.push("energy");
-                let hint = mechkit_expr::did_you_mean(&nearest(n, candidates)).unwrap_or(usage.clone());
-                (format!("`{n}` in the plot `{spec}` is not a quantity of this scenario"), hint)
+                let hint =
+                    mechkit_expr::did_you_mean(&nearest(n, candidates)).unwrap_or(usage.clone());
+                (
+                    format!("`{n}` in the plot `{spec}` is not a quantity of this scenario"),
+                    hint,
+                )
             })
         };
         let x = resolve(x_name)?;
@@ -104,7 +111,11 @@ impl PlotSpec {
             });
         }
         let y = resolve(y_name)?;
-        let label = if n_bodies == 1 { names.bodies[0].clone() } else { y_name.to_string() };
+        let label = if n_bodies == 1 {
+            names.bodies[0].clone()
+        } else {
+            y_name.to_string()
+        };
         Ok(PlotSpec {
             spec: spec.to_string(),
             x_label,
@@ -119,7 +130,13 @@ impl PlotSpec {
             .spec
             .trim()
             .chars()
-            .map(|c| if c.is_alphanumeric() || c == '.' || c == '_' || c == '-' { c } else { '_' })
+            .map(|c| {
+                if c.is_alphanumeric() || c == '.' || c == '_' || c == '-' {
+                    c
+                } else {
+                    '_'
+                }
+            })
             .collect();
         while s.ends_with('_') {
             s.pop();
@@ -165,6 +182,9 @@ pub struct PlotData {
     /// The curves (a curve whose values are all NaN, such as `U` without potentials, is left
     /// out).
     pub series: Vec<Series>,
+    /// Whether both axes are positions, so the plot should keep lengths equal (a circle stays
+    /// round).
+    pub equal_aspect: bool,
 }
 
 /// Collects the points of every plot during a run.
@@ -181,7 +201,10 @@ pub(crate) struct PlotRecorder<'a> {
 impl<'a> PlotRecorder<'a> {
     pub fn new(specs: &'a [PlotSpec], every: u64, dim: usize, mass: &'a [Real]) -> Self {
         Self {
-            points: specs.iter().map(|p| vec![Vec::new(); p.series.len()]).collect(),
+            points: specs
+                .iter()
+                .map(|p| vec![Vec::new(); p.series.len()])
+                .collect(),
             specs,
             every: every.max(1),
             stride: 1,
@@ -234,6 +257,9 @@ impl<'a> PlotRecorder<'a> {
                         points: p,
                     })
                     .collect(),
+                equal_aspect: spec.series.iter().all(|s| {
+                    matches!(s.x, StateVar::Position(..)) && matches!(s.y, StateVar::Position(..))
+                }),
             })
             .collect()
     }

@@ -31,8 +31,11 @@ impl RunOutput {
 }
 
 fn io_error(what: &str, path: &Path, e: &std::io::Error) -> ScenarioError {
-    ScenarioError::new(ErrorKind::Io, format!("cannot {what} {}: {e}", path.display()))
-        .with_hint("choose a directory you can write to with --out")
+    ScenarioError::new(
+        ErrorKind::Io,
+        format!("cannot {what} {}: {e}", path.display()),
+    )
+    .with_hint("choose a directory you can write to with --out")
 }
 
 impl Scenario {
@@ -72,7 +75,14 @@ impl Scenario {
                 warnings.push(w.clone());
             }
         }
-        let summary = Summary::new(&self.title, &self.name, &self.system, &report, observables.values(), warnings);
+        let summary = Summary::new(
+            &self.title,
+            &self.name,
+            &self.system,
+            &report,
+            observables.values(),
+            warnings,
+        );
         Ok(RunOutput {
             summary,
             plots: plots.into_data(),
@@ -106,9 +116,14 @@ impl Scenario {
     }
 
     /// Writes `summary.json` into `dir` atomically; returns its path.
-    pub fn write_summary(&self, dir: &Path, summary: &super::Summary) -> Result<PathBuf, ScenarioError> {
+    pub fn write_summary(
+        &self,
+        dir: &Path,
+        summary: &super::Summary,
+    ) -> Result<PathBuf, ScenarioError> {
         let path = dir.join("summary.json");
-        write_atomic(&path, summary.to_json().as_bytes()).map_err(|e| io_error("write", &path, &e))?;
+        write_atomic(&path, summary.to_json().as_bytes())
+            .map_err(|e| io_error("write", &path, &e))?;
         Ok(path)
     }
 }

@@ -211,7 +211,12 @@ impl Summary {
             evaluations: report.evaluations,
             stop_reason: report.stop_reason.name().to_string(),
             bodies,
-            work: l.names().iter().cloned().zip(l.work().iter().copied()).collect(),
+            work: l
+                .names()
+                .iter()
+                .cloned()
+                .zip(l.work().iter().copied())
+                .collect(),
             kinetic_energy: StartEnd {
                 start: Some(l.kinetic_start()),
                 end: Some(l.kinetic_end()),
@@ -294,13 +299,38 @@ impl Summary {
         for (name, w) in &self.work {
             let _ = writeln!(s, "  work of {name:<16} {}", num(*w));
         }
-        let (k0, k1) = (self.kinetic_energy.start.unwrap_or(0.0), self.kinetic_energy.end.unwrap_or(0.0));
-        let _ = writeln!(s, "  kinetic energy         {} → {} (ΔK = {})", num(k0), num(k1), num(k1 - k0));
+        let (k0, k1) = (
+            self.kinetic_energy.start.unwrap_or(0.0),
+            self.kinetic_energy.end.unwrap_or(0.0),
+        );
+        let _ = writeln!(
+            s,
+            "  kinetic energy         {} → {} (ΔK = {})",
+            num(k0),
+            num(k1),
+            num(k1 - k0)
+        );
         if let (Some(u0), Some(u1)) = (self.potential_energy.start, self.potential_energy.end) {
-            let _ = writeln!(s, "  potential energy       {} → {} (ΔU = {})", num(u0), num(u1), num(u1 - u0));
-            let _ = writeln!(s, "  mechanical energy      {} → {} (ΔE = {})", num(self.energy.start), num(self.energy.end), num(self.energy.change));
+            let _ = writeln!(
+                s,
+                "  potential energy       {} → {} (ΔU = {})",
+                num(u0),
+                num(u1),
+                num(u1 - u0)
+            );
+            let _ = writeln!(
+                s,
+                "  mechanical energy      {} → {} (ΔE = {})",
+                num(self.energy.start),
+                num(self.energy.end),
+                num(self.energy.change)
+            );
         }
-        let _ = writeln!(s, "  work-energy residual   {} (Σ work - ΔK)", num(self.work_energy_residual));
+        let _ = writeln!(
+            s,
+            "  work-energy residual   {} (Σ work - ΔK)",
+            num(self.work_energy_residual)
+        );
         if !self.observables.is_empty() {
             let _ = writeln!(s, "observables");
             for (name, v) in &self.observables {
@@ -334,7 +364,10 @@ fn vec_text(v: &[Real]) -> String {
     if v.len() == 1 {
         num(v[0])
     } else {
-        format!("({})", v.iter().map(|x| num(*x)).collect::<Vec<_>>().join(", "))
+        format!(
+            "({})",
+            v.iter().map(|x| num(*x)).collect::<Vec<_>>().join(", ")
+        )
     }
 }
 

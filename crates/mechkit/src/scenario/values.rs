@@ -49,7 +49,11 @@ pub(crate) fn dim_text(d: Dimension) -> String {
 }
 
 /// Converts an error in a formula inside a TOML string to a located scenario error.
-pub(crate) fn formula_error(src: &Source<'_>, string_span: &Range<usize>, e: &ExprError) -> ScenarioError {
+pub(crate) fn formula_error(
+    src: &Source<'_>,
+    string_span: &Range<usize>,
+    e: &ExprError,
+) -> ScenarioError {
     let start = src.string_content_start(string_span);
     let kind = match e.kind {
         ExprErrorKind::Dimension(_) => ErrorKind::Dimension,
@@ -74,9 +78,19 @@ pub(crate) fn resolve(
     match v.get_ref() {
         DeValue::Integer(i) => i64::from_str_radix(i.as_str(), i.radix())
             .map(|n| n as Real)
-            .map_err(|_| src.error(ErrorKind::Invalid, format!("`{key}`: {i} is too large"), v.span())),
+            .map_err(|_| {
+                src.error(
+                    ErrorKind::Invalid,
+                    format!("`{key}`: {i} is too large"),
+                    v.span(),
+                )
+            }),
         DeValue::Float(f) => f.as_str().replace('_', "").parse::<Real>().map_err(|_| {
-            src.error(ErrorKind::Invalid, format!("`{key}`: {f} is not a number"), v.span())
+            src.error(
+                ErrorKind::Invalid,
+                format!("`{key}`: {f} is not a number"),
+                v.span(),
+            )
         }),
         DeValue::String(s) => resolve_text(src, key, s, &v.span(), want, env),
         other => Err(src.error(
@@ -134,13 +148,19 @@ fn resolve_text(
             .with_hint(format!("write it like \"{}\"", example(want)))),
         Err(unit_error) => {
             let formula = Formula::parse(text);
-            let names_known = formula
-                .as_ref()
-                .is_ok_and(|f| f.names().iter().all(|n| env.lookup(n).is_some() || mechkit_expr::builtin_constant(n).is_some()));
+            let names_known = formula.as_ref().is_ok_and(|f| {
+                f.names()
+                    .iter()
+                    .all(|n| env.lookup(n).is_some() || mechkit_expr::builtin_constant(n).is_some())
+            });
             if matches!(unit_error.kind, UnitErrorKind::NoNumber) || names_known {
                 resolve_formula(src, key, text, span, want, env)
             } else {
-                let mut e = src.error(ErrorKind::Unit, unit_error.message(), located(unit_error.span));
+                let mut e = src.error(
+                    ErrorKind::Unit,
+                    unit_error.message(),
+                    located(unit_error.span),
+                );
                 e.hint = unit_error.hint();
                 if let UnitErrorKind::UnknownUnit { name, .. } = &unit_error.kind
                     && env.lookup(name).is_some()
@@ -208,7 +228,9 @@ pub(crate) fn scalar(
     want: Dimension,
     env: ValueEnv<'_>,
 ) -> Result<Option<Real>, ScenarioError> {
-    t.get(key).map(|v| resolve(&t.src, key, v, want, env)).transpose()
+    t.get(key)
+        .map(|v| resolve(&t.src, key, v, want, env))
+        .transpose()
 }
 
 /// A required scalar parameter.
@@ -238,7 +260,9 @@ pub(crate) fn vector(
         let one = format!("\"{}\"", example(want));
         match dim {
             1 => format!("write `{key} = {one}`"),
-            2 => format!("write `{key} = [{one}, {one}]` or `{key} = {{ magnitude = {one}, angle = \"30 deg\" }}`"),
+            2 => format!(
+                "write `{key} = [{one}, {one}]` or `{key} = {{ magnitude = {one}, angle = \"30 deg\" }}`"
+            ),
             _ => format!("write `{key} = [{one}, {one}, {one}]`"),
         }
     };
@@ -248,12 +272,19 @@ pub(crate) fn vector(
                 return Err(src
                     .error(
                         ErrorKind::Invalid,
-                        format!("`{key}` has {} components, but the scenario has {dim} dimensions", items.len()),
+                        format!(
+                            "`{key}` has {} components, but the scenario has {dim} dimensions",
+                            items.len()
+                        ),
                         v.span(),
                     )
                     .with_hint(hint()));
             }
-            items.iter().map(|item| resolve(src, key, item, want, env)).collect::<Result<Vec<_>, _>>().map(Some)
+            items
+                .iter()
+                .map(|item| resolve(src, key, item, want, env))
+                .collect::<Result<Vec<_>, _>>()
+                .map(Some)
         }
         DeValue::Table(polar) if dim == 2 => {
             let p = Table::new(*src, polar, v.span(), format!("`{key}`"));
@@ -266,7 +297,10 @@ pub(crate) fn vector(
         other => Err(src
             .error(
                 ErrorKind::WrongType,
-                format!("`{key}` must be a list of {dim} values, not {}", type_name(other)),
+                format!(
+                    "`{key}` must be a list of {dim} values, not {}",
+                    type_name(other)
+                ),
                 v.span(),
             )
             .with_hint(hint())),

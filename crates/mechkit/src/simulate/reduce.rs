@@ -23,11 +23,14 @@ pub enum Reduction {
     Mean,
     /// Time integral `∫ f dt`.
     Integral,
+    /// Value at the last step taken before a located stop event (what a `while` loop on the
+    /// condition ends with); the final value when no event was located.
+    LastStep,
 }
 
 impl Reduction {
     /// Every reduction.
-    pub const ALL: [Reduction; 8] = [
+    pub const ALL: [Reduction; 9] = [
         Reduction::Min,
         Reduction::Max,
         Reduction::ArgMin,
@@ -36,6 +39,7 @@ impl Reduction {
         Reduction::Final,
         Reduction::Mean,
         Reduction::Integral,
+        Reduction::LastStep,
     ];
 
     /// Name as written in `[observe]`.
@@ -49,6 +53,7 @@ impl Reduction {
             Reduction::Final => "final",
             Reduction::Mean => "mean",
             Reduction::Integral => "integral",
+            Reduction::LastStep => "last_step",
         }
     }
 
@@ -70,6 +75,7 @@ pub struct Reducer {
     last: Real,
     last_t: Real,
     integral: Real,
+    last_step: Real,
 }
 
 impl Reducer {
@@ -85,11 +91,20 @@ impl Reducer {
             last: Real::NAN,
             last_t: Real::NAN,
             integral: 0.0,
+            last_step: Real::NAN,
         }
     }
 
-    /// Adds a sample.
+    /// Adds a sample that is a step.
     pub fn push(&mut self, t: Real, value: Real) {
+        self.push_sample(t, value, false);
+    }
+
+    /// Adds a sample; `located` marks a located event (a state between steps).
+    pub fn push_sample(&mut self, t: Real, value: Real, located: bool) {
+        if !located {
+            self.last_step = value;
+        }
         if self.count == 0 {
             self.first = value;
             self.first_t = t;
@@ -119,6 +134,7 @@ impl Reducer {
             Reduction::ArgMin | Reduction::ArgMax => self.best_t,
             Reduction::Initial => self.first,
             Reduction::Final => self.last,
+            Reduction::LastStep => self.last_step,
             Reduction::Integral => self.integral,
             Reduction::Mean => {
                 let span = self.last_t - self.first_t;

@@ -314,7 +314,10 @@ impl<'a> Simulation<'a> {
         }
 
         let mut prev_y = state.y.clone();
-        let mut g_prev = self.stop.as_ref().map_or(Real::NAN, |c| c.value(&sample0, sys));
+        let mut g_prev = self
+            .stop
+            .as_ref()
+            .map_or(Real::NAN, |c| c.value(&sample0, sys));
         while stop_reason.is_none() {
             if planned == Some(steps) {
                 stop_reason = Some(StopReason::TMax);
@@ -379,7 +382,10 @@ impl<'a> Simulation<'a> {
                         sys.evaluate(te, q, v, &mut new_eval, &mut scratch);
                     }
                     ledger.advance(te, &new_eval);
-                    let s = sample_of(steps, &state, &new_eval, ledger.work());
+                    let s = Sample {
+                        located: true,
+                        ..sample_of(steps, &state, &new_eval, ledger.work())
+                    };
                     for o in observers.iter_mut() {
                         o.observe(&s)?;
                     }
@@ -410,7 +416,12 @@ impl<'a> Simulation<'a> {
             }
         }
 
-        let last = sample_of(steps, &state, &prev_eval, ledger.work());
+        let last = Sample {
+            located: event
+                .as_ref()
+                .is_some_and(|e| e.t != initial.t || steps > 0),
+            ..sample_of(steps, &state, &prev_eval, ledger.work())
+        };
         for o in observers.iter_mut() {
             o.finish(&last)?;
         }
@@ -430,7 +441,12 @@ impl<'a> Simulation<'a> {
     }
 }
 
-fn sample_of<'s>(step: u64, state: &'s State, eval: &'s Evaluation, work: &'s [Real]) -> Sample<'s> {
+fn sample_of<'s>(
+    step: u64,
+    state: &'s State,
+    eval: &'s Evaluation,
+    work: &'s [Real],
+) -> Sample<'s> {
     let (q, v) = state.qv();
     Sample {
         step,
@@ -439,6 +455,7 @@ fn sample_of<'s>(step: u64, state: &'s State, eval: &'s Evaluation, work: &'s [R
         v,
         eval,
         work,
+        located: false,
     }
 }
 
@@ -537,7 +554,12 @@ fn diagnose_state(
 }
 
 /// Checks an evaluation for non-finite values and names the force responsible.
-fn diagnose_evaluation(sys: &ParticleSystem, state: &State, eval: &Evaluation, step: u64) -> Option<Divergence> {
+fn diagnose_evaluation(
+    sys: &ParticleSystem,
+    state: &State,
+    eval: &Evaluation,
+    step: u64,
+) -> Option<Divergence> {
     let finite = eval.a.iter().all(|x| x.is_finite())
         && eval.power.iter().all(|x| x.is_finite())
         && eval.kinetic.is_finite()
