@@ -546,9 +546,11 @@ fn output(
             t.check_keys(OUTPUT_KEYS)?;
             match t.count("every")? {
                 Some((0, span)) => {
-                    return Err(t
-                        .src
-                        .error(ErrorKind::Invalid, "`every` must be at least 1", span));
+                    return Err(t.src.error(
+                        ErrorKind::Invalid,
+                        "`every` must be at least 1",
+                        span,
+                    ));
                 }
                 Some((n, _)) => n,
                 None => 1,

@@ -1,0 +1,2 @@
+mod divergence;
+mod events;
