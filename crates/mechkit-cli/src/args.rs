@@ -20,7 +20,12 @@ Scenario format: docs/scenario.md. Commands: docs/cli.md.";
 /// Computational classical mechanics: simulate scenario files with units and formulas, and
 /// report trajectories, plots and the energy ledger.
 #[derive(Debug, Parser)]
-#[command(name = "mechkit", version, about, after_help = EXAMPLES)]
+#[command(
+    name = "mechkit",
+    version,
+    about = "Computational classical mechanics: simulate scenario files with units and formulas, and report trajectories, plots and the energy ledger.",
+    after_help = EXAMPLES
+)]
 pub struct Cli {
     /// What to do.
     #[command(subcommand)]

@@ -54,16 +54,16 @@ fn tick(v: f64, scale: f64) -> String {
     if v == 0.0 {
         return "0".into();
     }
-    if !(1e-3..1e5).contains(&scale) {
+    if (1e-3..1e5).contains(&scale) {
+        let s = format!("{v:.6}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
         let s = format!("{v:.2e}");
         // 1.50e11 -> 1.5e11
         match s.split_once('e') {
             Some((m, e)) => format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.')),
             None => s,
         }
-    } else {
-        let s = format!("{v:.6}");
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
     }
 }
 
@@ -74,7 +74,7 @@ fn equalize(x: (f64, f64), y: (f64, f64), width: f64, height: f64) -> ((f64, f64
         return (x, y);
     }
     let per_px = (dx / width).max(dy / height);
-    let (cx, cy) = ((x.0 + x.1) / 2.0, (y.0 + y.1) / 2.0);
+    let (cx, cy) = (x.0.midpoint(x.1), y.0.midpoint(y.1));
     let (hx, hy) = (per_px * width / 2.0, per_px * height / 2.0);
     ((cx - hx, cx + hx), (cy - hy, cy + hy))
 }

@@ -1,45 +1,49 @@
 //! `mechkit check FILE`: load and validate a scenario, say what it contains.
 
+use std::fmt::Write as _;
+
 use anyhow::Result;
 use mechkit::scenario::Scenario;
 
-use super::Outcome;
+use super::{Outcome, print};
 use crate::args::CheckArgs;
 
 pub fn check(args: &CheckArgs) -> Result<Outcome> {
     let s = Scenario::load(&args.file)?;
     let sys = &s.system;
-    println!("ok: {}", s.title);
-    println!(
-        "  {} dimension{}, {} bod{}, {} force{}",
-        s.dim,
-        if s.dim == 1 { "" } else { "s" },
-        sys.bodies().len(),
-        if sys.bodies().len() == 1 { "y" } else { "ies" },
-        sys.forces().len(),
-        if sys.forces().len() == 1 { "" } else { "s" }
+    let plural =
+        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
+    let mut text = String::new();
+    let _ = writeln!(text, "ok: {}", s.title);
+    let _ = writeln!(
+        text,
+        "  {}, {}, {}",
+        plural(s.dim, "dimension", "dimensions"),
+        plural(sys.bodies().len(), "body", "bodies"),
+        plural(sys.forces().len(), "force", "forces")
     );
     for b in sys.bodies() {
-        println!("  body {}: {} kg", b.name, b.mass);
+        let _ = writeln!(text, "  body {}: {} kg", b.name, b.mass);
     }
     for f in sys.forces().iter() {
-        println!("  force {}", f.name());
+        let _ = writeln!(text, "  force {}", f.name());
     }
-    println!("  method {} with dt = {} s", s.method, s.dt);
-    match (&s.stop, s.t_max) {
-        (Some(c), Some(t)) => println!("  stops when `{}` or at t = {t} s", c.description()),
-        (Some(c), None) => println!("  stops when `{}`", c.description()),
-        (None, Some(t)) => println!("  stops at t = {t} s"),
-        (None, None) => {}
-    }
+    let _ = writeln!(text, "  method {} with dt = {} s", s.method, s.dt);
+    let _ = match (&s.stop, s.t_max) {
+        (Some(c), Some(t)) => writeln!(text, "  stops when `{}` or at t = {t} s", c.description()),
+        (Some(c), None) => writeln!(text, "  stops when `{}`", c.description()),
+        (None, Some(t)) => writeln!(text, "  stops at t = {t} s"),
+        (None, None) => Ok(()),
+    };
     for o in &s.observables {
-        println!("  observe {} = {}", o.name, o.source);
+        let _ = writeln!(text, "  observe {} = {}", o.name, o.source);
     }
     for p in &s.plots {
-        println!("  plot {}", p.spec);
+        let _ = writeln!(text, "  plot {}", p.spec);
     }
     for w in &s.warnings {
         eprintln!("warning: {w}");
     }
+    print(&text)?;
     Ok(Outcome::Success)
 }

@@ -19,10 +19,21 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Run(args) => run::run(&args),
         Command::Check(args) => check::check(&args),
         Command::ListIntegrators => {
-            for m in mechkit::ode::Method::ALL {
-                println!("{:<14} {}", m.name(), m.description());
-            }
+            let text: String = mechkit::ode::Method::ALL
+                .iter()
+                .map(|m| format!("{:<14} {}\n", m.name(), m.description()))
+                .collect();
+            print(&text)?;
             Ok(Outcome::Success)
         }
     }
+}
+
+/// Writes to stdout. A closed pipe (`mechkit … | head`) is an `io::Error` of kind
+/// `BrokenPipe`, which `main` treats as a quiet success.
+pub fn print(text: &str) -> std::io::Result<()> {
+    use std::io::Write as _;
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())?;
+    out.flush()
 }

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use mechkit::scenario::Scenario;
 
-use super::Outcome;
+use super::{Outcome, print};
 use crate::args::RunArgs;
 use crate::plot;
 
@@ -23,7 +23,7 @@ pub fn run(args: &RunArgs) -> Result<Outcome> {
         for p in &out.plots {
             let path = dir.join(format!("{}.svg", p.file_stem));
             plot::render_svg(p, &scenario.title, &path)?;
-            out.summary.files.plots.push(path.display().to_string());
+            out.summary.files.plots.push(format!("{}.svg", p.file_stem));
         }
         scenario.write_summary(&dir, &out.summary)?;
     }
@@ -31,10 +31,13 @@ pub fn run(args: &RunArgs) -> Result<Outcome> {
         eprintln!("warning: {w}");
     }
     if args.json {
-        println!("{}", out.summary.to_json());
+        print(&format!("{}\n", out.summary.to_json()))?;
     } else {
-        print!("{}", out.summary.to_text());
-        println!("wrote {}", dir.display());
+        print(&format!(
+            "{}wrote {}\n",
+            out.summary.to_text(),
+            dir.display()
+        ))?;
     }
     if out.failed() {
         if let Some(d) = &out.summary.divergence {

@@ -16,8 +16,8 @@ pub struct ConstantForce {
 
 impl ConstantForce {
     /// The same force vector `force` (one component per dimension) on each of `bodies`.
-    pub fn new(name: impl Into<String>, bodies: Vec<usize>, force: Vec<Real>) -> Self {
-        let per_body = bodies.into_iter().map(|b| (b, force.clone())).collect();
+    pub fn new(name: impl Into<String>, bodies: Vec<usize>, force: &[Real]) -> Self {
+        let per_body = bodies.into_iter().map(|b| (b, force.to_vec())).collect();
         Self {
             name: name.into(),
             per_body,

@@ -64,8 +64,8 @@ impl<S: SecondOrderSystem + ?Sized> Stepper<S> for VelocityVerlet {
         }
         sys.accel_into(t + h, q, &self.v_pred, &mut self.a1);
         evaluations += 1;
-        for i in 0..n {
-            v[i] += 0.5 * h * (self.a0[i] + self.a1[i]);
+        for ((vi, a0), a1) in v.iter_mut().zip(&self.a0).zip(&self.a1) {
+            *vi += 0.5 * h * (a0 + a1);
         }
         std::mem::swap(&mut self.a0, &mut self.a1);
         state.t += h;

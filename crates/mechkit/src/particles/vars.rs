@@ -128,16 +128,16 @@ impl StateVar {
     }
 
     fn body(self, local: Option<usize>) -> usize {
-        let r = match self {
-            StateVar::Position(b, _)
-            | StateVar::Velocity(b, _)
-            | StateVar::Speed(b)
-            | StateVar::Distance(b)
-            | StateVar::Mass(b)
-            | StateVar::Acceleration(b, _)
-            | StateVar::AccelerationMagnitude(b)
-            | StateVar::BodyKinetic(b) => b,
-            _ => return 0,
+        let (StateVar::Position(r, _)
+        | StateVar::Velocity(r, _)
+        | StateVar::Speed(r)
+        | StateVar::Distance(r)
+        | StateVar::Mass(r)
+        | StateVar::Acceleration(r, _)
+        | StateVar::AccelerationMagnitude(r)
+        | StateVar::BodyKinetic(r)) = self
+        else {
+            return 0;
         };
         match r {
             BodyRef::Index(i) => i,

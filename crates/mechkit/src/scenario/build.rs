@@ -179,7 +179,7 @@ fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
         return Ok(Vec::new());
     };
     let mut out: Vec<Constant> = Vec::new();
-    for (key, value) in t.table.iter() {
+    for (key, value) in t.entries {
         let name: &str = key.get_ref();
         let valid = name
             .chars()
@@ -203,71 +203,72 @@ fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
             constants: &out,
             mass: None,
         };
-        let dim = constant_dimension(value.get_ref());
-        let v = match dim {
-            Some(d) => resolve(&t.src, name, value, d, env)?,
-            None => {
-                // A formula of earlier constants: its dimension is whatever it comes out as.
-                let (text, span) = match value.get_ref() {
-                    DeValue::String(s) => (s.as_ref(), value.span()),
-                    _ => return Err(t.wrong_type(name, value, "a number or a string")),
-                };
-                let f = Formula::parse(text).map_err(|e| formula_error(&t.src, &span, &e))?;
-                for n in f.names() {
-                    if !out.iter().any(|(c, _, _)| c == n)
-                        && mechkit_expr::builtin_constant(n).is_none()
-                    {
-                        let later = t.table.iter().any(|(k, _)| k.get_ref() == n);
-                        let hint = if later {
-                            format!(
-                                "`{n}` is defined further down; a constant may only use the constants above it"
-                            )
-                        } else {
-                            mechkit_expr::did_you_mean(&nearest(
-                                n,
-                                out.iter().map(|(c, _, _)| c.as_str()),
-                            ))
-                            .unwrap_or_else(|| {
-                                "constants may use numbers, units and the constants above them"
-                                    .into()
-                            })
-                        };
-                        let span_in = f.span_of(n).unwrap_or(f.full_span());
-                        let start = t.src.string_content_start(&span);
-                        return Err(t
-                            .src
-                            .error(
-                                ErrorKind::Formula,
-                                format!("undefined name `{n}` in constant `{name}`"),
-                                start + span_in.start..start + span_in.end,
-                            )
-                            .with_hint(hint));
-                    }
-                }
-                let d = f
-                    .dimension(&|n| {
-                        out.iter()
-                            .find(|(c, _, _)| c == n)
-                            .map_or(Dim::Unknown, |(_, _, d)| *d)
-                    })
-                    .map_err(|e| formula_error(&t.src, &span, &e))?;
-                let d = if d == Dim::Literal { Dim::Unknown } else { d };
-                let value = f
-                    .eval_with(&|n| out.iter().find(|(c, _, _)| c == n).map(|(_, v, _)| *v))
-                    .map_err(|e| formula_error(&t.src, &span, &e))?;
-                out.push((name.to_string(), value, d));
-                continue;
-            }
+        if let Some(d) = constant_dimension(value.get_ref()) {
+            let v = resolve(&t.src, name, value, d, env)?;
+            let d = match value.get_ref() {
+                DeValue::String(s) if s.trim().parse::<f64>().is_err() => Dim::Known(d),
+                _ => Dim::Unknown,
+            };
+            out.push((name.to_string(), v, d));
+            continue;
+        }
+        // A formula of earlier constants: its dimension is whatever it comes out as.
+        let (text, span) = match value.get_ref() {
+            DeValue::String(s) => (s.as_ref(), value.span()),
+            _ => return Err(t.wrong_type(name, value, "a number or a string")),
         };
-        let d = match value.get_ref() {
-            DeValue::String(s) if s.trim().parse::<f64>().is_err() => {
-                Quantity::parse(s).map_or(Dim::Unknown, |q| Dim::Known(q.dim))
-            }
-            _ => Dim::Unknown,
-        };
-        out.push((name.to_string(), v, d));
+        out.push(constant_formula(&t, name, text, &span, &out)?);
     }
     Ok(out)
+}
+
+/// A constant given as a formula of the constants above it.
+fn constant_formula(
+    t: &Table<'_, '_>,
+    name: &str,
+    text: &str,
+    span: &std::ops::Range<usize>,
+    out: &[Constant],
+) -> Result<Constant, ScenarioError> {
+    let span = span.clone();
+    let f = Formula::parse(text).map_err(|e| formula_error(&t.src, &span, &e))?;
+    for n in f.names() {
+        if !out.iter().any(|(c, _, _)| c == n) && mechkit_expr::builtin_constant(n).is_none() {
+            let later = t.entries.iter().any(|(k, _)| k.get_ref() == n);
+            let hint = if later {
+                format!(
+                    "`{n}` is defined further down; a constant may only use the constants above it"
+                )
+            } else {
+                mechkit_expr::did_you_mean(&nearest(n, out.iter().map(|(c, _, _)| c.as_str())))
+                    .unwrap_or_else(|| {
+                        "constants may use numbers, units and the constants above them".into()
+                    })
+            };
+            let span_in = f.span_of(n).unwrap_or(f.full_span());
+            let start = t.src.string_content_start(&span);
+            return Err(t
+                .src
+                .error(
+                    ErrorKind::Formula,
+                    format!("undefined name `{n}` in constant `{name}`"),
+                    start + span_in.start..start + span_in.end,
+                )
+                .with_hint(hint));
+        }
+    }
+    let d = f
+        .dimension(&|n| {
+            out.iter()
+                .find(|(c, _, _)| c == n)
+                .map_or(Dim::Unknown, |(_, _, d)| *d)
+        })
+        .map_err(|e| formula_error(&t.src, &span, &e))?;
+    let d = if d == Dim::Literal { Dim::Unknown } else { d };
+    let value = f
+        .eval_with(&|n| out.iter().find(|(c, _, _)| c == n).map(|(_, v, _)| *v))
+        .map_err(|e| formula_error(&t.src, &span, &e))?;
+    Ok((name.to_string(), value, d))
 }
 
 /// The dimension a constant's value declares by itself: `Some` for numbers and quantities,
@@ -506,10 +507,10 @@ fn condition(
     }
     let needs = !whole.is_kinematic();
     Ok(Condition::from_fn(text, true, needs, move |s, sys| {
-        if whole.eval_sample(s, sys.dim(), sys.masses(), None) != 0.0 {
-            1.0
-        } else {
+        if whole.eval_sample(s, sys.dim(), sys.masses(), None) == 0.0 {
             -1.0
+        } else {
+            1.0
         }
     }))
 }
@@ -522,7 +523,7 @@ fn observe(
         return Ok(Vec::new());
     };
     let mut out = Vec::new();
-    for (key, value) in t.table.iter() {
+    for (key, value) in t.entries {
         let name: &str = key.get_ref();
         let DeValue::String(text) = value.get_ref() else {
             return Err(t.wrong_type(name, value, "a string such as \"max(x)\""));

@@ -16,7 +16,7 @@ pub(crate) struct Source<'a> {
     pub text: &'a str,
 }
 
-impl<'a> Source<'a> {
+impl Source<'_> {
     /// Line, column and line text of a byte span.
     pub fn location(&self, span: Range<usize>) -> Location {
         let start = span.start.min(self.text.len());
@@ -54,7 +54,7 @@ impl<'a> Source<'a> {
         ScenarioError {
             kind,
             message: message.into(),
-            location: Some(self.location(span)),
+            location: Some(Box::new(self.location(span))),
             hint: None,
         }
     }
@@ -99,7 +99,7 @@ pub(crate) fn type_name(v: &DeValue<'_>) -> &'static str {
 /// A table of the document, with a description for messages ("[[body]] 'feather'").
 pub(crate) struct Table<'s, 'a> {
     pub src: Source<'s>,
-    pub table: &'s DeTable<'a>,
+    pub entries: &'s DeTable<'a>,
     pub span: Range<usize>,
     pub what: String,
 }
@@ -107,13 +107,13 @@ pub(crate) struct Table<'s, 'a> {
 impl<'s, 'a> Table<'s, 'a> {
     pub fn new(
         src: Source<'s>,
-        table: &'s DeTable<'a>,
+        entries: &'s DeTable<'a>,
         span: Range<usize>,
         what: impl Into<String>,
     ) -> Self {
         Self {
             src,
-            table,
+            entries,
             span,
             what: what.into(),
         }
@@ -121,7 +121,7 @@ impl<'s, 'a> Table<'s, 'a> {
 
     /// Fails on the first key not in `allowed`, naming the nearest allowed key.
     pub fn check_keys(&self, allowed: &[&str]) -> Result<(), ScenarioError> {
-        for (key, _) in self.table.iter() {
+        for (key, _) in self.entries {
             let name: &str = key.get_ref();
             if !allowed.contains(&name) {
                 let suggestions = nearest(name, allowed.iter().copied());
@@ -142,12 +142,12 @@ impl<'s, 'a> Table<'s, 'a> {
     }
 
     pub fn get(&self, key: &str) -> Option<&'s Value<'a>> {
-        self.table.get(key)
+        self.entries.get(key)
     }
 
     /// Span of a key's name, or of the table if the key is absent.
     pub fn key_span(&self, key: &str) -> Range<usize> {
-        self.table
+        self.entries
             .get_key_value(key)
             .map_or_else(|| self.span.clone(), |(k, _)| k.span())
     }
@@ -244,11 +244,14 @@ impl<'s, 'a> Table<'s, 'a> {
     }
 }
 
+/// Strings with their spans.
+pub(crate) type StringList<'s> = Vec<(&'s str, Range<usize>)>;
+
 /// A string or a list of strings (e.g. `on = "ball"` or `on = ["a", "b"]`), with spans.
 pub(crate) fn string_list<'s>(
     t: &Table<'s, '_>,
     key: &str,
-) -> Result<Option<Vec<(&'s str, Range<usize>)>>, ScenarioError> {
+) -> Result<Option<StringList<'s>>, ScenarioError> {
     let Some(v) = t.get(key) else {
         return Ok(None);
     };

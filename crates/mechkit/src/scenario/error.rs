@@ -50,7 +50,7 @@ pub struct ScenarioError {
     /// What is wrong, in one line.
     pub message: String,
     /// Where, when it is in a file.
-    pub location: Option<Location>,
+    pub location: Option<Box<Location>>,
     /// What would fix it.
     pub hint: Option<String>,
 }

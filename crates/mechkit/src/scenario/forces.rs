@@ -151,8 +151,7 @@ pub(crate) fn build_force(
     let params = KINDS
         .iter()
         .find(|(k, _, _)| *k == kind)
-        .map(|(_, p, _)| *p)
-        .unwrap_or(&[]);
+        .map_or(&[][..], |(_, p, _)| *p);
     let mut allowed = vec!["name", "kind", "on"];
     allowed.extend_from_slice(params);
     t.check_keys(&allowed).map_err(|mut e| {
@@ -201,8 +200,8 @@ pub(crate) fn build_force(
             let g = scalar(t, "g", Dimension::ACCELERATION, ctx.env(None))?.unwrap_or(9.81);
             Box::new(UniformGravity::new(name, targets, g))
         }
-        "newtonian-gravity" => newtonian(t, ctx, name, on, targets)?,
-        "spring" => spring(t, ctx, name, on, targets)?,
+        "newtonian-gravity" => newtonian(t, ctx, name, targets)?,
+        "spring" => spring(t, ctx, name, on.is_some(), targets)?,
         "linear-drag" | "quadratic-drag" => {
             let (key, want) = if kind == "linear-drag" {
                 ("b", Dimension::LINEAR_DRAG)
@@ -212,7 +211,7 @@ pub(crate) fn build_force(
             let mut list = Vec::new();
             for &b in &targets {
                 let c = required_scalar(t, key, want, ctx.env(Some(ctx.masses[b])))?;
-                if !(c >= 0.0) {
+                if c.is_nan() || c < 0.0 {
                     return Err(t.src.error(
                         ErrorKind::Invalid,
                         format!("the drag coefficient `{key}` must not be negative (it is {c})"),
@@ -233,15 +232,18 @@ pub(crate) fn build_force(
     })
 }
 
+/// Formulas with their spans.
+type Components = Vec<(String, Range<usize>)>;
+
 fn formula_components(
     t: &Table<'_, '_>,
     key: &str,
     dim: usize,
-) -> Result<Option<Vec<(String, Range<usize>)>>, ScenarioError> {
+) -> Result<Option<Components>, ScenarioError> {
     let Some(v) = t.get(key) else {
         return Ok(None);
     };
-    let items: Vec<(String, Range<usize>)> = match v.get_ref() {
+    let items: Components = match v.get_ref() {
         DeValue::String(s) => vec![(s.to_string(), v.span())],
         DeValue::Array(items) => items
             .iter()
@@ -333,12 +335,15 @@ fn wind(t: &Table<'_, '_>, ctx: &ForceContext<'_>) -> Result<Wind, ScenarioError
         Some(exprs) => {
             if let Some(c) = exprs
                 .iter()
-                .map(|e| e.as_constant())
+                .map(crate::particles::StateExpr::as_constant)
                 .collect::<Option<Vec<Real>>>()
             {
                 return Ok(Wind::Constant(c));
             }
-            if exprs.iter().any(|e| e.reads_velocity()) {
+            if exprs
+                .iter()
+                .any(crate::particles::StateExpr::reads_velocity)
+            {
                 return Err(t.src.error(
                     ErrorKind::Invalid,
                     "the wind may depend on position and time, not on the body's velocity",
@@ -373,7 +378,6 @@ fn newtonian(
     t: &Table<'_, '_>,
     ctx: &ForceContext<'_>,
     name: String,
-    on: Option<Vec<usize>>,
     targets: Vec<usize>,
 ) -> Result<Box<dyn Force>, ScenarioError> {
     let env = ctx.env(None);
@@ -421,7 +425,6 @@ fn newtonian(
     };
     let center =
         vector(t, "center", Dimension::LENGTH, ctx.dim, env)?.unwrap_or_else(|| vec![0.0; ctx.dim]);
-    let _ = on;
     Ok(Box::new(NewtonianGravity::fixed_centre(
         name, targets, gm, center,
     )))
@@ -431,7 +434,7 @@ fn spring(
     t: &Table<'_, '_>,
     ctx: &ForceContext<'_>,
     name: String,
-    on: Option<Vec<usize>>,
+    on_given: bool,
     targets: Vec<usize>,
 ) -> Result<Box<dyn Force>, ScenarioError> {
     let env = ctx.env(None);
@@ -445,8 +448,8 @@ fn spring(
         ));
     }
     let ends = if let Some(between) = ctx.body_list(t, "between")? {
-        if on.is_some() || t.get("anchor").is_some() {
-            let key = if on.is_some() { "on" } else { "anchor" };
+        if on_given || t.get("anchor").is_some() {
+            let key = if on_given { "on" } else { "anchor" };
             return Err(t
                 .src
                 .error(ErrorKind::Invalid, format!("`{key}` does not go with `between`"), t.key_span(key))

@@ -26,7 +26,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 fn temp_path(path: &Path) -> PathBuf {
     let mut name = path
         .file_name()
-        .map(|n| n.to_os_string())
+        .map(std::ffi::OsStr::to_os_string)
         .unwrap_or_default();
     name.push(".partial");
     path.with_file_name(name)
@@ -144,7 +144,7 @@ impl CsvWriter {
 
 impl Observer for CsvWriter {
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        if s.step % self.every == 0 {
+        if s.step.is_multiple_of(self.every) {
             self.write(s)?;
         }
         Ok(())

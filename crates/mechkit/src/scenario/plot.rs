@@ -267,8 +267,8 @@ impl<'a> PlotRecorder<'a> {
 
 impl Observer for PlotRecorder<'_> {
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        if s.step % self.every == 0 {
-            if self.seen % self.stride == 0 {
+        if s.step.is_multiple_of(self.every) {
+            if self.seen.is_multiple_of(self.stride) {
                 self.push(s);
                 self.thin();
             }

@@ -69,12 +69,16 @@ impl Scenario {
                 SimulateError::Observer(o) => ScenarioError::new(ErrorKind::Io, o.0),
                 other => ScenarioError::new(ErrorKind::Invalid, other.to_string()),
             })?;
+        // The scenario already warned about a missing t_max; the run's own note on it would
+        // say the same again.
         let mut warnings = self.warnings.clone();
-        for w in &report.warnings {
-            if !warnings.iter().any(|x| x.contains("no t_max")) || !w.starts_with("no t_max") {
-                warnings.push(w.clone());
-            }
-        }
+        warnings.extend(
+            report
+                .warnings
+                .iter()
+                .filter(|w| !(self.t_max.is_none() && w.starts_with("no t_max")))
+                .cloned(),
+        );
         let summary = Summary::new(
             &self.title,
             &self.name,
@@ -109,7 +113,7 @@ impl Scenario {
         let result = self.run_with(Some(&mut csv));
         let rows = csv.close().map_err(|e| io_error("write", &csv_path, &e))?;
         let mut out = result?;
-        out.summary.files.trajectory = Some(csv_path.display().to_string());
+        out.summary.files.trajectory = Some("trajectory.csv".into());
         out.summary.files.trajectory_rows = rows;
         self.write_summary(dir, &out.summary)?;
         Ok(out)

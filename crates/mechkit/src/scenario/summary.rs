@@ -89,7 +89,7 @@ pub struct DivergenceSummary {
     pub message: String,
 }
 
-/// Files written by the run.
+/// Files written by the run, relative to the directory of `summary.json`.
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct Files {
     /// The trajectory CSV.

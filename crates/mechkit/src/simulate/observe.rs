@@ -54,7 +54,7 @@ impl Recorder {
 
 impl Observer for Recorder {
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        if s.step % self.every == 0 {
+        if s.step.is_multiple_of(self.every) {
             self.push(s);
         }
         Ok(())

@@ -232,7 +232,7 @@ impl<'a> Simulation<'a> {
             )));
         }
         if let Some(t_max) = self.t_max
-            && !(t_max > initial.t)
+            && t_max.partial_cmp(&initial.t) != Some(std::cmp::Ordering::Greater)
         {
             return Err(SimulateError::BadTMax {
                 t_max,
@@ -579,13 +579,31 @@ fn diagnose_evaluation(
             let axis = ["x", "y", "z"][i % dim];
             let pos: Vec<String> = k.position(i / dim).iter().map(|x| format!("{x}")).collect();
             let vel: Vec<String> = k.velocity(i / dim).iter().map(|x| format!("{x}")).collect();
+            // A force on one body may depend on the others (a pair force, `other.x` in a
+            // formula): show where they all are.
+            let others: Vec<String> = sys
+                .bodies()
+                .iter()
+                .enumerate()
+                .filter(|(j, _)| *j != i / dim)
+                .take(6)
+                .map(|(j, b)| {
+                    let p: Vec<String> = k.position(j).iter().map(|x| format!("{x}")).collect();
+                    format!("{} at [{}]", b.name, p.join(", "))
+                })
+                .collect();
+            let others = if others.is_empty() {
+                String::new()
+            } else {
+                format!("; the other bodies: {}", others.join(", "))
+            };
             return Some(Divergence {
                 t: state.t,
                 step,
                 quantity: format!("force `{}` on {body} ({axis} component)", force.name()),
                 value: f[i],
                 message: format!(
-                    "at t = {} s the force `{}` on {body} is {} ({axis} component), with {body} at position [{}] and velocity [{}]: a division by zero or a value outside a function's domain (sqrt, log of a negative number)",
+                    "at t = {} s the force `{}` on {body} is {} ({axis} component), with {body} at position [{}] and velocity [{}]{others}: a division by zero or a value outside a function's domain (sqrt, log of a negative number)",
                     state.t,
                     force.name(),
                     f[i],

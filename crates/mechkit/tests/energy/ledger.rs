@@ -103,8 +103,8 @@ fn drag_work_is_negative_and_equals_the_energy_change() {
 fn constant_force_work_is_force_times_distance() {
     let sys = ParticleSystem::builder(1)
         .body("cart", 10.0)
-        .force(ConstantForce::new("pull", vec![0], vec![90.0]))
-        .force(ConstantForce::new("friction", vec![0], vec![-30.0]))
+        .force(ConstantForce::new("pull", vec![0], &[90.0]))
+        .force(ConstantForce::new("friction", vec![0], &[-30.0]))
         .build()
         .unwrap();
     let report = Simulation::new(&sys, Method::Rk4, 1e-3)

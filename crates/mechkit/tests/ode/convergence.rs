@@ -22,7 +22,13 @@ fn oscillator_error<S: Stepper<Oscillator>>(mut stepper: S, h: f64) -> f64 {
 
 fn measured<S: Stepper<Oscillator>>(make: impl Fn() -> S) -> f64 {
     let errs: Vec<f64> = HS.iter().map(|&h| oscillator_error(make(), h)).collect();
-    order(&HS, &errs)
+    let p = order(&HS, &errs);
+    let shown: Vec<String> = errs.iter().map(|e| format!("{e:.3e}")).collect();
+    println!(
+        "{}: errors {shown:?} at h = {HS:?}: order {p:.3}",
+        make().name()
+    );
+    p
 }
 
 #[test]

@@ -78,3 +78,21 @@ fn kepler_orbit_keeps_its_shape() {
     assert!(close(s.observables["eccentricity"], 0.5, 1e-6));
     assert!(s.observables["relative_drift"].abs() < 1e-8);
 }
+
+#[test]
+fn the_readme_scenario_says_what_the_readme_says() {
+    let readme = std::fs::read_to_string(workspace().join("README.md")).unwrap();
+    let start = readme.find("```toml\n").unwrap() + 8;
+    let end = start + readme[start..].find("```").unwrap();
+    let s = Scenario::from_str("README.md", &readme[start..end])
+        .unwrap()
+        .run()
+        .unwrap()
+        .summary;
+    let e = &s.events[0];
+    assert!((e.last_step.t - 4.834).abs() < 1e-9);
+    assert!((e.last_step.state["feather"].position[0] - 2.8e-4).abs() < 1e-6);
+    assert!((e.t - 4.8346).abs() < 5e-5);
+    assert!((s.work["gravity"] - 0.02352).abs() < 1e-5);
+    assert!((s.work["air"] + 0.02339).abs() < 1e-5);
+}

@@ -10,7 +10,7 @@ use mechkit::simulate::Recorder;
 struct InverseSquare;
 
 impl Force for InverseSquare {
-    fn name(&self) -> &str {
+    fn name(&self) -> &'static str {
         "pull"
     }
     fn add_forces(&self, k: &mechkit::particles::Kinematics<'_>, out: &mut [f64]) {
@@ -50,7 +50,7 @@ fn force_singularity_is_diagnosed() {
 struct RootOfX;
 
 impl Force for RootOfX {
-    fn name(&self) -> &str {
+    fn name(&self) -> &'static str {
         "root"
     }
     fn add_forces(&self, k: &mechkit::particles::Kinematics<'_>, out: &mut [f64]) {

@@ -82,14 +82,13 @@ fn book_cases_reproduce_the_expected_answers() {
     assert!(!dir.is_empty());
     for path in dir {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
-        let (id, variant) = match cases.get(&stem) {
-            Some(_) => (stem.clone(), None),
-            None => {
-                let (id, v) = stem
-                    .rsplit_once('.')
-                    .unwrap_or_else(|| panic!("{stem}: no case with this id"));
-                (id.to_string(), Some(v.to_string()))
-            }
+        let (id, variant) = if cases.contains_key(&stem) {
+            (stem.clone(), None)
+        } else {
+            let (id, v) = stem
+                .rsplit_once('.')
+                .unwrap_or_else(|| panic!("{stem}: no case with this id"));
+            (id.to_string(), Some(v.to_string()))
         };
         let case = cases
             .get(&id)
