@@ -3,6 +3,8 @@
 mod check;
 mod run;
 
+use std::fmt::Write as _;
+
 use crate::args::{Cli, Command};
 
 /// How a command ended, when it did not fail on its input.
@@ -19,10 +21,10 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Run(args) => run::run(&args),
         Command::Check(args) => check::check(&args),
         Command::ListIntegrators => {
-            let text: String = mechkit::ode::Method::ALL
-                .iter()
-                .map(|m| format!("{:<14} {}\n", m.name(), m.description()))
-                .collect();
+            let mut text = String::new();
+            for m in mechkit::ode::Method::ALL {
+                let _ = writeln!(text, "{:<14} {}", m.name(), m.description());
+            }
             print(&text)?;
             Ok(Outcome::Success)
         }
