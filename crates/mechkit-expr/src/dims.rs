@@ -72,7 +72,17 @@ impl Formula {
     /// assert!(Formula::parse("m + v").unwrap().dimension(&dims).is_err());
     /// ```
     pub fn dimension(&self, dims: &dyn Fn(&str) -> Dim) -> Result<Dim, ExprError> {
-        infer(self.expr(), dims)
+        self.dimension_with(dims, &|_| None)
+    }
+
+    /// As [`Formula::dimension`], with the values of the names that have fixed values, so
+    /// that an exponent may be a named constant (`x^n` with `n = 3`).
+    pub fn dimension_with(
+        &self,
+        dims: &dyn Fn(&str) -> Dim,
+        values: &dyn Fn(&str) -> Option<f64>,
+    ) -> Result<Dim, ExprError> {
+        infer(self.expr(), &Env { dims, values })
             .map_err(|msg| self.error(ExprErrorKind::Dimension(msg), self.full_span()))
     }
 
@@ -82,8 +92,9 @@ impl Formula {
         want: Dimension,
         what: &str,
         dims: &dyn Fn(&str) -> Dim,
+        values: &dyn Fn(&str) -> Option<f64>,
     ) -> Result<(), ExprError> {
-        let got = self.dimension(dims)?;
+        let got = self.dimension_with(dims, values)?;
         if got.fits(want) {
             Ok(())
         } else {
@@ -121,24 +132,32 @@ fn dimensionless(func: &str, a: Dim, e: &Expr) -> Result<(), String> {
     }
 }
 
-fn constant_value(e: &Expr) -> Option<f64> {
-    e.eval_with(&builtin_constant).ok()
+/// What dimensional analysis knows about names.
+struct Env<'a> {
+    dims: &'a dyn Fn(&str) -> Dim,
+    values: &'a dyn Fn(&str) -> Option<f64>,
 }
 
-fn infer(e: &Expr, dims: &dyn Fn(&str) -> Dim) -> Result<Dim, String> {
+fn constant_value(e: &Expr, env: &Env<'_>) -> Option<f64> {
+    e.eval_with(&|n| (env.values)(n).or_else(|| builtin_constant(n)))
+        .ok()
+}
+
+fn infer(e: &Expr, env: &Env<'_>) -> Result<Dim, String> {
+    let dims = env.dims;
     Ok(match e {
         Expr::Num(_) => Dim::Literal,
         Expr::Var(name) => match builtin_constant(name) {
             Some(_) if matches!(dims(name), Dim::Unknown) => Dim::NONE,
             _ => dims(name),
         },
-        Expr::Neg(a) => infer(a, dims)?,
+        Expr::Neg(a) => infer(a, env)?,
         Expr::Not(a) => {
-            infer(a, dims)?;
+            infer(a, env)?;
             Dim::NONE
         }
         Expr::Binary(op, a, b) => {
-            let (da, db) = (infer(a, dims)?, infer(b, dims)?);
+            let (da, db) = (infer(a, env)?, infer(b, env)?);
             match op {
                 BinOp::Add => same("add", da, db, a, b)?,
                 BinOp::Sub => same("subtract", da, db, a, b)?,
@@ -157,14 +176,14 @@ fn infer(e: &Expr, dims: &dyn Fn(&str) -> Dim) -> Result<Dim, String> {
                     (other, Dim::Known(y)) if y.is_none() => other,
                     _ => Dim::Unknown,
                 },
-                BinOp::Pow => power(da, db, a, b)?,
+                BinOp::Pow => power(da, db, a, b, env)?,
                 _ => unreachable!("all operators covered"),
             }
         }
         Expr::Call(func, args) => {
             let ds = args
                 .iter()
-                .map(|a| infer(a, dims))
+                .map(|a| infer(a, env))
                 .collect::<Result<Vec<_>, _>>()?;
             match func {
                 Func::Abs | Func::Floor | Func::Ceil => ds[0],
@@ -205,7 +224,7 @@ fn root(d: Dim, n: i32, e: &Expr) -> Result<Dim, String> {
     }
 }
 
-fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr) -> Result<Dim, String> {
+fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr, env: &Env<'_>) -> Result<Dim, String> {
     dimensionless("^", exponent, b)
         .map_err(|_| format!("the exponent `{b}` must be dimensionless"))?;
     let Dim::Known(d) = base else {
@@ -214,7 +233,7 @@ fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr) -> Result<Dim, String> {
     if d.is_none() {
         return Ok(base);
     }
-    let Some(p) = constant_value(b) else {
+    let Some(p) = constant_value(b, env) else {
         return Err(format!(
             "`{a}` has dimension {} and can only be raised to a fixed number, not to `{b}`",
             d.describe()
@@ -294,6 +313,11 @@ mod tests {
         );
         assert!(dim("x^0.1").is_err());
         assert!(dim("x^t").is_err());
+        let f = Formula::parse("x^n").unwrap();
+        let with_n = f
+            .dimension_with(&dims, &|name| (name == "n").then_some(3.0))
+            .unwrap();
+        assert_eq!(with_n, Dim::Known(Dimension::LENGTH.powi(3)));
         assert!(dim("x < t").is_err());
     }
 
@@ -303,11 +327,11 @@ mod tests {
         assert!(
             Formula::parse("-k*x")
                 .unwrap()
-                .expect_dimension(Dimension::FORCE, "a force", &dims)
+                .expect_dimension(Dimension::FORCE, "a force", &dims, &|_| None)
                 .is_ok()
         );
         let e = f
-            .expect_dimension(Dimension::FORCE, "a force", &dims)
+            .expect_dimension(Dimension::FORCE, "a force", &dims, &|_| None)
             .unwrap_err();
         assert!(
             e.message()

@@ -31,7 +31,7 @@ pub fn run(args: &RunArgs) -> Result<Outcome> {
         eprintln!("warning: {w}");
     }
     if args.json {
-        print(&format!("{}\n", out.summary.to_json()))?;
+        print(&out.summary.to_json())?;
     } else {
         print(&format!(
             "{}wrote {}\n",

@@ -326,6 +326,14 @@ impl NameContext<'_> {
         s
     }
 
+    /// Value of a constant.
+    pub fn constant(&self, name: &str) -> Option<Real> {
+        self.constants
+            .iter()
+            .find(|(n, _, _)| n == name)
+            .map(|(_, v, _)| *v)
+    }
+
     /// Dimension of a name as a formula sees it: constants first, then state names.
     pub fn dim_of(&self, name: &str) -> Dim {
         if let Some((_, _, d)) = self.constants.iter().find(|(n, _, _)| n == name) {
@@ -355,7 +363,7 @@ impl NameContext<'_> {
             }
         }
         let program = formula.compile(&scope)?;
-        formula.dimension(&|n| self.dim_of(n))?;
+        formula.dimension_with(&|n| self.dim_of(n), &|n| self.constant(n))?;
         Ok(StateExpr {
             source: formula.source().to_string(),
             program,

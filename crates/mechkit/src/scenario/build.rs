@@ -1,8 +1,8 @@
 //! From TOML text to a runnable [`Scenario`]: every key checked, every value resolved to SI
 //! with its dimension checked, every formula compiled, every error located.
 
-use mechkit_expr::units::{Dimension, Quantity};
-use mechkit_expr::{BinOp, Dim, Expr, Formula, nearest};
+use mechkit_expr::units::Dimension;
+use mechkit_expr::{BinOp, Expr, Formula, nearest};
 use toml::de::{DeTable, DeValue};
 
 use super::Scenario;
@@ -11,7 +11,7 @@ use super::error::{ErrorKind, ScenarioError};
 use super::forces::{ForceContext, build_force};
 use super::observe::Observable;
 use super::plot::PlotSpec;
-use super::values::{Constant, ValueEnv, formula_error, resolve, scalar, vector};
+use super::values::{Constant, ValueEnv, formula_error, resolve_any, scalar, vector};
 use crate::Real;
 use crate::ode::{Method, State};
 use crate::particles::{BodyRef, NameContext, ParticleSystem, StateExpr, VarLevel};
@@ -36,7 +36,7 @@ const OUTPUT_KEYS: &[&str] = &["every", "plots"];
 
 /// State names a constant may not take (formulas would become ambiguous).
 const RESERVED: &[&str] = &[
-    "t", "x", "y", "z", "vx", "vy", "vz", "v", "r", "speed", "ax", "ay", "az",
+    "t", "x", "y", "z", "vx", "vy", "vz", "v", "r", "speed", "ax", "ay", "az", "a", "K", "U", "E",
 ];
 
 /// Methods that exist in the design but not yet in this build.
@@ -135,6 +135,7 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
     let env = ValueEnv {
         constants: &constants,
         mass: None,
+        later: &[],
     };
     let (method, dt) = integrator(&root, env)?;
     let names = NameContext {
@@ -178,8 +179,13 @@ fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
     let Some(t) = root.table("constants")? else {
         return Ok(Vec::new());
     };
+    let names: Vec<&str> = t
+        .entries
+        .iter()
+        .map(|(k, _)| k.get_ref().as_ref())
+        .collect();
     let mut out: Vec<Constant> = Vec::new();
-    for (key, value) in t.entries {
+    for (i, (key, value)) in t.entries.iter().enumerate() {
         let name: &str = key.get_ref();
         let valid = name
             .chars()
@@ -189,98 +195,33 @@ fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
         if !valid {
             return Err(t.src.error(
                 ErrorKind::Invalid,
-                format!("constant name `{name}` must be a letter or `_` followed by letters, digits or `_`"),
+                format!(
+                    "constant name `{name}` must be a letter or `_` followed by letters, digits or `_`"
+                ),
                 key.span(),
             ));
         }
         if RESERVED.contains(&name) || mechkit_expr::Func::from_name(name).is_some() {
             return Err(t
                 .src
-                .error(ErrorKind::Invalid, format!("`{name}` cannot be a constant: formulas use it for the state or as a function"), key.span())
+                .error(
+                    ErrorKind::Invalid,
+                    format!(
+                        "`{name}` cannot be a constant: formulas use it for the state or as a function"
+                    ),
+                    key.span(),
+                )
                 .with_hint(format!("choose another name, e.g. `{name}0`")));
         }
         let env = ValueEnv {
             constants: &out,
             mass: None,
+            later: &names[i..],
         };
-        if let Some(d) = constant_dimension(value.get_ref()) {
-            let v = resolve(&t.src, name, value, d, env)?;
-            let d = match value.get_ref() {
-                DeValue::String(s) if s.trim().parse::<f64>().is_err() => Dim::Known(d),
-                _ => Dim::Unknown,
-            };
-            out.push((name.to_string(), v, d));
-            continue;
-        }
-        // A formula of earlier constants: its dimension is whatever it comes out as.
-        let (text, span) = match value.get_ref() {
-            DeValue::String(s) => (s.as_ref(), value.span()),
-            _ => return Err(t.wrong_type(name, value, "a number or a string")),
-        };
-        out.push(constant_formula(&t, name, text, &span, &out)?);
+        let (v, d) = resolve_any(&t.src, name, value, env)?;
+        out.push((name.to_string(), v, d));
     }
     Ok(out)
-}
-
-/// A constant given as a formula of the constants above it.
-fn constant_formula(
-    t: &Table<'_, '_>,
-    name: &str,
-    text: &str,
-    span: &std::ops::Range<usize>,
-    out: &[Constant],
-) -> Result<Constant, ScenarioError> {
-    let span = span.clone();
-    let f = Formula::parse(text).map_err(|e| formula_error(&t.src, &span, &e))?;
-    for n in f.names() {
-        if !out.iter().any(|(c, _, _)| c == n) && mechkit_expr::builtin_constant(n).is_none() {
-            let later = t.entries.iter().any(|(k, _)| k.get_ref() == n);
-            let hint = if later {
-                format!(
-                    "`{n}` is defined further down; a constant may only use the constants above it"
-                )
-            } else {
-                mechkit_expr::did_you_mean(&nearest(n, out.iter().map(|(c, _, _)| c.as_str())))
-                    .unwrap_or_else(|| {
-                        "constants may use numbers, units and the constants above them".into()
-                    })
-            };
-            let span_in = f.span_of(n).unwrap_or(f.full_span());
-            let start = t.src.string_content_start(&span);
-            return Err(t
-                .src
-                .error(
-                    ErrorKind::Formula,
-                    format!("undefined name `{n}` in constant `{name}`"),
-                    start + span_in.start..start + span_in.end,
-                )
-                .with_hint(hint));
-        }
-    }
-    let d = f
-        .dimension(&|n| {
-            out.iter()
-                .find(|(c, _, _)| c == n)
-                .map_or(Dim::Unknown, |(_, _, d)| *d)
-        })
-        .map_err(|e| formula_error(&t.src, &span, &e))?;
-    let d = if d == Dim::Literal { Dim::Unknown } else { d };
-    let value = f
-        .eval_with(&|n| out.iter().find(|(c, _, _)| c == n).map(|(_, v, _)| *v))
-        .map_err(|e| formula_error(&t.src, &span, &e))?;
-    Ok((name.to_string(), value, d))
-}
-
-/// The dimension a constant's value declares by itself: `Some` for numbers and quantities,
-/// `None` for formulas.
-fn constant_dimension(v: &DeValue<'_>) -> Option<Dimension> {
-    match v {
-        DeValue::String(s) => match Quantity::parse(s) {
-            Ok(q) => Some(q.dim),
-            Err(_) => None,
-        },
-        _ => Some(Dimension::NONE),
-    }
 }
 
 type Bodies = (Vec<String>, Vec<Real>, Vec<Real>, Vec<Real>);
@@ -331,6 +272,7 @@ fn bodies(
         let env = ValueEnv {
             constants,
             mass: None,
+            later: &[],
         };
         let mass = scalar(t, "mass", Dimension::MASS, env)?.ok_or_else(|| {
             t.missing("mass", "\"1 kg\"").with_hint(format!(

@@ -70,6 +70,7 @@ impl ForceContext<'_> {
         ValueEnv {
             constants: self.constants,
             mass,
+            later: &[],
         }
     }
 
@@ -162,14 +163,12 @@ pub(crate) fn build_force(
     })?;
     let name = match t.string("name")? {
         Some((n, span)) => {
-            if n.is_empty()
-                || !n
-                    .chars()
-                    .all(|c| c.is_alphanumeric() || c == '_' || c == '-')
-            {
+            if n.is_empty() || !n.chars().all(|c| c.is_alphanumeric() || c == '_') {
                 return Err(t.src.error(
                     ErrorKind::Invalid,
-                    format!("force name `{n}` must be letters, digits, `_` or `-`"),
+                    format!(
+                        "force name `{n}` must be letters, digits or `_` (formulas use it as `work.{n}`)"
+                    ),
                     span,
                 ));
             }
@@ -305,7 +304,7 @@ fn compile_components(
         let expr = names
             .compile(&f)
             .map_err(|e| formula_error(&t.src, &span, &e))?;
-        f.expect_dimension(want, what, &|n| names.dim_of(n))
+        f.expect_dimension(want, what, &|n| names.dim_of(n), &|n| names.constant(n))
             .map_err(|e| formula_error(&t.src, &span, &e))?;
         out.push(expr);
     }

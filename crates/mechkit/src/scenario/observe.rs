@@ -2,7 +2,8 @@
 //! `max(x)`, `final(v)`, `max(x) - min(x)`, `initial(U) - final(U)`. A formula without any
 //! reduction is reduced with `final`.
 
-use mechkit_expr::{Formula, MapScope, Program};
+use mechkit_expr::units::Dimension;
+use mechkit_expr::{Dim, Formula, MapScope, Program};
 
 use crate::Real;
 use crate::particles::{NameContext, Sample, StateExpr};
@@ -17,20 +18,34 @@ pub struct Observable {
     pub source: String,
     parts: Vec<(Reduction, StateExpr)>,
     outer: Program,
+    dim: Dim,
 }
 
 impl Observable {
+    /// Its dimension, where it is known.
+    pub fn dimension(&self) -> Dim {
+        self.dim
+    }
+
+    /// The SI unit of its value, where its dimension is known: `m`, `m/s`, `J`.
+    pub fn unit(&self) -> Option<String> {
+        self.dim.known().map(unit_text)
+    }
+
     /// The reductions it combines.
     pub fn parts(&self) -> &[(Reduction, StateExpr)] {
         &self.parts
     }
 
-    /// Compiles `text` against the scenario's names.
+    /// Compiles `text` against the scenario's names, checking that its parts fit together
+    /// dimensionally.
     pub(crate) fn compile(
         name: &str,
         text: &str,
         names: &NameContext<'_>,
     ) -> Result<Observable, mechkit_expr::ExprError> {
+        let dim_of = |n: &str| names.dim_of(n);
+        let value_of = |n: &str| names.constant(n);
         let calls = extract_reductions(text)?;
         if calls.is_empty() {
             let f = Formula::parse(text)?;
@@ -40,32 +55,33 @@ impl Observable {
                 source: text.to_string(),
                 parts: vec![(Reduction::Final, expr)],
                 outer: Formula::parse("_r0")?.compile(&MapScope::new().slot("_r0", 0))?,
+                dim: f.dimension_with(&dim_of, &value_of)?,
             });
         }
         let mut outer_text = text.to_string();
         let mut parts = Vec::new();
+        let mut part_dims: Vec<(String, Dim)> = Vec::new();
         let mut scope = MapScope::new();
         for (k, call) in calls.iter().enumerate() {
-            let inner = Formula::parse(&text[call.inner.clone()])
-                .map_err(|e| shift(e, text, call.inner.start))?;
-            let expr = names
-                .compile(&inner)
-                .map_err(|e| shift(e, text, call.inner.start))?;
+            let shifted = |e| shift(e, text, call.inner.start);
+            let inner = Formula::parse(&text[call.inner.clone()]).map_err(shifted)?;
+            let expr = names.compile(&inner).map_err(shifted)?;
+            let d = inner.dimension_with(&dim_of, &value_of).map_err(shifted)?;
             parts.push((call.reduction, expr));
             let mut placeholder = format!("_r{k}");
-            let width = call.whole.len();
-            while placeholder.len() < width {
+            while placeholder.len() < call.whole.len() {
                 placeholder.push('_');
             }
             outer_text.replace_range(call.whole.clone(), &placeholder);
             scope.insert(&placeholder, mechkit_expr::Binding::Slot(k));
+            part_dims.push((placeholder, reduced_dimension(call.reduction, d)));
         }
         for (c, v, _) in names.constants {
             scope.insert(c, mechkit_expr::Binding::Const(*v));
         }
         let outer = Formula::parse(&outer_text).map_err(|e| restore(e, text))?;
         for n in outer.names() {
-            if names.resolve(n).is_some() && names.constants.iter().all(|(c, _, _)| c != n) {
+            if names.resolve(n).is_some() && names.constant(n).is_none() {
                 let span = outer.span_of(n).unwrap_or(outer.full_span());
                 return Err(mechkit_expr::ExprError::new(
                     mechkit_expr::ExprErrorKind::UndefinedName {
@@ -80,18 +96,50 @@ impl Observable {
                 ));
             }
         }
+        let dim = outer
+            .dimension_with(
+                &|n| {
+                    part_dims
+                        .iter()
+                        .find(|(p, _)| p == n)
+                        .map_or_else(|| dim_of(n), |(_, d)| *d)
+                },
+                &value_of,
+            )
+            .map_err(|e| restore(e, text))?;
         let outer = outer.compile(&scope).map_err(|e| restore(e, text))?;
         Ok(Observable {
             name: name.to_string(),
             source: text.to_string(),
             parts,
             outer,
+            dim,
         })
     }
 
     /// The result from the reduced values of its parts.
     pub fn value(&self, reduced: &[Real]) -> Real {
         self.outer.eval(reduced)
+    }
+}
+
+/// The dimension of a reduction of a quantity of dimension `d`.
+fn reduced_dimension(r: Reduction, d: Dim) -> Dim {
+    match (r, d) {
+        (Reduction::ArgMin | Reduction::ArgMax, _) => Dim::Known(Dimension::TIME),
+        (Reduction::Integral, Dim::Known(d)) => Dim::Known(d * Dimension::TIME),
+        (Reduction::Integral, _) => Dim::Unknown,
+        (_, d) => d,
+    }
+}
+
+/// A unit for people: the derived symbol where there is one (N, J, W), else base units.
+pub(crate) fn unit_text(d: Dimension) -> String {
+    if d.is_none() {
+        String::new()
+    } else {
+        d.derived_symbol()
+            .map_or_else(|| d.to_string(), str::to_string)
     }
 }
 
@@ -204,14 +252,14 @@ impl<'a> ObservableSet<'a> {
         }
     }
 
-    /// Name and value of each observable.
-    pub fn values(&self) -> Vec<(String, Real)> {
+    /// Name, value and unit (where known) of each observable.
+    pub fn values(&self) -> Vec<(String, Real, Option<String>)> {
         self.items
             .iter()
             .zip(&self.reducers)
             .map(|(o, rs)| {
                 let reduced: Vec<Real> = rs.iter().map(Reducer::value).collect();
-                (o.name.clone(), o.value(&reduced))
+                (o.name.clone(), o.value(&reduced), o.unit())
             })
             .collect()
     }

@@ -76,20 +76,30 @@ impl PlotSpec {
         let x = resolve(x_name)?;
         let x_label = format!("{x_name} [{}]", x.unit());
         let n_bodies = names.bodies.len();
-        let expand = |y: StateVar, label: &str| -> Vec<SeriesSpec> {
+        // `label` names the quantity when it is not the plot's own (energy plots); a series per
+        // body is then labelled with both.
+        let expand = |y: StateVar, label: Option<&str>| -> Vec<SeriesSpec> {
             let local_names = is_local(x) || is_local(y);
             if local_names && n_bodies > 1 {
                 (0..n_bodies)
                     .map(|b| SeriesSpec {
-                        label: names.bodies[b].clone(),
+                        label: match label {
+                            Some(l) => format!("{l}, {}", names.bodies[b]),
+                            None => names.bodies[b].clone(),
+                        },
                         x,
                         y,
                         body: Some(b),
                     })
                     .collect()
             } else {
+                let fallback = if n_bodies == 1 {
+                    names.bodies[0].as_str()
+                } else {
+                    y_name
+                };
                 vec![SeriesSpec {
-                    label: label.to_string(),
+                    label: label.unwrap_or(fallback).to_string(),
                     x,
                     y,
                     body: local_names.then_some(0),
@@ -97,11 +107,11 @@ impl PlotSpec {
             }
         };
         if y_name == "energy" {
-            let mut series = expand(StateVar::Kinetic, "K");
-            series.extend(expand(StateVar::Potential, "U"));
-            series.extend(expand(StateVar::Energy, "E = K + U"));
+            let mut series = expand(StateVar::Kinetic, Some("K"));
+            series.extend(expand(StateVar::Potential, Some("U")));
+            series.extend(expand(StateVar::Energy, Some("E = K + U")));
             for (i, f) in names.forces.iter().enumerate() {
-                series.extend(expand(StateVar::Work(i), &format!("work of {f}")));
+                series.extend(expand(StateVar::Work(i), Some(&format!("work of {f}"))));
             }
             return Ok(PlotSpec {
                 spec: spec.to_string(),
@@ -111,16 +121,11 @@ impl PlotSpec {
             });
         }
         let y = resolve(y_name)?;
-        let label = if n_bodies == 1 {
-            names.bodies[0].clone()
-        } else {
-            y_name.to_string()
-        };
         Ok(PlotSpec {
             spec: spec.to_string(),
             x_label,
             y_label: format!("{y_name} [{}]", y.unit()),
-            series: expand(y, &label),
+            series: expand(y, None),
         })
     }
 

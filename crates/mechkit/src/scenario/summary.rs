@@ -137,6 +137,8 @@ pub struct Summary {
     pub events: Vec<EventSummary>,
     /// `[observe]` results.
     pub observables: BTreeMap<String, Real>,
+    /// SI unit of each observable whose dimension is known (`""` for pure numbers).
+    pub observable_units: BTreeMap<String, String>,
     /// Set when the run diverged.
     pub divergence: Option<DivergenceSummary>,
     /// Warnings about the setup or the run.
@@ -175,7 +177,7 @@ impl Summary {
         scenario: &str,
         sys: &ParticleSystem,
         report: &RunReport,
-        observables: Vec<(String, Real)>,
+        observables: Vec<(String, Real, Option<String>)>,
         warnings: Vec<String>,
     ) -> Self {
         let (q, v) = report.final_state.qv();
@@ -243,7 +245,11 @@ impl Summary {
                     crossing_step: timed(sys, &e.crossing_step),
                 })
                 .collect(),
-            observables: observables.into_iter().collect(),
+            observable_units: observables
+                .iter()
+                .filter_map(|(n, _, u)| u.clone().map(|u| (n.clone(), u)))
+                .collect(),
+            observables: observables.into_iter().map(|(n, v, _)| (n, v)).collect(),
             divergence: report.divergence.as_ref().map(|d| DivergenceSummary {
                 t: d.t,
                 quantity: d.quantity.clone(),
@@ -254,9 +260,11 @@ impl Summary {
         }
     }
 
-    /// Pretty JSON.
+    /// Pretty JSON, ending with a newline.
     pub fn to_json(&self) -> String {
-        serde_json::to_string_pretty(self).expect("a summary always serializes")
+        let mut s = serde_json::to_string_pretty(self).expect("a summary always serializes");
+        s.push('\n');
+        s
     }
 
     /// A short report for people: final state, stop reason, energy ledger, observables
@@ -334,7 +342,15 @@ impl Summary {
         if !self.observables.is_empty() {
             let _ = writeln!(s, "observables");
             for (name, v) in &self.observables {
-                let _ = writeln!(s, "  {name} = {}", num(*v));
+                let unit = self.observable_units.get(name).filter(|u| !u.is_empty());
+                match unit {
+                    Some(u) => {
+                        let _ = writeln!(s, "  {name} = {} {u}", num(*v));
+                    }
+                    None => {
+                        let _ = writeln!(s, "  {name} = {}", num(*v));
+                    }
+                }
             }
         }
         s
@@ -343,7 +359,10 @@ impl Summary {
 
 /// A number with 7 significant digits, for people.
 fn num(x: Real) -> String {
-    if x == 0.0 || !x.is_finite() {
+    if x == 0.0 {
+        return "0".into();
+    }
+    if !x.is_finite() {
         return format!("{x}");
     }
     let a = x.abs();
@@ -382,5 +401,6 @@ mod tests {
         assert_eq!(num(2.8e-4), "0.00028");
         assert_eq!(num(1.5e-9), "1.500000e-9");
         assert_eq!(num(1538.0), "1538");
+        assert_eq!(num(-0.0), "0");
     }
 }

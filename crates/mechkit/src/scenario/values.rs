@@ -16,11 +16,13 @@ use crate::Real;
 pub(crate) type Constant = (String, Real, Dim);
 
 /// What names a parameter value may use: the constants and, for a value that belongs to one
-/// body (a drag coefficient), that body's mass `m`.
+/// body (a drag coefficient), that body's mass `m`. `later` lists constants defined further
+/// down the file, for the hint when one is used too early.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ValueEnv<'c> {
     pub constants: &'c [Constant],
     pub mass: Option<Real>,
+    pub later: &'c [&'c str],
 }
 
 impl ValueEnv<'_> {
@@ -75,34 +77,99 @@ pub(crate) fn resolve(
     want: Dimension,
     env: ValueEnv<'_>,
 ) -> Result<Real, ScenarioError> {
-    match v.get_ref() {
-        DeValue::Integer(i) => i64::from_str_radix(i.as_str(), i.radix())
-            .map(|n| n as Real)
-            .map_err(|_| {
+    let (value, dim) = resolve_any(src, key, v, env).map_err(|e| {
+        if e.kind == ErrorKind::WrongType {
+            let got = e
+                .message
+                .rsplit_once("not ")
+                .map_or("", |(_, t)| t)
+                .to_string();
+            src.error(
+                ErrorKind::WrongType,
+                format!(
+                    "`{key}` must be a number or a string such as \"{}\", not {got}",
+                    example(want)
+                ),
+                v.span(),
+            )
+        } else {
+            e
+        }
+    })?;
+    match dim {
+        Dim::Known(got) if got != want => {
+            let text = match v.get_ref() {
+                DeValue::String(s) => s.to_string(),
+                _ => value.to_string(),
+            };
+            Err(src
+                .error(
+                    ErrorKind::Dimension,
+                    format!(
+                        "`{key}` must have dimension {}, but \"{text}\" has {}",
+                        dim_text(want),
+                        dim_text(got)
+                    ),
+                    v.span(),
+                )
+                .with_hint(format!("write it like \"{}\"", example(want))))
+        }
+        _ => Ok(value),
+    }
+}
+
+/// Resolves one value to SI and says what dimension it has: a TOML number or a plain number
+/// string is [`Dim::Unknown`] (SI, unit not stated), a quantity has its unit's dimension, a
+/// formula has the dimension it computes. Non-finite values are refused.
+pub(crate) fn resolve_any(
+    src: &Source<'_>,
+    key: &str,
+    v: &Value<'_>,
+    env: ValueEnv<'_>,
+) -> Result<(Real, Dim), ScenarioError> {
+    let (value, dim) = match v.get_ref() {
+        DeValue::Integer(i) => (
+            i64::from_str_radix(i.as_str(), i.radix()).map_err(|_| {
                 src.error(
                     ErrorKind::Invalid,
                     format!("`{key}`: {i} is too large"),
                     v.span(),
                 )
-            }),
-        DeValue::Float(f) => f.as_str().replace('_', "").parse::<Real>().map_err(|_| {
-            src.error(
+            })? as Real,
+            Dim::Unknown,
+        ),
+        DeValue::Float(f) => (
+            f.as_str().replace('_', "").parse::<Real>().map_err(|_| {
+                src.error(
+                    ErrorKind::Invalid,
+                    format!("`{key}`: {f} is not a number"),
+                    v.span(),
+                )
+            })?,
+            Dim::Unknown,
+        ),
+        DeValue::String(s) => resolve_text(src, s, &v.span(), env)?,
+        other => {
+            return Err(src.error(
+                ErrorKind::WrongType,
+                format!(
+                    "`{key}` must be a number or a string, not {}",
+                    type_name(other)
+                ),
+                v.span(),
+            ));
+        }
+    };
+    if !value.is_finite() {
+        return Err(src
+            .error(
                 ErrorKind::Invalid,
-                format!("`{key}`: {f} is not a number"),
+                format!("`{key}` is {value}, not a finite number"),
                 v.span(),
             )
-        }),
-        DeValue::String(s) => resolve_text(src, key, s, &v.span(), want, env),
-        other => Err(src.error(
-            ErrorKind::WrongType,
-            format!(
-                "`{key}` must be a number or a string such as \"{}\", not {}",
-                example(want),
-                type_name(other)
-            ),
-            v.span(),
-        )),
+            .with_hint("every value must be a finite number"));
     }
+    Ok((value, dim))
 }
 
 /// An example value of a dimension, for hints.
@@ -122,103 +189,82 @@ pub(crate) fn example(want: Dimension) -> &'static str {
     }
 }
 
+/// A string value: a quantity (`"9.8 m/s^2"`), a plain number (`"4.0"`), or a formula of the
+/// constants (`"2*k"`). Which one is decided so that a typo gets the right error: a string
+/// that starts with a number and does not read as a formula is a quantity, and a unit error
+/// is reported as such.
 fn resolve_text(
     src: &Source<'_>,
-    key: &str,
     text: &str,
     span: &Range<usize>,
-    want: Dimension,
     env: ValueEnv<'_>,
-) -> Result<Real, ScenarioError> {
+) -> Result<(Real, Dim), ScenarioError> {
     let start = src.string_content_start(span);
     let located = |s: mechkit_expr::Span| (start + s.start)..(start + s.end.max(s.start + 1));
     match Quantity::parse(text) {
-        Ok(q) if is_plain_number(text) => Ok(q.value),
-        Ok(q) if q.dim == want => Ok(q.value),
-        Ok(q) => Err(src
-            .error(
-                ErrorKind::Dimension,
-                format!(
-                    "`{key}` must have dimension {}, but \"{text}\" has {}",
-                    dim_text(want),
-                    dim_text(q.dim)
-                ),
-                span.clone(),
-            )
-            .with_hint(format!("write it like \"{}\"", example(want)))),
+        Ok(q) if is_plain_number(text) => Ok((q.value, Dim::Unknown)),
+        Ok(q) => Ok((q.value, Dim::Known(q.dim))),
         Err(unit_error) => {
-            let formula = Formula::parse(text);
-            let names_known = formula.as_ref().is_ok_and(|f| {
-                f.names()
-                    .iter()
-                    .all(|n| env.lookup(n).is_some() || mechkit_expr::builtin_constant(n).is_some())
-            });
-            if matches!(unit_error.kind, UnitErrorKind::NoNumber) || names_known {
-                resolve_formula(src, key, text, span, want, env)
-            } else {
-                let mut e = src.error(
-                    ErrorKind::Unit,
-                    unit_error.message(),
-                    located(unit_error.span),
-                );
-                e.hint = unit_error.hint();
-                if let UnitErrorKind::UnknownUnit { name, .. } = &unit_error.kind
-                    && env.lookup(name).is_some()
-                {
-                    e.hint = Some(format!(
-                        "`{name}` here reads as a unit; to multiply by the constant `{name}` write \"{}\"",
-                        text.replacen(' ', "*", 1)
-                    ));
-                }
-                Err(e)
+            if matches!(unit_error.kind, UnitErrorKind::NoNumber) || Formula::parse(text).is_ok() {
+                return resolve_formula(src, text, span, env);
             }
+            let mut e = src.error(
+                ErrorKind::Unit,
+                unit_error.message(),
+                located(unit_error.span),
+            );
+            e.hint = unit_error.hint();
+            if let UnitErrorKind::UnknownUnit { name, .. } = &unit_error.kind
+                && env.lookup(name).is_some()
+            {
+                e.hint = Some(format!(
+                    "`{name}` here reads as a unit; to multiply by the constant `{name}` write \"{}\"",
+                    text.replacen(' ', "*", 1)
+                ));
+            }
+            Err(e)
         }
     }
 }
 
 fn resolve_formula(
     src: &Source<'_>,
-    key: &str,
     text: &str,
     span: &Range<usize>,
-    want: Dimension,
     env: ValueEnv<'_>,
-) -> Result<Real, ScenarioError> {
+) -> Result<(Real, Dim), ScenarioError> {
     let f = Formula::parse(text).map_err(|e| formula_error(src, span, &e))?;
     for name in f.names() {
         if env.lookup(name).is_none() && mechkit_expr::builtin_constant(name).is_none() {
-            let suggestions = nearest(name, env.candidates());
+            let context = if env.later.contains(&name) {
+                format!(
+                    "`{name}` is defined further down; a constant may only use the constants above it"
+                )
+            } else if env.mass.is_some() {
+                "values may use the constants and `m`, the mass of the body".into()
+            } else {
+                "values may use the constants defined in [constants]".into()
+            };
             let kind = ExprErrorKind::UndefinedName {
                 name: name.to_string(),
-                suggestions,
-                context: Some(if env.mass.is_some() {
-                    "values may use the constants and `m`, the mass of the body".into()
-                } else {
-                    "values may use the constants defined in [constants]".into()
-                }),
+                suggestions: nearest(name, env.candidates()),
+                context: Some(context),
             };
             let e = f.error(kind, f.span_of(name).unwrap_or(f.full_span()));
             return Err(formula_error(src, span, &e));
         }
     }
+    let value_of = |n: &str| env.lookup(n).map(|(v, _)| v);
     let d = f
-        .dimension(&|n| env.lookup(n).map_or(Dim::Unknown, |(_, d)| d))
+        .dimension_with(
+            &|n| env.lookup(n).map_or(Dim::Unknown, |(_, d)| d),
+            &value_of,
+        )
         .map_err(|e| formula_error(src, span, &e))?;
-    if let Dim::Known(got) = d
-        && got != want
-    {
-        return Err(src.error(
-            ErrorKind::Dimension,
-            format!(
-                "`{key}` must have dimension {}, but `{text}` has {}",
-                dim_text(want),
-                dim_text(got)
-            ),
-            span.clone(),
-        ));
-    }
-    f.eval_with(&|n| env.lookup(n).map(|(v, _)| v))
-        .map_err(|e| formula_error(src, span, &e))
+    let value = f
+        .eval_with(&value_of)
+        .map_err(|e| formula_error(src, span, &e))?;
+    Ok((value, if d == Dim::Literal { Dim::Unknown } else { d }))
 }
 
 /// An optional scalar parameter.
