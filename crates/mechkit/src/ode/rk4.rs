@@ -7,7 +7,7 @@
 //! ```
 
 use super::state::State;
-use super::stepper::{IntegrateError, StepInfo, Stepper};
+use super::stepper::{IntegrateError, Provided, StepInfo, Stepper};
 use super::system::OdeSystem;
 use crate::Real;
 
@@ -16,6 +16,7 @@ use crate::Real;
 pub struct Rk4 {
     k: [Vec<Real>; 4],
     tmp: Vec<Real>,
+    provided: Provided,
 }
 
 impl Rk4 {
@@ -43,7 +44,13 @@ impl<S: OdeSystem + ?Sized> Stepper<S> for Rk4 {
         let t = state.t;
         let [k1, k2, k3, k4] = &mut self.k;
         let y = &state.y;
-        sys.rhs_into(t, y, k1);
+        let mut evaluations = 3;
+        if self.provided.take(t) {
+            k1.copy_from_slice(&self.provided.dydt);
+        } else {
+            sys.rhs_into(t, y, k1);
+            evaluations += 1;
+        }
         for i in 0..n {
             self.tmp[i] = y[i] + 0.5 * h * k1[i];
         }
@@ -60,6 +67,14 @@ impl<S: OdeSystem + ?Sized> Stepper<S> for Rk4 {
             state.y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
         }
         state.t += h;
-        Ok(StepInfo { evaluations: 4 })
+        Ok(StepInfo { evaluations })
+    }
+
+    fn reset(&mut self) {
+        self.provided.clear();
+    }
+
+    fn provide_derivative(&mut self, t: Real, dydt: &[Real]) {
+        self.provided.set(t, dydt);
     }
 }

@@ -50,6 +50,12 @@ pub trait Stepper<S: ?Sized> {
     /// Forgets cached evaluations; call after changing the state outside the stepper.
     fn reset(&mut self) {}
 
+    /// Hands the stepper the derivative `f(t, y)` of the state the next step starts from (for
+    /// a second-order system `[v, a]`), when the caller has computed it anyway: the next step
+    /// uses it instead of evaluating it again ("first same as last"). It is used once; a step
+    /// from a different time ignores it.
+    fn provide_derivative(&mut self, _t: Real, _dydt: &[Real]) {}
+
     /// Takes fixed steps of `h` until `t_end` (the last step shortened to land on it).
     /// Returns the number of steps.
     fn integrate(
@@ -82,6 +88,31 @@ pub trait Stepper<S: ?Sized> {
             }
         }
         Ok(n)
+    }
+}
+
+/// A derivative handed in by the caller for the next step (see
+/// [`Stepper::provide_derivative`]).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Provided {
+    t: Option<Real>,
+    pub dydt: Vec<Real>,
+}
+
+impl Provided {
+    pub fn set(&mut self, t: Real, dydt: &[Real]) {
+        self.t = Some(t);
+        self.dydt.clear();
+        self.dydt.extend_from_slice(dydt);
+    }
+
+    /// Whether a derivative for time `t` is waiting; it is consumed either way.
+    pub fn take(&mut self, t: Real) -> bool {
+        self.t.take() == Some(t)
+    }
+
+    pub fn clear(&mut self) {
+        self.t = None;
     }
 }
 

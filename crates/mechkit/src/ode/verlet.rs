@@ -11,7 +11,7 @@
 //! reused.
 
 use super::state::State;
-use super::stepper::{IntegrateError, StepInfo, Stepper};
+use super::stepper::{IntegrateError, Provided, StepInfo, Stepper};
 use super::system::SecondOrderSystem;
 use crate::Real;
 
@@ -23,6 +23,7 @@ pub struct VelocityVerlet {
     v_pred: Vec<Real>,
     /// `a0` holds the acceleration at this time (and the unchanged state since).
     cached_t: Option<Real>,
+    provided: Provided,
 }
 
 impl VelocityVerlet {
@@ -43,6 +44,11 @@ impl<S: SecondOrderSystem + ?Sized> Stepper<S> for VelocityVerlet {
 
     fn reset(&mut self) {
         self.cached_t = None;
+        self.provided.clear();
+    }
+
+    fn provide_derivative(&mut self, t: Real, dydt: &[Real]) {
+        self.provided.set(t, dydt);
     }
 
     fn step(&mut self, sys: &S, state: &mut State, h: Real) -> Result<StepInfo, IntegrateError> {
@@ -54,7 +60,10 @@ impl<S: SecondOrderSystem + ?Sized> Stepper<S> for VelocityVerlet {
         let t = state.t;
         let (q, v) = state.qv_mut();
         let mut evaluations = 0;
-        if self.cached_t != Some(t) || velocity_dependent {
+        if self.provided.take(t) {
+            // exact at the true state, so good for velocity-dependent forces too
+            self.a0.copy_from_slice(&self.provided.dydt[n..]);
+        } else if self.cached_t != Some(t) || velocity_dependent {
             sys.accel_into(t, q, v, &mut self.a0);
             evaluations += 1;
         }

@@ -313,6 +313,16 @@ impl<'a> Simulation<'a> {
             }
         }
 
+        // The ledger evaluates the forces at every step's end; the stepper's next step starts
+        // there, so it gets that evaluation instead of repeating it.
+        let n = state.y.len() / 2;
+        let mut dydt = vec![0.0; 2 * n];
+        let mut hand_over = |stepper: &mut St, t: Real, y: &[Real], a: &[Real]| {
+            dydt[..n].copy_from_slice(&y[n..]);
+            dydt[n..].copy_from_slice(a);
+            stepper.provide_derivative(t, &dydt);
+        };
+        hand_over(&mut stepper, t0, &state.y, &prev_eval.a);
         let mut prev_y = state.y.clone();
         let mut g_prev = self
             .stop
@@ -410,6 +420,7 @@ impl<'a> Simulation<'a> {
             }
             std::mem::swap(&mut prev_eval, &mut new_eval);
             prev_y.copy_from_slice(&state.y);
+            hand_over(&mut stepper, t_next, &state.y, &prev_eval.a);
             if let Some(d) = diagnose_evaluation(sys, &state, &prev_eval, steps) {
                 divergence = Some(d);
                 stop_reason = Some(StopReason::Diverged);

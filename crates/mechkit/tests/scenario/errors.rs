@@ -235,7 +235,10 @@ fn observables_and_plots_are_checked() {
 #[test]
 fn typos_get_the_error_that_fits_them() {
     // a misspelt unit in a constant is a unit error, not a formula error
-    let e = error(&with("k = \"10 N/m\"", "g0 = \"9.8 m/ss^2\"\nk = \"10 N/m\""));
+    let e = error(&with(
+        "k = \"10 N/m\"",
+        "g0 = \"9.8 m/ss^2\"\nk = \"10 N/m\"",
+    ));
     assert_eq!(e.kind, ErrorKind::Unit, "{e}");
     assert!(e.message.contains("`ss`"), "{e}");
     // a misspelt constant after a number is an undefined name
@@ -254,9 +257,17 @@ fn values_must_be_finite() {
 
 #[test]
 fn named_constant_exponents_keep_dimensions_known() {
-    let text = with("k = \"10 N/m\"", "k = \"10 N/m^3\"\nn = 3").replacen("F = \"-k*x\"", "F = \"-k*x^n\"", 1);
+    let text = with("k = \"10 N/m\"", "k = \"10 N/m^3\"\nn = 3").replacen(
+        "F = \"-k*x\"",
+        "F = \"-k*x^n\"",
+        1,
+    );
     load(&text).unwrap();
-    let bad = with("k = \"10 N/m\"", "k = \"10 N/m^3\"\nn = 2").replacen("F = \"-k*x\"", "F = \"-k*x^n\"", 1);
+    let bad = with("k = \"10 N/m\"", "k = \"10 N/m^3\"\nn = 2").replacen(
+        "F = \"-k*x\"",
+        "F = \"-k*x^n\"",
+        1,
+    );
     assert_eq!(error(&bad).kind, ErrorKind::Dimension);
 }
 
@@ -268,7 +279,11 @@ fn observables_must_be_dimensionally_consistent() {
         "{BASE}\n[observe]\nswing = \"max(x) - min(x)\"\nwhen = \"argmax(v)\"\nhalf = \"(max(x) - min(x))/2\"\n"
     ))
     .unwrap();
-    let units: Vec<Option<String>> = s.observables.iter().map(mechkit::scenario::Observable::unit).collect();
+    let units: Vec<Option<String>> = s
+        .observables
+        .iter()
+        .map(mechkit::scenario::Observable::unit)
+        .collect();
     // a literal factor's unit is unknowable, so `/2` leaves the unit unknown
     assert_eq!(units, vec![Some("m".into()), Some("s".into()), None]);
 }
@@ -276,7 +291,10 @@ fn observables_must_be_dimensionally_consistent() {
 #[test]
 fn state_names_cannot_be_constants_or_force_names_hold_dashes() {
     for name in ["K", "E", "a", "x"] {
-        let e = error(&with("k = \"10 N/m\"", &format!("{name} = 2\nk = \"10 N/m\"")));
+        let e = error(&with(
+            "k = \"10 N/m\"",
+            &format!("{name} = 2\nk = \"10 N/m\""),
+        ));
         assert!(e.message.contains("cannot be a constant"), "{name}: {e}");
     }
     let e = error(&with("name = \"spring\"", "name = \"air-drag\""));
