@@ -1,2 +1,3 @@
 mod convergence;
 mod energy_behaviour;
+mod fsal;
