@@ -3,6 +3,7 @@
 //! Every value is converted to SI on input. A bare number is taken to be in SI already.
 
 mod dimension;
+mod parse;
 mod quantity;
 mod table;
 

@@ -4,9 +4,9 @@
 use std::fmt;
 
 use super::dimension::Dimension;
-use super::table::{known_misspelling, lookup, suggestion_candidates};
+use super::parse::parse_unit_at;
 use crate::span::{Span, caret_lines};
-use crate::suggest::{did_you_mean, nearest};
+use crate::suggest::did_you_mean;
 
 /// A value in SI units with its dimension.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -48,7 +48,7 @@ impl Quantity {
         if rest.trim().is_empty() {
             return Ok(Quantity::number(number));
         }
-        let unit = Unit::parse_at(text, rest_start)?;
+        let unit = parse_unit_at(text, rest_start)?;
         Ok(Quantity::new(number * unit.factor, unit.dim))
     }
 
@@ -82,32 +82,7 @@ impl Unit {
     /// Parses a unit expression: names joined by `*`, `·`, spaces or `/`, powers `^n` (also
     /// `^-1`, `^(-1)`, `²`, `³`), parentheses, and `1` as in `1/s`.
     pub fn parse(text: &str) -> Result<Unit, UnitError> {
-        Unit::parse_at(text, 0)
-    }
-
-    fn parse_at(source: &str, start: usize) -> Result<Unit, UnitError> {
-        let mut p = UnitParser {
-            src: source,
-            pos: start,
-            depth: 0,
-        };
-        p.skip_ws();
-        if p.pos >= source.len() {
-            return Err(p.err(
-                UnitErrorKind::Syntax("a unit".into()),
-                Span::new(start, source.len()),
-            ));
-        }
-        let unit = p.product()?;
-        p.skip_ws();
-        if p.pos < source.len() {
-            let c = p.peek().unwrap_or(' ');
-            return Err(p.err(
-                UnitErrorKind::Syntax(format!("`*`, `/` or the end of the unit, found `{c}`")),
-                Span::new(p.pos, p.pos + c.len_utf8()),
-            ));
-        }
-        Ok(unit)
+        parse_unit_at(text, 0)
     }
 }
 
@@ -220,228 +195,6 @@ fn leading_number(text: &str) -> Option<(f64, usize)> {
     }
     let value = text[start..i].parse().ok()?;
     Some((value, i))
-}
-
-struct UnitParser<'a> {
-    src: &'a str,
-    pos: usize,
-    depth: usize,
-}
-
-fn is_unit_char(c: char) -> bool {
-    c.is_alphabetic() || c == '°' || c == 'Ω' || c == 'µ' || c == 'μ' || c == 'Å'
-}
-
-impl UnitParser<'_> {
-    fn peek(&self) -> Option<char> {
-        self.src[self.pos..].chars().next()
-    }
-
-    fn skip_ws(&mut self) {
-        while self.peek().is_some_and(char::is_whitespace) {
-            self.pos += 1;
-        }
-    }
-
-    fn err(&self, kind: UnitErrorKind, span: Span) -> UnitError {
-        UnitError {
-            kind,
-            span,
-            source: self.src.to_string(),
-        }
-    }
-
-    /// product := power (('*' | '·' | ' ' | '/') power)*
-    fn product(&mut self) -> Result<Unit, UnitError> {
-        let mut acc = self.power()?;
-        loop {
-            let save = self.pos;
-            self.skip_ws();
-            match self.peek() {
-                Some('*' | '·' | '×') => {
-                    self.pos += self.peek().map_or(1, char::len_utf8);
-                    let rhs = self.power()?;
-                    acc = Unit {
-                        factor: acc.factor * rhs.factor,
-                        dim: acc.dim * rhs.dim,
-                    };
-                }
-                Some('/') => {
-                    self.pos += 1;
-                    let rhs = self.power()?;
-                    acc = Unit {
-                        factor: acc.factor / rhs.factor,
-                        dim: acc.dim / rhs.dim,
-                    };
-                }
-                Some(c) if save != self.pos && (is_unit_char(c) || c == '(') => {
-                    // juxtaposition after a space: "N m"
-                    let rhs = self.power()?;
-                    acc = Unit {
-                        factor: acc.factor * rhs.factor,
-                        dim: acc.dim * rhs.dim,
-                    };
-                }
-                _ => {
-                    self.pos = save;
-                    return Ok(acc);
-                }
-            }
-        }
-    }
-
-    /// power := atom ('^' int | '²' | '³' | '⁻¹')?
-    fn power(&mut self) -> Result<Unit, UnitError> {
-        let base = self.atom()?;
-        let n = match self.peek() {
-            Some('^') => {
-                self.pos += 1;
-                self.integer()?
-            }
-            Some('*') if self.src[self.pos..].starts_with("**") => {
-                self.pos += 2;
-                self.integer()?
-            }
-            Some('²') => {
-                self.pos += '²'.len_utf8();
-                2
-            }
-            Some('³') => {
-                self.pos += '³'.len_utf8();
-                3
-            }
-            _ if self.src[self.pos..].starts_with("⁻¹") => {
-                self.pos += "⁻¹".len();
-                -1
-            }
-            _ => return Ok(base),
-        };
-        Ok(Unit {
-            factor: base.factor.powi(n),
-            dim: base.dim.powi(n),
-        })
-    }
-
-    fn integer(&mut self) -> Result<i32, UnitError> {
-        let start = self.pos;
-        let parens = self.peek() == Some('(');
-        if parens {
-            self.pos += 1;
-        }
-        let num_start = self.pos;
-        if matches!(self.peek(), Some('-' | '+')) {
-            self.pos += 1;
-        }
-        while self.peek().is_some_and(|c| c.is_ascii_digit()) {
-            self.pos += 1;
-        }
-        let value: Option<i32> = self.src[num_start..self.pos]
-            .parse()
-            .ok()
-            .filter(|n: &i32| n.abs() <= 12);
-        if parens {
-            if self.peek() == Some(')') {
-                self.pos += 1;
-            } else {
-                return Err(self.err(
-                    UnitErrorKind::Syntax("`)`".into()),
-                    Span::new(self.pos, self.pos),
-                ));
-            }
-        }
-        value.ok_or_else(|| {
-            self.err(
-                UnitErrorKind::Syntax("a whole-number power between -12 and 12 after `^`".into()),
-                Span::new(start, self.pos.max(start + 1).min(self.src.len())),
-            )
-        })
-    }
-
-    fn atom(&mut self) -> Result<Unit, UnitError> {
-        self.skip_ws();
-        let start = self.pos;
-        match self.peek() {
-            Some('(') => {
-                self.depth += 1;
-                if self.depth > 16 {
-                    return Err(self.err(
-                        UnitErrorKind::Syntax("less nesting".into()),
-                        Span::new(start, start + 1),
-                    ));
-                }
-                self.pos += 1;
-                let inner = self.product()?;
-                self.skip_ws();
-                if self.peek() != Some(')') {
-                    return Err(self.err(
-                        UnitErrorKind::Syntax("`)`".into()),
-                        Span::new(self.pos, self.pos),
-                    ));
-                }
-                self.pos += 1;
-                self.depth -= 1;
-                Ok(inner)
-            }
-            Some('1') => {
-                self.pos += 1;
-                Ok(Unit {
-                    factor: 1.0,
-                    dim: Dimension::NONE,
-                })
-            }
-            Some(c) if is_unit_char(c) => {
-                while self.peek().is_some_and(is_unit_char) {
-                    self.pos += self.peek().map_or(1, char::len_utf8);
-                }
-                let name = &self.src[start..self.pos];
-                match lookup(name) {
-                    Some((factor, dim)) => Ok(Unit { factor, dim }),
-                    None => Err(self.unknown(name, Span::new(start, self.pos))),
-                }
-            }
-            Some(c) => Err(self.err(
-                UnitErrorKind::Syntax(format!("a unit name, found `{c}`")),
-                Span::new(start, start + c.len_utf8()),
-            )),
-            None => Err(self.err(
-                UnitErrorKind::Syntax("a unit name".into()),
-                Span::new(start, start),
-            )),
-        }
-    }
-
-    fn unknown(&self, name: &str, span: Span) -> UnitError {
-        let mut suggestions: Vec<String> = known_misspelling(name)
-            .map(str::to_string)
-            .into_iter()
-            .collect();
-        if suggestions.is_empty() {
-            // Two units run together, e.g. "kgm" for "kg*m".
-            for split in 1..name.len() {
-                if name.is_char_boundary(split) {
-                    let (a, b) = name.split_at(split);
-                    if lookup(a).is_some() && lookup(b).is_some() {
-                        suggestions.push(format!("{a}*{b}"));
-                        break;
-                    }
-                }
-            }
-        }
-        let candidates = suggestion_candidates();
-        for s in nearest(name, candidates.iter().map(String::as_str)) {
-            if !suggestions.contains(&s) {
-                suggestions.push(s);
-            }
-        }
-        suggestions.truncate(3);
-        self.err(
-            UnitErrorKind::UnknownUnit {
-                name: name.to_string(),
-                suggestions,
-            },
-            span,
-        )
-    }
 }
 
 #[cfg(test)]

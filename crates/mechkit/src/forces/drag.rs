@@ -6,88 +6,33 @@ use super::wind::Wind;
 use crate::Real;
 use crate::particles::Kinematics;
 
-/// Linear (viscous) drag `F = -b (v - w)`; `b` in kg/s, per body.
+/// What both drag laws share: a name, the bodies with their coefficients, the wind.
 #[derive(Debug, Clone)]
-pub struct LinearDrag {
+struct Drag {
     name: String,
     targets: Vec<Target>,
     wind: Wind,
 }
 
-impl LinearDrag {
-    /// Drag with coefficient `b` on each target (the target's coefficient), in still air.
-    pub fn new(name: impl Into<String>, targets: Vec<Target>) -> Self {
-        Self {
-            name: name.into(),
-            targets,
-            wind: Wind::Calm,
-        }
-    }
-
-    /// Relative to `wind`.
-    #[must_use]
-    pub fn with_wind(mut self, wind: Wind) -> Self {
-        self.wind = wind;
-        self
-    }
-}
-
-/// Quadratic drag `F = -D |v - w| (v - w)`; `D` in kg/m, per body.
-#[derive(Debug, Clone)]
-pub struct QuadraticDrag {
-    name: String,
-    targets: Vec<Target>,
-    wind: Wind,
-}
-
-impl QuadraticDrag {
-    /// Drag with coefficient `D` on each target (the target's coefficient), in still air.
-    pub fn new(name: impl Into<String>, targets: Vec<Target>) -> Self {
-        Self {
-            name: name.into(),
-            targets,
-            wind: Wind::Calm,
-        }
-    }
-
-    /// Relative to `wind`.
-    #[must_use]
-    pub fn with_wind(mut self, wind: Wind) -> Self {
-        self.wind = wind;
-        self
-    }
-}
-
-#[inline]
-fn relative_velocity(k: &Kinematics<'_>, wind: &Wind, b: usize, u: &mut [Real; 3]) -> Real {
-    let mut w = [0.0; 3];
-    wind.at(k, b, &mut w);
-    let v = k.velocity(b);
-    let mut s2 = 0.0;
-    for i in 0..k.dim {
-        u[i] = v[i] - w[i];
-        s2 += u[i] * u[i];
-    }
-    s2.sqrt()
-}
-
-impl Force for LinearDrag {
-    fn name(&self) -> &str {
-        &self.name
-    }
-
-    fn add_forces(&self, k: &Kinematics<'_>, out: &mut [Real]) {
-        let mut u = [0.0; 3];
+impl Drag {
+    /// Adds `-c f(|u|) u` to each target, where `u = v - w` and `c` its coefficient.
+    #[inline]
+    fn add(&self, k: &Kinematics<'_>, out: &mut [Real], f: impl Fn(Real) -> Real) {
+        let mut w = [0.0; 3];
         for t in &self.targets {
-            relative_velocity(k, &self.wind, t.body, &mut u);
+            self.wind.at(k, t.body, &mut w);
+            let v = k.velocity(t.body);
+            let mut u = [0.0; 3];
+            let mut s2 = 0.0;
             for i in 0..k.dim {
-                out[t.body * k.dim + i] -= t.coefficient * u[i];
+                u[i] = v[i] - w[i];
+                s2 += u[i] * u[i];
+            }
+            let scale = t.coefficient * f(s2.sqrt());
+            for i in 0..k.dim {
+                out[t.body * k.dim + i] -= scale * u[i];
             }
         }
-    }
-
-    fn velocity_dependent(&self) -> bool {
-        true
     }
 
     fn bodies(&self) -> Vec<usize> {
@@ -95,26 +40,58 @@ impl Force for LinearDrag {
     }
 }
 
-impl Force for QuadraticDrag {
-    fn name(&self) -> &str {
-        &self.name
-    }
+macro_rules! drag_law {
+    ($(#[$doc:meta])* $name:ident, $law:expr) => {
+        $(#[$doc])*
+        #[derive(Debug, Clone)]
+        pub struct $name(Drag);
 
-    fn add_forces(&self, k: &Kinematics<'_>, out: &mut [Real]) {
-        let mut u = [0.0; 3];
-        for t in &self.targets {
-            let speed = relative_velocity(k, &self.wind, t.body, &mut u);
-            for i in 0..k.dim {
-                out[t.body * k.dim + i] -= t.coefficient * speed * u[i];
+        impl $name {
+            /// Drag on each target with the target's coefficient, in still air.
+            pub fn new(name: impl Into<String>, targets: Vec<Target>) -> Self {
+                Self(Drag {
+                    name: name.into(),
+                    targets,
+                    wind: Wind::Calm,
+                })
+            }
+
+            /// Relative to `wind`.
+            #[must_use]
+            pub fn with_wind(mut self, wind: Wind) -> Self {
+                self.0.wind = wind;
+                self
             }
         }
-    }
 
-    fn velocity_dependent(&self) -> bool {
-        true
-    }
+        impl Force for $name {
+            fn name(&self) -> &str {
+                &self.0.name
+            }
 
-    fn bodies(&self) -> Vec<usize> {
-        self.targets.iter().map(|t| t.body).collect()
-    }
+            fn add_forces(&self, k: &Kinematics<'_>, out: &mut [Real]) {
+                self.0.add(k, out, $law);
+            }
+
+            fn velocity_dependent(&self) -> bool {
+                true
+            }
+
+            fn bodies(&self) -> Vec<usize> {
+                self.0.bodies()
+            }
+        }
+    };
 }
+
+drag_law!(
+    /// Linear (viscous) drag `F = -b (v - w)`; `b` in kg/s, per body.
+    LinearDrag,
+    |_speed| 1.0
+);
+
+drag_law!(
+    /// Quadratic drag `F = -D |v - w| (v - w)`; `D` in kg/m, per body.
+    QuadraticDrag,
+    |speed| speed
+);

@@ -5,11 +5,15 @@
 //! the state vector of the system is `[q, v]` ([`crate::ode::State`]).
 
 mod kinematics;
+mod names;
 mod sample;
+mod state_expr;
 mod system;
 mod vars;
 
 pub use kinematics::{Kinematics, dot, norm};
+pub use names::NameContext;
 pub use sample::{Evaluation, Sample};
+pub use state_expr::StateExpr;
 pub use system::{Body, ParticleSystem, ParticleSystemBuilder, SystemError};
-pub use vars::{BodyRef, NameContext, StateExpr, StateVar, VarLevel};
+pub use vars::{BodyRef, StateVar, VarLevel};

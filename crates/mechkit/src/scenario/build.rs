@@ -1,21 +1,21 @@
 //! From TOML text to a runnable [`Scenario`]: every key checked, every value resolved to SI
 //! with its dimension checked, every formula compiled, every error located.
 
+use mechkit_expr::nearest;
 use mechkit_expr::units::Dimension;
-use mechkit_expr::{BinOp, Expr, Formula, nearest};
 use toml::de::{DeTable, DeValue};
 
 use super::Scenario;
 use super::doc::{Source, Table};
 use super::error::{ErrorKind, ScenarioError};
 use super::forces::{ForceContext, build_force};
-use super::observe::Observable;
-use super::plot::PlotSpec;
-use super::values::{Constant, ValueEnv, formula_error, resolve_any, scalar, vector};
+use super::observe::read_observe;
+use super::plot::read_output;
+use super::stop::read_stop;
+use super::values::{Constant, ValueEnv, resolve_any, scalar, vector};
 use crate::Real;
 use crate::ode::{Method, State};
-use crate::particles::{BodyRef, NameContext, ParticleSystem, StateExpr, VarLevel};
-use crate::simulate::Condition;
+use crate::particles::{BodyRef, NameContext, ParticleSystem, VarLevel};
 
 const TOP_KEYS: &[&str] = &[
     "title",
@@ -31,8 +31,6 @@ const TOP_KEYS: &[&str] = &[
 ];
 const BODY_KEYS: &[&str] = &["name", "mass", "position", "velocity"];
 const INTEGRATOR_KEYS: &[&str] = &["method", "dt"];
-const STOP_KEYS: &[&str] = &["when", "t_max", "max_steps"];
-const OUTPUT_KEYS: &[&str] = &["every", "plots"];
 
 /// State names a constant may not take (formulas would become ambiguous).
 const RESERVED: &[&str] = &[
@@ -146,9 +144,9 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
         level: VarLevel::Derived,
     };
-    let (stop, t_max, max_steps) = stop(&root, env, &names)?;
-    let observables = observe(&root, &names)?;
-    let (every, plots) = output(&root, &names, dim)?;
+    let (stop, t_max, max_steps) = read_stop(&root, env, &names)?;
+    let observables = read_observe(&root, &names)?;
+    let (every, plots) = read_output(&root, &names, dim)?;
     if t_max.is_none() && max_steps.is_none() {
         warnings.push(format!(
             "[stop] has no t_max: the run is bounded by {} steps; set t_max",
@@ -355,197 +353,4 @@ fn integrator(root: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<(Method, Real),
             .with_hint("e.g. `dt = \"1 ms\"`"));
     }
     Ok((method, dt))
-}
-
-type Stop = (Option<Condition>, Option<Real>, Option<u64>);
-
-fn stop(
-    root: &Table<'_, '_>,
-    env: ValueEnv<'_>,
-    names: &NameContext<'_>,
-) -> Result<Stop, ScenarioError> {
-    let Some(t) = root.table("stop")? else {
-        return Ok((None, None, None));
-    };
-    t.check_keys(STOP_KEYS)?;
-    let t_max = scalar(&t, "t_max", Dimension::TIME, env)?;
-    if let Some(tm) = t_max
-        && !(tm > 0.0 && tm.is_finite())
-    {
-        return Err(t.src.error(
-            ErrorKind::Invalid,
-            format!("`t_max` must be positive, not {tm} s"),
-            t.get("t_max").map_or(t.span.clone(), toml::Spanned::span),
-        ));
-    }
-    let max_steps = match t.count("max_steps")? {
-        Some((0, span)) => {
-            return Err(t
-                .src
-                .error(ErrorKind::Invalid, "`max_steps` must be at least 1", span));
-        }
-        other => other.map(|(n, _)| n),
-    };
-    let condition = match t.string("when")? {
-        None => None,
-        Some((text, span)) => Some(condition(&t, text, &span, names)?),
-    };
-    Ok((condition, t_max, max_steps))
-}
-
-fn compile_state(
-    t: &Table<'_, '_>,
-    f: &Formula,
-    span: &std::ops::Range<usize>,
-    names: &NameContext<'_>,
-) -> Result<StateExpr, ScenarioError> {
-    names
-        .compile(f)
-        .map_err(|e| formula_error(&t.src, span, &e))
-}
-
-/// A stop condition: a comparison becomes a continuous event function (`a < b` has
-/// `g = b - a`), anything else a boolean one located by bisection.
-fn condition(
-    t: &Table<'_, '_>,
-    text: &str,
-    span: &std::ops::Range<usize>,
-    names: &NameContext<'_>,
-) -> Result<Condition, ScenarioError> {
-    let f = Formula::parse(text).map_err(|e| formula_error(&t.src, span, &e))?;
-    let whole = compile_state(t, &f, span, names)?;
-    if let Expr::Binary(op, a, b) = f.expr() {
-        if *op == BinOp::Eq || *op == BinOp::Ne {
-            return Err(t
-                .src
-                .error(ErrorKind::Invalid, format!("a stop condition cannot use `{}`: an exact equality is never hit between steps", op.symbol()), span.clone())
-                .with_hint("write the crossing as an inequality, e.g. `x < 0` or `vy < 0`"));
-        }
-        if op.is_comparison() {
-            let lhs = compile_state(
-                t,
-                &Formula::parse(&a.to_string()).expect("printed expressions re-parse"),
-                span,
-                names,
-            )?;
-            let rhs = compile_state(
-                t,
-                &Formula::parse(&b.to_string()).expect("printed expressions re-parse"),
-                span,
-                names,
-            )?;
-            let needs = !(lhs.is_kinematic() && rhs.is_kinematic());
-            let (first, second) = if matches!(op, BinOp::Lt | BinOp::Le) {
-                (rhs, lhs)
-            } else {
-                (lhs, rhs)
-            };
-            let inclusive = matches!(op, BinOp::Le | BinOp::Ge);
-            return Ok(Condition::from_fn(text, inclusive, needs, move |s, sys| {
-                let (dim, mass) = (sys.dim(), sys.masses());
-                first.eval_sample(s, dim, mass, None) - second.eval_sample(s, dim, mass, None)
-            }));
-        }
-    }
-    let needs = !whole.is_kinematic();
-    Ok(Condition::from_fn(text, true, needs, move |s, sys| {
-        if whole.eval_sample(s, sys.dim(), sys.masses(), None) == 0.0 {
-            -1.0
-        } else {
-            1.0
-        }
-    }))
-}
-
-fn observe(
-    root: &Table<'_, '_>,
-    names: &NameContext<'_>,
-) -> Result<Vec<Observable>, ScenarioError> {
-    let Some(t) = root.table("observe")? else {
-        return Ok(Vec::new());
-    };
-    let mut out = Vec::new();
-    for (key, value) in t.entries {
-        let name: &str = key.get_ref();
-        let DeValue::String(text) = value.get_ref() else {
-            return Err(t.wrong_type(name, value, "a string such as \"max(x)\""));
-        };
-        let span = value.span();
-        let o =
-            Observable::compile(name, text, names).map_err(|e| formula_error(&t.src, &span, &e))?;
-        out.push(o);
-    }
-    Ok(out)
-}
-
-fn output(
-    root: &Table<'_, '_>,
-    names: &NameContext<'_>,
-    dim: usize,
-) -> Result<(u64, Vec<PlotSpec>), ScenarioError> {
-    let t = root.table("output")?;
-    let every = match &t {
-        Some(t) => {
-            t.check_keys(OUTPUT_KEYS)?;
-            match t.count("every")? {
-                Some((0, span)) => {
-                    return Err(t.src.error(
-                        ErrorKind::Invalid,
-                        "`every` must be at least 1",
-                        span,
-                    ));
-                }
-                Some((n, _)) => n,
-                None => 1,
-            }
-        }
-        None => 1,
-    };
-    let specs: Vec<(String, Option<std::ops::Range<usize>>)> =
-        match t.as_ref().and_then(|t| t.get("plots")) {
-            Some(v) => match v.get_ref() {
-                DeValue::Array(items) => items
-                    .iter()
-                    .map(|item| match item.get_ref() {
-                        DeValue::String(s) => Ok((s.to_string(), Some(item.span()))),
-                        _ => Err(t.as_ref().expect("plots came from the table").wrong_type(
-                            "plots",
-                            item,
-                            "a string such as \"x(t)\"",
-                        )),
-                    })
-                    .collect::<Result<_, _>>()?,
-                _ => {
-                    return Err(t.as_ref().expect("plots came from the table").wrong_type(
-                        "plots",
-                        v,
-                        "a list such as [\"x(t)\", \"v(t)\"]",
-                    ));
-                }
-            },
-            None => default_plots(dim)
-                .into_iter()
-                .map(|s| (s.to_string(), None))
-                .collect(),
-        };
-    let src = root.src;
-    let mut plots = Vec::new();
-    for (spec, span) in specs {
-        let p = PlotSpec::parse(&spec, names).map_err(|(msg, hint)| match &span {
-            Some(span) => src
-                .error(ErrorKind::Invalid, msg, span.clone())
-                .with_hint(hint),
-            None => ScenarioError::new(ErrorKind::Invalid, msg).with_hint(hint),
-        })?;
-        plots.push(p);
-    }
-    Ok((every, plots))
-}
-
-fn default_plots(dim: usize) -> Vec<&'static str> {
-    match dim {
-        1 => vec!["x(t)", "v(t)", "energy(t)"],
-        2 => vec!["y(x)", "v(t)", "energy(t)"],
-        _ => vec!["z(t)", "v(t)", "energy(t)"],
-    }
 }

@@ -164,6 +164,21 @@ impl<'s, 'a> Table<'s, 'a> {
         )
     }
 
+    /// A vector-like value with `found` components in a scenario of `dim` dimensions.
+    pub fn component_count(
+        &self,
+        key: &str,
+        found: usize,
+        dim: usize,
+        span: Range<usize>,
+    ) -> ScenarioError {
+        self.src.error(
+            ErrorKind::Invalid,
+            format!("`{key}` has {found} components, but the scenario has {dim} dimensions"),
+            span,
+        )
+    }
+
     pub fn missing(&self, key: &str, example: &str) -> ScenarioError {
         self.src
             .error(

@@ -259,15 +259,7 @@ fn formula_components(
     };
     if items.len() != dim {
         return Err(t
-            .src
-            .error(
-                ErrorKind::Invalid,
-                format!(
-                    "`{key}` has {} components, but the scenario has {dim} dimensions",
-                    items.len()
-                ),
-                v.span(),
-            )
+            .component_count(key, items.len(), dim, v.span())
             .with_hint(if dim == 1 {
                 format!("write `{key} = \"…\"`")
             } else {

@@ -44,6 +44,7 @@ mod observe;
 mod output;
 mod plot;
 mod run;
+mod stop;
 mod summary;
 mod values;
 

@@ -5,6 +5,11 @@
 use mechkit_expr::units::Dimension;
 use mechkit_expr::{Dim, Formula, MapScope, Program};
 
+use toml::de::DeValue;
+
+use super::doc::Table;
+use super::error::ScenarioError;
+use super::values::formula_error;
 use crate::Real;
 use crate::particles::{NameContext, Sample, StateExpr};
 use crate::simulate::{Observer, ObserverError, Reducer, Reduction};
@@ -227,6 +232,28 @@ fn extract_reductions(text: &str) -> Result<Vec<Call>, mechkit_expr::ExprError> 
             inner: open + 1..close,
         });
         i = open + 1;
+    }
+    Ok(out)
+}
+
+/// Reads `[observe]`.
+pub(crate) fn read_observe(
+    root: &Table<'_, '_>,
+    names: &NameContext<'_>,
+) -> Result<Vec<Observable>, ScenarioError> {
+    let Some(t) = root.table("observe")? else {
+        return Ok(Vec::new());
+    };
+    let mut out = Vec::new();
+    for (key, value) in t.entries {
+        let name: &str = key.get_ref();
+        let DeValue::String(text) = value.get_ref() else {
+            return Err(t.wrong_type(name, value, "a string such as \"max(x)\""));
+        };
+        let span = value.span();
+        let o =
+            Observable::compile(name, text, names).map_err(|e| formula_error(&t.src, &span, &e))?;
+        out.push(o);
     }
     Ok(out)
 }

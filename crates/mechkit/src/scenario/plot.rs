@@ -5,6 +5,10 @@
 //! draws `K`, `U`, `E` and the work of each force.
 
 use mechkit_expr::nearest;
+use toml::de::DeValue;
+
+use super::doc::Table;
+use super::error::{ErrorKind, ScenarioError};
 
 use crate::Real;
 use crate::particles::{BodyRef, NameContext, Sample, StateVar, VarLevel};
@@ -13,6 +17,81 @@ use crate::simulate::{Observer, ObserverError};
 /// Points kept per series before thinning (every other point is dropped, and the stride
 /// doubles).
 const MAX_POINTS: usize = 20_000;
+
+const OUTPUT_KEYS: &[&str] = &["every", "plots"];
+
+/// Reads `[output]`: the decimation `every` and the plots.
+pub(crate) fn read_output(
+    root: &Table<'_, '_>,
+    names: &NameContext<'_>,
+    dim: usize,
+) -> Result<(u64, Vec<PlotSpec>), ScenarioError> {
+    let t = root.table("output")?;
+    let every = match &t {
+        Some(t) => {
+            t.check_keys(OUTPUT_KEYS)?;
+            match t.count("every")? {
+                Some((0, span)) => {
+                    return Err(t.src.error(
+                        ErrorKind::Invalid,
+                        "`every` must be at least 1",
+                        span,
+                    ));
+                }
+                Some((n, _)) => n,
+                None => 1,
+            }
+        }
+        None => 1,
+    };
+    let specs: Vec<(String, Option<std::ops::Range<usize>>)> =
+        match t.as_ref().and_then(|t| t.get("plots")) {
+            Some(v) => match v.get_ref() {
+                DeValue::Array(items) => items
+                    .iter()
+                    .map(|item| match item.get_ref() {
+                        DeValue::String(s) => Ok((s.to_string(), Some(item.span()))),
+                        _ => Err(t.as_ref().expect("plots came from the table").wrong_type(
+                            "plots",
+                            item,
+                            "a string such as \"x(t)\"",
+                        )),
+                    })
+                    .collect::<Result<_, _>>()?,
+                _ => {
+                    return Err(t.as_ref().expect("plots came from the table").wrong_type(
+                        "plots",
+                        v,
+                        "a list such as [\"x(t)\", \"v(t)\"]",
+                    ));
+                }
+            },
+            None => default_plots(dim)
+                .into_iter()
+                .map(|s| (s.to_string(), None))
+                .collect(),
+        };
+    let src = root.src;
+    let mut plots = Vec::new();
+    for (spec, span) in specs {
+        let p = PlotSpec::parse(&spec, names).map_err(|(msg, hint)| match &span {
+            Some(span) => src
+                .error(ErrorKind::Invalid, msg, span.clone())
+                .with_hint(hint),
+            None => ScenarioError::new(ErrorKind::Invalid, msg).with_hint(hint),
+        })?;
+        plots.push(p);
+    }
+    Ok((every, plots))
+}
+
+fn default_plots(dim: usize) -> Vec<&'static str> {
+    match dim {
+        1 => vec!["x(t)", "v(t)", "energy(t)"],
+        2 => vec!["y(x)", "v(t)", "energy(t)"],
+        _ => vec!["z(t)", "v(t)", "energy(t)"],
+    }
+}
 
 /// One curve: `y` against `x`, for a body when the names are body-local.
 #[derive(Debug, Clone, PartialEq)]

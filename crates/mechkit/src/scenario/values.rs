@@ -315,15 +315,8 @@ pub(crate) fn vector(
     match v.get_ref() {
         DeValue::Array(items) => {
             if items.len() != dim {
-                return Err(src
-                    .error(
-                        ErrorKind::Invalid,
-                        format!(
-                            "`{key}` has {} components, but the scenario has {dim} dimensions",
-                            items.len()
-                        ),
-                        v.span(),
-                    )
+                return Err(t
+                    .component_count(key, items.len(), dim, v.span())
                     .with_hint(hint()));
             }
             items

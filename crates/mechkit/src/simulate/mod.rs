@@ -10,14 +10,15 @@
 //! the refined answer sit side by side.
 
 mod condition;
+mod diagnose;
+mod locate;
 mod observe;
 mod reduce;
+mod report;
 mod run;
 
 pub use condition::Condition;
 pub use observe::{Observer, ObserverError, Recorder};
 pub use reduce::{Reducer, Reduction};
-pub use run::{
-    DEFAULT_MAX_STEPS, Divergence, EventRecord, RunReport, SimulateError, Simulation, Snapshot,
-    StopReason,
-};
+pub use report::{Divergence, EventRecord, RunReport, SimulateError, Snapshot, StopReason};
+pub use run::{DEFAULT_MAX_STEPS, Simulation};

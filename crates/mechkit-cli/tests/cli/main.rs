@@ -1,0 +1,26 @@
+//! Command-line tests of the `mechkit` binary, run as a separate process in a temporary
+//! directory.
+//!
+//! What is checked:
+//! - `mechkit run examples/feather.toml --out DIR` exits 0 and writes `trajectory.csv` (header,
+//!   landing row), `summary.json` (the contract keys: t_end, steps, stop_reason, bodies, work,
+//!   kinetic and potential energy, work-energy residual, events with the last step before the
+//!   landing, observables) and the SVG plots listed in `files.plots` (relative to the summary);
+//! - `--json` prints the same summary on stdout;
+//! - `mechkit check` accepts every scenario in `examples/` and `examples/book/`;
+//! - `--help` shows examples and the exit codes; `list-integrators` lists every method;
+//! - every bad input exits 2 with `error:` first on stderr, the location `file.toml:LINE:COL`
+//!   and the specific message: unknown key (with the nearest valid key), missing, negative or
+//!   zero mass, zero or negative dt, unknown unit (with a suggestion), wrong dimension (both
+//!   dimensions named), undefined name in a formula (its column in the file line), invalid
+//!   TOML, a missing scenario file, an unwritable output directory;
+//! - a run that hits a non-finite value exits 1, explains what diverged and when, and keeps
+//!   the trajectory computed so far and a summary with `stop_reason = "diverged"`;
+//! - a run with no `t_max` whose stop condition never fires ends at the default step budget,
+//!   exits 0 and warns about `t_max`.
+//!
+//! Numbers from files are compared within tolerances, never as strings.
+mod diverge;
+mod errors;
+mod run;
+mod util;

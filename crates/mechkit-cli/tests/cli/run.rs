@@ -1,0 +1,206 @@
+//! Successful runs: files written, JSON on stdout, `check`, `--help`, `list-integrators`, a
+//! closed stdout.
+
+use approx::assert_abs_diff_eq;
+
+use crate::util::{self, Csv, Dir, at, examples, num};
+
+/// Runs the feather example into `DIR/out` and returns the directory.
+fn run_feather(extra: &[&str]) -> (Dir, util::Output) {
+    let dir = Dir::new();
+    let feather = examples().join("feather.toml");
+    let mut args = vec![
+        "run",
+        feather.to_str().expect("a UTF-8 path"),
+        "--out",
+        "out",
+    ];
+    args.extend_from_slice(extra);
+    let out = dir.run(&args);
+    (dir, out)
+}
+
+#[test]
+fn feather_run_writes_trajectory_summary_and_plots() {
+    let (dir, out) = run_feather(&[]);
+    out.assert_code(0);
+
+    // trajectory.csv: the header, then the landing as the last row
+    let csv = Csv::parse(&dir.read("out/trajectory.csv"));
+    assert_eq!(
+        csv.header.join(","),
+        "t,feather.x,feather.vx,K,U,E,work.gravity,work.air"
+    );
+    assert!(csv.rows.len() > 10, "only {} rows", csv.rows.len());
+    let first = &csv.rows[0];
+    assert_abs_diff_eq!(first[csv.column("t")], 0.0);
+    assert_abs_diff_eq!(first[csv.column("feather.x")], 2.4, epsilon = 1e-12);
+    let last = csv.rows.last().expect("rows");
+    let t_land = last[csv.column("t")];
+    assert_abs_diff_eq!(t_land, 4.8354, epsilon = 1e-3);
+    assert_abs_diff_eq!(t_land, 4.8346, epsilon = 1e-4);
+    assert_abs_diff_eq!(last[csv.column("feather.x")], 0.0, epsilon = 1e-9);
+    assert_abs_diff_eq!(last[csv.column("feather.vx")], -0.5, epsilon = 1e-6);
+
+    // summary.json: the contract keys
+    let s = dir.read_json("out/summary.json");
+    assert_abs_diff_eq!(num(&s, "/t_end"), t_land, epsilon = 1e-12);
+    let steps = at(&s, "/steps").as_u64().expect("steps is a whole number");
+    assert!((4834..=4835).contains(&steps), "steps: {steps}");
+    assert_eq!(at(&s, "/stop_reason"), "event");
+    let position = at(&s, "/bodies/feather/position")
+        .as_array()
+        .expect("position is an array");
+    assert_eq!(position.len(), 1);
+    assert_abs_diff_eq!(num(&s, "/bodies/feather/position/0"), 0.0, epsilon = 1e-9);
+    assert_abs_diff_eq!(num(&s, "/bodies/feather/velocity/0"), -0.5, epsilon = 1e-6);
+    let w_gravity = num(&s, "/work/gravity");
+    let w_air = num(&s, "/work/air");
+    // gravity does m g h = 1 g * 9.8 m/s^2 * 2.4 m, up to the O(dt) error of integrating the
+    // power along the Euler-Cromer path (2.45e-6 J here); the air takes almost all of it back
+    assert_abs_diff_eq!(w_gravity, 0.001 * 9.8 * 2.4, epsilon = 1e-5);
+    assert!(
+        w_air < 0.0 && w_air > -w_gravity,
+        "work of the air: {w_air}"
+    );
+    assert_abs_diff_eq!(num(&s, "/kinetic_energy/start"), 0.0);
+    assert_abs_diff_eq!(
+        num(&s, "/kinetic_energy/end"),
+        0.5 * 0.001 * 0.25,
+        epsilon = 1e-9
+    );
+    assert_abs_diff_eq!(
+        num(&s, "/potential_energy/start"),
+        0.001 * 9.8 * 2.4,
+        epsilon = 1e-12
+    );
+    assert_abs_diff_eq!(num(&s, "/potential_energy/end"), 0.0, epsilon = 1e-9);
+    let residual = num(&s, "/work_energy_residual");
+    assert!(residual.abs() < 1e-3 * w_gravity, "residual {residual}");
+
+    let events = at(&s, "/events").as_array().expect("events is an array");
+    assert_eq!(events.len(), 1);
+    assert_eq!(at(&s, "/events/0/name"), "x < 0");
+    assert_abs_diff_eq!(num(&s, "/events/0/t"), t_land, epsilon = 1e-12);
+    assert_abs_diff_eq!(
+        num(&s, "/events/0/state/feather/position/0"),
+        0.0,
+        epsilon = 1e-9
+    );
+    assert_abs_diff_eq!(num(&s, "/events/0/last_step/t"), 4.834, epsilon = 1e-9);
+    assert!(num(&s, "/events/0/last_step/state/feather/position/0") > 0.0);
+
+    let observables = at(&s, "/observables")
+        .as_object()
+        .expect("observables is an object");
+    for name in ["t_land", "v_land", "v_min", "x_half_t"] {
+        assert!(observables.contains_key(name), "no observable {name}");
+    }
+    assert_abs_diff_eq!(num(&s, "/observables/t_land"), t_land, epsilon = 1e-12);
+    assert_abs_diff_eq!(num(&s, "/observables/v_land"), -0.5, epsilon = 1e-6);
+
+    // the plots listed in the summary exist and are SVG
+    let plots = at(&s, "/files/plots")
+        .as_array()
+        .expect("plots is an array");
+    assert_eq!(plots.len(), 4, "feather.toml asks for four plots");
+    for p in plots {
+        // paths are relative to the directory of summary.json
+        let p = p.as_str().expect("a plot is a path");
+        assert!(
+            !p.contains('/'),
+            "{p} should be a file name in the output directory"
+        );
+        let text = dir.read(&format!("out/{p}"));
+        assert!(text.starts_with("<svg"), "{p} does not start with <svg");
+    }
+}
+
+#[test]
+fn json_flag_prints_the_summary_on_stdout() {
+    let (dir, out) = run_feather(&["--json"]);
+    out.assert_code(0);
+    let printed: serde_json::Value = serde_json::from_str(&out.stdout)
+        .unwrap_or_else(|e| panic!("stdout is not JSON: {e}\n{}", out.stdout));
+    let written = dir.read_json("out/summary.json");
+    assert_eq!(printed, written);
+    assert_eq!(at(&printed, "/stop_reason"), "event");
+    assert_abs_diff_eq!(num(&printed, "/t_end"), 4.8354, epsilon = 1e-3);
+}
+
+#[test]
+fn check_accepts_every_example() {
+    let dir = Dir::new();
+    let mut files = Vec::new();
+    for sub in [examples(), examples().join("book")] {
+        for entry in std::fs::read_dir(&sub).expect("the examples directory exists") {
+            let path = entry.expect("a directory entry").path();
+            if path.extension().is_some_and(|e| e == "toml") {
+                files.push(path);
+            }
+        }
+    }
+    files.sort();
+    assert!(files.len() >= 10, "only {} examples found", files.len());
+    let failures: Vec<String> = files
+        .iter()
+        .filter_map(|f| {
+            let out = dir.run(&["check", f.to_str().expect("a UTF-8 path")]);
+            (out.code != Some(0))
+                .then(|| format!("{} (exit {:?}):\n{}", f.display(), out.code, out.stderr))
+        })
+        .collect();
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn help_shows_examples_and_exit_codes() {
+    let out = Dir::new().run(&["--help"]);
+    out.assert_code(0);
+    assert!(out.stdout.contains("Examples:"), "{}", out.stdout);
+    assert!(
+        out.stdout.contains("mechkit run examples/feather.toml"),
+        "{}",
+        out.stdout
+    );
+    assert!(out.stdout.contains("Exit codes"), "{}", out.stdout);
+    for code in ["0 success", "1 the computation failed", "2 bad input"] {
+        assert!(out.stdout.contains(code), "no {code:?} in\n{}", out.stdout);
+    }
+}
+
+#[test]
+fn list_integrators_lists_every_method() {
+    let out = Dir::new().run(&["list-integrators"]);
+    out.assert_code(0);
+    let names: Vec<&str> = out
+        .stdout
+        .lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    for m in ["euler", "euler-cromer", "verlet", "rk4"] {
+        assert!(names.contains(&m), "{m} is not listed:\n{}", out.stdout);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input: exit 2, `error:` first, `file.toml:LINE:COL`, the specific message. Each run is
+// `mechkit run FILE --out out`, which must not create `out`.
+
+/// Writes `text` as `name`, runs it and checks the common contract of a bad input.
+
+#[test]
+fn a_closed_stdout_is_not_a_crash() {
+    // `mechkit … | head`: the reader goes away; mechkit must stop quietly, not panic.
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_mechkit"))
+        .arg("list-integrators")
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("mechkit starts");
+    drop(child.stdout.take());
+    let out = child.wait_with_output().expect("mechkit ends");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+}

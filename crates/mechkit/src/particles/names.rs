@@ -1,0 +1,291 @@
+//! Name resolution: what `x`, `feather.v`, `K` or `work.air` mean where a formula is used, and
+//! compiling formulas against those meanings.
+
+use mechkit_expr::{Binding, Dim, ExprError, Formula, Scope};
+
+use super::state_expr::StateExpr;
+use super::vars::{AAXES, AXES, BodyRef, StateVar, VAXES, VarLevel};
+use crate::Real;
+
+/// What names mean where a formula is used: the system's bodies and forces, the constants,
+/// whether bare names refer to a local body, and how much of the state may be used.
+#[derive(Debug, Clone)]
+pub struct NameContext<'a> {
+    /// Spatial dimensions.
+    pub dim: usize,
+    /// Body names, by index.
+    pub bodies: &'a [String],
+    /// Force names, by index (for `work.F`, `power.F`).
+    pub forces: &'a [String],
+    /// Constants: name, value (SI), dimension.
+    pub constants: &'a [(String, Real, Dim)],
+    /// The body bare names refer to, if any: `Local` inside a force, the only body in a
+    /// one-body scenario, or none.
+    pub bare: Option<BodyRef>,
+    /// How much of the state may be used.
+    pub level: VarLevel,
+}
+
+impl NameContext<'_> {
+    /// Resolves a state name (not a constant).
+    pub fn resolve(&self, name: &str) -> Option<StateVar> {
+        if name == "t" {
+            return Some(StateVar::Time);
+        }
+        let derived = self.level == VarLevel::Derived;
+        if derived {
+            match name {
+                "K" => return Some(StateVar::Kinetic),
+                "U" => return Some(StateVar::Potential),
+                "E" => return Some(StateVar::Energy),
+                _ => {}
+            }
+            for (prefix, power) in [("work.", false), ("power.", true)] {
+                if let Some(force) = name.strip_prefix(prefix) {
+                    let i = self.forces.iter().position(|f| f == force)?;
+                    return Some(if power {
+                        StateVar::Power(i)
+                    } else {
+                        StateVar::Work(i)
+                    });
+                }
+            }
+        }
+        let (body, field) = match name.rsplit_once('.') {
+            Some((body, field)) => {
+                let i = self.bodies.iter().position(|b| b == body)?;
+                (BodyRef::Index(i), field)
+            }
+            None => (self.bare?, name),
+        };
+        self.body_field(body, field, derived)
+    }
+
+    fn body_field(&self, b: BodyRef, field: &str, derived: bool) -> Option<StateVar> {
+        let d = self.dim;
+        let axis = |names: &[&str; 3]| names[..d].iter().position(|n| *n == field);
+        if let Some(i) = axis(&AXES) {
+            return Some(StateVar::Position(b, i));
+        }
+        if let Some(i) = axis(&VAXES) {
+            return Some(StateVar::Velocity(b, i));
+        }
+        let kinematic = match field {
+            "v" if d == 1 => Some(StateVar::Velocity(b, 0)),
+            "v" | "speed" => Some(StateVar::Speed(b)),
+            "r" => Some(StateVar::Distance(b)),
+            "m" => Some(StateVar::Mass(b)),
+            _ => None,
+        };
+        if kinematic.is_some() || !derived {
+            return kinematic;
+        }
+        if let Some(i) = axis(&AAXES) {
+            return Some(StateVar::Acceleration(b, i));
+        }
+        match field {
+            "a" if d == 1 => Some(StateVar::Acceleration(b, 0)),
+            "a" => Some(StateVar::AccelerationMagnitude(b)),
+            "K" => Some(StateVar::BodyKinetic(b)),
+            _ => None,
+        }
+    }
+
+    /// Every name valid here (for suggestions and help).
+    pub fn all_names(&self) -> Vec<String> {
+        let d = self.dim;
+        let derived = self.level == VarLevel::Derived;
+        let mut fields: Vec<&str> = Vec::new();
+        fields.extend(&AXES[..d]);
+        fields.extend(&VAXES[..d]);
+        fields.extend(["v", "r", "m"]);
+        if d > 1 {
+            fields.push("speed");
+        }
+        if derived {
+            fields.extend(&AAXES[..d]);
+            fields.extend(["a", "K"]);
+        }
+        let mut out = vec!["t".to_string()];
+        if self.bare.is_some() {
+            out.extend(fields.iter().map(|f| (*f).to_string()));
+        }
+        for body in self.bodies {
+            out.extend(fields.iter().map(|f| format!("{body}.{f}")));
+        }
+        if derived {
+            out.extend(["K", "U", "E"].map(String::from));
+            for f in self.forces {
+                out.push(format!("work.{f}"));
+                out.push(format!("power.{f}"));
+            }
+        }
+        out.extend(self.constants.iter().map(|(n, _, _)| n.clone()));
+        out
+    }
+
+    fn describe(&self) -> String {
+        let d = self.dim;
+        let axes = AXES[..d].join(", ");
+        let v = VAXES[..d].join(", ");
+        let mut s = match (self.bare, self.bodies.first()) {
+            (Some(_), _) => format!("names here: t, {axes}, {v}, v, r, m"),
+            (None, Some(b)) => format!("names here: t and body quantities such as {b}.x, {b}.v"),
+            (None, None) => "names here: t".to_string(),
+        };
+        if self.level == VarLevel::Derived {
+            s.push_str(", K, U, E, work.<force>, power.<force>");
+        } else {
+            s.push_str(" (forces cannot use accelerations or energies)");
+        }
+        if !self.constants.is_empty() {
+            s.push_str(" and the constants");
+        }
+        s
+    }
+
+    /// Value of a constant.
+    pub fn constant(&self, name: &str) -> Option<Real> {
+        self.constants
+            .iter()
+            .find(|(n, _, _)| n == name)
+            .map(|(_, v, _)| *v)
+    }
+
+    /// Dimension of a name as a formula sees it: constants first, then state names.
+    pub fn dim_of(&self, name: &str) -> Dim {
+        if let Some((_, _, d)) = self.constants.iter().find(|(n, _, _)| n == name) {
+            return *d;
+        }
+        self.resolve(name)
+            .map_or(Dim::Unknown, |v| Dim::Known(v.dimension()))
+    }
+
+    /// Compiles `formula`: constants are folded, state names become slots.
+    pub fn compile(&self, formula: &Formula) -> Result<StateExpr, ExprError> {
+        let mut vars: Vec<StateVar> = Vec::new();
+        let mut scope = ContextScope {
+            ctx: self,
+            slots: Vec::new(),
+        };
+        for name in formula.names() {
+            if self.constants.iter().any(|(n, _, _)| n == name) {
+                continue;
+            }
+            if let Some(var) = self.resolve(name) {
+                let slot = vars.iter().position(|v| *v == var).unwrap_or_else(|| {
+                    vars.push(var);
+                    vars.len() - 1
+                });
+                scope.slots.push((name.to_string(), slot));
+            }
+        }
+        let program = formula.compile(&scope)?;
+        formula.dimension_with(&|n| self.dim_of(n), &|n| self.constant(n))?;
+        Ok(StateExpr::new(formula.source().to_string(), program, vars))
+    }
+}
+
+struct ContextScope<'a, 'b> {
+    ctx: &'a NameContext<'b>,
+    slots: Vec<(String, usize)>,
+}
+
+impl Scope for ContextScope<'_, '_> {
+    fn lookup(&self, name: &str) -> Option<Binding> {
+        if let Some((_, v, _)) = self.ctx.constants.iter().find(|(n, _, _)| n == name) {
+            return Some(Binding::Const(*v));
+        }
+        self.slots
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, s)| Binding::Slot(*s))
+    }
+
+    fn candidates(&self) -> Vec<String> {
+        self.ctx.all_names()
+    }
+
+    fn describe(&self) -> Option<String> {
+        Some(self.ctx.describe())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use mechkit_expr::units::Dimension;
+
+    use super::*;
+    use crate::particles::Kinematics;
+
+    fn ctx<'a>(
+        bodies: &'a [String],
+        forces: &'a [String],
+        constants: &'a [(String, Real, Dim)],
+        level: VarLevel,
+    ) -> NameContext<'a> {
+        NameContext {
+            dim: 2,
+            bodies,
+            forces,
+            constants,
+            bare: Some(BodyRef::Local),
+            level,
+        }
+    }
+
+    #[test]
+    fn resolves_names() {
+        let bodies = vec!["ball".to_string(), "moon".to_string()];
+        let forces = vec!["air".to_string()];
+        let c = ctx(&bodies, &forces, &[], VarLevel::Derived);
+        assert_eq!(c.resolve("y"), Some(StateVar::Position(BodyRef::Local, 1)));
+        assert_eq!(c.resolve("z"), None);
+        assert_eq!(
+            c.resolve("moon.vx"),
+            Some(StateVar::Velocity(BodyRef::Index(1), 0))
+        );
+        assert_eq!(c.resolve("v"), Some(StateVar::Speed(BodyRef::Local)));
+        assert_eq!(c.resolve("work.air"), Some(StateVar::Work(0)));
+        assert_eq!(c.resolve("work.wind"), None);
+        assert_eq!(
+            c.resolve("ball.K"),
+            Some(StateVar::BodyKinetic(BodyRef::Index(0)))
+        );
+        let k = ctx(&bodies, &forces, &[], VarLevel::Kinematic);
+        assert_eq!(k.resolve("ax"), None);
+        assert_eq!(k.resolve("K"), None);
+    }
+
+    #[test]
+    fn compiles_and_evaluates_with_constants() {
+        let bodies = vec!["ball".to_string()];
+        let constants = vec![("D".to_string(), 0.5, Dim::Known(Dimension::QUADRATIC_DRAG))];
+        let c = ctx(&bodies, &[], &constants, VarLevel::Kinematic);
+        let e = c.compile(&Formula::parse("-D*v*vx").unwrap()).unwrap();
+        let k = Kinematics {
+            t: 0.0,
+            dim: 2,
+            x: &[0.0, 1.0],
+            v: &[3.0, 4.0],
+            mass: &[1.0],
+        };
+        assert_eq!(e.eval_kinematic(&k, Some(0)), -0.5 * 5.0 * 3.0);
+        assert!(e.reads_velocity());
+    }
+
+    #[test]
+    fn errors_suggest_and_describe() {
+        let bodies = vec!["ball".to_string()];
+        let c = ctx(&bodies, &[], &[], VarLevel::Kinematic);
+        let err = c
+            .compile(&Formula::parse("-ball.vxx").unwrap())
+            .unwrap_err();
+        let text = err.to_string();
+        assert!(text.contains("did you mean `ball.vx`"), "{text}");
+        let err = c.compile(&Formula::parse("K").unwrap()).unwrap_err();
+        assert!(err.to_string().contains("forces cannot use"), "{err}");
+        let err = c.compile(&Formula::parse("x + t").unwrap()).unwrap_err();
+        assert!(err.to_string().contains("cannot add"), "{err}");
+    }
+}

@@ -1,0 +1,90 @@
+//! Formulas compiled against the state names, evaluated on kinematics (inside forces) or on
+//! samples (conditions, observables).
+
+use mechkit_expr::Program;
+
+use super::kinematics::Kinematics;
+use super::sample::Sample;
+use super::vars::StateVar;
+use crate::Real;
+
+/// Most distinct state names one formula may use before evaluation allocates.
+const INLINE_VARS: usize = 16;
+
+/// A formula compiled against the state names: evaluate it on kinematics (in forces) or on a
+/// sample (conditions, observables).
+#[derive(Debug, Clone)]
+pub struct StateExpr {
+    source: String,
+    program: Program,
+    vars: Vec<StateVar>,
+}
+
+impl StateExpr {
+    pub(crate) fn new(source: String, program: Program, vars: Vec<StateVar>) -> Self {
+        Self {
+            source,
+            program,
+            vars,
+        }
+    }
+
+    /// The formula as written.
+    pub fn source(&self) -> &str {
+        &self.source
+    }
+
+    /// The state quantities it reads.
+    pub fn vars(&self) -> &[StateVar] {
+        &self.vars
+    }
+
+    /// Whether it reads only time, positions, velocities and masses.
+    pub fn is_kinematic(&self) -> bool {
+        self.vars.iter().all(|v| v.is_kinematic())
+    }
+
+    /// Whether it reads velocities.
+    pub fn reads_velocity(&self) -> bool {
+        self.vars
+            .iter()
+            .any(|v| matches!(v, StateVar::Velocity(..) | StateVar::Speed(_)))
+    }
+
+    /// The value, if it reads no state at all.
+    pub fn as_constant(&self) -> Option<Real> {
+        self.program.as_constant()
+    }
+
+    #[inline]
+    fn eval_with(&self, fill: impl Fn(StateVar) -> Real) -> Real {
+        let n = self.vars.len();
+        if n <= INLINE_VARS {
+            let mut slots = [0.0; INLINE_VARS];
+            for (s, v) in slots.iter_mut().zip(&self.vars) {
+                *s = fill(*v);
+            }
+            self.program.eval(&slots[..n])
+        } else {
+            let slots: Vec<Real> = self.vars.iter().map(|v| fill(*v)).collect();
+            self.program.eval(&slots)
+        }
+    }
+
+    /// Evaluates on kinematics, bare names meaning body `local`.
+    #[inline]
+    pub fn eval_kinematic(&self, k: &Kinematics<'_>, local: Option<usize>) -> Real {
+        self.eval_with(|v| v.value_kinematic(k, local))
+    }
+
+    /// Evaluates on a sample.
+    pub fn eval_sample(
+        &self,
+        s: &Sample<'_>,
+        dim: usize,
+        mass: &[Real],
+        local: Option<usize>,
+    ) -> Real {
+        self.eval_with(|v| v.value(s, dim, mass, local))
+    }
+}

@@ -1,0 +1,113 @@
+//! `[stop]`: `t_max`, `max_steps` and the condition `when`, compiled to an event function.
+
+use mechkit_expr::units::Dimension;
+use mechkit_expr::{BinOp, Expr, Formula};
+
+use super::doc::Table;
+use super::error::{ErrorKind, ScenarioError};
+use super::values::{ValueEnv, formula_error, scalar};
+use crate::Real;
+use crate::particles::{NameContext, StateExpr};
+use crate::simulate::Condition;
+
+const STOP_KEYS: &[&str] = &["when", "t_max", "max_steps"];
+
+type Stop = (Option<Condition>, Option<Real>, Option<u64>);
+
+pub(crate) fn read_stop(
+    root: &Table<'_, '_>,
+    env: ValueEnv<'_>,
+    names: &NameContext<'_>,
+) -> Result<Stop, ScenarioError> {
+    let Some(t) = root.table("stop")? else {
+        return Ok((None, None, None));
+    };
+    t.check_keys(STOP_KEYS)?;
+    let t_max = scalar(&t, "t_max", Dimension::TIME, env)?;
+    if let Some(tm) = t_max
+        && !(tm > 0.0 && tm.is_finite())
+    {
+        return Err(t.src.error(
+            ErrorKind::Invalid,
+            format!("`t_max` must be positive, not {tm} s"),
+            t.get("t_max").map_or(t.span.clone(), toml::Spanned::span),
+        ));
+    }
+    let max_steps = match t.count("max_steps")? {
+        Some((0, span)) => {
+            return Err(t
+                .src
+                .error(ErrorKind::Invalid, "`max_steps` must be at least 1", span));
+        }
+        other => other.map(|(n, _)| n),
+    };
+    let condition = match t.string("when")? {
+        None => None,
+        Some((text, span)) => Some(condition(&t, text, &span, names)?),
+    };
+    Ok((condition, t_max, max_steps))
+}
+
+fn compile_state(
+    t: &Table<'_, '_>,
+    f: &Formula,
+    span: &std::ops::Range<usize>,
+    names: &NameContext<'_>,
+) -> Result<StateExpr, ScenarioError> {
+    names
+        .compile(f)
+        .map_err(|e| formula_error(&t.src, span, &e))
+}
+
+/// A stop condition: a comparison becomes a continuous event function (`a < b` has
+/// `g = b - a`), anything else a boolean one located by bisection.
+fn condition(
+    t: &Table<'_, '_>,
+    text: &str,
+    span: &std::ops::Range<usize>,
+    names: &NameContext<'_>,
+) -> Result<Condition, ScenarioError> {
+    let f = Formula::parse(text).map_err(|e| formula_error(&t.src, span, &e))?;
+    let whole = compile_state(t, &f, span, names)?;
+    if let Expr::Binary(op, a, b) = f.expr() {
+        if *op == BinOp::Eq || *op == BinOp::Ne {
+            return Err(t
+                .src
+                .error(ErrorKind::Invalid, format!("a stop condition cannot use `{}`: an exact equality is never hit between steps", op.symbol()), span.clone())
+                .with_hint("write the crossing as an inequality, e.g. `x < 0` or `vy < 0`"));
+        }
+        if op.is_comparison() {
+            let lhs = compile_state(
+                t,
+                &Formula::parse(&a.to_string()).expect("printed expressions re-parse"),
+                span,
+                names,
+            )?;
+            let rhs = compile_state(
+                t,
+                &Formula::parse(&b.to_string()).expect("printed expressions re-parse"),
+                span,
+                names,
+            )?;
+            let needs = !(lhs.is_kinematic() && rhs.is_kinematic());
+            let (first, second) = if matches!(op, BinOp::Lt | BinOp::Le) {
+                (rhs, lhs)
+            } else {
+                (lhs, rhs)
+            };
+            let inclusive = matches!(op, BinOp::Le | BinOp::Ge);
+            return Ok(Condition::from_fn(text, inclusive, needs, move |s, sys| {
+                let (dim, mass) = (sys.dim(), sys.masses());
+                first.eval_sample(s, dim, mass, None) - second.eval_sample(s, dim, mass, None)
+            }));
+        }
+    }
+    let needs = !whole.is_kinematic();
+    Ok(Condition::from_fn(text, true, needs, move |s, sys| {
+        if whole.eval_sample(s, sys.dim(), sys.masses(), None) == 0.0 {
+            -1.0
+        } else {
+            1.0
+        }
+    }))
+}

@@ -1,0 +1,130 @@
+//! Diagnosing a run that stopped being finite: which coordinate or force, when, and why.
+
+use super::report::Divergence;
+use crate::Real;
+use crate::ode::{SecondOrderSystem, State};
+use crate::particles::{Evaluation, ParticleSystem};
+
+/// Name of state component `i`: `feather.x`, `ball.vy`.
+pub(crate) fn coordinate_name(sys: &ParticleSystem, i: usize) -> String {
+    let dim = sys.dim();
+    let n = sys.dof();
+    let (velocity, j) = if i >= n { (true, i - n) } else { (false, i) };
+    let body = &sys.bodies()[j / dim].name;
+    let axis = ["x", "y", "z"][j % dim];
+    if velocity {
+        format!("{body}.v{axis}")
+    } else {
+        format!("{body}.{axis}")
+    }
+}
+
+pub(crate) fn diagnose_state(
+    sys: &ParticleSystem,
+    prev_y: &[Real],
+    bad: &State,
+    t_prev: Real,
+    step: u64,
+) -> Divergence {
+    let i = bad
+        .y
+        .iter()
+        .position(|x| !x.is_finite())
+        .expect("called for a non-finite state");
+    let quantity = coordinate_name(sys, i);
+    let value = bad.y[i];
+    let message = format!(
+        "the step from t = {t_prev} s to t = {} s made {quantity} = {value}, although every force was finite at t = {t_prev} s (where {quantity} = {}): a stage of the step left the region where the forces are defined, or the step is too large for how fast the forces change; try a smaller dt",
+        bad.t, prev_y[i]
+    );
+    Divergence {
+        t: t_prev,
+        step,
+        quantity,
+        value,
+        message,
+    }
+}
+
+/// Checks an evaluation for non-finite values and names the force responsible.
+pub(crate) fn diagnose_evaluation(
+    sys: &ParticleSystem,
+    state: &State,
+    eval: &Evaluation,
+    step: u64,
+) -> Option<Divergence> {
+    let finite = eval.a.iter().all(|x| x.is_finite())
+        && eval.power.iter().all(|x| x.is_finite())
+        && eval.kinetic.is_finite()
+        && eval.potential_total.is_none_or(Real::is_finite);
+    if finite {
+        return None;
+    }
+    let (q, v) = state.qv();
+    let k = sys.kinematics(state.t, q, v);
+    let dim = sys.dim();
+    let mut f = vec![0.0; q.len()];
+    for force in sys.forces().iter() {
+        f.fill(0.0);
+        force.add_forces(&k, &mut f);
+        if let Some(i) = f.iter().position(|x| !x.is_finite()) {
+            let body = &sys.bodies()[i / dim].name;
+            let axis = ["x", "y", "z"][i % dim];
+            let pos: Vec<String> = k.position(i / dim).iter().map(|x| format!("{x}")).collect();
+            let vel: Vec<String> = k.velocity(i / dim).iter().map(|x| format!("{x}")).collect();
+            // A force on one body may depend on the others (a pair force, `other.x` in a
+            // formula): show where they all are.
+            let others: Vec<String> = sys
+                .bodies()
+                .iter()
+                .enumerate()
+                .filter(|(j, _)| *j != i / dim)
+                .take(6)
+                .map(|(j, b)| {
+                    let p: Vec<String> = k.position(j).iter().map(|x| format!("{x}")).collect();
+                    format!("{} at [{}]", b.name, p.join(", "))
+                })
+                .collect();
+            let others = if others.is_empty() {
+                String::new()
+            } else {
+                format!("; the other bodies: {}", others.join(", "))
+            };
+            return Some(Divergence {
+                t: state.t,
+                step,
+                quantity: format!("force `{}` on {body} ({axis} component)", force.name()),
+                value: f[i],
+                message: format!(
+                    "at t = {} s the force `{}` on {body} is {} ({axis} component), with {body} at position [{}] and velocity [{}]{others}: a division by zero or a value outside a function's domain (sqrt, log of a negative number)",
+                    state.t,
+                    force.name(),
+                    f[i],
+                    pos.join(", "),
+                    vel.join(", ")
+                ),
+            });
+        }
+        if let Some(u) = force.potential(&k).filter(|u| !u.is_finite()) {
+            return Some(Divergence {
+                t: state.t,
+                step,
+                quantity: format!("potential energy of `{}`", force.name()),
+                value: u,
+                message: format!(
+                    "at t = {} s the potential energy of `{}` is {u}: the bodies it acts on have reached a singular point (r = 0?)",
+                    state.t,
+                    force.name()
+                ),
+            });
+        }
+    }
+    let value = eval.kinetic;
+    Some(Divergence {
+        t: state.t,
+        step,
+        quantity: "kinetic energy".into(),
+        value,
+        message: format!("at t = {} s the kinetic energy is {value}", state.t),
+    })
+}
