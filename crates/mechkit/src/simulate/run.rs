@@ -144,26 +144,30 @@ impl<'a> Simulation<'a> {
         for o in observers.iter_mut() {
             o.observe(&sample0)?;
         }
+        // the event function before the first step: negative while the run should go on
+        let mut g_prev = self
+            .stop
+            .as_ref()
+            .map_or(Real::NAN, |c| c.value(&sample0, sys));
         if let Some(d) = diagnose_evaluation(sys, &state, &prev_eval, 0) {
             divergence = Some(d);
             stop_reason = Some(StopReason::Diverged);
-        } else if let Some(c) = &self.stop {
-            let g0 = c.value(&sample0, sys);
-            if c.holds_for(g0) {
-                warnings.push(format!(
+        } else if let Some(c) = &self.stop
+            && c.holds_for(g_prev)
+        {
+            warnings.push(format!(
                     "the stop condition `{}` already holds at the start (t = {t0} s); nothing was simulated",
                     c.description()
                 ));
-                let snap = Snapshot::of(t0, &state.y);
-                event = Some(EventRecord {
-                    name: c.description().to_string(),
-                    t: t0,
-                    state: snap.clone(),
-                    last_step: snap.clone(),
-                    crossing_step: snap,
-                });
-                stop_reason = Some(StopReason::Event);
-            }
+            let snap = Snapshot::of(t0, &state.y);
+            event = Some(EventRecord {
+                name: c.description().to_string(),
+                t: t0,
+                state: snap.clone(),
+                last_step: snap.clone(),
+                crossing_step: snap,
+            });
+            stop_reason = Some(StopReason::Event);
         }
 
         // The ledger evaluates the forces at every step's end; the stepper's next step starts
@@ -177,10 +181,6 @@ impl<'a> Simulation<'a> {
         };
         hand_over(&mut stepper, t0, &state.y, &prev_eval.a);
         let mut prev_y = state.y.clone();
-        let mut g_prev = self
-            .stop
-            .as_ref()
-            .map_or(Real::NAN, |c| c.value(&sample0, sys));
         while stop_reason.is_none() {
             if planned == Some(steps) {
                 stop_reason = Some(StopReason::TMax);
@@ -280,10 +280,9 @@ impl<'a> Simulation<'a> {
             }
         }
 
+        // The final sample is a located event unless the condition held from the start.
         let last = Sample {
-            located: event
-                .as_ref()
-                .is_some_and(|e| e.t != initial.t || steps > 0),
+            located: event.is_some() && steps > 0,
             ..sample_of(steps, &state, &prev_eval, ledger.work())
         };
         for o in observers.iter_mut() {
