@@ -82,8 +82,15 @@ impl Formula {
         dims: &dyn Fn(&str) -> Dim,
         values: &dyn Fn(&str) -> Option<f64>,
     ) -> Result<Dim, ExprError> {
-        infer(self.expr(), &Env { dims, values })
-            .map_err(|msg| self.error(ExprErrorKind::Dimension(msg), self.full_span()))
+        infer(self.expr(), &Env { dims, values }).map_err(|f| {
+            self.error(
+                ExprErrorKind::Dimension {
+                    message: f.message,
+                    hint: f.hint,
+                },
+                self.full_span(),
+            )
+        })
     }
 
     /// Checks that the formula has dimension `want`; the error says what it has instead.
@@ -99,35 +106,59 @@ impl Formula {
             Ok(())
         } else {
             Err(self.error(
-                ExprErrorKind::Dimension(format!(
-                    "{what} must have dimension {}, but this formula has {got}",
-                    want.describe()
-                )),
+                ExprErrorKind::Dimension {
+                    message: format!(
+                        "{what} must have dimension {}, but this formula has {got}",
+                        want.describe()
+                    ),
+                    hint: None,
+                },
                 self.full_span(),
             ))
         }
     }
 }
 
-fn same(op: &str, a: Dim, b: Dim, ea: &Expr, eb: &Expr) -> Result<Dim, String> {
+/// Why a formula's dimensions do not fit, and what would fix it.
+struct Failure {
+    message: String,
+    hint: Option<String>,
+}
+
+impl From<String> for Failure {
+    fn from(message: String) -> Self {
+        Self {
+            message,
+            hint: None,
+        }
+    }
+}
+
+fn same(op: &str, a: Dim, b: Dim, ea: &Expr, eb: &Expr) -> Result<Dim, Failure> {
     match (a, b) {
         (Dim::Known(x), Dim::Known(y)) if x != y => Err(format!(
             "cannot {op} `{ea}` ({}) and `{eb}` ({})",
             x.describe(),
             y.describe()
-        )),
+        )
+        .into()),
         (Dim::Known(x), _) | (_, Dim::Known(x)) => Ok(Dim::Known(x)),
         (Dim::Unknown, _) | (_, Dim::Unknown) => Ok(Dim::Unknown),
         (Dim::Literal, Dim::Literal) => Ok(Dim::Literal),
     }
 }
 
-fn dimensionless(func: &str, a: Dim, e: &Expr) -> Result<(), String> {
+fn dimensionless(func: &str, a: Dim, e: &Expr) -> Result<(), Failure> {
     match a {
-        Dim::Known(d) if !d.is_none() => Err(format!(
-            "`{func}` needs a dimensionless argument, but `{e}` has dimension {}",
-            d.describe()
-        )),
+        Dim::Known(d) if !d.is_none() => Err(Failure {
+            message: format!(
+                "`{func}` needs a dimensionless argument, but `{e}` has dimension {}",
+                d.describe()
+            ),
+            hint: Some(format!(
+                "scale the argument by a constant with units, e.g. `{func}(omega*t)` with `omega = \"2 1/s\"` in [constants]"
+            )),
+        }),
         _ => Ok(()),
     }
 }
@@ -143,7 +174,7 @@ fn constant_value(e: &Expr, env: &Env<'_>) -> Option<f64> {
         .ok()
 }
 
-fn infer(e: &Expr, env: &Env<'_>) -> Result<Dim, String> {
+fn infer(e: &Expr, env: &Env<'_>) -> Result<Dim, Failure> {
     let dims = env.dims;
     Ok(match e {
         Expr::Num(_) => Dim::Literal,
@@ -211,7 +242,7 @@ fn infer(e: &Expr, env: &Env<'_>) -> Result<Dim, String> {
     })
 }
 
-fn root(d: Dim, n: i32, e: &Expr) -> Result<Dim, String> {
+fn root(d: Dim, n: i32, e: &Expr) -> Result<Dim, Failure> {
     match d {
         Dim::Known(x) => x.root(n).map(Dim::Known).ok_or_else(|| {
             format!(
@@ -219,14 +250,15 @@ fn root(d: Dim, n: i32, e: &Expr) -> Result<Dim, String> {
                 if n == 2 { "square" } else { "cube" },
                 x.describe()
             )
+            .into()
         }),
         other => Ok(other),
     }
 }
 
-fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr, env: &Env<'_>) -> Result<Dim, String> {
+fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr, env: &Env<'_>) -> Result<Dim, Failure> {
     dimensionless("^", exponent, b)
-        .map_err(|_| format!("the exponent `{b}` must be dimensionless"))?;
+        .map_err(|_| Failure::from(format!("the exponent `{b}` must be dimensionless")))?;
     let Dim::Known(d) = base else {
         return Ok(base);
     };
@@ -237,7 +269,8 @@ fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr, env: &Env<'_>) -> Result<
         return Err(format!(
             "`{a}` has dimension {} and can only be raised to a fixed number, not to `{b}`",
             d.describe()
-        ));
+        )
+        .into());
     };
     for den in [1, 2, 3, 6] {
         let num = p * f64::from(den);
@@ -251,7 +284,8 @@ fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr, env: &Env<'_>) -> Result<
     Err(format!(
         "`{a}` ({}) raised to {p} has no dimension in powers of 1/6",
         d.describe()
-    ))
+    )
+    .into())
 }
 
 #[cfg(test)]

@@ -66,7 +66,12 @@ pub enum ExprErrorKind {
     /// The formula is too deeply nested to evaluate.
     TooDeep,
     /// Dimensions that do not fit together (e.g. metres plus seconds).
-    Dimension(String),
+    Dimension {
+        /// What does not fit.
+        message: String,
+        /// What would fix it.
+        hint: Option<String>,
+    },
 }
 
 /// An error in a formula: what, where (a byte span into the formula), and the formula itself.
@@ -123,7 +128,7 @@ impl ExprError {
                 format!("`{name}` is a function; call it as `{name}(…)`")
             }
             ExprErrorKind::TooDeep => "the formula is nested too deeply".into(),
-            ExprErrorKind::Dimension(msg) => msg.clone(),
+            ExprErrorKind::Dimension { message, .. } => message.clone(),
         }
     }
 
@@ -149,6 +154,7 @@ impl ExprError {
                 (None, Some(c)) => Some(c.clone()),
                 (None, None) => None,
             },
+            ExprErrorKind::Dimension { hint, .. } => hint.clone(),
             ExprErrorKind::UnexpectedEnd { .. } | ExprErrorKind::UnclosedParen => {
                 Some("check that every `(` has its `)` and every operator its operands".into())
             }

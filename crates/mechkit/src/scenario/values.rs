@@ -58,7 +58,7 @@ pub(crate) fn formula_error(
 ) -> ScenarioError {
     let start = src.string_content_start(string_span);
     let kind = match e.kind {
-        ExprErrorKind::Dimension(_) => ErrorKind::Dimension,
+        ExprErrorKind::Dimension { .. } => ErrorKind::Dimension,
         _ => ErrorKind::Formula,
     };
     let span = (start + e.span.start)..(start + e.span.end.max(e.span.start + 1));
