@@ -1,0 +1,409 @@
+//! The simplifying constructors: every `Sym` is built through these, so it is always
+//! canonical.
+
+use super::Sym;
+use super::order::{compare, compare_terms};
+use crate::ast::{BinOp, Func};
+use crate::number::Number;
+
+/// Splits a term into its numeric coefficient and the rest (`None` for a bare number).
+pub(crate) fn split_coefficient(t: &Sym) -> (Number, Option<Sym>) {
+    match t {
+        Sym::Num(n) => (*n, None),
+        Sym::Mul(xs) => match xs.first() {
+            Some(Sym::Num(n)) => {
+                let rest = if xs.len() == 2 {
+                    xs[1].clone()
+                } else {
+                    Sym::Mul(xs[1..].to_vec())
+                };
+                (*n, Some(rest))
+            }
+            _ => (Number::ONE, Some(t.clone())),
+        },
+        other => (Number::ONE, Some(other.clone())),
+    }
+}
+
+fn with_coefficient(c: Number, rest: Sym) -> Sym {
+    if c.is_one() {
+        rest
+    } else {
+        Sym::product(vec![Sym::Num(c), rest])
+    }
+}
+
+impl Sym {
+    /// The canonical sum of `terms`.
+    pub fn sum(terms: Vec<Sym>) -> Sym {
+        let mut flat = Vec::with_capacity(terms.len());
+        for t in terms {
+            match t {
+                Sym::Add(xs) => flat.extend(xs),
+                other => flat.push(other),
+            }
+        }
+        let mut constant = Number::ZERO;
+        let mut collected: Vec<(Sym, Number)> = Vec::new();
+        for t in flat {
+            match split_coefficient(&t) {
+                (c, None) => constant = constant.plus(c),
+                (c, Some(rest)) => match collected.iter_mut().find(|(r, _)| *r == rest) {
+                    Some((_, k)) => *k = k.plus(c),
+                    None => collected.push((rest, c)),
+                },
+            }
+        }
+        collected.retain(|(_, c)| !c.is_zero());
+        pythagoras(&mut collected, &mut constant);
+        let mut out: Vec<Sym> = collected
+            .into_iter()
+            .map(|(rest, c)| with_coefficient(c, rest))
+            .collect();
+        out.sort_by(compare_terms);
+        if !constant.is_zero() || out.is_empty() {
+            out.push(Sym::Num(constant));
+        }
+        if out.len() == 1 {
+            out.pop().expect("one term")
+        } else {
+            Sym::Add(out)
+        }
+    }
+
+    /// The canonical product of `factors`.
+    pub fn product(factors: Vec<Sym>) -> Sym {
+        let mut coefficient = Number::ONE;
+        let mut bases: Vec<(Sym, Sym)> = Vec::new();
+        let mut pending = factors;
+        while let Some(f) = pending.pop() {
+            match f {
+                Sym::Num(n) => coefficient = coefficient.times(n),
+                Sym::Mul(xs) => pending.extend(xs),
+                other => {
+                    let (base, exp) = match other {
+                        Sym::Pow(b, e) => (*b, *e),
+                        x => (x, Sym::one()),
+                    };
+                    match bases.iter_mut().find(|(b, _)| *b == base) {
+                        Some((_, e)) => *e = Sym::sum(vec![e.clone(), exp]),
+                        None => bases.push((base, exp)),
+                    }
+                }
+            }
+        }
+        if coefficient.is_zero() {
+            return Sym::zero();
+        }
+        let mut out = Vec::new();
+        for (base, exp) in bases {
+            match Sym::pow(base, exp) {
+                Sym::Num(n) => coefficient = coefficient.times(n),
+                Sym::Mul(xs) => {
+                    // (a*b)^n came apart, or a numeric root: fold it in again
+                    for x in xs {
+                        match x {
+                            Sym::Num(n) => coefficient = coefficient.times(n),
+                            other => out.push(other),
+                        }
+                    }
+                }
+                other => out.push(other),
+            }
+        }
+        if coefficient.is_zero() {
+            return Sym::zero();
+        }
+        // A number times a sum is distributed: 2*(x + 1) = 2*x + 2.
+        if out.len() == 1 && !coefficient.is_one() && matches!(out[0], Sym::Add(_)) {
+            let Some(Sym::Add(terms)) = out.pop() else {
+                unreachable!("checked above")
+            };
+            return Sym::sum(
+                terms
+                    .into_iter()
+                    .map(|t| Sym::product(vec![Sym::Num(coefficient), t]))
+                    .collect(),
+            );
+        }
+        out.sort_by(compare);
+        if !coefficient.is_one() {
+            out.insert(0, Sym::Num(coefficient));
+        }
+        match out.len() {
+            0 => Sym::Num(coefficient),
+            1 => out.pop().expect("one factor"),
+            _ => Sym::Mul(out),
+        }
+    }
+
+    /// The canonical `base^exp`.
+    pub fn pow(base: Sym, exp: Sym) -> Sym {
+        if exp.is_zero() {
+            return Sym::one();
+        }
+        if exp.is_one() {
+            return base;
+        }
+        if base.is_one() {
+            return Sym::one();
+        }
+        match (&base, &exp) {
+            (Sym::Num(b), Sym::Num(e)) => {
+                if let Some(n) = e.as_integer() {
+                    if let Some(v) = b.powi(n) {
+                        return Sym::Num(v);
+                    }
+                } else if let (Some((p, q)), true) = (e.as_rational(), b.is_exact())
+                    && let Ok(q) = u32::try_from(q)
+                    && let Some(root) = b.exact_root(q)
+                    && let Some(v) = root.powi(p)
+                {
+                    return Sym::Num(v);
+                } else if !b.is_exact() || !e.is_exact() {
+                    return Sym::Num(Number::Float(crate::ast::pow(b.to_f64(), e.to_f64())));
+                }
+                Sym::Pow(Box::new(base), Box::new(exp))
+            }
+            (Sym::Num(b), _) if b.is_zero() && exp.as_num().is_some_and(|e| !e.is_negative()) => {
+                Sym::zero()
+            }
+            (Sym::Pow(b, e1), Sym::Num(e2)) if e2.as_integer().is_some() => Sym::pow(
+                (**b).clone(),
+                Sym::product(vec![(**e1).clone(), exp.clone()]),
+            ),
+            (Sym::Mul(xs), Sym::Num(e)) if e.as_integer().is_some() => Sym::product(
+                xs.iter()
+                    .map(|x| Sym::pow(x.clone(), exp.clone()))
+                    .collect(),
+            ),
+            (Sym::Call(Func::Exp, args), _) => {
+                Sym::call(Func::Exp, vec![Sym::product(vec![args[0].clone(), exp])])
+            }
+            _ => Sym::Pow(Box::new(base), Box::new(exp)),
+        }
+    }
+
+    /// `-a`.
+    pub fn negate(a: Sym) -> Sym {
+        Sym::product(vec![Sym::int(-1), a])
+    }
+
+    /// `a - b`.
+    pub fn difference(a: Sym, b: Sym) -> Sym {
+        Sym::sum(vec![a, Sym::negate(b)])
+    }
+
+    /// `a / b`.
+    pub fn quotient(a: Sym, b: Sym) -> Sym {
+        Sym::product(vec![a, Sym::pow(b, Sym::int(-1))])
+    }
+
+    /// `sqrt(a)`.
+    pub fn sqrt(a: Sym) -> Sym {
+        Sym::pow(a, Sym::rational(1, 2))
+    }
+
+    /// A comparison.
+    pub fn cmp(op: BinOp, a: Sym, b: Sym) -> Sym {
+        if let (Some(x), Some(y)) = (a.as_num(), b.as_num()) {
+            return Sym::int(i64::from(op.apply(x.to_f64(), y.to_f64()) != 0.0));
+        }
+        Sym::Cmp(op, Box::new(a), Box::new(b))
+    }
+
+    /// `a and b`, `a or b`.
+    pub fn logic(op: BinOp, a: Sym, b: Sym) -> Sym {
+        if let (Some(x), Some(y)) = (a.as_num(), b.as_num()) {
+            return Sym::int(i64::from(op.apply(x.to_f64(), y.to_f64()) != 0.0));
+        }
+        match op {
+            BinOp::And => Sym::And(Box::new(a), Box::new(b)),
+            BinOp::Or => Sym::Or(Box::new(a), Box::new(b)),
+            other => panic!("{} is not a logical operator", other.symbol()),
+        }
+    }
+
+    /// `not a`.
+    pub fn negation(a: Sym) -> Sym {
+        match a.as_num() {
+            Some(x) => Sym::int(i64::from(x.is_zero())),
+            None => Sym::Not(Box::new(a)),
+        }
+    }
+
+    /// The canonical call `f(args)`.
+    pub fn call(f: Func, args: Vec<Sym>) -> Sym {
+        match f {
+            Func::Sqrt => return Sym::sqrt(args.into_iter().next().expect("one argument")),
+            Func::Log => return Sym::call(Func::Ln, args),
+            _ => {}
+        }
+        if let Some(v) = fold_call(f, &args) {
+            return v;
+        }
+        let a0 = &args[0];
+        match f {
+            // odd functions take the sign out, even ones drop it
+            Func::Sin
+            | Func::Tan
+            | Func::Asin
+            | Func::Atan
+            | Func::Sinh
+            | Func::Tanh
+            | Func::Cbrt
+            | Func::Sign
+                if is_negated(a0) =>
+            {
+                Sym::negate(Sym::call(f, vec![Sym::negate(a0.clone())]))
+            }
+            Func::Cos | Func::Cosh | Func::Abs if is_negated(a0) => {
+                Sym::call(f, vec![Sym::negate(a0.clone())])
+            }
+            Func::Abs if matches!(a0, Sym::Call(Func::Abs, _)) => a0.clone(),
+            Func::Ln => match a0 {
+                Sym::Var(v) if v == "e" => Sym::one(),
+                Sym::Call(Func::Exp, inner) => inner[0].clone(),
+                Sym::Pow(b, e) if matches!(&**b, Sym::Var(v) if v == "e") => (**e).clone(),
+                _ => Sym::Call(f, args),
+            },
+            Func::If if args[1] == args[2] => args[1].clone(),
+            _ => Sym::Call(f, args),
+        }
+    }
+}
+
+/// Whether a term reads with a minus sign: a negative number or a negative coefficient.
+pub(crate) fn is_negated(s: &Sym) -> bool {
+    match s {
+        Sym::Num(n) => n.is_negative(),
+        Sym::Mul(xs) => matches!(xs.first(), Some(Sym::Num(n)) if n.is_negative()),
+        Sym::Add(xs) => xs.iter().all(is_negated),
+        _ => false,
+    }
+}
+
+/// Exact values of functions at numbers (`sin(0) = 0`, `ln(1) = 0`, `abs(-3) = 3`), floats
+/// for float arguments, `None` where the exact value is not a number (`sin(1)`).
+fn fold_call(f: Func, args: &[Sym]) -> Option<Sym> {
+    if f == Func::If {
+        return args[0].as_num().map(|c| {
+            if c.is_zero() {
+                args[2].clone()
+            } else {
+                args[1].clone()
+            }
+        });
+    }
+    let nums: Vec<Number> = args.iter().map(Sym::as_num).collect::<Option<_>>()?;
+    let x = nums[0];
+    let exact = |v: Number| Some(Sym::Num(v));
+    let int = |n: i64| Some(Sym::int(n));
+    if nums.iter().any(|n| !n.is_exact()) {
+        let values: Vec<f64> = nums.iter().map(|n| n.to_f64()).collect();
+        return Some(Sym::Num(Number::Float(f.apply(&values))));
+    }
+    match f {
+        Func::Abs => exact(x.abs()),
+        Func::Sign => int(if x.is_zero() {
+            0
+        } else if x.is_negative() {
+            -1
+        } else {
+            1
+        }),
+        Func::Heaviside => {
+            if x.is_zero() {
+                exact(Number::rational(1, 2))
+            } else {
+                int(i64::from(!x.is_negative()))
+            }
+        }
+        Func::Floor | Func::Ceil => {
+            let v = if f == Func::Floor {
+                x.to_f64().floor()
+            } else {
+                x.to_f64().ceil()
+            };
+            exact(Number::from_f64(v))
+        }
+        Func::Min | Func::Max => {
+            let pick = nums.iter().copied().reduce(|a, b| {
+                let less = a.total_cmp(&b) == std::cmp::Ordering::Less;
+                if less == (f == Func::Min) { a } else { b }
+            })?;
+            exact(pick)
+        }
+        Func::Cbrt => x.exact_root(3).map(Sym::Num),
+        Func::Sin | Func::Tan | Func::Asin | Func::Atan | Func::Sinh | Func::Tanh
+            if x.is_zero() =>
+        {
+            int(0)
+        }
+        Func::Cos | Func::Cosh | Func::Exp if x.is_zero() => int(1),
+        Func::Acos | Func::Ln if x.is_one() => int(0),
+        Func::Log10 => {
+            let n = x.as_integer()?;
+            let mut p = 1i128;
+            for k in 0..38 {
+                if p == n {
+                    return int(k);
+                }
+                p = p.checked_mul(10)?;
+            }
+            None
+        }
+        _ => None,
+    }
+}
+
+/// `c*r*sin(u)^2 + c*r*cos(u)^2 → c*r`: finds such pairs among collected terms (rest,
+/// coefficient) and merges them.
+fn pythagoras(terms: &mut Vec<(Sym, Number)>, constant: &mut Number) {
+    let squared = |s: &Sym, f: Func| -> Option<(Sym, Sym)> {
+        // returns (u, other factors as a product)
+        let factors: Vec<Sym> = match s {
+            Sym::Mul(xs) => xs.clone(),
+            other => vec![other.clone()],
+        };
+        let i = factors.iter().position(|x| {
+            matches!(x, Sym::Pow(b, e) if e.as_num() == Some(Number::int(2)) && matches!(&**b, Sym::Call(g, _) if *g == f))
+        })?;
+        let Sym::Pow(b, _) = &factors[i] else {
+            unreachable!()
+        };
+        let Sym::Call(_, args) = &**b else {
+            unreachable!()
+        };
+        let mut rest = factors.clone();
+        rest.remove(i);
+        Some((args[0].clone(), Sym::product(rest)))
+    };
+    let mut i = 0;
+    while i < terms.len() {
+        let Some((u, rest)) = squared(&terms[i].0, Func::Sin) else {
+            i += 1;
+            continue;
+        };
+        let c = terms[i].1;
+        let partner = terms.iter().position(|(t, k)| {
+            *k == c && squared(t, Func::Cos).is_some_and(|(v, r)| v == u && r == rest)
+        });
+        if let Some(j) = partner {
+            let (hi, lo) = if i > j { (i, j) } else { (j, i) };
+            terms.remove(hi);
+            terms.remove(lo);
+            match rest {
+                Sym::Num(n) => *constant = constant.plus(n.times(c)),
+                r => match terms.iter_mut().find(|(t, _)| *t == r) {
+                    Some((_, k)) => *k = k.plus(c),
+                    None => terms.push((r, c)),
+                },
+            }
+            i = 0;
+        } else {
+            i += 1;
+        }
+    }
+    terms.retain(|(_, c)| !c.is_zero());
+}

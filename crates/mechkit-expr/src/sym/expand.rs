@@ -1,0 +1,85 @@
+//! Expansion: products of sums multiplied out, small integer powers of sums expanded.
+
+use super::Sym;
+
+/// Expansions that would produce more terms than this are left alone.
+const MAX_TERMS: usize = 2000;
+
+impl Sym {
+    /// Multiplies out products and positive integer powers (up to 12) of sums; function
+    /// arguments are left as they are.
+    ///
+    /// ```
+    /// use mechkit_expr::Sym;
+    /// assert_eq!(Sym::parse("(x + 1)^2").unwrap().expand().to_string(), "x^2 + 2*x + 1");
+    /// ```
+    #[must_use]
+    pub fn expand(&self) -> Sym {
+        match self {
+            Sym::Add(xs) => Sym::sum(xs.iter().map(Sym::expand).collect()),
+            Sym::Mul(xs) => {
+                let mut acc = vec![Sym::one()];
+                for f in xs {
+                    let terms = match f.expand() {
+                        Sym::Add(ts) => ts,
+                        other => vec![other],
+                    };
+                    if acc.len() * terms.len() > MAX_TERMS {
+                        return self.clone();
+                    }
+                    acc = acc
+                        .iter()
+                        .flat_map(|a| {
+                            terms
+                                .iter()
+                                .map(move |t| Sym::product(vec![a.clone(), t.clone()]))
+                        })
+                        .collect();
+                }
+                Sym::sum(acc)
+            }
+            Sym::Pow(b, e) => {
+                let base = b.expand();
+                match (e.as_num().and_then(crate::Number::as_integer), &base) {
+                    (Some(n @ 2..=12), Sym::Add(_)) => {
+                        let product = Sym::Mul(vec![base.clone(); n as usize]);
+                        // Sym::Mul would merge equal factors back into a power; expand the
+                        // raw product instead.
+                        expand_product(&product).unwrap_or_else(|| Sym::pow(base, (**e).clone()))
+                    }
+                    _ => Sym::pow(base, (**e).clone()),
+                }
+            }
+            other => other.clone(),
+        }
+    }
+}
+
+fn expand_product(p: &Sym) -> Option<Sym> {
+    let Sym::Mul(xs) = p else {
+        return Some(p.clone());
+    };
+    let mut acc = vec![Sym::one()];
+    for f in xs {
+        let terms = match f {
+            Sym::Add(ts) => ts.clone(),
+            other => vec![other.clone()],
+        };
+        if acc.len() * terms.len() > MAX_TERMS {
+            return None;
+        }
+        acc = acc
+            .iter()
+            .flat_map(|a| {
+                terms
+                    .iter()
+                    .map(move |t| Sym::product(vec![a.clone(), t.clone()]))
+            })
+            .collect();
+        acc = match Sym::sum(acc) {
+            Sym::Add(ts) => ts,
+            other => vec![other],
+        };
+    }
+    Some(Sym::sum(acc))
+}
