@@ -17,8 +17,10 @@ mod expand;
 mod integrate;
 mod order;
 pub mod poly;
+mod solve;
 
 pub use integrate::Antiderivative;
+pub use solve::{Solutions, Solved, solve_linear};
 
 use crate::ast::{BinOp, Expr, Func};
 use crate::number::Number;

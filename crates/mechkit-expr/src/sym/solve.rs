@@ -1,0 +1,224 @@
+//! Solving equations symbolically: one polynomial equation of degree one or two for one
+//! unknown (all roots), and small linear systems (Cramer's rule, so the answers come out as one
+//! fraction: statics problems such as the tensions holding a chandelier).
+
+use super::Sym;
+use super::poly::coefficients;
+
+/// The solutions of `f = 0` for one unknown.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Solutions {
+    /// The real roots (as expressions, numeric ones sorted).
+    Roots(Vec<Sym>),
+    /// No real root (a negative discriminant, or `c = 0` with `c ≠ 0`).
+    NoRealRoot,
+    /// Every value is a root (`0 = 0`).
+    Every,
+}
+
+/// What a symbolic solution assumed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solved {
+    /// The solutions.
+    pub solutions: Solutions,
+    /// Conditions under which they hold (`a ≠ 0`, a non-negative discriminant).
+    pub assumptions: Vec<String>,
+}
+
+impl Sym {
+    /// Solves `self = 0` for `x` when it is a polynomial of degree at most two in `x`; `None`
+    /// otherwise (solve numerically then).
+    ///
+    /// ```
+    /// use mechkit_expr::Sym;
+    /// use mechkit_expr::sym::Solutions;
+    /// let s = Sym::parse("x^2 - 5*x + 6").unwrap().solve("x").unwrap();
+    /// assert_eq!(s.solutions, Solutions::Roots(vec![Sym::int(2), Sym::int(3)]));
+    /// ```
+    pub fn solve(&self, x: &str) -> Option<Solved> {
+        let c = coefficients(self, x)?;
+        let mut assumptions = Vec::new();
+        let mut nonzero = |s: &Sym, assumptions: &mut Vec<String>| {
+            if s.as_num().is_none() {
+                assumptions.push(format!("{s} ≠ 0"));
+            }
+        };
+        let solutions = match c.len() {
+            1 if c[0].is_zero() => Solutions::Every,
+            1 => {
+                if c[0].as_num().is_none() {
+                    assumptions.push(format!("{} ≠ 0", c[0]));
+                }
+                Solutions::NoRealRoot
+            }
+            2 => {
+                nonzero(&c[1], &mut assumptions);
+                Solutions::Roots(vec![Sym::negate(Sym::quotient(c[0].clone(), c[1].clone()))])
+            }
+            3 => {
+                nonzero(&c[2], &mut assumptions);
+                let (a, b, cc) = (c[2].clone(), c[1].clone(), c[0].clone());
+                let disc = Sym::difference(
+                    Sym::pow(b.clone(), Sym::int(2)),
+                    Sym::product(vec![Sym::int(4), a.clone(), cc]),
+                );
+                match disc.as_num() {
+                    Some(d) if d.is_negative() => Solutions::NoRealRoot,
+                    Some(d) if d.is_zero() => Solutions::Roots(vec![Sym::negate(Sym::quotient(
+                        b,
+                        Sym::product(vec![Sym::int(2), a]),
+                    ))]),
+                    _ => {
+                        if disc.as_num().is_none() {
+                            assumptions.push(format!("{disc} ≥ 0"));
+                        }
+                        let root = |sign: i64| {
+                            Sym::quotient(
+                                Sym::sum(vec![
+                                    Sym::negate(b.clone()),
+                                    Sym::product(vec![Sym::int(sign), Sym::sqrt(disc.clone())]),
+                                ]),
+                                Sym::product(vec![Sym::int(2), a.clone()]),
+                            )
+                        };
+                        let mut roots = vec![root(-1), root(1)];
+                        if let (Some(p), Some(q)) = (numeric(&roots[0]), numeric(&roots[1]))
+                            && p > q
+                        {
+                            roots.swap(0, 1);
+                        }
+                        Solutions::Roots(roots)
+                    }
+                }
+            }
+            _ => return None,
+        };
+        Some(Solved {
+            solutions,
+            assumptions,
+        })
+    }
+}
+
+fn numeric(s: &Sym) -> Option<f64> {
+    s.eval(&|_| None).ok()
+}
+
+/// Solves the linear system `eqs = 0` for `unknowns`; `Err` says why it cannot (not linear,
+/// singular).
+///
+/// ```
+/// use mechkit_expr::Sym;
+/// use mechkit_expr::sym::solve_linear;
+/// // a chandelier of weight m*g hangs from two cables at angles a and b
+/// let eqs = [
+///     Sym::parse("T1*cos(a) - T2*cos(b)").unwrap(),
+///     Sym::parse("T1*sin(a) + T2*sin(b) - m*g").unwrap(),
+/// ];
+/// let t = solve_linear(&eqs, &["T1", "T2"]).unwrap();
+/// assert_eq!(t[0].to_string(), "g*m*cos(b)/(cos(a)*sin(b) + cos(b)*sin(a))");
+/// ```
+pub fn solve_linear(eqs: &[Sym], unknowns: &[&str]) -> Result<Vec<Sym>, String> {
+    let n = unknowns.len();
+    if eqs.len() != n {
+        return Err(format!("{} equations for {n} unknowns", eqs.len()));
+    }
+    let mut a = vec![vec![Sym::zero(); n]; n];
+    let mut rhs = Vec::with_capacity(n);
+    for (i, e) in eqs.iter().enumerate() {
+        for (j, u) in unknowns.iter().enumerate() {
+            let c = e.diff(u);
+            if unknowns.iter().any(|v| !c.free_of(v)) {
+                return Err(format!("equation {} is not linear in {u}", i + 1));
+            }
+            a[i][j] = c;
+        }
+        let mut at_zero = e.clone();
+        for u in unknowns {
+            at_zero = at_zero.substitute(u, &Sym::zero());
+        }
+        rhs.push(Sym::negate(at_zero));
+    }
+    let d = det(&a);
+    if d.is_zero() {
+        return Err("the system is singular (no unique solution)".into());
+    }
+    Ok((0..n)
+        .map(|j| {
+            let mut aj = a.clone();
+            for (row, b) in aj.iter_mut().zip(&rhs) {
+                row[j] = b.clone();
+            }
+            Sym::quotient(det(&aj).expand(), d.expand())
+        })
+        .collect())
+}
+
+/// Determinant by cofactor expansion (the systems here are small).
+fn det(m: &[Vec<Sym>]) -> Sym {
+    match m.len() {
+        0 => Sym::one(),
+        1 => m[0][0].clone(),
+        n => Sym::sum(
+            (0..n)
+                .filter(|&j| !m[0][j].is_zero())
+                .map(|j| {
+                    let minor: Vec<Vec<Sym>> = m[1..]
+                        .iter()
+                        .map(|row| {
+                            row.iter()
+                                .enumerate()
+                                .filter(|(k, _)| *k != j)
+                                .map(|(_, v)| v.clone())
+                                .collect()
+                        })
+                        .collect();
+                    let sign = if j % 2 == 0 { 1 } else { -1 };
+                    Sym::product(vec![Sym::int(sign), m[0][j].clone(), det(&minor)])
+                })
+                .collect(),
+        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn linear_and_quadratic() {
+        let s = Sym::parse("m*a - F").unwrap().solve("a").unwrap();
+        assert_eq!(
+            s.solutions,
+            Solutions::Roots(vec![Sym::parse("F/m").unwrap()])
+        );
+        assert_eq!(s.assumptions, vec!["m ≠ 0"]);
+        let s = Sym::parse("x^2 + 1").unwrap().solve("x").unwrap();
+        assert_eq!(s.solutions, Solutions::NoRealRoot);
+        let s = Sym::parse("h - g*t^2/2").unwrap().solve("t").unwrap();
+        let Solutions::Roots(r) = s.solutions else {
+            panic!()
+        };
+        assert_eq!(r.len(), 2);
+        assert!(Sym::parse("sin(x) - 1/2").unwrap().solve("x").is_none());
+    }
+
+    #[test]
+    fn a_block_on_a_slope() {
+        // N - m g cos(th) = 0, m g sin(th) - f = 0 for N, f
+        let eqs = [
+            Sym::parse("N - m*g*cos(th)").unwrap(),
+            Sym::parse("m*g*sin(th) - f").unwrap(),
+        ];
+        let s = solve_linear(&eqs, &["N", "f"]).unwrap();
+        assert_eq!(s[0].to_string(), "g*m*cos(th)");
+        assert_eq!(s[1].to_string(), "g*m*sin(th)");
+        assert!(
+            solve_linear(
+                &[Sym::parse("x*y - 1").unwrap(), Sym::parse("x").unwrap()],
+                &["x", "y"]
+            )
+            .is_err()
+        );
+    }
+}
