@@ -2,9 +2,9 @@
 //! so that every later error (an undefined name, a dimension mismatch) can point at the text.
 
 use crate::ast::{Expr, Func};
+use crate::compile::Program;
 use crate::error::{ExprError, ExprErrorKind};
 use crate::parser::parse;
-use crate::program::Program;
 use crate::scope::{Scope, builtin_constant};
 use crate::span::Span;
 use crate::suggest::nearest;

@@ -34,13 +34,13 @@
 //! in (a scope may redefine them).
 
 pub mod ast;
+mod compile;
 mod dims;
 mod error;
 mod formula;
 mod lexer;
 mod number;
 mod parser;
-mod program;
 mod scope;
 pub mod span;
 mod suggest;
@@ -48,12 +48,12 @@ pub mod sym;
 pub mod units;
 
 pub use ast::{BinOp, Expr, Func};
+pub use compile::Program;
 pub use dims::Dim;
 pub use error::{ExprError, ExprErrorKind};
 pub use formula::Formula;
 pub use number::Number;
 pub use parser::{Parsed, parse};
-pub use program::Program;
 pub use scope::{BUILTIN_CONSTANTS, Binding, MapScope, Scope, builtin_constant};
 pub use span::Span;
 pub use suggest::{did_you_mean, edit_distance, nearest};

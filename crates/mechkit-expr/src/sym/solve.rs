@@ -38,7 +38,7 @@ impl Sym {
     pub fn solve(&self, x: &str) -> Option<Solved> {
         let c = coefficients(self, x)?;
         let mut assumptions = Vec::new();
-        let mut nonzero = |s: &Sym, assumptions: &mut Vec<String>| {
+        let nonzero = |s: &Sym, assumptions: &mut Vec<String>| {
             if s.as_num().is_none() {
                 assumptions.push(format!("{s} ≠ 0"));
             }

@@ -180,7 +180,8 @@ impl NameContext<'_> {
                 scope.slots.push((name.to_string(), slot));
             }
         }
-        let program = formula.compile(&scope)?;
+        // state formulas run in the hot loop: native code where available
+        let program = formula.compile(&scope)?.native();
         formula.dimension_with(&|n| self.dim_of(n), &|n| self.constant(n))?;
         Ok(StateExpr::new(formula.source().to_string(), program, vars))
     }
