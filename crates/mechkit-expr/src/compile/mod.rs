@@ -188,8 +188,8 @@ mod tests {
 
     #[test]
     fn long_programs_fall_back_to_the_heap() {
-        let scope = MapScope::new().slot("x", 0);
         use std::fmt::Write as _;
+        let scope = MapScope::new().slot("x", 0);
         let mut src = String::new();
         for i in 0..100 {
             let _ = write!(src, "x^{}+", i + 4);
