@@ -4,8 +4,7 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand};
 
-const EXAMPLES: &str = "\
-Examples:
+const EXAMPLES: &str = r#"Examples:
   mechkit run examples/feather.toml --out out/feather
       simulate, write out/feather/trajectory.csv, summary.json and SVG plots
   mechkit run examples/kepler.toml --json
@@ -13,9 +12,14 @@ Examples:
   mechkit check examples/projectile_drag.toml
       validate a scenario without running it
   mechkit list-integrators
+  mechkit diff "-F0*sin(2*pi*x/b)" --var x
+  mechkit integrate "1/(a+x^2)" --var x --from 0 --to 1 --set a=1
+  mechkit solve "x^2 - 5*x + 6 = 0" --for x
+  mechkit solve "cos(x) = x" --for x --in 0:1
+  mechkit units "60 km/h" --to m/s
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
-Scenario format: docs/scenario.md. Commands: docs/cli.md.";
+Scenario format: docs/scenario.md. Commands: docs/cli.md."#;
 
 /// Computational classical mechanics: simulate scenario files with units and formulas, and
 /// report trajectories, plots and the energy ledger.
@@ -41,6 +45,87 @@ pub enum Command {
     Check(CheckArgs),
     /// List the integration methods.
     ListIntegrators,
+    /// Differentiate a formula symbolically.
+    Diff(DiffArgs),
+    /// Integrate a formula: antiderivative, and the definite value by closed form and by
+    /// quadrature.
+    Integrate(IntegrateArgs),
+    /// Solve an equation, or a `;`-separated linear system.
+    Solve(SolveArgs),
+    /// Convert a quantity to SI or to another unit, and show its dimension.
+    Units(UnitsArgs),
+}
+
+/// `mechkit diff`.
+#[derive(Debug, clap::Args)]
+pub struct DiffArgs {
+    /// The formula, e.g. "-F0*sin(2*pi*x/b)".
+    #[arg(allow_hyphen_values = true)]
+    pub expr: String,
+    /// The variable to differentiate with respect to.
+    #[arg(long, default_value = "x")]
+    pub var: String,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit integrate`.
+#[derive(Debug, clap::Args)]
+pub struct IntegrateArgs {
+    /// The integrand, e.g. "1/(a+x^2)".
+    #[arg(allow_hyphen_values = true)]
+    pub expr: String,
+    /// The variable of integration.
+    #[arg(long, default_value = "x")]
+    pub var: String,
+    /// Lower limit (a number, or a quantity with units).
+    #[arg(long, allow_hyphen_values = true)]
+    pub from: Option<String>,
+    /// Upper limit.
+    #[arg(long, allow_hyphen_values = true)]
+    pub to: Option<String>,
+    /// Values of the other names, e.g. "a=1,b=2 m".
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit solve`.
+#[derive(Debug, clap::Args)]
+pub struct SolveArgs {
+    /// The equation "LHS = RHS" (or an expression equal to zero); several linear equations
+    /// separated by `;`.
+    #[arg(allow_hyphen_values = true)]
+    pub equation: String,
+    /// The unknown(s), comma-separated for a linear system.
+    #[arg(long = "for", default_value = "x")]
+    pub unknown: String,
+    /// Search interval for a numerical solution, "A:B".
+    #[arg(long = "in", allow_hyphen_values = true)]
+    pub interval: Option<String>,
+    /// Values of the other names, e.g. "m=2,g=9.81".
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit units`.
+#[derive(Debug, clap::Args)]
+pub struct UnitsArgs {
+    /// The quantity, e.g. "60 km/h".
+    #[arg(allow_hyphen_values = true)]
+    pub quantity: String,
+    /// The unit to convert to, e.g. "m/s".
+    #[arg(long)]
+    pub to: Option<String>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `mechkit run`.

@@ -38,15 +38,19 @@
 //! - [`energy`]: the energy ledger (work of each force, kinetic and potential energy).
 //! - [`simulate`]: the run loop: stop conditions located between steps, observers, divergence
 //!   diagnosis.
-//! - [`roots`]: Brent's method.
+//! - [`roots`]: Brent's method; every root on an interval.
+//! - [`calculus`]: derivatives, integrals (closed form and quadrature), equations, units.
+//! - [`quad`]: adaptive Gauss-Kronrod quadrature of functions.
 //! - [`scenario`] (feature `scenario`): TOML scenario files → model → run → summary.
 //! - [`units`]: re-export of the unit system of `mechkit-expr`.
 
+pub mod calculus;
 pub mod energy;
 mod error;
 pub mod forces;
 pub mod ode;
 pub mod particles;
+pub mod quad;
 pub mod roots;
 #[cfg(feature = "scenario")]
 pub mod scenario;

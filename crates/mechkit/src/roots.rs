@@ -93,6 +93,51 @@ pub fn brent_with_values(
     Some(b)
 }
 
+/// Every root of `f` in `[a, b]` that shows as a sign change (or an exact zero) between
+/// `samples` equally spaced points, each refined by Brent's method to `tol`, sorted. Roots where
+/// `f` touches zero without changing sign, and pairs of roots closer than the sampling step,
+/// can be missed: raise `samples` to look closer.
+///
+/// ```
+/// let roots = mechkit::roots::find_all(f64::sin, -1.0, 10.0, 1000, 1e-14);
+/// assert_eq!(roots.len(), 4); // 0, π, 2π, 3π
+/// ```
+pub fn find_all(
+    mut f: impl FnMut(Real) -> Real,
+    a: Real,
+    b: Real,
+    samples: usize,
+    tol: Real,
+) -> Vec<Real> {
+    let n = samples.max(1);
+    let h = (b - a) / n as Real;
+    let mut roots: Vec<Real> = Vec::new();
+    let mut x0 = a;
+    let mut f0 = f(x0);
+    for i in 1..=n {
+        let x1 = if i == n { b } else { a + i as Real * h };
+        let f1 = f(x1);
+        if f0 == 0.0 {
+            roots.push(x0);
+        } else if f0.is_finite() && f1.is_finite() && f0.signum() != f1.signum() && f1 != 0.0 {
+            // a sign change; a pole (huge values of both signs) is refused below
+            if let Some(r) = brent_with_values(&mut f, x0, x1, Some((f0, f1)), tol) {
+                let fr = f(r);
+                if fr.abs() <= f0.abs().max(f1.abs()) {
+                    roots.push(r);
+                }
+            }
+        }
+        x0 = x1;
+        f0 = f1;
+    }
+    if f0 == 0.0 {
+        roots.push(x0);
+    }
+    roots.dedup_by(|p, q| (*p - *q).abs() <= 2.0 * tol);
+    roots
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -109,6 +154,17 @@ mod tests {
     fn step_functions_converge_like_bisection() {
         let r = brent(|x| if x < 0.3 { -1.0 } else { 1.0 }, 0.0, 1.0, 1e-12).unwrap();
         assert!((r - 0.3).abs() < 1e-11);
+    }
+
+    #[test]
+    fn all_roots_on_an_interval() {
+        let r = find_all(|x| (x - 1.0) * (x - 2.0) * (x + 0.5), -3.0, 3.0, 100, 1e-14);
+        assert_eq!(r.len(), 3);
+        assert!(
+            (r[0] + 0.5).abs() < 1e-13 && (r[1] - 1.0).abs() < 1e-13 && (r[2] - 2.0).abs() < 1e-13
+        );
+        // a pole is not a root
+        assert!(find_all(|x| 1.0 / x, -1.0, 1.0, 7, 1e-14).is_empty());
     }
 
     #[test]

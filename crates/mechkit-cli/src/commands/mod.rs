@@ -1,5 +1,6 @@
 //! One module per subcommand; each is glue around a library call.
 
+mod calculus;
 mod check;
 mod run;
 
@@ -20,6 +21,10 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
     match cli.command {
         Command::Run(args) => run::run(&args),
         Command::Check(args) => check::check(&args),
+        Command::Diff(args) => calculus::diff(&args),
+        Command::Integrate(args) => calculus::integrate(&args),
+        Command::Solve(args) => calculus::solve(&args),
+        Command::Units(args) => calculus::units(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {

@@ -38,9 +38,11 @@ impl Sym {
     pub fn solve(&self, x: &str) -> Option<Solved> {
         let c = coefficients(self, x)?;
         let mut assumptions = Vec::new();
+        // `-g/2 ≠ 0` says no more than `g ≠ 0`
         let nonzero = |s: &Sym, assumptions: &mut Vec<String>| {
             if s.as_num().is_none() {
-                assumptions.push(format!("{s} ≠ 0"));
+                let (_, rest) = super::build::split_coefficient(s);
+                assumptions.push(format!("{} ≠ 0", rest.unwrap_or_else(|| s.clone())));
             }
         };
         let solutions = match c.len() {

@@ -1,0 +1,273 @@
+//! `mechkit diff | integrate | solve | units`: the one-question calculus commands.
+
+use anyhow::{Result, bail};
+use mechkit::calculus::{self, CalculusError, Params};
+use mechkit::expr::sym::Solutions;
+use serde_json::json;
+
+use super::{Outcome, print};
+use crate::args::{DiffArgs, IntegrateArgs, SolveArgs, UnitsArgs};
+
+/// A limit or interval end: a number or a quantity with units, in SI.
+fn value(text: &str, what: &str) -> Result<f64> {
+    match calculus::parse_params(&format!("{what}={text}")) {
+        Ok(v) => Ok(v[0].1),
+        Err(e) => bail!("{what}: {e}"),
+    }
+}
+
+fn params(set: Option<&str>) -> Result<Vec<(String, f64)>> {
+    Ok(match set {
+        Some(s) => calculus::parse_params(s).map_err(|e| anyhow::anyhow!("--set: {e}"))?,
+        None => Vec::new(),
+    })
+}
+
+fn show(p: &Params) -> String {
+    p.iter()
+        .map(|(k, v)| format!("{k} = {v}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn check_expr<T>(r: Result<T, CalculusError>, flag: &str) -> Result<T> {
+    r.map_err(|e| match e {
+        CalculusError::Formula(e) => anyhow::anyhow!("in the {flag}: {e}"),
+        other => anyhow::anyhow!("{other}"),
+    })
+}
+
+pub fn diff(args: &DiffArgs) -> Result<Outcome> {
+    let d = check_expr(calculus::derivative(&args.expr, &args.var), "formula")?;
+    if args.json {
+        let j = json!({ "input": d.input.to_string(), "var": args.var, "derivative": d.result.to_string() });
+        print(&format!("{j:#}\n"))?;
+    } else {
+        print(&format!("d/d{} {} = {}\n", args.var, d.input, d.result))?;
+    }
+    Ok(Outcome::Success)
+}
+
+pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
+    let limits = match (&args.from, &args.to) {
+        (Some(a), Some(b)) => Some((value(a, "--from")?, value(b, "--to")?)),
+        (None, None) => None,
+        _ => bail!("give both --from and --to for a definite integral"),
+    };
+    let p = params(args.set.as_deref())?;
+    let i = check_expr(
+        calculus::integral(&args.expr, &args.var, limits, &p),
+        "integrand",
+    )?;
+    let x = &args.var;
+    if args.json {
+        let definite = i.definite.as_ref().map(|d| {
+            json!({
+                "from": d.from, "to": d.to,
+                "closed_form": d.closed_form,
+                "quadrature": d.quadrature.as_ref().ok().map(|q| json!({"value": q.value, "error": q.error, "evaluations": q.evaluations})),
+                "quadrature_error": d.quadrature.as_ref().err(),
+                "agree": d.agree,
+            })
+        });
+        let j = json!({
+            "input": i.input.to_string(),
+            "var": x,
+            "antiderivative": i.antiderivative.as_ref().map(ToString::to_string),
+            "assumptions": i.assumptions,
+            "parameters": p.iter().map(|(k, v)| (k.clone(), json!(v))).collect::<serde_json::Map<_, _>>(),
+            "definite": definite,
+        });
+        print(&format!("{j:#}\n"))?;
+    } else {
+        let mut out = match &i.antiderivative {
+            Some(f) => {
+                let mut s = format!("∫ {} d{x} = {f} + C", i.input);
+                if !i.assumptions.is_empty() {
+                    s.push_str(&format!("   (assuming {})", i.assumptions.join(" and ")));
+                }
+                s + "\n"
+            }
+            None => format!(
+                "∫ {} d{x}: no closed form found by the rule table (the definite value needs quadrature)\n",
+                i.input
+            ),
+        };
+        if let Some(d) = &i.definite {
+            let given = if p.is_empty() {
+                String::new()
+            } else {
+                format!(" with {}", show(&p))
+            };
+            out.push_str(&format!("from {} to {}{given}:\n", d.from, d.to));
+            if let Some(c) = d.closed_form {
+                out.push_str(&format!("  closed form  {c}\n"));
+            }
+            match &d.quadrature {
+                Ok(q) => out.push_str(&format!(
+                    "  quadrature   {} ± {:.1e} ({} evaluations)\n",
+                    q.value, q.error, q.evaluations
+                )),
+                Err(e) => out.push_str(&format!("  quadrature   failed: {e}\n")),
+            }
+            match d.agree {
+                Some(true) => out.push_str("  the two agree\n"),
+                Some(false) => out.push_str("  they DISAGREE: the antiderivative may jump inside the interval (ln|u| across 0); trust the quadrature\n"),
+                None => {}
+            }
+        }
+        print(&out)?;
+    }
+    let nothing =
+        i.antiderivative.is_none() && i.definite.as_ref().is_none_or(|d| d.quadrature.is_err());
+    Ok(if nothing {
+        Outcome::ComputationFailed
+    } else {
+        Outcome::Success
+    })
+}
+
+fn interval(text: &str) -> Result<(f64, f64)> {
+    let Some((a, b)) = text.split_once(':') else {
+        bail!("--in takes an interval A:B, e.g. --in 0:10, not `{text}`");
+    };
+    Ok((value(a, "--in start")?, value(b, "--in end")?))
+}
+
+pub fn solve(args: &SolveArgs) -> Result<Outcome> {
+    let p = params(args.set.as_deref())?;
+    let unknowns: Vec<&str> = args
+        .unknown
+        .split(',')
+        .map(str::trim)
+        .filter(|s| !s.is_empty())
+        .collect();
+    if unknowns.len() > 1 || args.equation.contains(';') {
+        let sol = check_expr(
+            calculus::solve_system(&args.equation, &unknowns),
+            "equations",
+        )?;
+        if args.json {
+            let m: serde_json::Map<_, _> = sol
+                .iter()
+                .map(|(k, v)| (k.clone(), json!(v.to_string())))
+                .collect();
+            print(&format!("{:#}\n", json!({ "solution": m })))?;
+        } else {
+            let text: String = sol.iter().map(|(k, v)| format!("{k} = {v}\n")).collect();
+            print(&text)?;
+        }
+        return Ok(Outcome::Success);
+    }
+    let x = unknowns.first().copied().unwrap_or("x");
+    let range = args.interval.as_deref().map(interval).transpose()?;
+    let s = check_expr(calculus::solve(&args.equation, x, range, &p), "equation")?;
+    let symbolic: Option<Vec<String>> = match &s.symbolic {
+        Some(Solutions::Roots(r)) => Some(r.iter().map(ToString::to_string).collect()),
+        Some(_) | None => None,
+    };
+    if args.json {
+        let j = json!({
+            "equation": format!("{} = 0", s.equation),
+            "unknown": x,
+            "symbolic": symbolic,
+            "no_real_root": matches!(s.symbolic, Some(Solutions::NoRealRoot)),
+            "every_value": matches!(s.symbolic, Some(Solutions::Every)),
+            "assumptions": s.assumptions,
+            "numeric": s.numeric,
+        });
+        print(&format!("{j:#}\n"))?;
+    } else {
+        let mut out = String::new();
+        match &s.symbolic {
+            Some(Solutions::Roots(r)) => {
+                for root in r {
+                    out.push_str(&format!("{x} = {root}\n"));
+                }
+                if !s.assumptions.is_empty() {
+                    out.push_str(&format!("  (assuming {})\n", s.assumptions.join(" and ")));
+                }
+            }
+            Some(Solutions::NoRealRoot) => {
+                out.push_str(&format!("no real {x} solves {} = 0\n", s.equation))
+            }
+            Some(Solutions::Every) => {
+                out.push_str(&format!("every {x} solves it ({} = 0)\n", s.equation))
+            }
+            None => {
+                let (a, b) = range.unwrap_or_default();
+                if s.numeric.is_empty() {
+                    out.push_str(&format!(
+                        "no root of {} = 0 found for {x} in [{a}, {b}]\n",
+                        s.equation
+                    ));
+                } else {
+                    out.push_str(&format!(
+                        "roots of {} = 0 for {x} in [{a}, {b}]:\n",
+                        s.equation
+                    ));
+                }
+            }
+        }
+        if s.symbolic.is_some()
+            && !s.numeric.is_empty()
+            && s.numeric.len() == symbolic.as_ref().map_or(0, Vec::len)
+            && !p.is_empty()
+        {
+            out.push_str(&format!("with {}:\n", show(&p)));
+        }
+        if s.symbolic.is_none()
+            || !p.is_empty()
+            || symbolic.as_ref().is_some_and(|r| {
+                r.iter()
+                    .any(|t| t.parse::<f64>().is_err() && s.equation.names().len() <= 1)
+            })
+        {
+            for v in &s.numeric {
+                out.push_str(&format!("  {x} = {v}\n"));
+            }
+        }
+        print(&out)?;
+    }
+    let none =
+        s.numeric.is_empty() && !matches!(s.symbolic, Some(Solutions::Roots(_) | Solutions::Every));
+    Ok(if none {
+        Outcome::ComputationFailed
+    } else {
+        Outcome::Success
+    })
+}
+
+pub fn units(args: &UnitsArgs) -> Result<Outcome> {
+    let c = check_expr(
+        calculus::convert(&args.quantity, args.to.as_deref()),
+        "quantity",
+    )?;
+    let unit = c
+        .dimension
+        .derived_symbol()
+        .map_or_else(|| c.dimension.to_string(), str::to_string);
+    let name = c.dimension.quantity_name().unwrap_or("");
+    if args.json {
+        let j = json!({
+            "input": args.quantity,
+            "si": c.si,
+            "si_unit": unit,
+            "dimension": c.dimension.to_string(),
+            "quantity": name,
+            "converted": c.converted.as_ref().map(|(v, u)| json!({"value": v, "unit": u})),
+        });
+        print(&format!("{j:#}\n"))?;
+    } else {
+        let mut out = format!("{} = {} {unit}", args.quantity, c.si);
+        if !name.is_empty() {
+            out.push_str(&format!("   [{name}]"));
+        }
+        out.push('\n');
+        if let Some((v, u)) = &c.converted {
+            out.push_str(&format!("{} = {v} {u}\n", args.quantity));
+        }
+        print(&out)?;
+    }
+    Ok(Outcome::Success)
+}

@@ -1,0 +1,353 @@
+//! The one-question calculus of the command line, as library calls: the derivative of a
+//! formula, its antiderivative and definite integral (closed form next to adaptive quadrature,
+//! and whether they agree), the solutions of an equation (symbolic, else numeric on an
+//! interval), and unit conversion.
+
+use mechkit_expr::sym::{Solutions, solve_linear};
+use mechkit_expr::units::{Dimension, Quantity, Unit, UnitError};
+use mechkit_expr::{ExprError, Sym, parse};
+use thiserror::Error;
+
+use crate::Real;
+use crate::quad::{QuadResult, Tolerance, integrate as quadrature};
+use crate::roots::find_all;
+
+/// A formula, a unit or a value that could not be read.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum CalculusError {
+    /// The formula does not parse.
+    #[error("{0}")]
+    Formula(#[from] ExprError),
+    /// A unit or quantity does not parse.
+    #[error("{0}")]
+    Unit(#[from] UnitError),
+    /// Something else is wrong with the question (what, and how to fix it).
+    #[error("{0}")]
+    Invalid(String),
+}
+
+/// Values given for the names of a formula (`--set a=1,b=2`), SI.
+pub type Params = [(String, Real)];
+
+fn lookup(params: &Params) -> impl Fn(&str) -> Option<Real> + '_ {
+    move |n| params.iter().find(|(k, _)| k == n).map(|(_, v)| *v)
+}
+
+/// Reads `a=1,b=2 m` into names and SI values.
+pub fn parse_params(text: &str) -> Result<Vec<(String, Real)>, CalculusError> {
+    let mut out = Vec::new();
+    for item in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+        let (name, value) = item.split_once('=').ok_or_else(|| {
+            CalculusError::Invalid(format!(
+                "`{item}` is not `name=value` (e.g. `a=1` or `m=2 kg`)"
+            ))
+        })?;
+        let q = Quantity::parse(value.trim())?;
+        out.push((name.trim().to_string(), q.value));
+    }
+    Ok(out)
+}
+
+/// A derivative.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Derivative {
+    /// The formula, canonical.
+    pub input: Sym,
+    /// Its derivative, simplified.
+    pub result: Sym,
+}
+
+/// `d/dx` of `text`.
+pub fn derivative(text: &str, x: &str) -> Result<Derivative, CalculusError> {
+    let input = Sym::from_expr(&parse(text)?.expr);
+    let result = input.diff(x);
+    Ok(Derivative { input, result })
+}
+
+/// An integral: the antiderivative when the rule table has one, and the definite value by
+/// both routes when limits are given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Integral {
+    /// The integrand, canonical.
+    pub input: Sym,
+    /// An antiderivative (verified by differentiation), if found.
+    pub antiderivative: Option<Sym>,
+    /// What it assumed.
+    pub assumptions: Vec<String>,
+    /// The definite integral, if limits were given.
+    pub definite: Option<Definite>,
+}
+
+/// A definite integral by the closed form and by quadrature.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Definite {
+    /// Lower limit.
+    pub from: Real,
+    /// Upper limit.
+    pub to: Real,
+    /// `F(to) - F(from)`, when there is an antiderivative continuous on the interval and all
+    /// names have values.
+    pub closed_form: Option<Real>,
+    /// Adaptive Gauss-Kronrod.
+    pub quadrature: Result<QuadResult, String>,
+    /// Whether the two agree within the quadrature's error estimate (or 1e-9 relative).
+    pub agree: Option<bool>,
+}
+
+/// The integral of `text` with respect to `x`, with `params` giving values to the other names
+/// (needed for the definite value).
+pub fn integral(
+    text: &str,
+    x: &str,
+    limits: Option<(Real, Real)>,
+    params: &Params,
+) -> Result<Integral, CalculusError> {
+    let input = Sym::from_expr(&parse(text)?.expr);
+    let anti = input.integrate(x);
+    let (antiderivative, assumptions) = match anti {
+        Some(a) => (Some(a.result), a.assumptions),
+        None => (None, Vec::new()),
+    };
+    let definite = limits.map(|(from, to)| {
+        let env = lookup(params);
+        let at = |f: &Sym, v: Real| f.eval(&|n| if n == x { Some(v) } else { env(n) });
+        let quad = quadrature(
+            |v| at(&input, v).unwrap_or(Real::NAN),
+            from,
+            to,
+            Tolerance::default(),
+        )
+        .map_err(|e| e.to_string());
+        // the closed form counts only if it is continuous on the interval: compare with the
+        // quadrature's value (a jump in ln|x| across 0 would show as a disagreement)
+        let closed_form = antiderivative.as_ref().and_then(|big_f| {
+            let (a, b) = (at(big_f, from).ok()?, at(big_f, to).ok()?);
+            let v = b - a;
+            v.is_finite().then_some(v)
+        });
+        let agree = match (&closed_form, &quad) {
+            (Some(c), Ok(q)) => {
+                Some((c - q.value).abs() <= (10.0 * q.error).max(1e-9 * c.abs().max(1e-12)))
+            }
+            _ => None,
+        };
+        Definite {
+            from,
+            to,
+            closed_form,
+            quadrature: quad,
+            agree,
+        }
+    });
+    if definite
+        .as_ref()
+        .is_some_and(|d| d.quadrature.is_err() && d.closed_form.is_none())
+        && input
+            .names()
+            .iter()
+            .any(|n| n != x && lookup(params)(n).is_none())
+    {
+        let missing: Vec<String> = input
+            .names()
+            .into_iter()
+            .filter(|n| n != x && lookup(params)(n).is_none())
+            .collect();
+        return Err(CalculusError::Invalid(format!(
+            "a definite value needs values for {}: give them with --set, e.g. --set {}=1",
+            missing.join(", "),
+            missing[0]
+        )));
+    }
+    Ok(Integral {
+        input,
+        antiderivative,
+        assumptions,
+        definite,
+    })
+}
+
+/// The answer to `lhs = rhs`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// `lhs - rhs`, canonical.
+    pub equation: Sym,
+    /// Symbolic solutions, when the equation is linear or quadratic in the unknown.
+    pub symbolic: Option<Solutions>,
+    /// What the symbolic solution assumed.
+    pub assumptions: Vec<String>,
+    /// Numeric values of the symbolic solutions (when every name has a value), or the roots
+    /// found on the interval.
+    pub numeric: Vec<Real>,
+}
+
+/// Splits `lhs = rhs` (a single `=`, not `==`, `<=`, `>=`, `!=`) into `lhs - rhs`.
+fn equation(text: &str) -> Result<Sym, CalculusError> {
+    let b = text.as_bytes();
+    let positions: Vec<usize> = (0..b.len())
+        .filter(|&i| {
+            b[i] == b'='
+                && !(i > 0 && matches!(b[i - 1], b'=' | b'<' | b'>' | b'!'))
+                && !(i + 1 < b.len() && b[i + 1] == b'=')
+        })
+        .collect();
+    match positions.as_slice() {
+        [] => Ok(Sym::from_expr(&parse(text)?.expr)),
+        [i] => {
+            let lhs = parse(&text[..*i])?.expr;
+            let rhs = parse(&text[i + 1..]).map_err(|mut e| {
+                e.span = e.span.shifted(i + 1);
+                e.source = text.to_string();
+                e
+            })?;
+            Ok(Sym::difference(
+                Sym::from_expr(&lhs),
+                Sym::from_expr(&rhs.expr),
+            ))
+        }
+        _ => Err(CalculusError::Invalid(format!(
+            "`{text}` has more than one `=`; separate equations with `;`"
+        ))),
+    }
+}
+
+/// Solves one equation for `x`: symbolically when it is linear or quadratic in `x`, otherwise
+/// (or additionally, with an interval) numerically on `interval` with `params` for the other
+/// names.
+pub fn solve(
+    text: &str,
+    x: &str,
+    interval: Option<(Real, Real)>,
+    params: &Params,
+) -> Result<Solution, CalculusError> {
+    let eq = equation(text)?;
+    let env = lookup(params);
+    let solved = eq.solve(x);
+    let (symbolic, assumptions) = match solved {
+        Some(s) => (Some(s.solutions), s.assumptions),
+        None => (None, Vec::new()),
+    };
+    let mut numeric = Vec::new();
+    if let Some(Solutions::Roots(roots)) = &symbolic {
+        numeric = roots
+            .iter()
+            .filter_map(|r| r.eval(&env).ok())
+            .filter(|v| v.is_finite())
+            .collect();
+        if let Some((a, b)) = interval {
+            numeric.retain(|v| (a.min(b)..=a.max(b)).contains(v));
+        }
+    } else if let Some((a, b)) = interval {
+        let f = |v: Real| {
+            eq.eval(&|n| if n == x { Some(v) } else { env(n) })
+                .unwrap_or(Real::NAN)
+        };
+        if let Some(missing) = eq.names().into_iter().find(|n| n != x && env(n).is_none()) {
+            return Err(CalculusError::Invalid(format!(
+                "solving numerically needs a value for `{missing}`: give it with --set {missing}=…"
+            )));
+        }
+        numeric = find_all(
+            f,
+            a.min(b),
+            a.max(b),
+            2000,
+            1e-14 * (a.abs().max(b.abs())).max(1.0),
+        );
+    } else if symbolic.is_none() {
+        return Err(CalculusError::Invalid(format!(
+            "`{text}` is not linear or quadratic in `{x}`: give an interval to search, e.g. --in 0:10"
+        )));
+    }
+    Ok(Solution {
+        equation: eq,
+        symbolic,
+        assumptions,
+        numeric,
+    })
+}
+
+/// Solves several linear equations (`;`-separated) for several unknowns.
+pub fn solve_system(text: &str, unknowns: &[&str]) -> Result<Vec<(String, Sym)>, CalculusError> {
+    let eqs = text
+        .split(';')
+        .map(str::trim)
+        .filter(|s| !s.is_empty())
+        .map(equation)
+        .collect::<Result<Vec<_>, _>>()?;
+    let sol = solve_linear(&eqs, unknowns).map_err(CalculusError::Invalid)?;
+    Ok(unknowns.iter().map(|u| (*u).to_string()).zip(sol).collect())
+}
+
+/// A quantity in SI and, when asked, in another unit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Conversion {
+    /// The value in SI units.
+    pub si: Real,
+    /// Its dimension.
+    pub dimension: Dimension,
+    /// The value in the requested unit.
+    pub converted: Option<(Real, String)>,
+}
+
+/// Converts `quantity` (`"60 km/h"`) to SI, and to `to` if given.
+pub fn convert(quantity: &str, to: Option<&str>) -> Result<Conversion, CalculusError> {
+    let q = Quantity::parse(quantity)?;
+    let converted = match to {
+        None => None,
+        Some(u) => {
+            let unit = Unit::parse(u)?;
+            let v = q.value_in(&unit).ok_or_else(|| {
+                CalculusError::Invalid(format!(
+                    "cannot convert {} to {u}: the dimensions differ ({} vs {})",
+                    quantity,
+                    q.dim.describe(),
+                    unit.dim.describe()
+                ))
+            })?;
+            Some((v, u.to_string()))
+        }
+    };
+    Ok(Conversion {
+        si: q.value,
+        dimension: q.dim,
+        converted,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_acceptance_integral() {
+        let i = integral("1/(a+x^2)", "x", Some((0.0, 1.0)), &[("a".into(), 1.0)]).unwrap();
+        assert_eq!(
+            i.antiderivative.unwrap().to_string(),
+            "atan(x/sqrt(a))/sqrt(a)"
+        );
+        assert_eq!(i.assumptions, vec!["a > 0"]);
+        let d = i.definite.unwrap();
+        assert!((d.closed_form.unwrap() - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+        assert_eq!(d.agree, Some(true));
+    }
+
+    #[test]
+    fn equations() {
+        let s = solve("x^2 - 5*x + 6 = 0", "x", None, &[]).unwrap();
+        assert_eq!(s.numeric, vec![2.0, 3.0]);
+        let s = solve("cos(x) = x", "x", Some((0.0, 1.0)), &[]).unwrap();
+        assert!((s.numeric[0] - 0.739_085_133_215_160_6).abs() < 1e-12);
+        assert!(solve("cos(x) = x", "x", None, &[]).is_err());
+        let sys = solve_system("N - m*g*cos(t) = 0; f = m*g*sin(t)", &["N", "f"]).unwrap();
+        assert_eq!(sys[1].1.to_string(), "g*m*sin(t)");
+    }
+
+    #[test]
+    fn units() {
+        let c = convert("60 km/h", Some("m/s")).unwrap();
+        assert!((c.si - 16.666_666_666_666_668).abs() < 1e-12);
+        assert!((c.converted.unwrap().0 - c.si).abs() < 1e-12);
+        assert!(convert("60 km/h", Some("kg")).is_err());
+    }
+}
