@@ -22,8 +22,10 @@ fn gcd(mut a: i128, mut b: i128) -> i128 {
     a
 }
 
-/// Beyond this, rationals become floats (keeps every intermediate product inside i128).
-const LIMIT: i128 = 1 << 62;
+/// Beyond this, rationals become floats: numerator and denominator stay exactly representable
+/// as `f64` (so an exact number prints and reads back exactly), and every intermediate product
+/// stays inside `i128`.
+const LIMIT: i128 = 1 << 53;
 
 impl Number {
     /// Zero.
@@ -59,6 +61,9 @@ impl Number {
     pub fn from_f64(x: f64) -> Number {
         if !x.is_finite() {
             return Number::Float(x);
+        }
+        if x.fract() == 0.0 && x.abs() <= LIMIT as f64 {
+            return Number::rational(x as i128, 1);
         }
         let text = format!("{x:e}"); // shortest round-trip digits, e.g. "6.674e-11"
         let (mantissa, exp) = text.split_once('e').expect("exponent form");

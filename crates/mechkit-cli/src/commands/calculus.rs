@@ -1,5 +1,7 @@
 //! `mechkit diff | integrate | solve | units`: the one-question calculus commands.
 
+use std::fmt::Write as _;
+
 use anyhow::{Result, bail};
 use mechkit::calculus::{self, CalculusError, Params};
 use mechkit::expr::sym::Solutions;
@@ -7,6 +9,13 @@ use serde_json::json;
 
 use super::{Outcome, print};
 use crate::args::{DiffArgs, IntegrateArgs, SolveArgs, UnitsArgs};
+
+/// `write!` into a String (which cannot fail).
+macro_rules! wr {
+    ($dst:expr, $($arg:tt)*) => {{
+        let _ = write!($dst, $($arg)*);
+    }};
+}
 
 /// A limit or interval end: a number or a quantity with units, in SI.
 fn value(text: &str, what: &str) -> Result<f64> {
@@ -84,7 +93,7 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
             Some(f) => {
                 let mut s = format!("∫ {} d{x} = {f} + C", i.input);
                 if !i.assumptions.is_empty() {
-                    s.push_str(&format!("   (assuming {})", i.assumptions.join(" and ")));
+                    wr!(s, "   (assuming {})", i.assumptions.join(" and "));
                 }
                 s + "\n"
             }
@@ -99,16 +108,19 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
             } else {
                 format!(" with {}", show(&p))
             };
-            out.push_str(&format!("from {} to {}{given}:\n", d.from, d.to));
+            wr!(out, "from {} to {}{given}:\n", d.from, d.to);
             if let Some(c) = d.closed_form {
-                out.push_str(&format!("  closed form  {c}\n"));
+                wr!(out, "  closed form  {c}\n");
             }
             match &d.quadrature {
-                Ok(q) => out.push_str(&format!(
+                Ok(q) => wr!(
+                    out,
                     "  quadrature   {} ± {:.1e} ({} evaluations)\n",
-                    q.value, q.error, q.evaluations
-                )),
-                Err(e) => out.push_str(&format!("  quadrature   failed: {e}\n")),
+                    q.value,
+                    q.error,
+                    q.evaluations
+                ),
+                Err(e) => wr!(out, "  quadrature   failed: {e}\n"),
             }
             match d.agree {
                 Some(true) => out.push_str("  the two agree\n"),
@@ -154,7 +166,10 @@ pub fn solve(args: &SolveArgs) -> Result<Outcome> {
                 .collect();
             print(&format!("{:#}\n", json!({ "solution": m })))?;
         } else {
-            let text: String = sol.iter().map(|(k, v)| format!("{k} = {v}\n")).collect();
+            let mut text = String::new();
+            for (k, v) in &sol {
+                wr!(text, "{k} = {v}\n");
+            }
             print(&text)?;
         }
         return Ok(Outcome::Success);
@@ -182,49 +197,49 @@ pub fn solve(args: &SolveArgs) -> Result<Outcome> {
         match &s.symbolic {
             Some(Solutions::Roots(r)) => {
                 for root in r {
-                    out.push_str(&format!("{x} = {root}\n"));
+                    wr!(out, "{x} = {root}\n");
                 }
                 if !s.assumptions.is_empty() {
-                    out.push_str(&format!("  (assuming {})\n", s.assumptions.join(" and ")));
+                    wr!(out, "  (assuming {})\n", s.assumptions.join(" and "));
                 }
             }
             Some(Solutions::NoRealRoot) => {
-                out.push_str(&format!("no real {x} solves {} = 0\n", s.equation))
+                wr!(out, "no real {x} solves {} = 0\n", s.equation);
             }
             Some(Solutions::Every) => {
-                out.push_str(&format!("every {x} solves it ({} = 0)\n", s.equation))
+                wr!(out, "every {x} solves it ({} = 0)\n", s.equation);
             }
             None => {
                 let (a, b) = range.unwrap_or_default();
                 if s.numeric.is_empty() {
-                    out.push_str(&format!(
+                    wr!(
+                        out,
                         "no root of {} = 0 found for {x} in [{a}, {b}]\n",
                         s.equation
-                    ));
+                    );
                 } else {
-                    out.push_str(&format!(
-                        "roots of {} = 0 for {x} in [{a}, {b}]:\n",
-                        s.equation
-                    ));
+                    wr!(out, "roots of {} = 0 for {x} in [{a}, {b}]:\n", s.equation);
                 }
             }
         }
-        if s.symbolic.is_some()
-            && !s.numeric.is_empty()
-            && s.numeric.len() == symbolic.as_ref().map_or(0, Vec::len)
-            && !p.is_empty()
-        {
-            out.push_str(&format!("with {}:\n", show(&p)));
-        }
-        if s.symbolic.is_none()
-            || !p.is_empty()
-            || symbolic.as_ref().is_some_and(|r| {
-                r.iter()
-                    .any(|t| t.parse::<f64>().is_err() && s.equation.names().len() <= 1)
-            })
-        {
+        // numeric values of symbolic roots that are not plain numbers, and roots found on the
+        // interval
+        let plain = |t: &String| t.parse::<f64>().is_ok();
+        let show_numeric = match &symbolic {
+            None => true,
+            Some(r) => !s.numeric.is_empty() && !r.iter().all(plain),
+        };
+        if show_numeric && !s.numeric.is_empty() {
+            if s.symbolic.is_some() {
+                let given = if p.is_empty() {
+                    String::new()
+                } else {
+                    format!(" with {}", show(&p))
+                };
+                wr!(out, "numerically{given}:\n");
+            }
             for v in &s.numeric {
-                out.push_str(&format!("  {x} = {v}\n"));
+                wr!(out, "  {x} = {v}\n");
             }
         }
         print(&out)?;
@@ -261,11 +276,11 @@ pub fn units(args: &UnitsArgs) -> Result<Outcome> {
     } else {
         let mut out = format!("{} = {} {unit}", args.quantity, c.si);
         if !name.is_empty() {
-            out.push_str(&format!("   [{name}]"));
+            wr!(out, "   [{name}]");
         }
         out.push('\n');
         if let Some((v, u)) = &c.converted {
-            out.push_str(&format!("{} = {v} {u}\n", args.quantity));
+            wr!(out, "{} = {v} {u}\n", args.quantity);
         }
         print(&out)?;
     }

@@ -83,6 +83,13 @@ impl Sym {
                 other => {
                     let (base, exp) = match other {
                         Sym::Pow(b, e) => (*b, *e),
+                        // a sum is compared by its primitive part: x - pi and pi - x are one
+                        // base up to the number -1
+                        Sym::Add(terms) => {
+                            let (c, primitive) = content(&terms);
+                            coefficient = coefficient.times(c);
+                            (primitive, Sym::one())
+                        }
                         x => (x, Sym::one()),
                     };
                     match bases.iter_mut().find(|(b, _)| *b == base) {
@@ -114,17 +121,42 @@ impl Sym {
         if coefficient.is_zero() {
             return Sym::zero();
         }
-        // A number times a sum is distributed: 2*(x + 1) = 2*x + 2.
-        if out.len() == 1 && !coefficient.is_one() && matches!(out[0], Sym::Add(_)) {
-            let Some(Sym::Add(terms)) = out.pop() else {
-                unreachable!("checked above")
+        // Sums take the numbers: each sum factor gives up its numeric content (so that
+        // 2*(x + 1) and (2*x + 2) are one thing), and the product's number goes into the first
+        // sum. 2*(x + 1) = 2*x + 2, -(x + y)/pi = (-x - y)/pi, (x + 1)*(2*y + 2) =
+        // (2*x + 2)*(y + 1), whatever the order they were built in.
+        if out.iter().any(|f| matches!(f, Sym::Add(_))) {
+            let mut sums = Vec::new();
+            let mut others = Vec::new();
+            for f in out {
+                match f {
+                    Sym::Add(terms) => {
+                        let (c, primitive) = content(&terms);
+                        coefficient = coefficient.times(c);
+                        sums.push(primitive);
+                    }
+                    other => others.push(other),
+                }
+            }
+            sums.sort_by(compare);
+            if !coefficient.is_one() {
+                let Sym::Add(terms) = sums.remove(0) else {
+                    unreachable!("sums are sums")
+                };
+                let scaled = Sym::sum(
+                    terms
+                        .into_iter()
+                        .map(|t| Sym::product(vec![Sym::Num(coefficient), t]))
+                        .collect(),
+                );
+                sums.insert(0, scaled);
+            }
+            others.extend(sums);
+            others.sort_by(compare);
+            return match others.len() {
+                1 => others.pop().expect("one factor"),
+                _ => Sym::Mul(others),
             };
-            return Sym::sum(
-                terms
-                    .into_iter()
-                    .map(|t| Sym::product(vec![Sym::Num(coefficient), t]))
-                    .collect(),
-            );
         }
         out.sort_by(compare);
         if !coefficient.is_one() {
@@ -172,6 +204,20 @@ impl Sym {
                 (**b).clone(),
                 Sym::product(vec![(**e1).clone(), exp.clone()]),
             ),
+            (Sym::Add(terms), Sym::Num(e)) if e.as_integer().is_some() => {
+                let (c, primitive) = content(terms);
+                if c.is_one() {
+                    Sym::Pow(Box::new(base), Box::new(exp))
+                } else {
+                    let k = c
+                        .powi(e.as_integer().expect("integer"))
+                        .unwrap_or(Number::Float(f64::NAN));
+                    Sym::product(vec![
+                        Sym::Num(k),
+                        Sym::Pow(Box::new(primitive), Box::new(exp)),
+                    ])
+                }
+            }
             (Sym::Mul(xs), Sym::Num(e)) if e.as_integer().is_some() => Sym::product(
                 xs.iter()
                     .map(|x| Sym::pow(x.clone(), exp.clone()))
@@ -271,6 +317,60 @@ impl Sym {
             _ => Sym::Call(f, args),
         }
     }
+}
+
+/// The numeric content of a sum and its primitive part: `2*x + 4 = 2*(x + 2)`,
+/// `-x/2 - y/2 = -1/2*(x + y)` (the first term of the primitive part has a positive
+/// coefficient). Sums with float coefficients keep their numbers.
+pub(crate) fn content(terms: &[Sym]) -> (Number, Sym) {
+    let coeffs: Vec<Number> = terms.iter().map(|t| split_coefficient(t).0).collect();
+    let mut num_gcd: i128 = 0;
+    let mut den_lcm: i128 = 1;
+    for c in &coeffs {
+        let Some((n, d)) = c.as_rational() else {
+            return (Number::ONE, Sym::Add(terms.to_vec()));
+        };
+        num_gcd = gcd(num_gcd, n);
+        let g = gcd(den_lcm, d).max(1);
+        den_lcm = match (den_lcm / g).checked_mul(d) {
+            Some(l) if l < 1 << 40 => l,
+            _ => return (Number::ONE, Sym::Add(terms.to_vec())),
+        };
+    }
+    if num_gcd == 0 {
+        return (Number::ONE, Sym::Add(terms.to_vec()));
+    }
+    let sign = if coeffs[0].is_negative() { -1 } else { 1 };
+    let c = Number::rational(sign * num_gcd, den_lcm);
+    if c.is_one() {
+        return (c, Sym::Add(terms.to_vec()));
+    }
+    let inv = c.recip().expect("content is not zero");
+    let primitive = terms
+        .iter()
+        .map(|t| {
+            let (k, rest) = split_coefficient(t);
+            let k = k.times(inv);
+            match rest {
+                None => Sym::Num(k),
+                Some(r) => Sym::product(vec![Sym::Num(k), r]),
+            }
+        })
+        .collect();
+    match Sym::sum(primitive) {
+        s @ Sym::Add(_) => (c, s),
+        // cannot happen for a canonical sum (its terms stay distinct), but stay total
+        other => (Number::ONE, Sym::Add(vec![other])),
+    }
+}
+
+fn gcd(mut a: i128, mut b: i128) -> i128 {
+    a = a.abs();
+    b = b.abs();
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
 }
 
 /// Whether a term reads with a minus sign: a negative number or a negative coefficient.

@@ -77,6 +77,10 @@ fn sum(terms: &[Sym]) -> Expr {
 /// the exponent's sign flipped).
 fn power_factor(s: &Sym) -> (Expr, bool) {
     match s {
+        // a division by zero stays visible as such (`0*y` in a denominator would read as 0)
+        Sym::Pow(b, e) if b.is_zero() => {
+            (Expr::binary(BinOp::Pow, b.to_expr(), e.to_expr()), false)
+        }
         Sym::Pow(b, e) => {
             let (e, den) = match e.as_num() {
                 Some(n) if n.is_negative() => (Sym::Num(n.negated()), true),

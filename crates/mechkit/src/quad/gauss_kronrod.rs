@@ -6,6 +6,9 @@
 //! (and its mirror image), both infinite limits by splitting at 0. Integrable endpoint
 //! singularities are handled because the nodes never touch the endpoints.
 
+// The node and weight tables keep the digits as published in QUADPACK.
+#![allow(clippy::excessive_precision)]
+
 use std::collections::BinaryHeap;
 
 use thiserror::Error;
