@@ -25,8 +25,12 @@ fn feather(c: &mut Criterion) {
         .slot("v", 0);
     let (interp, native) = programs("-m*g*Dmg*v*abs(v)", &scope);
     let closure = move |v: f64| -m * g * dmg * v * v.abs();
+    let boxed: Box<dyn Fn(f64) -> f64> = Box::new(closure);
     let mut group = c.benchmark_group("feather drag");
     group.bench_function("closure", |b| b.iter(|| closure(black_box(-0.3))));
+    group.bench_function("closure behind dyn Fn", |b| {
+        b.iter(|| boxed(black_box(-0.3)))
+    });
     group.bench_function("native", |b| b.iter(|| native.eval(black_box(&[-0.3]))));
     group.bench_function("interpreter", |b| {
         b.iter(|| interp.eval(black_box(&[-0.3])));
@@ -46,8 +50,12 @@ fn lennard_jones(c: &mut Criterion) {
         let q6 = q.powi(6);
         24.0 * eps / r * (2.0 * q6 * q6 - q6)
     };
+    let boxed: Box<dyn Fn(f64) -> f64> = Box::new(closure);
     let mut group = c.benchmark_group("lennard-jones force");
     group.bench_function("closure", |b| b.iter(|| closure(black_box(1.3))));
+    group.bench_function("closure behind dyn Fn", |b| {
+        b.iter(|| boxed(black_box(1.3)))
+    });
     group.bench_function("native", |b| b.iter(|| native.eval(black_box(&[1.3]))));
     group.bench_function("interpreter", |b| b.iter(|| interp.eval(black_box(&[1.3]))));
     group.finish();

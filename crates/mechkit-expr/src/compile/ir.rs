@@ -25,12 +25,8 @@ pub(crate) enum Inst {
     Or(u32, u32),
     /// `a^b` by [`crate::ast::pow`].
     Pow(u32, u32),
-    /// `a^n` for a small integer `n` other than 2 and 3 (`f64::powi`).
-    Powi(u32, i32),
     /// `a*a`.
     Square(u32),
-    /// `a*a*a`.
-    Cube(u32),
     Call1(Func, u32),
     Call2(Func, u32, u32),
     /// `if(c, a, b)`.
@@ -42,7 +38,7 @@ pub(crate) enum Inst {
 enum Key {
     Const(u64),
     Load(u32),
-    Op(u8, u32, u32, u32, i32, Option<Func>),
+    Op(u8, u32, u32, u32, Option<Func>),
 }
 
 fn op_code(op: BinOp) -> u8 {
@@ -61,22 +57,20 @@ fn key(i: Inst) -> Key {
     match i {
         Inst::Const(c) => Key::Const(c.to_bits()),
         Inst::Load(s) => Key::Load(s),
-        Inst::Neg(a) => Key::Op(1, a, 0, 0, 0, None),
-        Inst::Not(a) => Key::Op(2, a, 0, 0, 0, None),
-        Inst::Add(a, b) => Key::Op(3, a, b, 0, 0, None),
-        Inst::Sub(a, b) => Key::Op(4, a, b, 0, 0, None),
-        Inst::Mul(a, b) => Key::Op(5, a, b, 0, 0, None),
-        Inst::Div(a, b) => Key::Op(6, a, b, 0, 0, None),
-        Inst::Cmp(op, a, b) => Key::Op(op_code(op), a, b, 0, 0, None),
-        Inst::And(a, b) => Key::Op(7, a, b, 0, 0, None),
-        Inst::Or(a, b) => Key::Op(8, a, b, 0, 0, None),
-        Inst::Pow(a, b) => Key::Op(9, a, b, 0, 0, None),
-        Inst::Powi(a, n) => Key::Op(10, a, 0, 0, n, None),
-        Inst::Square(a) => Key::Op(11, a, 0, 0, 0, None),
-        Inst::Cube(a) => Key::Op(12, a, 0, 0, 0, None),
-        Inst::Call1(f, a) => Key::Op(13, a, 0, 0, 0, Some(f)),
-        Inst::Call2(f, a, b) => Key::Op(14, a, b, 0, 0, Some(f)),
-        Inst::Select(c, a, b) => Key::Op(15, c, a, b, 0, None),
+        Inst::Neg(a) => Key::Op(1, a, 0, 0, None),
+        Inst::Not(a) => Key::Op(2, a, 0, 0, None),
+        Inst::Add(a, b) => Key::Op(3, a, b, 0, None),
+        Inst::Sub(a, b) => Key::Op(4, a, b, 0, None),
+        Inst::Mul(a, b) => Key::Op(5, a, b, 0, None),
+        Inst::Div(a, b) => Key::Op(6, a, b, 0, None),
+        Inst::Cmp(op, a, b) => Key::Op(op_code(op), a, b, 0, None),
+        Inst::And(a, b) => Key::Op(7, a, b, 0, None),
+        Inst::Or(a, b) => Key::Op(8, a, b, 0, None),
+        Inst::Pow(a, b) => Key::Op(9, a, b, 0, None),
+        Inst::Square(a) => Key::Op(11, a, 0, 0, None),
+        Inst::Call1(f, a) => Key::Op(13, a, 0, 0, Some(f)),
+        Inst::Call2(f, a, b) => Key::Op(14, a, b, 0, Some(f)),
+        Inst::Select(c, a, b) => Key::Op(15, c, a, b, None),
     }
 }
 
@@ -118,12 +112,7 @@ impl Builder<'_> {
     fn fold(&mut self, i: Inst) -> u32 {
         let operands: Vec<u32> = match i {
             Inst::Const(_) | Inst::Load(_) => return self.push(i),
-            Inst::Neg(a)
-            | Inst::Not(a)
-            | Inst::Powi(a, _)
-            | Inst::Square(a)
-            | Inst::Cube(a)
-            | Inst::Call1(_, a) => vec![a],
+            Inst::Neg(a) | Inst::Not(a) | Inst::Square(a) | Inst::Call1(_, a) => vec![a],
             Inst::Add(a, b)
             | Inst::Sub(a, b)
             | Inst::Mul(a, b)
@@ -144,6 +133,21 @@ impl Builder<'_> {
             return self.push(Inst::Const(v));
         }
         self.push(i)
+    }
+
+    /// `a^n` (n ≥ 1) by repeated squaring, in plain multiplications: `x^12` is
+    /// `((x^2)^2*x^2)^2`... three squarings and one product, and its parts are shared.
+    fn power(&mut self, a: u32, n: u32) -> u32 {
+        if n == 1 {
+            return a;
+        }
+        let half = self.power(a, n / 2);
+        let square = self.fold(Inst::Square(half));
+        if n % 2 == 1 {
+            self.fold(Inst::Mul(square, a))
+        } else {
+            square
+        }
     }
 
     fn emit(&mut self, e: &Expr) -> Result<u32, String> {
@@ -171,10 +175,15 @@ impl Builder<'_> {
                 let a = self.emit(a)?;
                 let b = self.emit(b)?;
                 match self.constant(b) {
-                    Some(2.0) => self.fold(Inst::Square(a)),
-                    Some(3.0) => self.fold(Inst::Cube(a)),
+                    Some(0.0) => self.push(Inst::Const(1.0)),
                     Some(n) if n.fract() == 0.0 && n.abs() <= 64.0 => {
-                        self.fold(Inst::Powi(a, n as i32))
+                        let p = self.power(a, n.abs() as u32);
+                        if n < 0.0 {
+                            let one = self.push(Inst::Const(1.0));
+                            self.fold(Inst::Div(one, p))
+                        } else {
+                            p
+                        }
                     }
                     _ => self.fold(Inst::Pow(a, b)),
                 }
@@ -275,12 +284,7 @@ impl Ir {
 fn operands(i: Inst) -> Vec<u32> {
     match i {
         Inst::Const(_) | Inst::Load(_) => vec![],
-        Inst::Neg(a)
-        | Inst::Not(a)
-        | Inst::Powi(a, _)
-        | Inst::Square(a)
-        | Inst::Cube(a)
-        | Inst::Call1(_, a) => vec![a],
+        Inst::Neg(a) | Inst::Not(a) | Inst::Square(a) | Inst::Call1(_, a) => vec![a],
         Inst::Add(a, b)
         | Inst::Sub(a, b)
         | Inst::Mul(a, b)
@@ -308,9 +312,7 @@ fn remap(i: Inst, m: &[u32]) -> Inst {
         Inst::And(a, b) => Inst::And(r(a), r(b)),
         Inst::Or(a, b) => Inst::Or(r(a), r(b)),
         Inst::Pow(a, b) => Inst::Pow(r(a), r(b)),
-        Inst::Powi(a, n) => Inst::Powi(r(a), n),
         Inst::Square(a) => Inst::Square(r(a)),
-        Inst::Cube(a) => Inst::Cube(r(a)),
         Inst::Call1(f, a) => Inst::Call1(f, r(a)),
         Inst::Call2(f, a, b) => Inst::Call2(f, r(a), r(b)),
         Inst::Select(c, a, b) => Inst::Select(r(c), r(a), r(b)),
@@ -337,36 +339,29 @@ pub(crate) fn execute(i: Inst, regs: &[f64], vars: &[f64]) -> f64 {
         Inst::And(a, b) => truth(g(a) != 0.0 && g(b) != 0.0),
         Inst::Or(a, b) => truth(g(a) != 0.0 || g(b) != 0.0),
         Inst::Pow(a, b) => crate::ast::pow(g(a), g(b)),
-        Inst::Powi(a, n) => g(a).powi(n),
         Inst::Square(a) => g(a) * g(a),
-        Inst::Cube(a) => g(a) * g(a) * g(a),
         Inst::Call1(f, a) => f.apply1(g(a)),
         Inst::Call2(f, a, b) => f.apply2(g(a), g(b)),
         Inst::Select(c, a, b) => crate::ast::select(g(c), g(a), g(b)),
     }
 }
 
-/// Evaluations of formulas with at most this many instructions keep their registers on the
-/// machine stack.
-const INLINE_REGS: usize = 64;
-
 impl Ir {
-    /// Interprets the instructions.
+    /// Interprets the instructions (registers on the machine stack for short programs).
     #[inline]
     pub fn run(&self, vars: &[f64]) -> f64 {
-        let n = self.insts.len();
-        if n <= INLINE_REGS {
-            let mut regs = [0.0; INLINE_REGS];
-            for (k, i) in self.insts.iter().enumerate() {
-                regs[k] = execute(*i, &regs, vars);
-            }
-            regs[self.result as usize]
-        } else {
-            let mut regs = vec![0.0; n];
-            for (k, i) in self.insts.iter().enumerate() {
-                regs[k] = execute(*i, &regs, vars);
-            }
-            regs[self.result as usize]
+        match self.insts.len() {
+            0..=8 => self.run_in(vars, &mut [0.0; 8]),
+            9..=32 => self.run_in(vars, &mut [0.0; 32]),
+            n => self.run_in(vars, &mut vec![0.0; n]),
         }
+    }
+
+    #[inline]
+    fn run_in(&self, vars: &[f64], regs: &mut [f64]) -> f64 {
+        for (k, i) in self.insts.iter().enumerate() {
+            regs[k] = execute(*i, regs, vars);
+        }
+        regs[self.result as usize]
     }
 }

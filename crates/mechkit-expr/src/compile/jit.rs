@@ -85,9 +85,6 @@ extern "C" fn mk_max(a: f64, b: f64) -> f64 {
 extern "C" fn mk_pow(a: f64, b: f64) -> f64 {
     crate::ast::pow(a, b)
 }
-extern "C" fn mk_powi(a: f64, n: i32) -> f64 {
-    a.powi(n)
-}
 
 fn call2_symbol(f: Func) -> (&'static str, *const u8) {
     match f {
@@ -125,10 +122,7 @@ impl Native {
             .finish(settings::Flags::new(flags))
             .map_err(|e| err(&e))?;
         let mut jb = JITBuilder::with_isa(isa, default_libcall_names());
-        let mut symbols: Vec<(&'static str, *const u8)> = vec![
-            ("mk_pow", mk_pow as *const u8),
-            ("mk_powi", mk_powi as *const u8),
-        ];
+        let mut symbols: Vec<(&'static str, *const u8)> = vec![("mk_pow", mk_pow as *const u8)];
         for i in &ir.insts {
             match i {
                 Inst::Call1(f, _)
@@ -164,11 +158,6 @@ impl Native {
         let mut externals = std::collections::HashMap::new();
         for (name, _) in &symbols {
             let sig = match *name {
-                "mk_powi" => {
-                    let mut s = f64_sig(1, &module);
-                    s.params.push(AbiParam::new(types::I32));
-                    s
-                }
                 "mk_pow" | "mk_atan2" | "mk_min" | "mk_max" => f64_sig(2, &module),
                 _ => f64_sig(1, &module),
             };
@@ -214,10 +203,6 @@ impl Native {
                     Inst::Mul(x, y) => b.ins().fmul(r(x), r(y)),
                     Inst::Div(x, y) => b.ins().fdiv(r(x), r(y)),
                     Inst::Square(x) => b.ins().fmul(r(x), r(x)),
-                    Inst::Cube(x) => {
-                        let sq = b.ins().fmul(r(x), r(x));
-                        b.ins().fmul(sq, r(x))
-                    }
                     Inst::Cmp(op, x, y) => {
                         let c = b.ins().fcmp(float_cc(op), r(x), r(y));
                         b.ins().select(c, one, zero)
@@ -252,11 +237,6 @@ impl Native {
                         let call = b.ins().call(refs["mk_pow"], &[r(x), r(y)]);
                         b.inst_results(call)[0]
                     }
-                    Inst::Powi(x, n) => {
-                        let n = b.ins().iconst(types::I32, i64::from(n));
-                        let call = b.ins().call(refs["mk_powi"], &[r(x), n]);
-                        b.inst_results(call)[0]
-                    }
                 };
                 regs.push(v);
             }
@@ -265,9 +245,16 @@ impl Native {
             b.seal_all_blocks();
             b.finalize(module.target_config());
         }
+        let disasm = std::env::var("MECHKIT_JIT_DISASM").is_ok();
+        if disasm {
+            ctx.set_disasm(true);
+        }
         module
             .define_function(id, &mut ctx)
             .map_err(|e| format!("{e:?}"))?;
+        if disasm && let Some(code) = ctx.compiled_code().and_then(|c| c.vcode.clone()) {
+            eprintln!("{code}");
+        }
         module.clear_context(&mut ctx);
         module.finalize_definitions().map_err(|e| err(&e))?;
         let code = module.get_finalized_function(id);

@@ -1,0 +1,143 @@
+//! The calculus commands: `diff`, `integrate` (the acceptance integral and derivative of the
+//! expression-engine issue), `solve` (symbolic, numeric on an interval, linear systems) and
+//! `units`, in text and JSON, and their errors.
+
+use crate::util::{Dir, at, num};
+
+fn run(args: &[&str]) -> crate::util::Output {
+    Dir::new().run(args)
+}
+
+#[test]
+fn integrate_prints_the_antiderivative_with_its_assumption() {
+    let out = run(&["integrate", "1/(a+x^2)", "--var", "x"]);
+    out.assert_code(0);
+    assert!(
+        out.stdout.contains("atan(x/sqrt(a))/sqrt(a)"),
+        "{}",
+        out.stdout
+    );
+    assert!(out.stdout.contains("a > 0"), "{}", out.stdout);
+}
+
+#[test]
+fn definite_integral_by_closed_form_and_quadrature() {
+    let out = run(&[
+        "integrate",
+        "1/(a+x^2)",
+        "--var",
+        "x",
+        "--from",
+        "0",
+        "--to",
+        "1",
+        "--set",
+        "a=1",
+        "--json",
+    ]);
+    out.assert_code(0);
+    let j: serde_json::Value = serde_json::from_str(&out.stdout).expect("JSON");
+    assert!((num(&j, "/definite/closed_form") - std::f64::consts::FRAC_PI_4).abs() < 1e-12);
+    assert!((num(&j, "/definite/quadrature/value") - 0.785_398).abs() < 1e-6);
+    assert_eq!(at(&j, "/definite/agree"), &serde_json::json!(true));
+    assert_eq!(at(&j, "/assumptions/0"), &serde_json::json!("a > 0"));
+}
+
+#[test]
+fn no_closed_form_falls_back_to_quadrature() {
+    let out = run(&["integrate", "exp(-x^2)", "--from", "0", "--to", "1"]);
+    out.assert_code(0);
+    assert!(out.stdout.contains("no closed form"), "{}", out.stdout);
+    assert!(out.stdout.contains("0.7468241328124"), "{}", out.stdout);
+    // neither a closed form nor limits: nothing could be computed
+    run(&["integrate", "exp(-x^2)"]).assert_code(1);
+}
+
+#[test]
+fn derivative_of_the_periodic_force() {
+    let out = run(&["diff", "-F0*sin(2*pi*x/b)", "--var", "x"]);
+    out.assert_code(0);
+    assert!(
+        out.stdout.contains("-2*pi*F0*cos(2*pi*x/b)/b"),
+        "{}",
+        out.stdout
+    );
+    let out = run(&["diff", "k*(x^2 + y^2)/2", "--var", "y", "--json"]);
+    let j: serde_json::Value = serde_json::from_str(&out.stdout).expect("JSON");
+    assert_eq!(at(&j, "/derivative"), &serde_json::json!("k*y"));
+}
+
+#[test]
+fn equations_symbolic_numeric_and_systems() {
+    let out = run(&["solve", "x^2 - 5*x + 6 = 0", "--for", "x", "--json"]);
+    out.assert_code(0);
+    let j: serde_json::Value = serde_json::from_str(&out.stdout).expect("JSON");
+    assert_eq!(at(&j, "/numeric"), &serde_json::json!([2.0, 3.0]));
+
+    let out = run(&["solve", "cos(x) = x", "--for", "x", "--in", "0:1"]);
+    out.assert_code(0);
+    assert!(out.stdout.contains("0.739085133215"), "{}", out.stdout);
+
+    let out = run(&[
+        "solve",
+        "h = g*t^2/2",
+        "--for",
+        "t",
+        "--set",
+        "h=10 m,g=9.81",
+    ]);
+    assert!(out.stdout.contains("1.42784312"), "{}", out.stdout);
+
+    let out = run(&[
+        "solve",
+        "N - m*g*cos(th) = 0; f = m*g*sin(th)",
+        "--for",
+        "N,f",
+    ]);
+    out.assert_code(0);
+    assert!(
+        out.stdout.contains("N = g*m*cos(th)") && out.stdout.contains("f = g*m*sin(th)"),
+        "{}",
+        out.stdout
+    );
+
+    let out = run(&["solve", "x^2 + 1 = 0"]);
+    out.assert_code(1);
+    assert!(out.stdout.contains("no real x"), "{}", out.stdout);
+
+    // not polynomial and no interval: say what to do
+    let out = run(&["solve", "sin(x) = x/2"]);
+    out.assert_code(2);
+    out.assert_stderr_contains("--in");
+}
+
+#[test]
+fn unit_conversion() {
+    let out = run(&["units", "60 km/h", "--to", "m/s"]);
+    out.assert_code(0);
+    assert!(
+        out.stdout.contains("16.66666666666") && out.stdout.contains("velocity"),
+        "{}",
+        out.stdout
+    );
+    let out = run(&["units", "3000 rpm", "--json"]);
+    let j: serde_json::Value = serde_json::from_str(&out.stdout).expect("JSON");
+    assert!((num(&j, "/si") - 100.0 * std::f64::consts::PI).abs() < 1e-9);
+    let out = run(&["units", "60 km/h", "--to", "kg"]);
+    out.assert_code(2);
+    out.assert_stderr_contains("dimensions differ");
+    let out = run(&["units", "3 mps"]);
+    out.assert_code(2);
+    out.assert_stderr_contains("m/s");
+}
+
+#[test]
+fn formula_errors_point_at_the_column() {
+    let out = run(&["diff", "x + * 2"]);
+    out.assert_code(2);
+    out.assert_stderr_contains("column 5");
+    out.assert_stderr_contains("x + * 2\n      ^");
+    let out = run(&["integrate", "sinn(x)"]);
+    out.assert_code(2);
+    out.assert_stderr_contains("`sin`");
+}
