@@ -29,7 +29,7 @@ fn feather(c: &mut Criterion) {
     let mut group = c.benchmark_group("feather drag");
     group.bench_function("closure", |b| b.iter(|| closure(black_box(-0.3))));
     group.bench_function("closure behind dyn Fn", |b| {
-        b.iter(|| boxed(black_box(-0.3)))
+        b.iter(|| boxed(black_box(-0.3)));
     });
     group.bench_function("native", |b| b.iter(|| native.eval(black_box(&[-0.3]))));
     group.bench_function("interpreter", |b| {
@@ -54,7 +54,7 @@ fn lennard_jones(c: &mut Criterion) {
     let mut group = c.benchmark_group("lennard-jones force");
     group.bench_function("closure", |b| b.iter(|| closure(black_box(1.3))));
     group.bench_function("closure behind dyn Fn", |b| {
-        b.iter(|| boxed(black_box(1.3)))
+        b.iter(|| boxed(black_box(1.3)));
     });
     group.bench_function("native", |b| b.iter(|| native.eval(black_box(&[1.3]))));
     group.bench_function("interpreter", |b| b.iter(|| interp.eval(black_box(&[1.3]))));
