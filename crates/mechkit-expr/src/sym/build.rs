@@ -204,6 +204,29 @@ impl Sym {
                 (**b).clone(),
                 Sym::product(vec![(**e1).clone(), exp.clone()]),
             ),
+            // sqrt(4*x + 8*y) = 2*sqrt(x + 2*y): a positive content that is a perfect power
+            // comes out of a fractional power
+            (Sym::Add(terms), Sym::Num(e)) if e.as_integer().is_none() && e.is_exact() => {
+                let (c, primitive) = content(terms);
+                // the magnitude of the content, the sign stays inside
+                let (c, primitive) = if c.is_negative() {
+                    (c.negated(), Sym::negate(primitive))
+                } else {
+                    (c, primitive)
+                };
+                let (p, q) = e.as_rational().expect("exact");
+                let taken = u32::try_from(q)
+                    .ok()
+                    .and_then(|q| c.exact_root(q))
+                    .and_then(|r| r.powi(p));
+                match (taken, &primitive) {
+                    (Some(k), Sym::Add(_)) if !c.is_one() => Sym::product(vec![
+                        Sym::Num(k),
+                        Sym::Pow(Box::new(primitive), Box::new(exp)),
+                    ]),
+                    _ => Sym::Pow(Box::new(base), Box::new(exp)),
+                }
+            }
             (Sym::Add(terms), Sym::Num(e)) if e.as_integer().is_some() => {
                 let (c, primitive) = content(terms);
                 if c.is_one() {

@@ -72,7 +72,15 @@ impl Sym {
                     ))]),
                     _ => {
                         if disc.as_num().is_none() {
-                            assumptions.push(format!("{disc} ≥ 0"));
+                            // 4*v0^2 - 8*g*h ≥ 0 says no more than v0^2 - 2*g*h ≥ 0
+                            let shown = match &disc {
+                                Sym::Add(terms) => {
+                                    let (c, _) = super::build::content(terms);
+                                    Sym::quotient(disc.clone(), Sym::Num(c.abs()))
+                                }
+                                other => other.clone(),
+                            };
+                            assumptions.push(format!("{shown} ≥ 0"));
                         }
                         let root = |sign: i64| {
                             Sym::quotient(
