@@ -15,8 +15,11 @@
 //! | [`VelocityVerlet`] | `q_{n+1} = q_n + h v_n + h²/2 a_n`, `v_{n+1} = v_n + h/2 (a_n + a_{n+1})` | 2 (symplectic) |
 //! | [`Rk4`] | classical fourth-order Runge-Kutta | 4 |
 
+mod adaptive;
+mod dop853;
 mod euler;
 mod euler_cromer;
+mod explicit_rk;
 mod hermite;
 mod method;
 pub mod reference;
@@ -24,14 +27,20 @@ mod rk4;
 mod state;
 mod stepper;
 mod system;
+mod tableau;
 mod verlet;
 
+pub use adaptive::{
+    AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, ConfigError, Controller, Tolerance,
+};
 pub use euler::Euler;
 pub use euler_cromer::EulerCromer;
+pub use explicit_rk::ExplicitRk;
 pub use hermite::{hermite, hermite_derivative};
 pub use method::Method;
 pub use rk4::Rk4;
 pub use state::State;
 pub use stepper::{IntegrateError, StepInfo, Stepper, steps_to_cover};
 pub use system::{OdeSystem, SecondOrderSystem};
+pub use tableau::{DenseKind, Tableau, TableauError};
 pub use verlet::VelocityVerlet;

@@ -1,3 +1,4 @@
+mod adaptive;
 mod convergence;
 mod energy_behaviour;
 mod fsal;
