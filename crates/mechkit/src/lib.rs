@@ -70,7 +70,7 @@ pub mod prelude {
         ConstantForce, ExpressionForce, Force, LinearDrag, NewtonianGravity, QuadraticDrag, Spring,
         SpringEnds, Target, UniformGravity, Wind,
     };
-    pub use crate::ode::{Method, State};
+    pub use crate::ode::{AdaptiveConfig, Method, State, Tolerance};
     pub use crate::particles::ParticleSystem;
-    pub use crate::simulate::{Condition, Simulation, StopReason};
+    pub use crate::simulate::{Condition, Direction, Event, Simulation, Stepping, StopReason};
 }

@@ -28,7 +28,17 @@ pub fn check(args: &CheckArgs) -> Result<Outcome> {
     for f in sys.forces().iter() {
         let _ = writeln!(text, "  force {}", f.name());
     }
-    let _ = writeln!(text, "  method {} with dt = {} s", s.method, s.dt);
+    let _ = writeln!(text, "  method {}", s.stepping.describe());
+    for e in &s.events {
+        let _ = writeln!(
+            text,
+            "  event `{}`{}",
+            e.name(),
+            e.state_change_description()
+                .map(|d| format!(": set {d}"))
+                .unwrap_or_default()
+        );
+    }
     let _ = match (&s.stop, s.t_max) {
         (Some(c), Some(t)) => writeln!(text, "  stops when `{}` or at t = {t} s", c.description()),
         (Some(c), None) => writeln!(text, "  stops when `{}`", c.description()),

@@ -41,7 +41,13 @@ pub fn run(args: &RunArgs) -> Result<Outcome> {
     }
     if out.failed() {
         if let Some(d) = &out.summary.divergence {
-            eprintln!("error: the simulation diverged: {}", d.message);
+            let what = match out.summary.stop_reason.as_str() {
+                "diverged" => "the simulation diverged",
+                "step_too_small" => "the adaptive step size underflowed",
+                "zeno" => "an event fired endlessly",
+                _ => "the simulation failed",
+            };
+            eprintln!("error: {what}: {}", d.message);
         }
         return Ok(Outcome::ComputationFailed);
     }

@@ -7,6 +7,11 @@
 //! trajectory is: it shrinks as `h` shrinks (as `h²` for second-order and higher methods, as
 //! `h` for Euler and Euler-Cromer). For conservative forces `W_i = -ΔU_i` is a second check,
 //! and `ΔE = Δ(K + U)` is the energy drift of the method.
+//!
+//! Adaptive runs integrate the work as part of the ODE instead (`W_i' = F_i·v`, to the method's
+//! order and tolerance) and hand the values over with [`EnergyLedger::set`]. State changes by
+//! events (a bounce reversing a velocity) change `K` and `U` without any force doing work; they
+//! are booked separately ([`EnergyLedger::jump`]) so the residual still measures the trajectory.
 
 use crate::Real;
 use crate::particles::Evaluation;
@@ -24,6 +29,8 @@ pub struct EnergyLedger {
     potential_end: Option<Real>,
     potential_each_start: Vec<Real>,
     potential_each_end: Vec<Real>,
+    jump_kinetic: Real,
+    jump_potential: Real,
 }
 
 impl EnergyLedger {
@@ -42,7 +49,43 @@ impl EnergyLedger {
             potential_end: eval.potential_total,
             potential_each_start: eval.potential.clone(),
             potential_each_end: eval.potential.clone(),
+            jump_kinetic: 0.0,
+            jump_potential: 0.0,
         }
+    }
+
+    /// Records the state reached at time `t` with the work of each force integrated elsewhere
+    /// (adaptive runs carry it in the ODE).
+    pub fn set(&mut self, t: Real, eval: &Evaluation, work: &[Real]) {
+        self.work.copy_from_slice(work);
+        self.last_power.clone_from(&eval.power);
+        self.last_t = t;
+        self.kinetic_end = eval.kinetic;
+        self.potential_end = eval.potential_total;
+        self.potential_each_end.clone_from(&eval.potential);
+    }
+
+    /// Records a sudden change of the state at the current time (an event's action), `eval`
+    /// being the evaluation after it: the changes of `K` and `U` are booked as jumps, not work.
+    pub fn jump(&mut self, eval: &Evaluation) {
+        self.jump_kinetic += eval.kinetic - self.kinetic_end;
+        if let (Some(u1), Some(u0)) = (eval.potential_total, self.potential_end) {
+            self.jump_potential += u1 - u0;
+        }
+        self.last_power.clone_from(&eval.power);
+        self.kinetic_end = eval.kinetic;
+        self.potential_end = eval.potential_total;
+        self.potential_each_end.clone_from(&eval.potential);
+    }
+
+    /// Change of the kinetic energy by state changes of events (J).
+    pub fn jump_kinetic(&self) -> Real {
+        self.jump_kinetic
+    }
+
+    /// Change of the mechanical energy `K + U` by state changes of events (J).
+    pub fn jump_energy(&self) -> Real {
+        self.jump_kinetic + self.jump_potential
     }
 
     /// Records the state reached at time `t`.
@@ -126,9 +169,10 @@ impl EnergyLedger {
         (!self.potential_each_start[i].is_nan()).then_some(d)
     }
 
-    /// `W_net - ΔK`: zero for an exact trajectory.
+    /// `W_net - (ΔK - ΔK_events)`: zero for an exact trajectory (the kinetic energy changed by
+    /// events' state changes is not the work of any force).
     pub fn work_energy_residual(&self) -> Real {
-        self.net_work() - (self.kinetic_end - self.kinetic_start)
+        self.net_work() - (self.kinetic_end - self.kinetic_start - self.jump_kinetic)
     }
 
     /// Mechanical energy `K + U` at the start and now (`U = 0` without potentials).

@@ -236,6 +236,8 @@ pub struct AdaptiveRk {
     h: Option<Real>,
     err_prev: Real,
     err_acc: Real,
+    /// No step accepted since the start or a restart (the predictive limit needs one).
+    fresh: bool,
     controller: Controller,
     stats: AdaptiveStats,
     /// The last accepted step: start time, size, start state (for dense output).
@@ -267,6 +269,7 @@ impl AdaptiveRk {
             h: None,
             err_prev: 1e-4,
             err_acc: 1e-2,
+            fresh: true,
             controller,
             stats: AdaptiveStats::default(),
             last_t0: 0.0,
@@ -299,7 +302,9 @@ impl AdaptiveRk {
     pub fn reset(&mut self) {
         self.h = None;
         self.err_prev = 1e-4;
+        self.err_acc = 1e-2;
         self.k0_at = None;
+        self.fresh = true;
     }
 
     /// Hands the integrator `f(t, y)` of the state the next step starts from.
@@ -435,6 +440,9 @@ impl AdaptiveRk {
                 self.stages
                     .compute(&self.tableau, sys, t, &state.y, h, &mut self.y_new, true);
             self.stats.evaluations += evals as u64;
+            for (yn, y) in self.y_new.iter_mut().zip(&state.y) {
+                *yn += y;
+            }
             // f at the new point: the error of first-same-as-last pairs needs it, and it
             // starts the next step
             let t_new = if last { t_bound } else { t + h };
@@ -448,13 +456,14 @@ impl AdaptiveRk {
                 self.stats.accepted += 1;
                 let fac = err.max(1e-10).powf(-expo) * self.err_prev.powf(beta);
                 let mut fac = (safety * fac).clamp(min_factor, max_factor);
-                if predictive && self.stats.accepted > 1 && self.last_h > 0.0 {
+                if predictive && !self.fresh && self.last_h > 0.0 {
                     let e = err.max(1e-10);
                     let pred =
                         safety * (h / self.last_h) * (self.err_acc / (e * e)).powf(1.0 / (q + 1.0));
                     fac = fac.min(pred.max(min_factor));
                 }
                 self.err_acc = err.max(1e-2);
+                self.fresh = false;
                 let mut h_next = h * fac;
                 if rejected_before {
                     h_next = h_next.min(h);

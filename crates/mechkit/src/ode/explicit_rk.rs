@@ -36,9 +36,10 @@ impl Stages {
         self.tmp.resize(n, 0.0);
     }
 
-    /// Computes the stages of `tab` from `(t, y)` with step `h`, and the new solution into
-    /// `y_new`. Returns the evaluations made. `k[0]` must already hold `f(t, y)` when
-    /// `k0_known`.
+    /// Computes the stages of `tab` from `(t, y)` with step `h`, and the increment
+    /// `h Σ b_i k_i` of the solution into `dy`. Returns the evaluations made. `k[0]` must
+    /// already hold `f(t, y)` when `k0_known`. The small terms are summed before they are added
+    /// to `y`, which keeps round-off at the level of `y`'s last bit.
     #[allow(clippy::too_many_arguments)]
     pub fn compute<S: OdeSystem + ?Sized>(
         &mut self,
@@ -47,7 +48,7 @@ impl Stages {
         t: Real,
         y: &[Real],
         h: Real,
-        y_new: &mut [Real],
+        dy: &mut [Real],
         k0_known: bool,
     ) -> usize {
         let s = tab.stages();
@@ -57,29 +58,42 @@ impl Stages {
             evaluations += 1;
         }
         for i in 1..s {
-            self.tmp.copy_from_slice(y);
-            for (l, a) in tab.a[i].iter().enumerate() {
-                if *a != 0.0 {
-                    let ha = h * a;
-                    for (t, k) in self.tmp.iter_mut().zip(&self.k[l]) {
-                        *t += ha * k;
-                    }
-                }
+            weighted_sum(&self.k, &tab.a[i], h, &mut self.tmp);
+            for (t, y) in self.tmp.iter_mut().zip(y) {
+                *t += y;
             }
             let (_, tail) = self.k.split_at_mut(i);
             sys.rhs_into(t + tab.c[i] * h, &self.tmp, &mut tail[0]);
             evaluations += 1;
         }
-        y_new.copy_from_slice(y);
-        for (l, b) in tab.b.iter().enumerate() {
-            if *b != 0.0 {
-                let hb = h * b;
-                for (yn, k) in y_new.iter_mut().zip(&self.k[l]) {
-                    *yn += hb * k;
-                }
+        weighted_sum(&self.k, &tab.b, h, dy);
+        evaluations
+    }
+}
+
+/// `out = h Σ_l w_l k_l`.
+fn weighted_sum(k: &[Vec<Real>], w: &[Real], h: Real, out: &mut [Real]) {
+    out.fill(0.0);
+    for (l, wl) in w.iter().enumerate() {
+        if *wl != 0.0 {
+            for (o, kl) in out.iter_mut().zip(&k[l]) {
+                *o += wl * kl;
             }
         }
-        evaluations
+    }
+    for o in out.iter_mut() {
+        *o *= h;
+    }
+}
+
+/// `y += dy` with Kahan's compensated summation: `carry` keeps the low-order bits each addition
+/// loses, so that round-off over many small steps grows like √n ε rather than n ε.
+pub(crate) fn compensated_add(y: &mut [Real], dy: &[Real], carry: &mut [Real]) {
+    for ((yi, di), ci) in y.iter_mut().zip(dy).zip(carry.iter_mut()) {
+        let d = di + *ci;
+        let sum = *yi + d;
+        *ci = d - (sum - *yi);
+        *yi = sum;
     }
 }
 
@@ -98,7 +112,10 @@ impl Stages {
 pub struct ExplicitRk {
     tableau: Tableau,
     stages: Stages,
-    y_new: Vec<Real>,
+    dy: Vec<Real>,
+    /// Low-order bits lost by the additions so far (compensated summation); cleared by
+    /// `reset`.
+    carry: Vec<Real>,
 }
 
 impl ExplicitRk {
@@ -108,7 +125,8 @@ impl ExplicitRk {
         Self {
             tableau,
             stages: Stages::new(),
-            y_new: Vec::new(),
+            dy: Vec::new(),
+            carry: Vec::new(),
         }
     }
 
@@ -130,7 +148,10 @@ impl<S: OdeSystem + ?Sized> Stepper<S> for ExplicitRk {
     fn step(&mut self, sys: &S, state: &mut State, h: Real) -> Result<StepInfo, IntegrateError> {
         let n = state.y.len();
         self.stages.resize(self.tableau.stages(), n);
-        self.y_new.resize(n, 0.0);
+        self.dy.resize(n, 0.0);
+        if self.carry.len() != n {
+            self.carry = vec![0.0; n];
+        }
         let known = self.stages.provided.take(state.t);
         if known {
             self.stages.k[0].copy_from_slice(&self.stages.provided.dydt);
@@ -141,16 +162,17 @@ impl<S: OdeSystem + ?Sized> Stepper<S> for ExplicitRk {
             state.t,
             &state.y,
             h,
-            &mut self.y_new,
+            &mut self.dy,
             known,
         );
-        state.y.copy_from_slice(&self.y_new);
+        compensated_add(&mut state.y, &self.dy, &mut self.carry);
         state.t += h;
         Ok(StepInfo { evaluations })
     }
 
     fn reset(&mut self) {
         self.stages.provided.clear();
+        self.carry.fill(0.0);
     }
 
     fn provide_derivative(&mut self, t: Real, dydt: &[Real]) {

@@ -123,6 +123,57 @@ impl SecondOrderSystem for Kepler {
     }
 }
 
+/// A plane pendulum `θ'' = -ω₀² sin θ` released from rest at `θ₀`; state `[θ, θ']`. Its energy
+/// per unit `m L²` is conserved and its period is `4K(sin(θ₀/2))/ω₀`, computed here with the
+/// arithmetic-geometric mean.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pendulum {
+    /// Small-oscillation angular frequency `sqrt(g/L)` (1/s).
+    pub omega0: Real,
+    /// Release angle (rad, below π).
+    pub theta0: Real,
+}
+
+impl Pendulum {
+    /// Energy per unit `m L²`: `θ'²/2 - ω₀² cos θ`.
+    pub fn energy(&self, y: &[Real]) -> Real {
+        0.5 * y[1] * y[1] - self.omega0 * self.omega0 * y[0].cos()
+    }
+
+    /// The exact period `2π / (ω₀ AGM(1, cos(θ₀/2)))`.
+    pub fn period(&self) -> Real {
+        let (mut a, mut b) = (1.0, (0.5 * self.theta0).cos());
+        for _ in 0..60 {
+            let next = (0.5 * (a + b), (a * b).sqrt());
+            a = next.0;
+            b = next.1;
+            if (a - b).abs() <= 1e-16 * a {
+                break;
+            }
+        }
+        2.0 * std::f64::consts::PI / (self.omega0 * a)
+    }
+
+    /// The initial state.
+    pub fn initial(&self) -> [Real; 2] {
+        [self.theta0, 0.0]
+    }
+}
+
+impl SecondOrderSystem for Pendulum {
+    fn dof(&self) -> usize {
+        1
+    }
+
+    fn accel_into(&self, _t: Real, q: &[Real], _v: &[Real], a: &mut [Real]) {
+        a[0] = -self.omega0 * self.omega0 * q[0].sin();
+    }
+
+    fn velocity_dependent(&self) -> bool {
+        false
+    }
+}
+
 /// The Arenstorf orbit of the restricted three-body problem (Hairer, Nørsett & Wanner,
 /// *Solving ODEs I*, Sec. II.0): a periodic satellite orbit around the Earth and Moon whose
 /// speed varies by a factor of ~60, the classic test of step-size control. State

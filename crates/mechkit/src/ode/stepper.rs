@@ -24,6 +24,14 @@ pub enum IntegrateError {
         /// Step.
         h: Real,
     },
+    /// A splitting method was given a system whose acceleration depends on the velocity.
+    #[error(
+        "{method} is a symplectic splitting method and needs forces that depend on position and time only; this system has velocity-dependent forces (drag, friction): use rk4 or dopri5"
+    )]
+    NeedsPositionForces {
+        /// The method.
+        method: &'static str,
+    },
     /// The state became NaN or infinite.
     #[error("the state became non-finite at t = {t}")]
     NonFinite {

@@ -13,7 +13,7 @@ mod vars;
 
 pub use kinematics::{Kinematics, dot, norm};
 pub use names::NameContext;
-pub use sample::{Evaluation, Sample};
+pub use sample::{Evaluation, Sample, SampleKind};
 pub use state_expr::StateExpr;
 pub use system::{Body, ParticleSystem, ParticleSystemBuilder, SystemError};
 pub use vars::{BodyRef, StateVar, VarLevel};

@@ -33,9 +33,27 @@ pub struct Sample<'a> {
     pub eval: &'a Evaluation,
     /// Work done by each force from the start until now.
     pub work: &'a [Real],
-    /// Whether this is a located event (a state interpolated between two steps) rather than a
-    /// step.
-    pub located: bool,
+    /// What kind of instant this is.
+    pub kind: SampleKind,
+}
+
+/// Where a sample comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SampleKind {
+    /// The state at the end of a step (or the initial state, step 0).
+    Step,
+    /// A located event: a state interpolated inside a step (or a step's end, when the event is
+    /// exactly there), before or after the event's state change.
+    Event,
+    /// A requested output time (`[output] interval`), interpolated inside a step.
+    Grid,
+}
+
+impl SampleKind {
+    /// Whether it is the end of a step.
+    pub fn is_step(self) -> bool {
+        self == SampleKind::Step
+    }
 }
 
 impl Sample<'_> {

@@ -1,20 +1,21 @@
 //! From TOML text to a runnable [`Scenario`]: every key checked, every value resolved to SI
 //! with its dimension checked, every formula compiled, every error located.
 
-use mechkit_expr::nearest;
 use mechkit_expr::units::Dimension;
 use toml::de::{DeTable, DeValue};
 
 use super::Scenario;
 use super::doc::{Source, Table};
 use super::error::{ErrorKind, ScenarioError};
+use super::events::read_events;
 use super::forces::{ForceContext, build_force};
+use super::integrator::read_integrator;
 use super::observe::read_observe;
 use super::plot::read_output;
 use super::stop::read_stop;
 use super::values::{Constant, ValueEnv, resolve_any, scalar, vector};
 use crate::Real;
-use crate::ode::{Method, State};
+use crate::ode::State;
 use crate::particles::{BodyRef, NameContext, ParticleSystem, VarLevel};
 
 const TOP_KEYS: &[&str] = &[
@@ -26,25 +27,15 @@ const TOP_KEYS: &[&str] = &[
     "force",
     "integrator",
     "stop",
+    "event",
     "observe",
     "output",
 ];
 const BODY_KEYS: &[&str] = &["name", "mass", "position", "velocity"];
-const INTEGRATOR_KEYS: &[&str] = &["method", "dt"];
 
 /// State names a constant may not take (formulas would become ambiguous).
 const RESERVED: &[&str] = &[
     "t", "x", "y", "z", "vx", "vy", "vz", "v", "r", "speed", "ax", "ay", "az", "a", "K", "U", "E",
-];
-
-/// Methods that exist in the design but not yet in this build.
-const PLANNED_METHODS: &[&str] = &[
-    "yoshida4",
-    "dopri5",
-    "dop853",
-    "rk45",
-    "forest-ruth",
-    "pefrl",
 ];
 
 pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
@@ -135,7 +126,7 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         mass: None,
         later: &[],
     };
-    let (method, dt) = integrator(&root, env)?;
+    let stepping = read_integrator(&root, env, &system)?;
     let names = NameContext {
         dim,
         bodies: &bodies,
@@ -145,8 +136,9 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         level: VarLevel::Derived,
     };
     let (stop, t_max, max_steps) = read_stop(&root, env, &names)?;
+    let events = read_events(&root, &names)?;
     let observables = read_observe(&root, &names)?;
-    let (every, plots) = read_output(&root, &names, dim)?;
+    let (every, interval, plots) = read_output(&root, &names, dim, env)?;
     if t_max.is_none() && max_steps.is_none() {
         warnings.push(format!(
             "[stop] has no t_max: the run is bounded by {} steps; set t_max",
@@ -161,13 +153,14 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         constants,
         system,
         initial: State::from_qv(0.0, &q, &v),
-        method,
-        dt,
+        stepping,
         t_max,
         max_steps,
         stop,
+        events,
         observables,
         every,
+        interval,
         plots,
         warnings,
     })
@@ -297,60 +290,4 @@ fn bodies(
         v.extend(u);
     }
     Ok((names, masses, q, v))
-}
-
-fn integrator(root: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<(Method, Real), ScenarioError> {
-    let Some(t) = root.table("integrator")? else {
-        return Err(ScenarioError::new(ErrorKind::Missing, "the scenario has no [integrator]")
-            .with_hint("add:\n  [integrator]\n  method = \"rk4\"      # euler | euler-cromer | verlet | rk4\n  dt = \"1 ms\""));
-    };
-    t.check_keys(INTEGRATOR_KEYS).map_err(|mut e| {
-        if e.message.contains("`rtol`") || e.message.contains("`atol`") {
-            e.hint = Some(
-                "adaptive step control (rtol/atol) is not in this version yet; give a fixed `dt`"
-                    .into(),
-            );
-        }
-        e
-    })?;
-    let method = match t.string("method")? {
-        None => Method::Rk4,
-        Some((m, span)) => Method::from_name(m).ok_or_else(|| {
-            let names: Vec<&str> = Method::ALL.iter().map(|m| m.name()).collect();
-            if PLANNED_METHODS.contains(&m) {
-                t.src
-                    .error(
-                        ErrorKind::Invalid,
-                        format!("the method `{m}` is not available in this version"),
-                        span,
-                    )
-                    .with_hint(format!("available: {}", names.join(", ")))
-            } else {
-                let hint = mechkit_expr::did_you_mean(&nearest(m, names.iter().copied()))
-                    .unwrap_or_else(|| format!("available: {}", names.join(", ")));
-                t.src
-                    .error(
-                        ErrorKind::Invalid,
-                        format!("unknown integration method `{m}`"),
-                        span,
-                    )
-                    .with_hint(hint)
-            }
-        })?,
-    };
-    let dt = scalar(&t, "dt", Dimension::TIME, env)?.ok_or_else(|| {
-        t.missing("dt", "\"1 ms\"")
-            .with_hint("add the time step, e.g. `dt = \"1 ms\"`")
-    })?;
-    if !(dt > 0.0 && dt.is_finite()) {
-        return Err(t
-            .src
-            .error(
-                ErrorKind::Invalid,
-                format!("the time step `dt` must be positive, not {dt} s"),
-                t.get("dt").map_or(t.span.clone(), toml::Spanned::span),
-            )
-            .with_hint("e.g. `dt = \"1 ms\"`"));
-    }
-    Ok((method, dt))
 }

@@ -39,7 +39,9 @@
 mod build;
 mod doc;
 mod error;
+mod events;
 mod forces;
+mod integrator;
 mod observe;
 mod output;
 mod plot;
@@ -57,14 +59,14 @@ pub use plot::{PlotData, PlotSpec, Series, SeriesSpec};
 pub use run::RunOutput;
 pub use summary::{
     BodyState, BodySummary, DivergenceSummary, EnergySummary, EventSummary, Files, StartEnd,
-    Summary, TimedState,
+    StepControl, Summary, TimedState,
 };
 
 use crate::Real;
 use crate::expr::Dim;
-use crate::ode::{Method, State};
+use crate::ode::State;
 use crate::particles::ParticleSystem;
-use crate::simulate::Condition;
+use crate::simulate::{Condition, Event, Stepping};
 
 /// A checked, runnable scenario.
 #[derive(Debug)]
@@ -80,20 +82,22 @@ pub struct Scenario {
     pub system: ParticleSystem,
     /// Initial state.
     pub initial: State,
-    /// Integration method.
-    pub method: Method,
-    /// Time step (s).
-    pub dt: Real,
+    /// Integration method and step size control.
+    pub stepping: Stepping,
     /// End time (s).
     pub t_max: Option<Real>,
     /// Step budget.
     pub max_steps: Option<u64>,
     /// Stop condition.
     pub stop: Option<Condition>,
+    /// `[[event]]` entries.
+    pub events: Vec<Event>,
     /// `[observe]` entries.
     pub observables: Vec<Observable>,
     /// Output decimation: keep every n-th step.
     pub every: u64,
+    /// Output times every `interval` seconds instead of the steps.
+    pub interval: Option<Real>,
     /// Requested plots.
     pub plots: Vec<PlotSpec>,
     /// Warnings about the setup.

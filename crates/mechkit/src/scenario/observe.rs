@@ -296,11 +296,7 @@ impl Observer for ObservableSet<'_> {
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
         for (o, rs) in self.items.iter().zip(&mut self.reducers) {
             for ((_, expr), r) in o.parts.iter().zip(rs.iter_mut()) {
-                r.push_sample(
-                    s.t,
-                    expr.eval_sample(s, self.dim, self.mass, None),
-                    s.located,
-                );
+                r.push_sample(s.t, expr.eval_sample(s, self.dim, self.mass, None), s.kind);
             }
         }
         Ok(())

@@ -9,7 +9,7 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 use crate::Real;
-use crate::particles::{ParticleSystem, Sample};
+use crate::particles::{ParticleSystem, Sample, SampleKind};
 use crate::simulate::{Observer, ObserverError};
 
 /// Writes `bytes` to `path` atomically: to a temporary file beside it, then renamed.
@@ -62,12 +62,31 @@ pub fn push_number(out: &mut String, x: Real) {
     }
 }
 
-/// Streams samples to a CSV file (every `every`-th step and the last).
+/// Which samples go to the trajectory file and the plots.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Keep {
+    /// Every n-th step (when there are no output times).
+    pub every: u64,
+    /// Output times were requested: keep those (and the start), not the steps.
+    pub grid: bool,
+}
+
+impl Keep {
+    pub fn keeps(&self, s: &Sample<'_>) -> bool {
+        match s.kind {
+            SampleKind::Event | SampleKind::Grid => true,
+            SampleKind::Step if self.grid => s.step == 0,
+            SampleKind::Step => s.step.is_multiple_of(self.every.max(1)),
+        }
+    }
+}
+
+/// Streams samples to a CSV file (the kept ones, see [`Keep`], and the last).
 pub(crate) struct CsvWriter {
     out: BufWriter<File>,
     tmp: PathBuf,
     path: PathBuf,
-    every: u64,
+    keep: Keep,
     dim: usize,
     has_potential: bool,
     last_t: Option<Real>,
@@ -80,7 +99,7 @@ impl CsvWriter {
         path: &Path,
         sys: &ParticleSystem,
         has_potential: bool,
-        every: u64,
+        keep: Keep,
     ) -> std::io::Result<Self> {
         let tmp = temp_path(path);
         let mut out = BufWriter::with_capacity(1 << 16, File::create(&tmp)?);
@@ -89,7 +108,7 @@ impl CsvWriter {
             out,
             tmp,
             path: path.to_path_buf(),
-            every: every.max(1),
+            keep,
             dim: sys.dim(),
             has_potential,
             last_t: None,
@@ -144,7 +163,7 @@ impl CsvWriter {
 
 impl Observer for CsvWriter {
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        if s.step.is_multiple_of(self.every) {
+        if self.keep.keeps(s) {
             self.write(s)?;
         }
         Ok(())

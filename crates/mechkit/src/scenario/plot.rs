@@ -9,6 +9,9 @@ use toml::de::DeValue;
 
 use super::doc::Table;
 use super::error::{ErrorKind, ScenarioError};
+use super::output::Keep;
+use super::values::{ValueEnv, scalar};
+use mechkit_expr::units::Dimension;
 
 use crate::Real;
 use crate::particles::{BodyRef, NameContext, Sample, StateVar, VarLevel};
@@ -18,15 +21,43 @@ use crate::simulate::{Observer, ObserverError};
 /// doubles).
 const MAX_POINTS: usize = 20_000;
 
-const OUTPUT_KEYS: &[&str] = &["every", "plots"];
+const OUTPUT_KEYS: &[&str] = &["every", "interval", "plots"];
 
-/// Reads `[output]`: the decimation `every` and the plots.
+type Output = (u64, Option<Real>, Vec<PlotSpec>);
+
+/// Reads `[output]`: the decimation `every`, the output `interval` and the plots.
 pub(crate) fn read_output(
     root: &Table<'_, '_>,
     names: &NameContext<'_>,
     dim: usize,
-) -> Result<(u64, Vec<PlotSpec>), ScenarioError> {
+    env: ValueEnv<'_>,
+) -> Result<Output, ScenarioError> {
     let t = root.table("output")?;
+    let interval = match &t {
+        Some(t) => {
+            let i = scalar(t, "interval", Dimension::TIME, env)?;
+            if let Some(i) = i
+                && !(i > 0.0 && i.is_finite())
+            {
+                return Err(t.src.error(
+                    ErrorKind::Invalid,
+                    format!("`interval` must be a positive time, not {i} s"),
+                    t.key_span("interval"),
+                ));
+            }
+            if i.is_some() && t.get("every").is_some() {
+                return Err(t
+                    .src
+                    .error(
+                        ErrorKind::Invalid,
+                        "`every` thins the steps, `interval` replaces them by regular output times: give one or the other",
+                        t.key_span("every"),
+                    ));
+            }
+            i
+        }
+        None => None,
+    };
     let every = match &t {
         Some(t) => {
             t.check_keys(OUTPUT_KEYS)?;
@@ -82,7 +113,7 @@ pub(crate) fn read_output(
         })?;
         plots.push(p);
     }
-    Ok((every, plots))
+    Ok((every, interval, plots))
 }
 
 fn default_plots(dim: usize) -> Vec<&'static str> {
@@ -275,7 +306,7 @@ pub struct PlotData {
 pub(crate) struct PlotRecorder<'a> {
     specs: &'a [PlotSpec],
     points: Vec<Vec<Vec<(Real, Real)>>>,
-    every: u64,
+    keep: Keep,
     stride: u64,
     seen: u64,
     dim: usize,
@@ -283,14 +314,14 @@ pub(crate) struct PlotRecorder<'a> {
 }
 
 impl<'a> PlotRecorder<'a> {
-    pub fn new(specs: &'a [PlotSpec], every: u64, dim: usize, mass: &'a [Real]) -> Self {
+    pub fn new(specs: &'a [PlotSpec], keep: Keep, dim: usize, mass: &'a [Real]) -> Self {
         Self {
             points: specs
                 .iter()
                 .map(|p| vec![Vec::new(); p.series.len()])
                 .collect(),
             specs,
-            every: every.max(1),
+            keep,
             stride: 1,
             seen: 0,
             dim,
@@ -351,7 +382,7 @@ impl<'a> PlotRecorder<'a> {
 
 impl Observer for PlotRecorder<'_> {
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        if s.step.is_multiple_of(self.every) {
+        if self.keep.keeps(s) {
             if self.seen.is_multiple_of(self.stride) {
                 self.push(s);
                 self.thin();

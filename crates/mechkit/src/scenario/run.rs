@@ -7,10 +7,10 @@ use std::path::{Path, PathBuf};
 use super::Scenario;
 use super::error::{ErrorKind, ScenarioError};
 use super::observe::ObservableSet;
-use super::output::{CsvWriter, write_atomic};
+use super::output::{CsvWriter, Keep, write_atomic};
 use super::plot::{PlotData, PlotRecorder};
 use super::summary::Summary;
-use crate::simulate::{Observer, RunReport, SimulateError, Simulation, StopReason};
+use crate::simulate::{Observer, RunReport, SimulateError, Simulation};
 
 /// What a run produced.
 #[derive(Debug, Clone)]
@@ -24,9 +24,10 @@ pub struct RunOutput {
 }
 
 impl RunOutput {
-    /// Whether the computation failed (diverged): the CLI exits with 1.
+    /// Whether the computation failed (diverged, step size underflow, Zeno): the CLI exits
+    /// with 1.
     pub fn failed(&self) -> bool {
-        self.report.stop_reason == StopReason::Diverged
+        self.report.stop_reason.is_failure()
     }
 }
 
@@ -40,7 +41,7 @@ fn io_error(what: &str, path: &Path, e: &std::io::Error) -> ScenarioError {
 
 impl Scenario {
     fn simulation(&self) -> Simulation<'_> {
-        let mut sim = Simulation::new(&self.system, self.method, self.dt);
+        let mut sim = Simulation::with_stepping(&self.system, self.stepping.clone());
         if let Some(t) = self.t_max {
             sim = sim.t_max(t);
         }
@@ -50,14 +51,27 @@ impl Scenario {
         if let Some(c) = &self.stop {
             sim = sim.stop_when(c.clone());
         }
+        for e in &self.events {
+            sim = sim.event(e.clone());
+        }
+        if let Some(i) = self.interval {
+            sim = sim.output_interval(i);
+        }
         sim
+    }
+
+    fn keep(&self) -> Keep {
+        Keep {
+            every: self.every,
+            grid: self.interval.is_some(),
+        }
     }
 
     fn run_with(&self, extra: Option<&mut CsvWriter>) -> Result<RunOutput, ScenarioError> {
         let dim = self.dim;
         let mass = self.system.masses();
         let mut observables = ObservableSet::new(&self.observables, dim, mass);
-        let mut plots = PlotRecorder::new(&self.plots, self.every, dim, mass);
+        let mut plots = PlotRecorder::new(&self.plots, self.keep(), dim, mass);
         let mut observers: Vec<&mut dyn Observer> = vec![&mut observables, &mut plots];
         if let Some(csv) = extra {
             observers.push(csv);
@@ -108,7 +122,7 @@ impl Scenario {
             let (q, v) = self.initial.qv();
             self.system.has_potential(q, v)
         };
-        let mut csv = CsvWriter::create(&csv_path, &self.system, has_potential, self.every)
+        let mut csv = CsvWriter::create(&csv_path, &self.system, has_potential, self.keep())
             .map_err(|e| io_error("write", &csv_path, &e))?;
         let result = self.run_with(Some(&mut csv));
         let rows = csv.close().map_err(|e| io_error("write", &csv_path, &e))?;

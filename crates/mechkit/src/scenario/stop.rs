@@ -43,7 +43,7 @@ pub(crate) fn read_stop(
     };
     let condition = match t.string("when")? {
         None => None,
-        Some((text, span)) => Some(condition(&t, text, &span, names)?),
+        Some((text, span)) => Some(condition(&t, text, &span, names, "a stop condition")?),
     };
     Ok((condition, t_max, max_steps))
 }
@@ -61,11 +61,12 @@ fn compile_state(
 
 /// A stop condition: a comparison becomes a continuous event function (`a < b` has
 /// `g = b - a`), anything else a boolean one located by bisection.
-fn condition(
+pub(crate) fn condition(
     t: &Table<'_, '_>,
     text: &str,
     span: &std::ops::Range<usize>,
     names: &NameContext<'_>,
+    what: &str,
 ) -> Result<Condition, ScenarioError> {
     let f = Formula::parse(text).map_err(|e| formula_error(&t.src, span, &e))?;
     let whole = compile_state(t, &f, span, names)?;
@@ -73,7 +74,14 @@ fn condition(
         if *op == BinOp::Eq || *op == BinOp::Ne {
             return Err(t
                 .src
-                .error(ErrorKind::Invalid, format!("a stop condition cannot use `{}`: an exact equality is never hit between steps", op.symbol()), span.clone())
+                .error(
+                    ErrorKind::Invalid,
+                    format!(
+                        "{what} cannot use `{}`: an exact equality is never hit between steps",
+                        op.symbol()
+                    ),
+                    span.clone(),
+                )
                 .with_hint("write the crossing as an inequality, e.g. `x < 0` or `vy < 0`"));
         }
         if op.is_comparison() {

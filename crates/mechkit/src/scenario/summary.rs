@@ -7,8 +7,9 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use crate::Real;
+use crate::ode::Tolerance;
 use crate::particles::ParticleSystem;
-use crate::simulate::{RunReport, Snapshot};
+use crate::simulate::{RunReport, Snapshot, Stepping};
 
 /// Position and velocity of one body.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -61,13 +62,43 @@ pub struct EnergySummary {
     pub change: Real,
     /// Work of the forces without a potential (drag, formulas), which `change` should equal.
     pub non_conservative_work: Real,
+    /// Energy changed by events' state changes (J; a bounce's loss).
+    pub events_change: Real,
+    /// The method's energy error relative to the start: `(change - non_conservative_work -
+    /// events_change)/|start|`; null when no force has a potential (or the start is zero).
+    pub relative_drift: Option<Real>,
+}
+
+/// How the step size was controlled.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StepControl {
+    /// `fixed` or `adaptive`.
+    pub mode: String,
+    /// Relative tolerance (adaptive).
+    pub rtol: Option<Real>,
+    /// Absolute tolerance, when the same for every component (adaptive).
+    pub atol: Option<Real>,
+    /// Accepted steps.
+    pub accepted: u64,
+    /// Rejected steps (adaptive).
+    pub rejected: u64,
+    /// Right-hand-side evaluations of the integrator itself.
+    pub evaluations: u64,
+    /// Smallest step taken (s).
+    pub h_min: Option<Real>,
+    /// Largest step taken (s).
+    pub h_max: Option<Real>,
 }
 
 /// A located event.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct EventSummary {
-    /// The condition, as written.
+    /// The event's name (the stop condition as written).
     pub name: String,
+    /// Which occurrence of this event (1 for the first).
+    pub occurrence: u32,
+    /// Whether it ended the run.
+    pub terminal: bool,
     /// Time of the crossing, located between steps (s).
     pub t: Real,
     /// The state at the crossing.
@@ -76,6 +107,8 @@ pub struct EventSummary {
     pub last_step: TimedState,
     /// The step that crossed.
     pub crossing_step: TimedState,
+    /// The state right after the event's state change, if it has one.
+    pub after: Option<BTreeMap<String, BodyState>>,
 }
 
 /// Why and where a run diverged.
@@ -109,8 +142,10 @@ pub struct Summary {
     pub scenario: String,
     /// Integration method.
     pub method: String,
-    /// Time step (s).
+    /// Time step (s): the fixed step, or the mean accepted step of an adaptive run.
     pub dt: Real,
+    /// Step size control: fixed or adaptive, tolerances, accepted and rejected steps.
+    pub step_control: StepControl,
     /// Start time (s).
     pub t_start: Real,
     /// End time (s): `t_max`, the located event, or the last finite state.
@@ -119,7 +154,7 @@ pub struct Summary {
     pub steps: u64,
     /// Force evaluations.
     pub evaluations: u64,
-    /// `t_max`, `event`, `max_steps` or `diverged`.
+    /// `t_max`, `event`, `max_steps`, `diverged`, `step_too_small` or `zeno`.
     pub stop_reason: String,
     /// Every body's final state.
     pub bodies: BTreeMap<String, BodySummary>,
@@ -133,13 +168,13 @@ pub struct Summary {
     pub energy: EnergySummary,
     /// `Σ work - ΔK` (J): zero for an exact trajectory.
     pub work_energy_residual: Real,
-    /// Located events.
+    /// Located events, every occurrence in time order (at most 100,000).
     pub events: Vec<EventSummary>,
     /// `[observe]` results.
     pub observables: BTreeMap<String, Real>,
     /// SI unit of each observable whose dimension is known (`""` for pure numbers).
     pub observable_units: BTreeMap<String, String>,
-    /// Set when the run diverged.
+    /// Set when the run failed (diverged, step size underflow, Zeno).
     pub divergence: Option<DivergenceSummary>,
     /// Warnings about the setup or the run.
     pub warnings: Vec<String>,
@@ -162,6 +197,39 @@ fn states(sys: &ParticleSystem, q: &[Real], v: &[Real]) -> BTreeMap<String, Body
             )
         })
         .collect()
+}
+
+fn step_control(report: &RunReport) -> StepControl {
+    let finite = |x: Real| x.is_finite().then_some(x);
+    let (h_min, h_max) = (finite(report.step_range.0), finite(report.step_range.1));
+    match (&report.stepping, report.adaptive) {
+        (Stepping::Adaptive { config, .. }, Some(stats)) => StepControl {
+            mode: "adaptive".into(),
+            rtol: match &config.rtol {
+                Tolerance::Scalar(r) => Some(*r),
+                Tolerance::PerComponent(_) => None,
+            },
+            atol: match &config.atol {
+                Tolerance::Scalar(a) => Some(*a),
+                Tolerance::PerComponent(_) => None,
+            },
+            accepted: stats.accepted,
+            rejected: stats.rejected,
+            evaluations: stats.evaluations,
+            h_min,
+            h_max,
+        },
+        _ => StepControl {
+            mode: "fixed".into(),
+            rtol: None,
+            atol: None,
+            accepted: report.steps,
+            rejected: 0,
+            evaluations: report.evaluations,
+            h_min,
+            h_max,
+        },
+    }
 }
 
 fn timed(sys: &ParticleSystem, s: &Snapshot) -> TimedState {
@@ -207,6 +275,7 @@ impl Summary {
             scenario: scenario.to_string(),
             method: report.method.name().to_string(),
             dt: report.dt,
+            step_control: step_control(report),
             t_start: report.initial.t,
             t_end: report.final_state.t,
             steps: report.steps,
@@ -232,17 +301,23 @@ impl Summary {
                 end: e1,
                 change: e1 - e0,
                 non_conservative_work: l.non_conservative_work(),
+                events_change: l.jump_energy(),
+                relative_drift: (l.potential_start().is_some() && e0 != 0.0)
+                    .then(|| (e1 - e0 - l.non_conservative_work() - l.jump_energy()) / e0.abs()),
             },
             work_energy_residual: l.work_energy_residual(),
             events: report
-                .event
+                .events
                 .iter()
                 .map(|e| EventSummary {
                     name: e.name.clone(),
+                    occurrence: e.occurrence,
+                    terminal: e.terminal,
                     t: e.t,
                     state: states(sys, &e.state.q, &e.state.v),
                     last_step: timed(sys, &e.last_step),
                     crossing_step: timed(sys, &e.crossing_step),
+                    after: e.after.as_ref().map(|a| states(sys, &a.q, &a.v)),
                 })
                 .collect(),
             observable_units: observables
@@ -272,27 +347,67 @@ impl Summary {
     pub fn to_text(&self) -> String {
         let mut s = String::new();
         let _ = writeln!(s, "{}", self.title);
-        let _ = writeln!(
-            s,
-            "  {} with dt = {} s: {} steps, t = {} → {} s, stopped by {}",
-            self.method,
-            num(self.dt),
-            self.steps,
-            num(self.t_start),
-            num(self.t_end),
-            self.stop_reason
-        );
-        for e in &self.events {
+        let c = &self.step_control;
+        if c.mode == "adaptive" {
+            let tol = match (c.rtol, c.atol) {
+                (Some(r), Some(a)) => format!("rtol {}, atol {}", num(r), num(a)),
+                (Some(r), None) => format!("rtol {}, atol per component", num(r)),
+                _ => "per-component tolerances".into(),
+            };
             let _ = writeln!(
                 s,
-                "  event `{}` at t = {} s (last step before it: t = {} s)",
+                "  {}, adaptive ({tol}): {} steps accepted, {} rejected, {} evaluations; step {} … {} s; t = {} → {} s, stopped by {}",
+                self.method,
+                c.accepted,
+                c.rejected,
+                c.evaluations,
+                c.h_min.map_or("-".into(), num),
+                c.h_max.map_or("-".into(), num),
+                num(self.t_start),
+                num(self.t_end),
+                self.stop_reason
+            );
+        } else {
+            let _ = writeln!(
+                s,
+                "  {} with dt = {} s: {} steps, t = {} → {} s, stopped by {}",
+                self.method,
+                num(self.dt),
+                self.steps,
+                num(self.t_start),
+                num(self.t_end),
+                self.stop_reason
+            );
+        }
+        for e in self.events.iter().take(SHOWN_EVENTS) {
+            let occurrence = if self.events.iter().filter(|o| o.name == e.name).count() > 1 {
+                format!(" #{}", e.occurrence)
+            } else {
+                String::new()
+            };
+            let _ = writeln!(
+                s,
+                "  event `{}`{occurrence} at t = {} s (last step before it: t = {} s){}",
                 e.name,
                 num(e.t),
-                num(e.last_step.t)
+                num(e.last_step.t),
+                if e.terminal { ", ended the run" } else { "" }
+            );
+        }
+        if self.events.len() > SHOWN_EVENTS {
+            let _ = writeln!(
+                s,
+                "  … and {} more events (all in summary.json)",
+                self.events.len() - SHOWN_EVENTS
             );
         }
         if let Some(d) = &self.divergence {
-            let _ = writeln!(s, "  DIVERGED: {}", d.message);
+            let label = if self.stop_reason == "diverged" {
+                "DIVERGED"
+            } else {
+                "FAILED"
+            };
+            let _ = writeln!(s, "  {label}: {}", d.message);
         }
         let _ = writeln!(s, "final state");
         for (name, b) in &self.bodies {
@@ -334,6 +449,20 @@ impl Summary {
                 num(self.energy.change)
             );
         }
+        if self.energy.events_change != 0.0 {
+            let _ = writeln!(
+                s,
+                "  changed by events      {}",
+                num(self.energy.events_change)
+            );
+        }
+        if let Some(d) = self.energy.relative_drift {
+            let _ = writeln!(
+                s,
+                "  relative energy drift  {} (ΔE minus the work of non-conservative forces, over |E|)",
+                num(d)
+            );
+        }
         let _ = writeln!(
             s,
             "  work-energy residual   {} (Σ work - ΔK)",
@@ -356,6 +485,9 @@ impl Summary {
         s
     }
 }
+
+/// Events listed in the text summary (all are in `summary.json`).
+const SHOWN_EVENTS: usize = 12;
 
 /// A number with 7 significant digits, for people.
 fn num(x: Real) -> String {

@@ -81,6 +81,11 @@ impl Condition {
         if self.inclusive { g >= 0.0 } else { g > 0.0 }
     }
 
+    /// Whether the condition also holds where `g = 0` (`<=`, `>=`).
+    pub fn inclusive(&self) -> bool {
+        self.inclusive
+    }
+
     /// Whether `g` depends on force evaluations.
     pub fn needs_forces(&self) -> bool {
         self.needs_forces

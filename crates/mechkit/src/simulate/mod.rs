@@ -11,14 +11,20 @@
 
 mod condition;
 mod diagnose;
-mod locate;
+mod drive;
+mod event;
 mod observe;
 mod reduce;
 mod report;
 mod run;
+mod scan;
+mod stepping;
 
 pub use condition::Condition;
+pub use drive::ZENO_LIMIT;
+pub use event::{Direction, Event, EventAction};
 pub use observe::{Observer, ObserverError, Recorder};
 pub use reduce::{Reducer, Reduction};
 pub use report::{Divergence, EventRecord, RunReport, SimulateError, Snapshot, StopReason};
 pub use run::{DEFAULT_MAX_STEPS, Simulation};
+pub use stepping::Stepping;

@@ -2,6 +2,7 @@
 //! `initial`, `final`, `mean` (time average) and `integral` (over time, trapezoidal).
 
 use crate::Real;
+use crate::particles::SampleKind;
 
 /// How a quantity is reduced over the samples of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -97,12 +98,12 @@ impl Reducer {
 
     /// Adds a sample that is a step.
     pub fn push(&mut self, t: Real, value: Real) {
-        self.push_sample(t, value, false);
+        self.push_sample(t, value, SampleKind::Step);
     }
 
-    /// Adds a sample; `located` marks a located event (a state between steps).
-    pub fn push_sample(&mut self, t: Real, value: Real, located: bool) {
-        if !located {
+    /// Adds a sample of any kind (only steps count for `last_step`).
+    pub fn push_sample(&mut self, t: Real, value: Real, kind: SampleKind) {
+        if kind.is_step() {
             self.last_step = value;
         }
         if self.count == 0 {

@@ -5,9 +5,10 @@ use std::fmt;
 use thiserror::Error;
 
 use super::observe::ObserverError;
+use super::stepping::Stepping;
 use crate::Real;
 use crate::energy::EnergyLedger;
-use crate::ode::{Method, State};
+use crate::ode::{AdaptiveStats, Method, State};
 
 /// Why a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -21,17 +22,32 @@ pub enum StopReason {
     MaxSteps,
     /// The state or a force stopped being finite.
     Diverged,
+    /// The adaptive step size fell below its minimum.
+    StepTooSmall,
+    /// An event fired again and again at practically the same time (Zeno behaviour).
+    Zeno,
 }
 
 impl StopReason {
-    /// Name as in summaries: `t_max`, `event`, `max_steps`, `diverged`.
+    /// Name as in summaries: `t_max`, `event`, `max_steps`, `diverged`, `step_too_small`,
+    /// `zeno`.
     pub fn name(self) -> &'static str {
         match self {
             StopReason::TMax => "t_max",
             StopReason::Event => "event",
             StopReason::MaxSteps => "max_steps",
             StopReason::Diverged => "diverged",
+            StopReason::StepTooSmall => "step_too_small",
+            StopReason::Zeno => "zeno",
         }
+    }
+
+    /// Whether the computation failed (the CLI exits with 1).
+    pub fn is_failure(self) -> bool {
+        matches!(
+            self,
+            StopReason::Diverged | StopReason::StepTooSmall | StopReason::Zeno
+        )
     }
 }
 
@@ -63,11 +79,13 @@ impl Snapshot {
     }
 }
 
-/// A located stop event.
+/// A located event.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EventRecord {
-    /// What fired (the condition's description).
+    /// What fired (the event's name, or the stop condition as written).
     pub name: String,
+    /// Which occurrence of this event it is (1 for the first).
+    pub occurrence: u32,
     /// Time of the crossing, located on the step's interpolant.
     pub t: Real,
     /// The interpolated state at the crossing.
@@ -76,16 +94,21 @@ pub struct EventRecord {
     pub last_step: Snapshot,
     /// The step that crossed (the first for which the condition held).
     pub crossing_step: Snapshot,
+    /// The state after the event's state change, if it has one.
+    pub after: Option<Snapshot>,
+    /// Whether the event ended the run.
+    pub terminal: bool,
 }
 
-/// Where and how a run stopped being finite.
+/// Where and how a run failed: it stopped being finite, the adaptive step size underflowed, or
+/// an event fired endlessly.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Divergence {
     /// Time of the last finite state.
     pub t: Real,
     /// Step index of the last finite state.
     pub step: u64,
-    /// The quantity that went bad (`feather.vx`, `force air on feather`).
+    /// The quantity that went bad (`feather.vx`, `force air on feather`, the event's name).
     pub quantity: String,
     /// Its value (NaN or ±inf).
     pub value: Real,
@@ -98,9 +121,15 @@ pub struct Divergence {
 pub struct RunReport {
     /// Method used.
     pub method: Method,
-    /// Step size.
+    /// Step size: the fixed step, or for adaptive runs the mean accepted step.
     pub dt: Real,
-    /// Steps taken.
+    /// How the run stepped.
+    pub stepping: Stepping,
+    /// Accepted and rejected steps and evaluations of an adaptive run (the stepper's own).
+    pub adaptive: Option<AdaptiveStats>,
+    /// Smallest and largest step taken.
+    pub step_range: (Real, Real),
+    /// Steps taken (accepted steps, for adaptive runs).
     pub steps: u64,
     /// Force evaluations (by the stepper and for the ledger).
     pub evaluations: u64,
@@ -110,9 +139,11 @@ pub struct RunReport {
     pub initial: State,
     /// The final state (at the event, if one fired; the last finite state, if it diverged).
     pub final_state: State,
-    /// The located stop event.
+    /// The event that ended the run.
     pub event: Option<EventRecord>,
-    /// What went wrong, if it diverged.
+    /// Every event occurrence, in time order (the terminal one included).
+    pub events: Vec<EventRecord>,
+    /// What went wrong, if the run failed.
     pub divergence: Option<Divergence>,
     /// Energies and work.
     pub ledger: EnergyLedger,
@@ -149,6 +180,12 @@ pub enum SimulateError {
     /// The stepper refused the step.
     #[error(transparent)]
     Integrate(#[from] crate::ode::IntegrateError),
+    /// Invalid adaptive settings.
+    #[error(transparent)]
+    Config(#[from] crate::ode::ConfigError),
+    /// An output interval that is not positive.
+    #[error("the output interval must be positive and finite, not {0} s")]
+    BadInterval(Real),
     /// An observer failed (an output could not be written).
     #[error("output failed: {0}")]
     Observer(#[from] ObserverError),

@@ -2,3 +2,5 @@ mod adaptive;
 mod convergence;
 mod energy_behaviour;
 mod fsal;
+mod long_runs;
+mod orders;

@@ -162,8 +162,70 @@ fn toml_syntax_error_is_located() {
 fn unknown_method_and_force_kind() {
     let e = error(&with("method = \"rk4\"", "method = \"rk5\""));
     assert!(e.hint.unwrap().contains("rk4"));
-    let e = error(&with("method = \"rk4\"", "method = \"dopri5\""));
-    assert!(e.message.contains("not available"), "{e}");
+    let e = error(&with("kind = \"expression\"", "kind = \"sprng\""));
+    assert!(e.hint.unwrap().contains("`spring`"));
+}
+
+#[test]
+fn integrator_settings() {
+    // a Runge-Kutta pair with dt takes fixed steps; with rtol/atol adaptive ones
+    assert!(load(&with("method = \"rk4\"", "method = \"dopri5\"")).is_ok());
+    assert!(
+        load(&with(
+            "method = \"rk4\"\ndt = \"1 ms\"",
+            "method = \"dop853\"\nrtol = 1e-9\natol = 1e-12"
+        ))
+        .is_ok()
+    );
+    let e = error(&with("dt = \"1 ms\"", "dt = \"1 ms\"\nrtol = 1e-8"));
+    assert!(e.message.contains("`rtol` controls adaptive steps"), "{e}");
+    assert_eq!(at(&e).0, 20);
+    let e = error(&with(
+        "method = \"rk4\"",
+        "method = \"dopri5\"\nrtol = 1e-8",
+    ));
+    assert!(e.message.contains("`dt` fixes the step"), "{e}");
+    let adaptive = |keys: &str| {
+        with(
+            "method = \"rk4\"\ndt = \"1 ms\"",
+            &format!("method = \"dopri5\"\n{keys}"),
+        )
+    };
+    for (keys, want) in [
+        ("rtol = 0", "`rtol` must be positive"),
+        ("rtol = -1e-6", "`rtol` must be positive"),
+        ("rtol = 1e-16", "below what double precision"),
+        ("atol = -1", "`atol` must be zero or positive"),
+        ("atol = \"1 mm\"", "takes no unit"),
+        ("atol = { position = \"1 mm\" }", "velocity"),
+        (
+            "atol = { position = \"1 mm\", velocity = \"1 mm\" }",
+            "velocity",
+        ),
+        ("h_max = \"-1 s\"", "positive time"),
+        ("h0 = \"2 kg\"", "h0"),
+    ] {
+        let e = error(&adaptive(keys));
+        assert!(e.to_string().contains(want), "{keys}: {e}");
+    }
+    let e = error(&with("method = \"rk4\"\ndt = \"1 ms\"", "method = \"rk4\""));
+    assert!(e.message.contains("`dt`"), "{e}");
+}
+
+#[test]
+fn symplectic_methods_need_position_forces() {
+    let text = with("method = \"rk4\"", "method = \"pefrl\"")
+        .replace("F = \"-k*x\"", "F = \"-k*x - 0.1*vx\"");
+    let e = error(&text);
+    assert!(
+        e.message.contains("symplectic") && e.message.contains("`spring`"),
+        "{e}"
+    );
+    assert!(load(&with("method = \"rk4\"", "method = \"yoshida4\"")).is_ok());
+}
+
+#[test]
+fn unknown_force_kind() {
     let e = error(&with("kind = \"expression\"", "kind = \"sprng\""));
     assert!(e.hint.unwrap().contains("`spring`"));
 }

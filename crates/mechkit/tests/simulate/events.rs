@@ -93,7 +93,8 @@ struct Log {
 
 impl Observer for Log {
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        self.located.push(s.located);
+        self.located
+            .push(s.kind == mechkit::particles::SampleKind::Event);
         Ok(())
     }
     fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {

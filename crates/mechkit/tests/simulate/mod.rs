@@ -1,2 +1,4 @@
+mod adaptive_runs;
 mod divergence;
+mod event_cases;
 mod events;

@@ -1,0 +1,331 @@
+//! Events: a function `g` of time and state whose zeros mark something happening (a bounce, an
+//! apex, a crossing), with a direction, an action (record and continue, change the state, or
+//! stop) and limits on how often it fires.
+//!
+//! Inside every step the event functions are evaluated at the ends and at interior points of
+//! the step's interpolant, so a function that crosses zero twice inside one step is not
+//! missed; each crossing is then located by Brent's method on the interpolant to near machine
+//! precision, and the firings of all events are handled in time order.
+//!
+//! The rules at exact zeros (the cases SciPy's `solve_ivp` gets wrong, issues #9228, #17066,
+//! #19418): arriving at zero is a crossing, at that exact time (a root on a step boundary fires
+//! once, in the step that ends there); leaving zero afterwards is not. A zero at the start of
+//! the run counts when the function leaves it in the event's direction.
+
+use std::fmt;
+use std::sync::Arc;
+
+use super::condition::Condition;
+use crate::Real;
+use crate::particles::{ParticleSystem, Sample};
+
+/// Which zero crossings of the event function count.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Direction {
+    /// From negative to zero or positive.
+    Rising,
+    /// From positive to zero or negative.
+    Falling,
+    /// Either way.
+    #[default]
+    Both,
+}
+
+impl Direction {
+    /// Name as in scenario files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Direction::Rising => "rising",
+            Direction::Falling => "falling",
+            Direction::Both => "both",
+        }
+    }
+
+    /// Looks a direction up by name (`rising`/`up`/`increasing`, `falling`/`down`/`decreasing`,
+    /// `both`/`any`).
+    pub fn from_name(name: &str) -> Option<Direction> {
+        Some(match name.trim().to_ascii_lowercase().as_str() {
+            "rising" | "up" | "increasing" | "+" => Direction::Rising,
+            "falling" | "down" | "decreasing" | "-" => Direction::Falling,
+            "both" | "any" | "either" => Direction::Both,
+            _ => return None,
+        })
+    }
+}
+
+/// What an event does when it fires (besides being recorded).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum EventAction {
+    /// Record it and continue.
+    #[default]
+    Record,
+    /// End the run at the `n`-th occurrence (earlier ones are recorded).
+    StopAt(u32),
+}
+
+type SetFn = dyn Fn(&Sample<'_>, &ParticleSystem, &mut [Real]) + Send + Sync;
+
+/// When an event fires.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Trigger {
+    /// A zero crossing in a direction.
+    Crossing(Direction),
+    /// The condition starts to hold (`[stop] when`): `g > 0`, or `g ≥ 0` when inclusive.
+    Holds { inclusive: bool },
+}
+
+/// An event of a run.
+///
+/// # Example
+/// ```
+/// use mechkit::simulate::{Direction, Event};
+/// // a ball bouncing on the floor y = 0 with restitution 0.9 (state [x, y, vx, vy])
+/// let bounce = Event::new("bounce", |s, _| s.q[1])
+///     .direction(Direction::Falling)
+///     .set(|_, _, y| y[3] *= -0.9);
+/// assert_eq!(bounce.name(), "bounce");
+/// ```
+#[derive(Clone)]
+pub struct Event {
+    condition: Condition,
+    pub(crate) trigger: Trigger,
+    pub(crate) action: EventAction,
+    pub(crate) max_count: Option<u32>,
+    set: Option<Arc<SetFn>>,
+    set_description: Option<String>,
+}
+
+impl fmt::Debug for Event {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Event")
+            .field("name", &self.condition.description())
+            .field("trigger", &self.trigger)
+            .field("action", &self.action)
+            .field("max_count", &self.max_count)
+            .field("set", &self.set_description)
+            .finish()
+    }
+}
+
+impl Event {
+    /// An event at the zeros of `g` (of time, positions and velocities), recorded in both
+    /// directions; refine it with the builder methods.
+    pub fn new(
+        name: impl Into<String>,
+        g: impl Fn(&Sample<'_>, &ParticleSystem) -> Real + Send + Sync + 'static,
+    ) -> Self {
+        Self::from_function(Condition::from_fn(name, false, false, g))
+    }
+
+    /// An event at the zeros of a condition's event function (its `needs_forces` flag says
+    /// whether `g` reads accelerations, energies, work or power).
+    pub fn from_function(condition: Condition) -> Self {
+        Self {
+            condition,
+            trigger: Trigger::Crossing(Direction::Both),
+            action: EventAction::Record,
+            max_count: None,
+            set: None,
+            set_description: None,
+        }
+    }
+
+    /// The stop condition of `[stop] when`: fires when the condition starts to hold, ends the
+    /// run there.
+    pub fn stop_condition(condition: Condition) -> Self {
+        let inclusive = condition.inclusive();
+        Self {
+            condition,
+            trigger: Trigger::Holds { inclusive },
+            action: EventAction::StopAt(1),
+            max_count: None,
+            set: None,
+            set_description: None,
+        }
+    }
+
+    /// Which crossings count.
+    #[must_use]
+    pub fn direction(mut self, direction: Direction) -> Self {
+        self.trigger = Trigger::Crossing(direction);
+        self
+    }
+
+    /// Ends the run at the first occurrence.
+    #[must_use]
+    pub fn stop(self) -> Self {
+        self.stop_at(1)
+    }
+
+    /// Ends the run at the `n`-th occurrence (`n ≥ 1`).
+    #[must_use]
+    pub fn stop_at(mut self, n: u32) -> Self {
+        self.action = EventAction::StopAt(n.max(1));
+        self
+    }
+
+    /// Fires at most `n` times; later crossings are ignored.
+    #[must_use]
+    pub fn max_count(mut self, n: u32) -> Self {
+        self.max_count = Some(n);
+        self
+    }
+
+    /// Changes the state when the event fires: `f` gets the state at the event and writes the
+    /// new `[positions, velocities]` into the slice (which starts as a copy of the old). The run
+    /// continues from the changed state.
+    #[must_use]
+    pub fn set(
+        mut self,
+        f: impl Fn(&Sample<'_>, &ParticleSystem, &mut [Real]) + Send + Sync + 'static,
+    ) -> Self {
+        self.set = Some(Arc::new(f));
+        self.set_description
+            .get_or_insert_with(|| "state change".into());
+        self
+    }
+
+    /// Describes the state change for reports (`vy = -e*vy`).
+    #[must_use]
+    pub fn set_description(mut self, description: impl Into<String>) -> Self {
+        self.set_description = Some(description.into());
+        self
+    }
+
+    /// Its name.
+    pub fn name(&self) -> &str {
+        self.condition.description()
+    }
+
+    /// The event function and its description.
+    pub fn condition(&self) -> &Condition {
+        &self.condition
+    }
+
+    /// Whether evaluating `g` needs the forces.
+    pub fn needs_forces(&self) -> bool {
+        self.condition.needs_forces()
+    }
+
+    /// Whether it is the stop condition of `[stop] when`.
+    pub fn is_stop_condition(&self) -> bool {
+        matches!(self.trigger, Trigger::Holds { .. })
+    }
+
+    /// The state change, if any.
+    pub(crate) fn state_change(&self) -> Option<&SetFn> {
+        self.set.as_deref()
+    }
+
+    /// The description of the state change.
+    pub fn state_change_description(&self) -> Option<&str> {
+        self.set_description.as_deref()
+    }
+
+    /// The side of zero a value is on (`None` for NaN, which never fires).
+    pub(crate) fn side_of(g: Real) -> Option<Side> {
+        if g < 0.0 {
+            Some(Side::Neg)
+        } else if g > 0.0 {
+            Some(Side::Pos)
+        } else if g == 0.0 {
+            Some(Side::Zero)
+        } else {
+            None
+        }
+    }
+
+    /// The side at the start of the run for the value `g` there.
+    pub(crate) fn initial_side(&self, g: Real) -> Side {
+        match Self::side_of(g) {
+            Some(Side::Zero) if matches!(self.trigger, Trigger::Crossing(_)) => Side::StartZero,
+            Some(s) => s,
+            None => Side::Unknown,
+        }
+    }
+
+    /// Whether going from `from` to `to` fires the event.
+    pub(crate) fn fires(&self, from: Side, to: Side) -> bool {
+        match self.trigger {
+            Trigger::Holds { inclusive } => {
+                let holds = |s: Side| match s {
+                    Side::Pos => true,
+                    Side::Zero | Side::StartZero => inclusive,
+                    Side::Neg | Side::Unknown => false,
+                };
+                !holds(from) && holds(to) && from != Side::Unknown
+            }
+            Trigger::Crossing(d) => {
+                let rising = matches!(
+                    (from, to),
+                    (Side::Neg, Side::Zero | Side::Pos) | (Side::StartZero, Side::Pos)
+                );
+                let falling = matches!(
+                    (from, to),
+                    (Side::Pos, Side::Zero | Side::Neg) | (Side::StartZero, Side::Neg)
+                );
+                match d {
+                    Direction::Rising => rising,
+                    Direction::Falling => falling,
+                    Direction::Both => rising || falling,
+                }
+            }
+        }
+    }
+}
+
+/// Where an event function is relative to zero.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Side {
+    /// Negative.
+    Neg,
+    /// At zero, already counted (or left alone): leaving it does not fire.
+    Zero,
+    /// Positive.
+    Pos,
+    /// Exactly zero at the start of the run: leaving it in the event's direction fires, at the
+    /// start.
+    StartZero,
+    /// Not known yet (NaN so far).
+    Unknown,
+}
+
+impl Side {
+    /// The side after a value `g`, from the side before (NaN keeps the old side).
+    pub(crate) fn after(self, g: Real) -> Side {
+        Event::side_of(g).unwrap_or(self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ev(d: Direction) -> Event {
+        Event::new("g", |_, _| 0.0).direction(d)
+    }
+
+    #[test]
+    fn crossing_rules() {
+        use Side::*;
+        let r = ev(Direction::Rising);
+        assert!(r.fires(Neg, Pos) && r.fires(Neg, Zero) && r.fires(StartZero, Pos));
+        assert!(!r.fires(Zero, Pos) && !r.fires(Pos, Neg) && !r.fires(StartZero, Neg));
+        let f = ev(Direction::Falling);
+        assert!(f.fires(Pos, Neg) && f.fires(Pos, Zero) && f.fires(StartZero, Neg));
+        assert!(!f.fires(Zero, Neg) && !f.fires(Neg, Pos));
+        let b = ev(Direction::Both);
+        assert!(b.fires(Pos, Neg) && b.fires(Neg, Pos) && b.fires(StartZero, Pos));
+        assert!(!b.fires(Zero, Pos) && !b.fires(Zero, Neg) && !b.fires(Pos, Pos));
+    }
+
+    #[test]
+    fn stop_condition_rules() {
+        use Side::*;
+        let strict = Event::stop_condition(Condition::from_fn("x < 0", false, false, |_, _| 0.0));
+        assert!(strict.fires(Neg, Pos) && strict.fires(Zero, Pos));
+        assert!(!strict.fires(Neg, Zero));
+        let incl = Event::stop_condition(Condition::from_fn("x <= 0", true, false, |_, _| 0.0));
+        assert!(incl.fires(Neg, Zero) && !incl.fires(Zero, Pos));
+    }
+}

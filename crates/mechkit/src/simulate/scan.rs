@@ -1,0 +1,179 @@
+//! Finding the first event firing inside a step: the event functions are sampled at the ends
+//! and at interior points of the step's interpolant, and the first sign change in the
+//! direction of an event is located by Brent's method.
+
+use super::event::{Event, Side};
+use crate::Real;
+use crate::roots::brent_with_values;
+
+/// Events firing together at one instant.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Firing {
+    pub t: Real,
+    /// Indices of the events, in declaration order.
+    pub events: Vec<usize>,
+}
+
+/// Where the scan ended.
+pub(crate) enum ScanResult {
+    /// Events fire at `firing.t`; `values` holds every event function there.
+    Fired { firing: Firing, values: Vec<Real> },
+    /// Nothing fired up to the step's end; the sides there.
+    Quiet(Vec<Side>),
+}
+
+/// Scans `(t_a, t_b]`: `sides` are the events' sides at `t_a`, `g_a`/`g_b` their values at the
+/// ends (NaN where unknown), `interior` the number of interior sample points, and
+/// `values(t, out)` evaluates every event function at `t` on the interpolant. Disabled events
+/// never fire.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn scan(
+    events: &[Event],
+    enabled: &[bool],
+    sides: &[Side],
+    (t_a, g_a): (Real, &[Real]),
+    (t_b, g_b): (Real, &[Real]),
+    interior: usize,
+    values: &mut dyn FnMut(Real, &mut [Real]),
+) -> ScanResult {
+    let m = events.len();
+    let mut cur = sides.to_vec();
+    let mut prev_vals = g_a.to_vec();
+    let mut vals = vec![Real::NAN; m];
+    let mut t_prev = t_a;
+    let parts = interior + 1;
+    for j in 1..=parts {
+        let t_j = if j == parts {
+            t_b
+        } else {
+            t_a + (t_b - t_a) * j as Real / parts as Real
+        };
+        if j == parts {
+            vals.copy_from_slice(g_b);
+        } else {
+            values(t_j, &mut vals);
+        }
+        let mut first: Option<(Real, Vec<usize>)> = None;
+        for i in (0..m).filter(|&i| enabled[i]) {
+            let to = cur[i].after(vals[i]);
+            if !events[i].fires(cur[i], to) {
+                continue;
+            }
+            let te = if to == Side::Zero {
+                t_j
+            } else if matches!(cur[i], Side::Zero | Side::StartZero) || prev_vals[i] == 0.0 {
+                t_prev
+            } else {
+                let tol = 2.0 * Real::EPSILON * t_prev.abs().max(t_j.abs());
+                let mut buf = vec![0.0; m];
+                brent_with_values(
+                    |t| {
+                        values(t, &mut buf);
+                        buf[i]
+                    },
+                    t_prev,
+                    t_j,
+                    Some((prev_vals[i], vals[i])),
+                    tol,
+                )
+                .unwrap_or(t_j)
+            };
+            match &mut first {
+                Some((t, list)) if te == *t => list.push(i),
+                Some((t, _)) if te > *t => {}
+                _ => first = Some((te, vec![i])),
+            }
+        }
+        if let Some((te, mut list)) = first {
+            // the values at the instant, and any other event that fires exactly there
+            let at = if te == t_j {
+                vals.clone()
+            } else if te == t_prev {
+                prev_vals.clone()
+            } else {
+                let mut v = vec![0.0; m];
+                values(te, &mut v);
+                v
+            };
+            let also: Vec<usize> = (0..m)
+                .filter(|&i| enabled[i] && !list.contains(&i))
+                .filter(|&i| events[i].fires(cur[i], cur[i].after(at[i])))
+                .collect();
+            list.extend(also);
+            list.sort_unstable();
+            return ScanResult::Fired {
+                firing: Firing {
+                    t: te,
+                    events: list,
+                },
+                values: at,
+            };
+        }
+        for i in 0..m {
+            cur[i] = cur[i].after(vals[i]);
+        }
+        prev_vals.copy_from_slice(&vals);
+        t_prev = t_j;
+    }
+    ScanResult::Quiet(cur)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::simulate::Direction;
+
+    fn run(f: impl Fn(Real) -> Real, d: Direction, interior: usize) -> Vec<Real> {
+        let events = [Event::new("g", |_, _| 0.0).direction(d)];
+        let (t_a, t_b) = (0.0, 1.0);
+        let mut sides = vec![events[0].initial_side(f(t_a))];
+        let mut t = t_a;
+        let mut found = Vec::new();
+        let mut values = |t: Real, out: &mut [Real]| out[0] = f(t);
+        loop {
+            match scan(
+                &events,
+                &[true],
+                &sides,
+                (t, &[f(t)]),
+                (t_b, &[f(t_b)]),
+                interior,
+                &mut values,
+            ) {
+                ScanResult::Fired { firing, .. } => {
+                    found.push(firing.t);
+                    t = firing.t;
+                    sides = vec![Side::Zero];
+                }
+                ScanResult::Quiet(_) => return found,
+            }
+        }
+    }
+
+    #[test]
+    fn finds_every_root_of_a_cubic_in_one_step() {
+        // roots at 0.2, 0.5, 0.8 (the case of SciPy issue #9228, scaled to one step)
+        let f = |t: Real| (t - 0.2) * (t - 0.5) * (t - 0.8);
+        let found = run(f, Direction::Both, 7);
+        assert_eq!(found.len(), 3, "{found:?}");
+        for (t, want) in found.iter().zip([0.2, 0.5, 0.8]) {
+            assert!((t - want).abs() < 1e-15, "{t} vs {want}");
+        }
+        // only the sign changes the direction asks for
+        assert_eq!(run(f, Direction::Rising, 7).len(), 2);
+        assert_eq!(run(f, Direction::Falling, 7).len(), 1);
+    }
+
+    #[test]
+    fn a_root_on_the_step_end_fires_once_there() {
+        let found = run(|t| t - 1.0, Direction::Both, 3);
+        assert_eq!(found, vec![1.0]);
+    }
+
+    #[test]
+    fn a_root_at_the_start_fires_when_leaving_in_the_direction() {
+        assert_eq!(run(|t| t, Direction::Rising, 3), vec![0.0]);
+        assert!(run(|t| t, Direction::Falling, 3).is_empty());
+        assert!(run(|t| -t, Direction::Rising, 3).is_empty());
+    }
+}

@@ -1,0 +1,248 @@
+//! How a run advances: fixed steps of any method, or adaptive steps of a Runge-Kutta pair; and
+//! the interpolant of the last step that events and output times are read from.
+
+use std::cell::RefCell;
+
+use crate::Real;
+use crate::ode::{
+    AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, Method, MethodKind, OdeSystem, State,
+    Stepper, hermite,
+};
+use crate::particles::{Evaluation, ParticleSystem};
+
+/// The step-size regime of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Stepping {
+    /// Steps of `dt` (the last shortened to land on `t_max`).
+    Fixed {
+        /// The method.
+        method: Method,
+        /// The step (s).
+        dt: Real,
+    },
+    /// Steps chosen by the error estimate of a Runge-Kutta pair.
+    Adaptive {
+        /// The method (one with [`MethodKind::Adaptive`]).
+        method: Method,
+        /// Tolerances and limits.
+        config: AdaptiveConfig,
+    },
+}
+
+impl Stepping {
+    /// The method.
+    pub fn method(&self) -> Method {
+        match self {
+            Stepping::Fixed { method, .. } | Stepping::Adaptive { method, .. } => *method,
+        }
+    }
+
+    /// The fixed step, if there is one.
+    pub fn dt(&self) -> Option<Real> {
+        match self {
+            Stepping::Fixed { dt, .. } => Some(*dt),
+            Stepping::Adaptive { .. } => None,
+        }
+    }
+
+    /// Whether the steps are adaptive.
+    pub fn is_adaptive(&self) -> bool {
+        matches!(self, Stepping::Adaptive { .. })
+    }
+
+    /// For people: `rk4 with dt = 0.001 s`, `dopri5, adaptive (rtol 1e-08, atol 1e-10)`.
+    pub fn describe(&self) -> String {
+        let tol = |t: &crate::ode::Tolerance| match t {
+            crate::ode::Tolerance::Scalar(x) => format!("{x:e}"),
+            crate::ode::Tolerance::PerComponent(_) => "per component".into(),
+        };
+        match self {
+            Stepping::Fixed { method, dt } => format!("{method} with dt = {dt} s"),
+            Stepping::Adaptive { method, config } => format!(
+                "{method}, adaptive (rtol {}, atol {})",
+                tol(&config.rtol),
+                tol(&config.atol)
+            ),
+        }
+    }
+}
+
+/// The particle system with the work of each force appended to the state, `W_i' = F_i·v`, so
+/// that an adaptive method integrates the energy ledger to its own order and tolerance. It
+/// keeps the evaluation of its latest call (the accepted step's end, after a step) and the
+/// first state at which a force was not finite.
+pub(crate) struct WorkSystem<'a> {
+    pub sys: &'a ParticleSystem,
+    n: usize,
+    nf: usize,
+    last: RefCell<(Evaluation, Vec<Real>)>,
+    pub bad: RefCell<Option<State>>,
+}
+
+impl<'a> WorkSystem<'a> {
+    pub fn new(sys: &'a ParticleSystem) -> Self {
+        Self {
+            sys,
+            n: crate::ode::SecondOrderSystem::dof(sys),
+            nf: sys.forces().len(),
+            last: RefCell::new((Evaluation::default(), Vec::new())),
+            bad: RefCell::new(None),
+        }
+    }
+
+    /// Swaps the evaluation of the latest call into `out`.
+    pub fn take_last(&self, out: &mut Evaluation) {
+        std::mem::swap(&mut self.last.borrow_mut().0, out);
+    }
+}
+
+impl OdeSystem for WorkSystem<'_> {
+    fn dim(&self) -> usize {
+        2 * self.n + self.nf
+    }
+
+    fn rhs_into(&self, t: Real, y: &[Real], dydt: &mut [Real]) {
+        let n = self.n;
+        let mut last = self.last.borrow_mut();
+        let (eval, scratch) = &mut *last;
+        self.sys.evaluate(t, &y[..n], &y[n..2 * n], eval, scratch);
+        dydt[..n].copy_from_slice(&y[n..2 * n]);
+        dydt[n..2 * n].copy_from_slice(&eval.a);
+        dydt[2 * n..].copy_from_slice(&eval.power);
+        if dydt.iter().any(|x| !x.is_finite()) {
+            let mut bad = self.bad.borrow_mut();
+            if bad.is_none() {
+                *bad = Some(State::new(t, y[..2 * n].to_vec()));
+            }
+        }
+    }
+}
+
+/// What advances the state: a fixed-step stepper, or the adaptive integrator with its
+/// augmented state.
+pub(crate) enum Engine {
+    Fixed {
+        stepper: Box<dyn Stepper<ParticleSystem>>,
+        dt: Real,
+    },
+    Adaptive {
+        rk: Box<AdaptiveRk>,
+        /// `[q, v, W]` at the current time.
+        y: Vec<Real>,
+        buf: Vec<Real>,
+    },
+}
+
+/// The two ends of the last step, for fixed-step interpolation (cubic Hermite).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct StepEnds {
+    pub t0: Real,
+    pub y0: Vec<Real>,
+    pub a0: Vec<Real>,
+    pub t1: Real,
+    pub y1: Vec<Real>,
+    pub a1: Vec<Real>,
+}
+
+impl Engine {
+    pub fn new(stepping: &Stepping) -> Result<Engine, crate::ode::ConfigError> {
+        Ok(match stepping {
+            Stepping::Fixed { method, dt } => Engine::Fixed {
+                stepper: method.stepper(),
+                dt: *dt,
+            },
+            Stepping::Adaptive { method, config } => {
+                let tableau = method
+                    .tableau()
+                    .filter(|_| method.kind() == MethodKind::Adaptive)
+                    .ok_or(crate::ode::ConfigError::NotAdaptive(method.name()))?;
+                Engine::Adaptive {
+                    rk: Box::new(AdaptiveRk::new(tableau, config.clone())?),
+                    y: Vec::new(),
+                    buf: Vec::new(),
+                }
+            }
+        })
+    }
+
+    /// Starts (or restarts after a state change) from `state` with the work so far. An adaptive
+    /// run chooses its first step afresh: the motion after a bounce may last much shorter than
+    /// the steps before it, and a step spanning all of it would hide its next crossing.
+    pub fn restart(&mut self, state: &State, work: &[Real]) {
+        match self {
+            Engine::Fixed { stepper, .. } => stepper.reset(),
+            Engine::Adaptive { rk, y, .. } => {
+                rk.reset();
+                y.clear();
+                y.extend_from_slice(&state.y);
+                y.extend_from_slice(work);
+            }
+        }
+    }
+
+    pub fn adaptive_stats(&self) -> Option<AdaptiveStats> {
+        match self {
+            Engine::Adaptive { rk, .. } => Some(rk.stats()),
+            Engine::Fixed { .. } => None,
+        }
+    }
+
+    /// One adaptive step towards `t_bound`; the state and the work follow.
+    pub fn adaptive_step(
+        &mut self,
+        ws: &WorkSystem<'_>,
+        state: &mut State,
+        work: &mut [Real],
+        t_bound: Real,
+    ) -> Result<(), AdaptiveError> {
+        let Engine::Adaptive { rk, y, .. } = self else {
+            unreachable!("adaptive_step on a fixed-step engine")
+        };
+        let mut aug = State::new(state.t, std::mem::take(y));
+        let result = rk.step(ws, &mut aug, t_bound);
+        *y = aug.y;
+        let n2 = state.y.len();
+        state.y.copy_from_slice(&y[..n2]);
+        work.copy_from_slice(&y[n2..]);
+        state.t = aug.t;
+        result.map(|_| ())
+    }
+
+    /// The state (and, for adaptive runs, the work) at `t` inside the last step. Returns
+    /// whether `work` was filled.
+    pub fn interpolate(
+        &mut self,
+        ws: &WorkSystem<'_>,
+        ends: &StepEnds,
+        t: Real,
+        y: &mut [Real],
+        work: &mut Vec<Real>,
+    ) -> bool {
+        match self {
+            Engine::Fixed { .. } => {
+                let h = ends.t1 - ends.t0;
+                let s = if h == 0.0 { 1.0 } else { (t - ends.t0) / h };
+                let n = y.len() / 2;
+                for i in 0..n {
+                    y[i] = hermite(ends.y0[i], ends.y0[n + i], ends.y1[i], ends.y1[n + i], h, s);
+                    y[n + i] =
+                        hermite(ends.y0[n + i], ends.a0[i], ends.y1[n + i], ends.a1[i], h, s);
+                }
+                false
+            }
+            Engine::Adaptive { rk, y: aug, buf } => {
+                buf.resize(aug.len(), 0.0);
+                if t == ends.t1 {
+                    buf.copy_from_slice(aug);
+                } else {
+                    rk.dense_into(ws, t, buf);
+                }
+                let n2 = y.len();
+                y.copy_from_slice(&buf[..n2]);
+                work.clear();
+                work.extend_from_slice(&buf[n2..]);
+                true
+            }
+        }
+    }
+}
