@@ -142,6 +142,21 @@ pub struct RunArgs {
     /// Do not draw plots.
     #[arg(long)]
     pub no_plots: bool,
+    /// Instead of one run: run with each of these methods (comma-separated, e.g.
+    /// "euler,euler-cromer,rk4,dopri5") and compare them with a reference solution (DOP853 at
+    /// rtol 1e-12): errors, energy drift, cost; writes compare.json and plots.
+    #[arg(long, value_delimiter = ',')]
+    pub compare_methods: Option<Vec<String>>,
+    /// With --compare-methods: the step of fixed-step methods (default: the scenario's dt),
+    /// e.g. "1 ms".
+    #[arg(long, requires = "compare_methods")]
+    pub dt: Option<String>,
+    /// With --compare-methods: rtol of adaptive methods (default: the scenario's, else 1e-6).
+    #[arg(long, requires = "compare_methods")]
+    pub rtol: Option<f64>,
+    /// With --compare-methods: atol of adaptive methods (default: the scenario's, else 1e-9).
+    #[arg(long, requires = "compare_methods")]
+    pub atol: Option<f64>,
 }
 
 /// `mechkit check`.

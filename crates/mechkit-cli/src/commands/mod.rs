@@ -28,8 +28,22 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {
-                let _ = writeln!(text, "{:<14} {}", m.name(), m.description());
+                let kind = match m.kind() {
+                    mechkit::ode::MethodKind::Fixed => "fixed",
+                    mechkit::ode::MethodKind::Adaptive => "adaptive",
+                    mechkit::ode::MethodKind::Symplectic => "symplectic",
+                };
+                let _ = writeln!(
+                    text,
+                    "{:<12} {kind:<10} order {}  {}",
+                    m.name(),
+                    m.order(),
+                    m.description()
+                );
             }
+            text.push_str(
+                "\nadaptive methods take rtol/atol (or a fixed dt); symplectic ones need forces of position and time only\n",
+            );
             print(&text)?;
             Ok(Outcome::Success)
         }

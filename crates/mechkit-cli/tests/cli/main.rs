@@ -20,6 +20,7 @@
 //!   exits 0 and warns about `t_max`.
 //!
 //! Numbers from files are compared within tolerances, never as strings.
+mod adaptive;
 mod calculus;
 mod diverge;
 mod errors;

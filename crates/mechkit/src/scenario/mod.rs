@@ -37,6 +37,7 @@
 //! The format is documented key by key in `docs/scenario.md`.
 
 mod build;
+mod compare;
 mod doc;
 mod error;
 mod events;
@@ -52,6 +53,7 @@ mod values;
 
 use std::path::Path;
 
+pub use compare::{CompareSettings, Comparison, MethodResult};
 pub use error::{ErrorKind, Location, ScenarioError};
 pub use observe::Observable;
 pub use output::{csv_header, write_atomic};

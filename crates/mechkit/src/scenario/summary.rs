@@ -385,13 +385,19 @@ impl Summary {
             } else {
                 String::new()
             };
+            let detail = if e.terminal {
+                format!(
+                    " (last step before it: t = {} s), ended the run",
+                    num(e.last_step.t)
+                )
+            } else {
+                String::new()
+            };
             let _ = writeln!(
                 s,
-                "  event `{}`{occurrence} at t = {} s (last step before it: t = {} s){}",
+                "  event `{}`{occurrence} at t = {} s{detail}",
                 e.name,
-                num(e.t),
-                num(e.last_step.t),
-                if e.terminal { ", ended the run" } else { "" }
+                num(e.t)
             );
         }
         if self.events.len() > SHOWN_EVENTS {

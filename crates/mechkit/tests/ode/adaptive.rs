@@ -77,3 +77,46 @@ fn dense_output_of_every_adaptive_method() {
     dense_matches_exact(Tableau::bogacki_shampine(), 1e-7, 1e-4);
     dense_matches_exact(Tableau::heun(), 1e-6, 1e-3);
 }
+
+/// The local error of the dense output at the middle of one step from exact data: O(h^(p+1))
+/// for an interpolant of order p (DOP853: 7, Dormand-Prince: 4, Bogacki-Shampine: 3).
+#[test]
+fn dense_output_orders() {
+    let k = Kepler { e: 0.5 };
+    // DOP853's error reaches round-off (1e-14) at h = 0.05, so three step sizes there
+    for (tableau, order, count) in [
+        (Tableau::dop853(), 7.0, 3),
+        (Tableau::dopri5(), 4.0, 4),
+        (Tableau::bogacki_shampine(), 3.0, 4),
+    ] {
+        let name = tableau.name;
+        let hs: Vec<f64> = (0..count).map(|i| 0.2 / f64::from(1 << i)).collect();
+        let errs: Vec<f64> = hs
+            .iter()
+            .map(|&h| {
+                let config = AdaptiveConfig {
+                    rtol: Tolerance::Scalar(1e6),
+                    atol: Tolerance::Scalar(1e6),
+                    h0: Some(h),
+                    h_max: h,
+                    ..AdaptiveConfig::default()
+                };
+                let mut rk = AdaptiveRk::new(tableau.clone(), config).unwrap();
+                let t0 = 1.0;
+                let mut s = State::new(t0, k.exact(t0).to_vec());
+                rk.step(&k, &mut s, 10.0).unwrap();
+                assert!((s.t - t0 - h).abs() < 1e-15);
+                let mut out = [0.0; 4];
+                rk.dense_into(&k, t0 + 0.5 * h, &mut out);
+                let exact = k.exact(t0 + 0.5 * h);
+                (0..4)
+                    .map(|i| (out[i] - exact[i]).powi(2))
+                    .sum::<f64>()
+                    .sqrt()
+            })
+            .collect();
+        let p = crate::util::order(&hs, &errs);
+        println!("{name}: dense output local order {p:.2} (errors {errs:?})");
+        assert!((p - (order + 1.0)).abs() < 0.3, "{name}: {p}");
+    }
+}
