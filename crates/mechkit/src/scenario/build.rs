@@ -138,7 +138,7 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
     let (stop, t_max, max_steps) = read_stop(&root, env, &names)?;
     let events = read_events(&root, &names)?;
     let observables = read_observe(&root, &names)?;
-    let (every, interval, plots) = read_output(&root, &names, dim, env)?;
+    let (every, output_times, plots) = read_output(&root, &names, dim, env)?;
     if t_max.is_none() && max_steps.is_none() {
         warnings.push(format!(
             "[stop] has no t_max: the run is bounded by {} steps; set t_max",
@@ -160,7 +160,7 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         events,
         observables,
         every,
-        interval,
+        output_times,
         plots,
         warnings,
     })

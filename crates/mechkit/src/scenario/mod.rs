@@ -57,7 +57,7 @@ pub use compare::{CompareSettings, Comparison, MethodResult};
 pub use error::{ErrorKind, Location, ScenarioError};
 pub use observe::Observable;
 pub use output::{csv_header, write_atomic};
-pub use plot::{PlotData, PlotSpec, Series, SeriesSpec};
+pub use plot::{OutputTimes, PlotData, PlotSpec, Series, SeriesSpec};
 pub use run::RunOutput;
 pub use summary::{
     BodyState, BodySummary, DivergenceSummary, EnergySummary, EventSummary, Files, StartEnd,
@@ -98,8 +98,8 @@ pub struct Scenario {
     pub observables: Vec<Observable>,
     /// Output decimation: keep every n-th step.
     pub every: u64,
-    /// Output times every `interval` seconds instead of the steps.
-    pub interval: Option<Real>,
+    /// Output times (instead of the steps) in the trajectory and plots.
+    pub output_times: Option<OutputTimes>,
     /// Requested plots.
     pub plots: Vec<PlotSpec>,
     /// Warnings about the setup.

@@ -10,7 +10,7 @@ use toml::de::DeValue;
 use super::doc::Table;
 use super::error::{ErrorKind, ScenarioError};
 use super::output::Keep;
-use super::values::{ValueEnv, scalar};
+use super::values::{ValueEnv, resolve, scalar};
 use mechkit_expr::units::Dimension;
 
 use crate::Real;
@@ -21,11 +21,49 @@ use crate::simulate::{Observer, ObserverError};
 /// doubles).
 const MAX_POINTS: usize = 20_000;
 
-const OUTPUT_KEYS: &[&str] = &["every", "interval", "plots"];
+const OUTPUT_KEYS: &[&str] = &["every", "interval", "times", "plots"];
 
-type Output = (u64, Option<Real>, Vec<PlotSpec>);
+/// Output times: every `interval`, or a list.
+#[derive(Debug, Clone, PartialEq)]
+pub enum OutputTimes {
+    /// Every so many seconds from the start.
+    Every(Real),
+    /// At these times (s).
+    At(Vec<Real>),
+}
 
-/// Reads `[output]`: the decimation `every`, the output `interval` and the plots.
+type Output = (u64, Option<OutputTimes>, Vec<PlotSpec>);
+
+/// `times = ["0.5 s", "1 s", …]`: increasing times.
+fn output_times(t: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<Option<Vec<Real>>, ScenarioError> {
+    let Some(v) = t.get("times") else {
+        return Ok(None);
+    };
+    let DeValue::Array(items) = v.get_ref() else {
+        return Err(t.wrong_type("times", v, "a list such as [\"0.5 s\", \"1 s\"]"));
+    };
+    let mut out: Vec<Real> = Vec::new();
+    for item in items {
+        let x = resolve(&t.src, "times", item, Dimension::TIME, env)?;
+        if let Some(prev) = out.last()
+            && !(x > *prev)
+        {
+            return Err(t
+                .src
+                .error(
+                    ErrorKind::Invalid,
+                    format!("the output times must increase: {x} s comes after {prev} s"),
+                    item.span(),
+                )
+                .with_hint("list the times in increasing order"));
+        }
+        out.push(x);
+    }
+    Ok(Some(out))
+}
+
+/// Reads `[output]`: the decimation `every`, the output times (`interval` or `times`) and the
+/// plots.
 pub(crate) fn read_output(
     root: &Table<'_, '_>,
     names: &NameContext<'_>,
@@ -45,16 +83,28 @@ pub(crate) fn read_output(
                     t.key_span("interval"),
                 ));
             }
-            if i.is_some() && t.get("every").is_some() {
+            let times = output_times(t, env)?;
+            if (i.is_some() || times.is_some()) && t.get("every").is_some() {
                 return Err(t
                     .src
                     .error(
                         ErrorKind::Invalid,
-                        "`every` thins the steps, `interval` replaces them by regular output times: give one or the other",
+                        "`every` thins the steps, `interval` and `times` replace them by output times: give one or the other",
                         t.key_span("every"),
                     ));
             }
-            i
+            match (i, times) {
+                (Some(_), Some(_)) => {
+                    return Err(t.src.error(
+                        ErrorKind::Invalid,
+                        "give `interval` (regular output times) or `times` (a list), not both",
+                        t.key_span("times"),
+                    ));
+                }
+                (Some(i), None) => Some(OutputTimes::Every(i)),
+                (None, Some(list)) => Some(OutputTimes::At(list)),
+                (None, None) => None,
+            }
         }
         None => None,
     };

@@ -4,12 +4,12 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use super::Scenario;
 use super::error::{ErrorKind, ScenarioError};
 use super::observe::ObservableSet;
 use super::output::{CsvWriter, Keep, write_atomic};
 use super::plot::{PlotData, PlotRecorder};
 use super::summary::Summary;
+use super::{OutputTimes, Scenario};
 use crate::simulate::{Observer, RunReport, SimulateError, Simulation};
 
 /// What a run produced.
@@ -54,8 +54,10 @@ impl Scenario {
         for e in &self.events {
             sim = sim.event(e.clone());
         }
-        if let Some(i) = self.interval {
-            sim = sim.output_interval(i);
+        match &self.output_times {
+            Some(OutputTimes::Every(i)) => sim = sim.output_interval(*i),
+            Some(OutputTimes::At(list)) => sim = sim.output_times(list.clone()),
+            None => {}
         }
         sim
     }
@@ -63,7 +65,7 @@ impl Scenario {
     fn keep(&self) -> Keep {
         Keep {
             every: self.every,
-            grid: self.interval.is_some(),
+            grid: self.output_times.is_some(),
         }
     }
 

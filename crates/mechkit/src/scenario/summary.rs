@@ -513,7 +513,16 @@ fn num(x: Real) -> String {
             s
         }
     } else {
-        format!("{x:.6e}")
+        let t = format!("{x:.6e}");
+        match t.split_once('e') {
+            Some((mantissa, exp)) if mantissa.contains('.') => {
+                format!(
+                    "{}e{exp}",
+                    mantissa.trim_end_matches('0').trim_end_matches('.')
+                )
+            }
+            _ => t,
+        }
     }
 }
 
@@ -537,7 +546,9 @@ mod tests {
         assert_eq!(num(4.834_559_8), "4.83456");
         assert_eq!(num(-0.499_999_999), "-0.5");
         assert_eq!(num(2.8e-4), "0.00028");
-        assert_eq!(num(1.5e-9), "1.500000e-9");
+        assert_eq!(num(1.5e-9), "1.5e-9");
+        assert_eq!(num(1e-10), "1e-10");
+        assert_eq!(num(-1.234567e-5), "-1.234567e-5");
         assert_eq!(num(1538.0), "1538");
         assert_eq!(num(-0.0), "0");
     }

@@ -72,17 +72,21 @@ fn emit(observers: &mut [&mut dyn Observer], s: &Sample<'_>) -> Result<(), Simul
     Ok(())
 }
 
-/// The output times still to come.
+/// The output times still to come: every `dt` from `t0`, or a list.
 struct Grid {
     t0: Real,
     dt: Real,
+    list: Option<Vec<Real>>,
     k: u64,
     t_max: Option<Real>,
 }
 
 impl Grid {
     fn next(&self) -> Option<Real> {
-        let t = self.t0 + self.k as Real * self.dt;
+        let t = match &self.list {
+            Some(list) => *list.get(usize::try_from(self.k).ok()?)?,
+            None => self.t0 + self.k as Real * self.dt,
+        };
         match self.t_max {
             Some(tm) if t > tm * (1.0 + 1e-12) + 1e-300 => None,
             _ => Some(t),
@@ -215,12 +219,26 @@ pub(super) fn drive(
     };
     hand_over(&mut engine, t0, &state.y, &eval_a.a, &mut dydt);
 
-    let mut grid = sim.interval.map(|dt| Grid {
-        t0,
-        dt,
-        k: 1,
-        t_max: sim.t_max,
-    });
+    let mut grid = match (&sim.times, sim.interval) {
+        (Some(list), _) => {
+            let list: Vec<Real> = list.iter().copied().filter(|t| *t > t0).collect();
+            Some(Grid {
+                t0,
+                dt: Real::NAN,
+                list: Some(list),
+                k: 0,
+                t_max: sim.t_max,
+            })
+        }
+        (None, Some(dt)) => Some(Grid {
+            t0,
+            dt,
+            list: None,
+            k: 1,
+            t_max: sim.t_max,
+        }),
+        (None, None) => None,
+    };
     let mut probe = Probe {
         state: State::new(t0, vec![0.0; n2]),
         eval: Evaluation::default(),
@@ -239,6 +257,9 @@ pub(super) fn drive(
     };
     let mut planned = planned_from(t0);
     let mut step_range: (Real, Real) = (Real::INFINITY, 0.0);
+    let mut work_a = Vec::with_capacity(nf);
+    let mut g_scan = Vec::with_capacity(m);
+    let mut sides_scan = Vec::with_capacity(m);
     let mut step_scale = Real::NAN;
 
     while stop_reason.is_none() {
@@ -267,7 +288,8 @@ pub(super) fn drive(
         ends.t0 = t_a;
         ends.y0.clone_from(&state.y);
         ends.a0.clone_from(&eval_a.a);
-        let work_a = ledger.work().to_vec();
+        work_a.clear();
+        work_a.extend_from_slice(ledger.work());
 
         // advance
         if let Engine::Fixed { stepper, dt } = &mut engine {
@@ -362,11 +384,12 @@ pub(super) fn drive(
 
         // events, in time order
         let mut t_scan = t_a;
-        let mut g_scan = g_a.clone();
-        let mut sides_scan = sides.clone();
+        g_scan.clone_from(&g_a);
+        sides_scan.clone_from(&sides);
         let mut cut = false;
         let mut event_at_end = false;
-        loop {
+        // (no events: nothing to scan)
+        while enabled.iter().any(|e| *e) {
             let mut step = Step {
                 sys,
                 ws: &ws,

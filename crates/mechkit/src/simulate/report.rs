@@ -186,6 +186,9 @@ pub enum SimulateError {
     /// An output interval that is not positive.
     #[error("the output interval must be positive and finite, not {0} s")]
     BadInterval(Real),
+    /// Output times that are not increasing (or not finite).
+    #[error("the output times must be finite and increasing: {0} s is followed by {1} s")]
+    BadOutputTimes(Real, Real),
     /// An observer failed (an output could not be written).
     #[error("output failed: {0}")]
     Observer(#[from] ObserverError),

@@ -45,6 +45,7 @@ pub struct Simulation<'a> {
     pub(crate) max_steps: Option<u64>,
     pub(crate) events: Vec<Event>,
     pub(crate) interval: Option<Real>,
+    pub(crate) times: Option<Vec<Real>>,
 }
 
 impl<'a> Simulation<'a> {
@@ -68,6 +69,7 @@ impl<'a> Simulation<'a> {
             max_steps: None,
             events: Vec::new(),
             interval: None,
+            times: None,
         }
     }
 
@@ -105,6 +107,15 @@ impl<'a> Simulation<'a> {
     #[must_use]
     pub fn output_interval(mut self, interval: Real) -> Self {
         self.interval = Some(interval);
+        self
+    }
+
+    /// Also passes observers the state at each of `times` (increasing; those at or before the
+    /// start, or after `t_max`, are skipped), interpolated inside the steps: `t_eval` of
+    /// `solve_ivp`. Replaces [`Simulation::output_interval`].
+    #[must_use]
+    pub fn output_times(mut self, times: Vec<Real>) -> Self {
+        self.times = Some(times);
         self
     }
 
@@ -151,6 +162,14 @@ impl<'a> Simulation<'a> {
             && !(i > 0.0 && i.is_finite())
         {
             return Err(SimulateError::BadInterval(i));
+        }
+        if let Some(times) = &self.times
+            && let Some(w) = times.windows(2).find(|w| !(w[1] > w[0]))
+        {
+            return Err(SimulateError::BadOutputTimes(w[0], w[1]));
+        }
+        if let Some(t) = self.times.iter().flatten().find(|t| !t.is_finite()) {
+            return Err(SimulateError::BadOutputTimes(*t, *t));
         }
         if initial.y.len() != expected {
             return Err(SimulateError::StateLength {

@@ -350,3 +350,46 @@ fn output_times_do_not_affect_the_steps() {
         assert!((t - 0.1 * (k + 1) as f64).abs() < 1e-15);
     }
 }
+
+/// `t_eval`: the state at listed times, exact for a parabola on any interpolant.
+#[test]
+fn output_at_listed_times() {
+    let sys = ball(2);
+    #[derive(Default)]
+    struct Grid(Vec<(f64, f64)>);
+    impl Observer for Grid {
+        fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+            if s.kind == SampleKind::Grid {
+                self.0.push((s.t, s.q[1]));
+            }
+            Ok(())
+        }
+    }
+    for stepping in [
+        dopri5(),
+        Stepping::Fixed {
+            method: Method::Rk4,
+            dt: 0.3,
+        },
+    ] {
+        let mut grid = Grid::default();
+        Simulation::with_stepping(&sys, stepping)
+            .t_max(1.0)
+            .output_times(vec![0.0, 0.25, 0.5, 0.9, 2.0])
+            .run(
+                State::from_qv(0.0, &[0.0, 0.0], &[3.0, 7.0]),
+                &mut [&mut grid],
+            )
+            .unwrap();
+        let t: Vec<f64> = grid.0.iter().map(|p| p.0).collect();
+        assert_eq!(t, vec![0.25, 0.5, 0.9]);
+        for (t, y) in grid.0 {
+            assert!((y - (7.0 * t - 0.5 * G * t * t)).abs() < 1e-12, "{t}: {y}");
+        }
+    }
+    let err = Simulation::new(&sys, Method::Rk4, 0.1)
+        .output_times(vec![0.5, 0.2])
+        .run(State::from_qv(0.0, &[0.0, 0.0], &[3.0, 7.0]), &mut [])
+        .unwrap_err();
+    assert!(err.to_string().contains("increasing"), "{err}");
+}
