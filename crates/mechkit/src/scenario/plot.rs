@@ -46,7 +46,7 @@ fn output_times(t: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<Option<Vec<Real>
     for item in items {
         let x = resolve(&t.src, "times", item, Dimension::TIME, env)?;
         if let Some(prev) = out.last()
-            && !(x > *prev)
+            && x.partial_cmp(prev) != Some(std::cmp::Ordering::Greater)
         {
             return Err(t
                 .src

@@ -548,7 +548,7 @@ mod tests {
         assert_eq!(num(2.8e-4), "0.00028");
         assert_eq!(num(1.5e-9), "1.5e-9");
         assert_eq!(num(1e-10), "1e-10");
-        assert_eq!(num(-1.234567e-5), "-1.234567e-5");
+        assert_eq!(num(-1.234_567e-5), "-1.234567e-5");
         assert_eq!(num(1538.0), "1538");
         assert_eq!(num(-0.0), "0");
     }

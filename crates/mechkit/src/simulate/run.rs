@@ -164,7 +164,9 @@ impl<'a> Simulation<'a> {
             return Err(SimulateError::BadInterval(i));
         }
         if let Some(times) = &self.times
-            && let Some(w) = times.windows(2).find(|w| !(w[1] > w[0]))
+            && let Some(w) = times
+                .windows(2)
+                .find(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater))
         {
             return Err(SimulateError::BadOutputTimes(w[0], w[1]));
         }
