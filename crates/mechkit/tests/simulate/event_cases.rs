@@ -351,20 +351,23 @@ fn output_times_do_not_affect_the_steps() {
     }
 }
 
+/// Keeps the output-time samples: time and height.
+#[derive(Default)]
+struct Grid(Vec<(f64, f64)>);
+
+impl Observer for Grid {
+    fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        if s.kind == SampleKind::Grid {
+            self.0.push((s.t, s.q[1]));
+        }
+        Ok(())
+    }
+}
+
 /// `t_eval`: the state at listed times, exact for a parabola on any interpolant.
 #[test]
 fn output_at_listed_times() {
     let sys = ball(2);
-    #[derive(Default)]
-    struct Grid(Vec<(f64, f64)>);
-    impl Observer for Grid {
-        fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-            if s.kind == SampleKind::Grid {
-                self.0.push((s.t, s.q[1]));
-            }
-            Ok(())
-        }
-    }
     for stepping in [
         dopri5(),
         Stepping::Fixed {
