@@ -196,6 +196,13 @@ fn bare_rhs_ns() -> (f64, f64) {
 }
 
 fn main() {
+    if std::env::var("PROFILE_MECHKIT").is_ok() {
+        // for `perf record`: only mechkit's dopri5, many times
+        for _ in 0..200 {
+            std::hint::black_box(mechkit_run(&Tableau::dopri5(), None));
+        }
+        return;
+    }
     let k = Kepler { e: ECC };
     let t_end = t_end();
     // The exact final state is the initial state (period 2π); Kepler's equation at the

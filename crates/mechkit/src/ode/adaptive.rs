@@ -13,7 +13,7 @@
 
 use thiserror::Error;
 
-use super::explicit_rk::Stages;
+use super::explicit_rk::{Sparse, Stages, sparse};
 use super::state::State;
 use super::system::OdeSystem;
 use super::tableau::{DenseKind, Tableau};
@@ -229,25 +229,33 @@ pub enum AdaptiveError {
 /// An adaptive Runge-Kutta integrator for a tableau with an error estimator.
 #[derive(Debug, Clone)]
 pub struct AdaptiveRk {
-    tableau: Tableau,
+    pub(super) tableau: Tableau,
     config: AdaptiveConfig,
-    stages: Stages,
+    pub(super) stages: Stages,
+    /// Non-zero error weights (and DOP853's third-order ones).
+    err_w: Sparse,
+    err_w3: Sparse,
+    /// Whether the error estimate uses `f(t + h, y_new)` (first-same-as-last pairs).
+    fsal_in_error: bool,
     y_new: Vec<Real>,
+    err_buf: Vec<Real>,
+    err_buf3: Vec<Real>,
     h: Option<Real>,
-    err_prev: Real,
-    err_acc: Real,
-    /// No step accepted since the start or a restart (the predictive limit needs one).
+    /// ln of the previous accepted error (PI term) and of the one before the step (predictive).
+    ln_err_prev: Real,
+    ln_err_acc: Real,
+    /// No step accepted since the start or a reset (the predictive limit needs one).
     fresh: bool,
     controller: Controller,
-    stats: AdaptiveStats,
-    /// The last accepted step: start time, size, start state (for dense output).
-    last_t0: Real,
-    last_h: Real,
-    last_y0: Vec<Real>,
-    last_y1: Vec<Real>,
-    dense_ready: bool,
-    dense: Vec<Vec<Real>>,
-    /// `k[0]` holds `f(t, y)` of the current state at this time.
+    pub(super) stats: AdaptiveStats,
+    /// The last accepted step: start time, size, start and end states (for dense output).
+    pub(super) last_t0: Real,
+    pub(super) last_h: Real,
+    pub(super) last_y0: Vec<Real>,
+    pub(super) last_y1: Vec<Real>,
+    pub(super) dense_ready: bool,
+    pub(super) dense: Vec<Real>,
+    /// Stage 0 holds `f(t, y)` of the current state at this time.
     k0_at: Option<Real>,
 }
 
@@ -261,14 +269,21 @@ impl AdaptiveRk {
         let controller = config
             .controller
             .unwrap_or_else(|| Controller::for_tableau(&tableau));
+        let s = tableau.stages();
+        let err_w = sparse(&tableau.e);
         Ok(Self {
+            stages: Stages::new(&tableau),
+            fsal_in_error: err_w.iter().any(|(l, _)| *l == s),
+            err_w,
+            err_w3: sparse(&tableau.e3),
             tableau,
             config,
-            stages: Stages::new(),
             y_new: Vec::new(),
+            err_buf: Vec::new(),
+            err_buf3: Vec::new(),
             h: None,
-            err_prev: 1e-4,
-            err_acc: 1e-2,
+            ln_err_prev: LN_1E_4,
+            ln_err_acc: LN_1E_2,
             fresh: true,
             controller,
             stats: AdaptiveStats::default(),
@@ -301,24 +316,35 @@ impl AdaptiveRk {
     /// from outside, e.g. by an event).
     pub fn reset(&mut self) {
         self.h = None;
-        self.err_prev = 1e-4;
-        self.err_acc = 1e-2;
+        self.ln_err_prev = LN_1E_4;
+        self.ln_err_acc = LN_1E_2;
         self.k0_at = None;
         self.fresh = true;
     }
 
     /// Hands the integrator `f(t, y)` of the state the next step starts from.
     pub fn provide_derivative(&mut self, t: Real, dydt: &[Real]) {
-        if self.stages.k.is_empty() {
-            self.stages.k.push(Vec::new());
-        }
-        self.stages.k[0].clear();
-        self.stages.k[0].extend_from_slice(dydt);
+        self.stages.resize(self.stage_count(), dydt.len());
+        self.stages.k_mut(0).copy_from_slice(dydt);
         self.k0_at = Some(t);
     }
 
+    fn stage_count(&self) -> usize {
+        let extra = match self.tableau.dense {
+            DenseKind::Dop853 => 3,
+            _ => 0,
+        };
+        self.tableau.stages() + 1 + extra
+    }
+
+    #[inline]
     fn scale(&self, i: usize, a: Real, b: Real) -> Real {
-        self.config.atol.at(i) + self.config.rtol.at(i) * a.abs().max(b.abs())
+        match (&self.config.atol, &self.config.rtol) {
+            (Tolerance::Scalar(atol), Tolerance::Scalar(rtol)) => {
+                atol + rtol * a.abs().max(b.abs())
+            }
+            (atol, rtol) => atol.at(i) + rtol.at(i) * a.abs().max(b.abs()),
+        }
     }
 
     fn controlled(&self, n: usize) -> usize {
@@ -332,9 +358,9 @@ impl AdaptiveRk {
         sys: &S,
         t: Real,
         y: &[Real],
-        f0: &[Real],
         t_bound: Real,
     ) -> Real {
+        let f0 = self.stages.k(0).to_vec();
         let n = self.controlled(y.len());
         let rms = |v: &dyn Fn(usize) -> Real| {
             ((0..n).map(|i| v(i) * v(i)).sum::<Real>() / n as Real).sqrt()
@@ -348,10 +374,7 @@ impl AdaptiveRk {
             0.01 * d0 / d1
         };
         h0 = h0.min(self.config.h_max).min(span);
-        let mut y1 = vec![0.0; y.len()];
-        for i in 0..y.len() {
-            y1[i] = y[i] + h0 * f0[i];
-        }
+        let y1: Vec<Real> = y.iter().zip(&f0).map(|(y, f)| y + h0 * f).collect();
         let mut f1 = vec![0.0; y.len()];
         sys.rhs_into(t + h0, &y1, &mut f1);
         self.stats.evaluations += 1;
@@ -374,29 +397,31 @@ impl AdaptiveRk {
         t_bound: Real,
     ) -> Result<Real, AdaptiveError> {
         let n = state.y.len();
-        let extra = match self.tableau.dense {
-            DenseKind::Dop853 => 3,
-            _ => 0,
-        };
-        self.stages.resize(self.tableau.stages() + 1 + extra, n);
-        self.y_new.resize(n, 0.0);
+        self.stages.resize(self.stage_count(), n);
+        if self.y_new.len() != n {
+            self.y_new.resize(n, 0.0);
+            self.err_buf.resize(n, 0.0);
+            self.err_buf3.resize(n, 0.0);
+        }
         let t = state.t;
+        let s = self.tableau.stages();
         if self.stats.accepted > 0
             && self.k0_at == Some(self.last_t0)
             && t == self.last_t0 + self.last_h
         {
-            self.roll_fsal();
+            // the derivative at the end of the last step starts this one
+            self.stages.copy_stage(s, 0);
+            self.k0_at = Some(t);
         }
         if self.k0_at != Some(t) {
-            sys.rhs_into(t, &state.y, &mut self.stages.k[0]);
+            self.stages.eval_into(sys, t, &state.y, 0);
             self.stats.evaluations += 1;
             self.k0_at = Some(t);
         }
         if self.h.is_none() {
-            let f0 = self.stages.k[0].clone();
             let h = match self.config.h0 {
                 Some(h0) => h0.min(self.config.h_max),
-                None => self.initial_step(sys, t, &state.y, &f0, t_bound),
+                None => self.initial_step(sys, t, &state.y, t_bound),
             };
             self.h = Some(h);
         }
@@ -414,8 +439,7 @@ impl AdaptiveRk {
             max_factor,
             predictive,
         } = self.controller;
-        let expo = 1.0 / (q + 1.0) - 0.75 * beta;
-        let s = self.tableau.stages();
+        let alpha = 1.0 / (q + 1.0) - 0.75 * beta;
         loop {
             let remaining = t_bound - t;
             let last = h >= remaining;
@@ -429,11 +453,7 @@ impl AdaptiveRk {
                     h,
                     h_min,
                     component,
-                    non_finite: self
-                        .stages
-                        .k
-                        .iter()
-                        .any(|k| k.iter().any(|v| !v.is_finite())),
+                    non_finite: (0..=s).any(|l| self.stages.k(l).iter().any(|v| !v.is_finite())),
                 });
             }
             let evals =
@@ -441,48 +461,58 @@ impl AdaptiveRk {
                     .compute(&self.tableau, sys, t, &state.y, h, &mut self.y_new, true);
             self.stats.evaluations += evals as u64;
             for (yn, y) in self.y_new.iter_mut().zip(&state.y) {
-                *yn += y;
+                *yn = y + h * *yn;
             }
-            // f at the new point: the error of first-same-as-last pairs needs it, and it
-            // starts the next step
             let t_new = if last { t_bound } else { t + h };
-            {
-                let (_, tail) = self.stages.k.split_at_mut(s);
-                sys.rhs_into(t_new, &self.y_new, &mut tail[0]);
+            // f at the new point starts the next step; first-same-as-last pairs need it for
+            // the error estimate too, the others only once the step is accepted
+            if self.fsal_in_error {
+                self.stages.eval_into(sys, t_new, &self.y_new, s);
+                self.stats.evaluations += 1;
             }
-            self.stats.evaluations += 1;
             let err = self.error_norm(h, &state.y);
             if err <= 1.0 {
+                if !self.fsal_in_error {
+                    self.stages.eval_into(sys, t_new, &self.y_new, s);
+                    self.stats.evaluations += 1;
+                }
                 self.stats.accepted += 1;
-                let fac = err.max(1e-10).powf(-expo) * self.err_prev.powf(beta);
-                let mut fac = (safety * fac).clamp(min_factor, max_factor);
+                // h_new = h · safety · err^(-α) · err_prev^β, in logarithms (one ln, one exp)
+                let ln_err = err.max(1e-10).ln();
+                let mut fac = (safety * (-alpha * ln_err + beta * self.ln_err_prev).exp())
+                    .clamp(min_factor, max_factor);
                 if predictive && !self.fresh && self.last_h > 0.0 {
-                    let e = err.max(1e-10);
-                    let pred =
-                        safety * (h / self.last_h) * (self.err_acc / (e * e)).powf(1.0 / (q + 1.0));
+                    // Gustafsson: safety · (h/h_prev) · (err_prev/err²)^(1/(q+1))
+                    let pred = safety
+                        * (h / self.last_h)
+                        * ((self.ln_err_acc - 2.0 * ln_err) / (q + 1.0)).exp();
                     fac = fac.min(pred.max(min_factor));
                 }
-                self.err_acc = err.max(1e-2);
+                self.ln_err_acc = ln_err.max(LN_1E_2);
                 self.fresh = false;
                 let mut h_next = h * fac;
                 if rejected_before {
                     h_next = h_next.min(h);
                 }
-                self.err_prev = err.max(1e-4);
+                self.ln_err_prev = ln_err.max(LN_1E_4);
                 self.h = Some(h_next.min(self.config.h_max));
                 self.last_t0 = t;
                 self.last_h = t_new - t;
                 self.last_y0.clone_from(&state.y);
-                self.last_y1.clone_from(&self.y_new);
-                self.dense_ready = false;
                 state.y.copy_from_slice(&self.y_new);
+                // y_new is recomputed by the next step: its buffer can hold the step's end
+                std::mem::swap(&mut self.last_y1, &mut self.y_new);
+                if self.y_new.len() != n {
+                    self.y_new.resize(n, 0.0);
+                }
+                self.dense_ready = false;
                 state.t = t_new;
                 return Ok(self.last_h);
             }
             self.stats.rejected += 1;
             rejected_before = true;
             let fac = if err.is_finite() {
-                (safety * err.powf(-expo)).clamp(min_factor, 1.0)
+                (safety * err.powf(-alpha)).clamp(min_factor, 1.0)
             } else {
                 min_factor
             };
@@ -490,26 +520,22 @@ impl AdaptiveRk {
         }
     }
 
-    /// After an accepted step, `k[s]` (the derivative at the new point) becomes `k[0]` of the
-    /// next; done lazily so that dense output can still use the last step's stages.
-    fn roll_fsal(&mut self) {
-        let s = self.tableau.stages();
-        let (head, tail) = self.stages.k.split_at_mut(s);
-        head[0].copy_from_slice(&tail[0]);
-        self.k0_at = Some(self.last_t0 + self.last_h);
+    /// The estimated error of component `i`, `Σ e_l k_l[i]` over the sparse weights `w`.
+    #[inline]
+    fn weighted(&self, w: &[(usize, Real)], i: usize) -> Real {
+        w.iter().map(|&(l, e)| e * self.stages.at(l, i)).sum()
     }
 
-    fn error_norm(&self, h: Real, y: &[Real]) -> Real {
+    fn error_norm(&mut self, h: Real, y: &[Real]) -> Real {
         let n = self.controlled(y.len());
-        let k = &self.stages.k;
-        let weighted =
-            |w: &[Real], i: usize| -> Real { w.iter().enumerate().map(|(l, e)| e * k[l][i]).sum() };
-        if matches!(self.tableau.dense, DenseKind::Dop853) {
+        self.stages.combine_into(&self.err_w, &mut self.err_buf);
+        let v = if matches!(self.tableau.dense, DenseKind::Dop853) {
+            self.stages.combine_into(&self.err_w3, &mut self.err_buf3);
             let (mut e5, mut e3) = (0.0, 0.0);
             for i in 0..n {
                 let sc = self.scale(i, y[i], self.y_new[i]);
-                let a = weighted(&self.tableau.e, i) / sc;
-                let b = weighted(&self.tableau.e3, i) / sc;
+                let a = self.err_buf[i] / sc;
+                let b = self.err_buf3[i] / sc;
                 e5 += a * a;
                 e3 += b * b;
             }
@@ -517,140 +543,36 @@ impl AdaptiveRk {
             if den == 0.0 {
                 return 0.0;
             }
-            let v = h.abs() * e5 / (den * n as Real).sqrt();
-            if v.is_nan() { Real::INFINITY } else { v }
+            h.abs() * e5 / (den * n as Real).sqrt()
         } else {
             let mut sum = 0.0;
             for i in 0..n {
-                let e = h * weighted(&self.tableau.e, i) / self.scale(i, y[i], self.y_new[i]);
+                let e = self.err_buf[i] / self.scale(i, y[i], self.y_new[i]);
                 sum += e * e;
             }
-            let v = (sum / n as Real).sqrt();
-            if v.is_nan() { Real::INFINITY } else { v }
-        }
+            h.abs() * (sum / n as Real).sqrt()
+        };
+        if v.is_nan() { Real::INFINITY } else { v }
     }
 
     fn dominant_component(&self, y: &[Real]) -> usize {
         let n = self.controlled(y.len());
-        let k = &self.stages.k;
-        (0..n)
-            .max_by(|&a, &b| {
-                let e = |i: usize| {
-                    let v: Real = self
-                        .tableau
-                        .e
-                        .iter()
-                        .enumerate()
-                        .map(|(l, w)| w * k[l][i])
-                        .sum::<Real>()
-                        / self.scale(i, y[i], self.y_new[i]);
-                    if v.is_nan() { Real::INFINITY } else { v.abs() }
-                };
-                e(a).total_cmp(&e(b))
-            })
-            .unwrap_or(0)
+        let e = |i: usize| {
+            let v = self.weighted(&self.err_w, i) / self.scale(i, y[i], self.y_new[i]);
+            if v.is_nan() { Real::INFINITY } else { v.abs() }
+        };
+        (0..n).max_by(|&a, &b| e(a).total_cmp(&e(b))).unwrap_or(0)
     }
 
     /// The start and end time of the last accepted step.
     pub fn last_step(&self) -> (Real, Real) {
         (self.last_t0, self.last_t0 + self.last_h)
     }
-
-    /// The state at time `t` inside the last accepted step, by the method's dense output.
-    pub fn dense_into<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: Real, out: &mut [Real]) {
-        let h = self.last_h;
-        let theta = if h == 0.0 {
-            1.0
-        } else {
-            (t - self.last_t0) / h
-        };
-        let n = out.len();
-        let s = self.tableau.stages();
-        match &self.tableau.dense {
-            DenseKind::Polynomial(p) => {
-                // y0 + h Σ_i k_i Σ_j p_ij θ^(j+1)
-                let powers: Vec<Real> = (1..=p[0].len()).map(|j| theta.powi(j as i32)).collect();
-                let w: Vec<Real> = p
-                    .iter()
-                    .map(|row| row.iter().zip(&powers).map(|(c, x)| c * x).sum())
-                    .collect();
-                for i in 0..n {
-                    let mut acc = 0.0;
-                    for (l, wl) in w.iter().enumerate() {
-                        acc += wl * self.stages.k[l][i];
-                    }
-                    out[i] = self.last_y0[i] + h * acc;
-                }
-            }
-            DenseKind::Hermite => {
-                let (k0, k1) = (&self.stages.k[0], &self.stages.k[s]);
-                for i in 0..n {
-                    out[i] = super::hermite::hermite(
-                        self.last_y0[i],
-                        k0[i],
-                        self.last_y1[i],
-                        k1[i],
-                        h,
-                        theta,
-                    );
-                }
-            }
-            DenseKind::Dop853 => {
-                if !self.dense_ready {
-                    self.prepare_dop853(sys);
-                }
-                // y0 + θ(F0 + (1-θ)(F1 + θ(F2 + (1-θ)(F3 + θ(F4 + (1-θ)(F5 + θ F6))))))
-                let f = &self.dense;
-                for i in 0..n {
-                    let mut acc = 0.0;
-                    for (m, fm) in f.iter().enumerate().rev() {
-                        acc += fm[i];
-                        acc *= if m % 2 == 0 { theta } else { 1.0 - theta };
-                    }
-                    out[i] = self.last_y0[i] + acc;
-                }
-            }
-        }
-    }
-
-    /// DOP853's three extra stages and interpolation coefficients for the last step.
-    fn prepare_dop853<S: OdeSystem + ?Sized>(&mut self, sys: &S) {
-        let d = &super::dop853::DOP853;
-        let n = self.last_y0.len();
-        let h = self.last_h;
-        let t0 = self.last_t0;
-        for s in 13..16 {
-            let mut y = self.last_y0.clone();
-            for (l, a) in d.a[s][..s].iter().enumerate() {
-                if *a != 0.0 {
-                    for i in 0..n {
-                        y[i] += h * a * self.stages.k[l][i];
-                    }
-                }
-            }
-            let (_, tail) = self.stages.k.split_at_mut(s);
-            sys.rhs_into(t0 + d.c[s] * h, &y, &mut tail[0]);
-            self.stats.evaluations += 1;
-        }
-        let k = &self.stages.k;
-        let mut f = vec![vec![0.0; n]; 7];
-        for i in 0..n {
-            let dy = self.last_y1[i] - self.last_y0[i];
-            f[0][i] = dy;
-            f[1][i] = h * k[0][i] - dy;
-            f[2][i] = 2.0 * dy - h * (k[12][i] + k[0][i]);
-            for (m, row) in d.d.iter().enumerate() {
-                f[3 + m][i] = h * row
-                    .iter()
-                    .enumerate()
-                    .map(|(l, c)| c * k[l][i])
-                    .sum::<Real>();
-            }
-        }
-        self.dense = f;
-        self.dense_ready = true;
-    }
 }
+
+/// ln 1e-2 and ln 1e-4: the floors of the remembered errors.
+const LN_1E_2: Real = -4.605_170_185_988_091;
+const LN_1E_4: Real = -9.210_340_371_976_182;
 
 fn next_up(x: Real) -> Real {
     if x.is_nan() || x == Real::INFINITY {
