@@ -108,7 +108,19 @@ fn main() {
         "{:<40} {ns:>10.1}",
         "feather, hand-written Euler-Cromer loop"
     );
-    for method in Method::ALL {
+    if let Ok(only) = std::env::var("ONLY") {
+        // for profiling one case: ONLY=euler perf record …
+        let method = Method::from_name(&only).expect("a method name");
+        for _ in 0..5 {
+            feather_builtin(method);
+        }
+        return;
+    }
+    // symplectic methods refuse the feather's drag
+    for method in Method::ALL
+        .into_iter()
+        .filter(|m| !m.needs_position_forces())
+    {
         let ns = median_ns_per_step(|| feather_builtin(method));
         println!(
             "{:<40} {ns:>10.1}",

@@ -257,6 +257,8 @@ pub(super) fn drive(
     };
     let mut planned = planned_from(t0);
     let mut step_range: (Real, Real) = (Real::INFINITY, 0.0);
+    // the step's interpolant is needed for events and output times only
+    let interpolates = m > 0 || sim.interval.is_some() || sim.times.is_some();
     let mut work_a = Vec::with_capacity(nf);
     let mut g_scan = Vec::with_capacity(m);
     let mut sides_scan = Vec::with_capacity(m);
@@ -287,9 +289,11 @@ pub(super) fn drive(
         let t_a = state.t;
         ends.t0 = t_a;
         ends.y0.clone_from(&state.y);
-        ends.a0.clone_from(&eval_a.a);
-        work_a.clear();
-        work_a.extend_from_slice(ledger.work());
+        if interpolates {
+            ends.a0.clone_from(&eval_a.a);
+            work_a.clear();
+            work_a.extend_from_slice(ledger.work());
+        }
 
         // advance
         if let Engine::Fixed { stepper, dt } = &mut engine {
@@ -374,13 +378,19 @@ pub(super) fn drive(
             let (q, v) = state.qv();
             sys.evaluate(t_b, q, v, &mut eval_b, &mut scratch);
             evaluations += 1;
-            ledger.preview_into(t_b, &eval_b.power, &mut work_b);
+            if m > 0 {
+                ledger.preview_into(t_b, &eval_b.power, &mut work_b);
+            }
         }
         ends.t1 = t_b;
-        ends.y1.clone_from(&state.y);
-        ends.a1.clone_from(&eval_b.a);
-        let at_b = sample_of(steps, &state, &eval_b, &work_b, SampleKind::Step);
-        event_values(events, &at_b, sys, &mut g_b);
+        if interpolates {
+            ends.y1.clone_from(&state.y);
+            ends.a1.clone_from(&eval_b.a);
+        }
+        if m > 0 {
+            let at_b = sample_of(steps, &state, &eval_b, &work_b, SampleKind::Step);
+            event_values(events, &at_b, sys, &mut g_b);
+        }
 
         // events, in time order
         let mut t_scan = t_a;
