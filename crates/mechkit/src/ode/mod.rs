@@ -16,6 +16,7 @@
 //! | [`Rk4`] | classical fourth-order Runge-Kutta | 4 |
 
 mod adaptive;
+mod control;
 mod dense;
 mod dop853;
 mod euler;
@@ -32,8 +33,9 @@ mod system;
 mod tableau;
 mod verlet;
 
-pub use adaptive::{
-    AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, ConfigError, Controller, Tolerance,
+pub use adaptive::AdaptiveRk;
+pub use control::{
+    AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller, Tolerance,
 };
 pub use euler::Euler;
 pub use euler_cromer::EulerCromer;

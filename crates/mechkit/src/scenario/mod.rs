@@ -49,6 +49,7 @@ mod plot;
 mod run;
 mod stop;
 mod summary;
+mod text;
 mod values;
 
 use std::path::Path;

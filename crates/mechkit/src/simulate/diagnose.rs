@@ -128,3 +128,49 @@ pub(crate) fn diagnose_evaluation(
         message: format!("at t = {} s the kinetic energy is {value}", state.t),
     })
 }
+
+/// Why an adaptive run could not go on: a force that is not finite at the states the steps
+/// reach (named, from the first such state `bad`), or a step size that collapsed.
+pub(crate) fn step_failure(
+    sys: &ParticleSystem,
+    bad: Option<&State>,
+    (t, h, h_min, component, non_finite): (Real, Real, Real, usize, bool),
+    step: u64,
+    scratch: &mut Vec<Real>,
+) -> (super::report::StopReason, Divergence) {
+    use super::report::StopReason;
+    let named = bad.and_then(|b| {
+        let mut e = Evaluation::default();
+        let (q, v) = b.qv();
+        sys.evaluate(b.t, q, v, &mut e, scratch);
+        diagnose_evaluation(sys, b, &e, step)
+    });
+    match named {
+        Some(d) if non_finite => (
+            StopReason::Diverged,
+            Divergence {
+                t,
+                message: format!(
+                    "the run cannot continue past t = {t} s: every step tried from there (down to {h:e} s) reaches states where a force is not finite; the first: {}",
+                    d.message
+                ),
+                ..d
+            },
+        ),
+        _ => {
+            let quantity = coordinate_name(sys, component.min(2 * sys.dof() - 1));
+            (
+                StopReason::StepTooSmall,
+                Divergence {
+                    t,
+                    step,
+                    quantity: quantity.clone(),
+                    value: h,
+                    message: format!(
+                        "the step size fell to {h:e} s at t = {t} s (minimum {h_min:e} s) without meeting the tolerance; the error is dominated by {quantity}: the solution is not smooth there (a discontinuous force, a collision, a singularity), or the tolerance is below what double precision allows; loosen rtol/atol, or model the discontinuity as an event"
+                    ),
+                },
+            )
+        }
+    }
+}

@@ -2,105 +2,19 @@
 //! sample the requested output times, hand every sample to the observers, and stop with a
 //! diagnosis when the numbers stop being numbers.
 
-use super::diagnose::{coordinate_name, diagnose_evaluation, diagnose_state};
-use super::event::{Event, EventAction, Side};
+use super::book::EventBook;
+use super::diagnose::{diagnose_evaluation, diagnose_state, step_failure};
+use super::event::{Event, Side};
 use super::observe::Observer;
-use super::report::{Divergence, EventRecord, RunReport, SimulateError, Snapshot, StopReason};
+use super::probe::{Grid, Probe, Step, emit, event_values};
+use super::report::{Divergence, RunReport, SimulateError, StopReason};
 use super::run::{DEFAULT_MAX_STEPS, Simulation, sample_of};
 use super::scan::{ScanResult, scan};
-use super::stepping::{Engine, StepEnds, Stepping, WorkSystem};
+use super::stepping::{Engine, StepEnds, Stepping, WorkSystem, fixed_next, step_budget};
 use crate::Real;
 use crate::energy::EnergyLedger;
 use crate::ode::{AdaptiveError, State, steps_to_cover};
-use crate::particles::{Evaluation, ParticleSystem, Sample, SampleKind};
-
-/// An event firing this many times in a row, each within a relative 1e-9 of the time since the
-/// last, is Zeno behaviour: the run stops with a diagnosis.
-pub const ZENO_LIMIT: u32 = 50;
-
-/// At most this many event occurrences are kept in the report (all are counted).
-const MAX_RECORDS: usize = 100_000;
-
-/// A state between steps with what follows from it.
-struct Probe {
-    state: State,
-    eval: Evaluation,
-    work: Vec<Real>,
-    scratch: Vec<Real>,
-}
-
-/// Everything the loop needs to interpolate inside the current step.
-struct Step<'r, 'a> {
-    sys: &'a ParticleSystem,
-    ws: &'r WorkSystem<'a>,
-    engine: &'r mut Engine,
-    ends: &'r StepEnds,
-    ledger: &'r EnergyLedger,
-}
-
-impl Step<'_, '_> {
-    /// Fills `p` with the state at `t` (and the forces there when `forces`).
-    fn probe(&mut self, p: &mut Probe, t: Real, forces: bool, evaluations: &mut u64) {
-        p.state.t = t;
-        let have_work = self
-            .engine
-            .interpolate(self.ws, self.ends, t, &mut p.state.y, &mut p.work);
-        if forces {
-            let (q, v) = p.state.qv();
-            self.sys.evaluate(t, q, v, &mut p.eval, &mut p.scratch);
-            *evaluations += 1;
-            if !have_work {
-                self.ledger.preview_into(t, &p.eval.power, &mut p.work);
-            }
-        } else if !have_work {
-            p.work.clear();
-            p.work.extend_from_slice(self.ledger.work());
-        }
-    }
-}
-
-fn event_values(events: &[Event], s: &Sample<'_>, sys: &ParticleSystem, out: &mut [Real]) {
-    for (o, e) in out.iter_mut().zip(events) {
-        *o = e.condition().value(s, sys);
-    }
-}
-
-fn emit(observers: &mut [&mut dyn Observer], s: &Sample<'_>) -> Result<(), SimulateError> {
-    for o in observers.iter_mut() {
-        o.observe(s)?;
-    }
-    Ok(())
-}
-
-/// The output times still to come: every `dt` from `t0`, or a list.
-struct Grid {
-    t0: Real,
-    dt: Real,
-    list: Option<Vec<Real>>,
-    k: u64,
-    t_max: Option<Real>,
-}
-
-impl Grid {
-    fn next(&self) -> Option<Real> {
-        let t = match &self.list {
-            Some(list) => *list.get(usize::try_from(self.k).ok()?)?,
-            None => self.t0 + self.k as Real * self.dt,
-        };
-        match self.t_max {
-            Some(tm) if t > tm * (1.0 + 1e-12) + 1e-300 => None,
-            _ => Some(t),
-        }
-    }
-}
-
-/// The end of fixed step number `k + 1` of a grid started at `origin` (landing on `t_max`).
-fn fixed_next(origin: Real, k: u64, dt: Real, planned: Option<u64>, t_max: Option<Real>) -> Real {
-    match (planned, t_max) {
-        (Some(n), Some(tm)) if k + 1 >= n => tm,
-        _ => origin + (k + 1) as Real * dt,
-    }
-}
+use crate::particles::{Evaluation, SampleKind};
 
 #[allow(clippy::too_many_lines)]
 pub(super) fn drive(
@@ -128,20 +42,7 @@ pub(super) fn drive(
     let ws = WorkSystem::new(sys);
     let mut engine = Engine::new(&stepping)?;
     let mut warnings = Vec::new();
-    let limit = match (sim.max_steps, sim.t_max) {
-        (Some(n), _) => n,
-        (None, Some(_)) => u64::MAX,
-        (None, None) => {
-            warnings.push(format!(
-                "no t_max was given: the run is bounded by {DEFAULT_MAX_STEPS} steps{}; set t_max to choose the end",
-                stepping
-                    .dt()
-                    .map(|dt| format!(" (t = {} s with dt = {dt} s)", t0 + DEFAULT_MAX_STEPS as Real * dt))
-                    .unwrap_or_default()
-            ));
-            DEFAULT_MAX_STEPS
-        }
-    };
+    let limit = step_budget(sim, &stepping, t0, &mut warnings);
 
     let mut state = initial.clone();
     let mut scratch = Vec::new();
@@ -156,8 +57,6 @@ pub(super) fn drive(
     let mut steps: u64 = 0;
     let mut stop_reason = None;
     let mut failure: Option<Divergence> = None;
-    let mut records: Vec<EventRecord> = Vec::new();
-    let mut terminal: Option<EventRecord> = None;
 
     let s0 = sample_of(0, &state, &eval_a, ledger.work(), SampleKind::Step);
     emit(observers, &s0)?;
@@ -168,15 +67,11 @@ pub(super) fn drive(
         .zip(&g_a)
         .map(|(e, g)| e.initial_side(*g))
         .collect();
-    let mut enabled = vec![true; m];
-    let mut counts = vec![0u32; m];
-    let mut zeno: Vec<(u32, Real)> = vec![(0, Real::NAN); m];
-    let interior = if events.iter().any(Event::needs_forces) {
-        1
-    } else {
-        7
-    };
+    let mut book = EventBook::new(m);
+    // interior sample points per step for the event functions (each costs an evaluation of
+    // the forces when a function needs them)
     let forces_for_events = events.iter().any(Event::needs_forces);
+    let interior = if forces_for_events { 1 } else { 7 };
 
     if let Some(d) = diagnose_evaluation(sys, &state, &eval_a, 0) {
         failure = Some(d);
@@ -190,20 +85,7 @@ pub(super) fn drive(
             "the stop condition `{}` already holds at the start (t = {t0} s); nothing was simulated",
             e.name()
         ));
-        let snap = Snapshot::of(t0, &state.y);
-        let rec = EventRecord {
-            name: e.name().to_string(),
-            occurrence: 1,
-            t: t0,
-            state: snap.clone(),
-            last_step: snap.clone(),
-            crossing_step: snap,
-            after: None,
-            terminal: true,
-        };
-        counts[i] = 1;
-        records.push(rec.clone());
-        terminal = Some(rec);
+        book.at_start(e, i, t0, &state.y);
         stop_reason = Some(StopReason::Event);
     }
 
@@ -219,32 +101,8 @@ pub(super) fn drive(
     };
     hand_over(&mut engine, t0, &state.y, &eval_a.a, &mut dydt);
 
-    let mut grid = match (&sim.times, sim.interval) {
-        (Some(list), _) => {
-            let list: Vec<Real> = list.iter().copied().filter(|t| *t > t0).collect();
-            Some(Grid {
-                t0,
-                dt: Real::NAN,
-                list: Some(list),
-                k: 0,
-                t_max: sim.t_max,
-            })
-        }
-        (None, Some(dt)) => Some(Grid {
-            t0,
-            dt,
-            list: None,
-            k: 1,
-            t_max: sim.t_max,
-        }),
-        (None, None) => None,
-    };
-    let mut probe = Probe {
-        state: State::new(t0, vec![0.0; n2]),
-        eval: Evaluation::default(),
-        work: vec![0.0; nf],
-        scratch: Vec::new(),
-    };
+    let mut grid = Grid::of(sim, t0);
+    let mut probe = Probe::new(t0, n2, nf);
     let mut ends = StepEnds::default();
     let mut eval_b = Evaluation::default();
     let mut work_b = vec![0.0; nf];
@@ -319,40 +177,13 @@ pub(super) fn drive(
                     state.t = t_a;
                     state.y.copy_from_slice(&ends.y0);
                     let bad = ws.bad.borrow_mut().take();
-                    let named = bad.as_ref().and_then(|b| {
-                        let mut e = Evaluation::default();
-                        let (q, v) = b.qv();
-                        sys.evaluate(b.t, q, v, &mut e, &mut scratch);
-                        diagnose_evaluation(sys, b, &e, steps)
-                    });
-                    let (reason, d) = match named {
-                        Some(d) if non_finite => (
-                            StopReason::Diverged,
-                            Divergence {
-                                t,
-                                message: format!(
-                                    "the run cannot continue past t = {t} s: every step tried from there (down to {h:e} s) reaches states where a force is not finite; the first: {}",
-                                    d.message
-                                ),
-                                ..d
-                            },
-                        ),
-                        _ => {
-                            let quantity = coordinate_name(sys, component.min(n2 - 1));
-                            (
-                                StopReason::StepTooSmall,
-                                Divergence {
-                                    t,
-                                    step: steps,
-                                    quantity: quantity.clone(),
-                                    value: h,
-                                    message: format!(
-                                        "the step size fell to {h:e} s at t = {t} s (minimum {h_min:e} s) without meeting the tolerance; the error is dominated by {quantity}: the solution is not smooth there (a discontinuous force, a collision, a singularity), or the tolerance is below what double precision allows; loosen rtol/atol, or model the discontinuity as an event"
-                                    ),
-                                },
-                            )
-                        }
-                    };
+                    let (reason, d) = step_failure(
+                        sys,
+                        bad.as_ref(),
+                        (t, h, h_min, component, non_finite),
+                        steps,
+                        &mut scratch,
+                    );
                     failure = Some(d);
                     stop_reason = Some(reason);
                     break;
@@ -399,7 +230,7 @@ pub(super) fn drive(
         let mut cut = false;
         let mut event_at_end = false;
         // (no events: nothing to scan)
-        while enabled.iter().any(|e| *e) {
+        while book.enabled.iter().any(|e| *e) {
             let mut step = Step {
                 sys,
                 ws: &ws,
@@ -421,7 +252,7 @@ pub(super) fn drive(
                 };
                 scan(
                     events,
-                    &enabled,
+                    &book.enabled,
                     &sides_scan,
                     (t_scan, &g_scan),
                     (t_b, &g_b),
@@ -439,20 +270,15 @@ pub(super) fn drive(
             let te = firing.t;
             // output times before the event
             if let Some(gr) = &mut grid {
-                while let Some(tg) = gr.next().filter(|tg| *tg < te) {
-                    step.probe(&mut probe, tg, true, &mut evaluations);
-                    emit(
-                        observers,
-                        &sample_of(
-                            steps,
-                            &probe.state,
-                            &probe.eval,
-                            &probe.work,
-                            SampleKind::Grid,
-                        ),
-                    )?;
-                    gr.k += 1;
-                }
+                gr.emit_until(
+                    &mut step,
+                    &mut probe,
+                    te,
+                    false,
+                    steps,
+                    &mut evaluations,
+                    observers,
+                )?;
             }
             // the state at the event
             if te == t_b {
@@ -468,66 +294,25 @@ pub(super) fn drive(
             } else {
                 step.probe(&mut probe, te, true, &mut evaluations);
             }
-            let mut stop_here = false;
-            let mut setters = Vec::new();
-            for &i in &firing.events {
-                let e = &events[i];
-                counts[i] += 1;
-                // Zeno: firing again and again within a relative 1e-9 of the time
-                let (run, last) = zeno[i];
-                let close = te - last <= 1e-9 * te.abs().max(step_scale.abs());
-                zeno[i] = (if close { run + 1 } else { 0 }, te);
-                if zeno[i].0 >= ZENO_LIMIT {
-                    failure = Some(Divergence {
-                        t: te,
-                        step: steps,
-                        quantity: e.name().to_string(),
-                        value: Real::from(counts[i]),
-                        message: format!(
-                            "the event `{}` fired {} times in a row, each within {:.1e} s of the last, up to t = {te} s (occurrence {}): its occurrences accumulate at one instant (Zeno behaviour, like a ball bouncing infinitely often before coming to rest); end the run before that instant (t_max), or add an event that stops or changes the model there (e.g. when the rebound speed falls below a threshold)",
-                            e.name(),
-                            ZENO_LIMIT,
-                            1e-9 * te.abs().max(step_scale.abs()),
-                            counts[i]
-                        ),
-                    });
-                    stop_reason = Some(StopReason::Zeno);
-                    stop_here = true;
-                }
-                if e.max_count.is_some_and(|mc| counts[i] >= mc) {
-                    enabled[i] = false;
-                }
-                let ends_run = matches!(e.action, EventAction::StopAt(k) if counts[i] >= k);
-                if ends_run {
-                    stop_here = true;
-                    if stop_reason.is_none() {
-                        stop_reason = Some(StopReason::Event);
-                    }
-                }
-                if e.state_change().is_some() && !ends_run {
-                    setters.push(i);
-                }
-                let rec = EventRecord {
-                    name: e.name().to_string(),
-                    occurrence: counts[i],
-                    t: te,
-                    state: Snapshot::of(te, &probe.state.y),
-                    last_step: Snapshot::of(t_a, &ends.y0),
-                    crossing_step: Snapshot::of(t_b, &state.y),
-                    after: None,
-                    terminal: ends_run,
-                };
-                if ends_run && terminal.is_none() {
-                    terminal = Some(rec.clone());
-                }
-                if records.len() < MAX_RECORDS {
-                    records.push(rec);
-                } else if records.len() == MAX_RECORDS {
-                    warnings.push(format!(
-                        "more than {MAX_RECORDS} event occurrences: only the first are reported"
-                    ));
-                }
+            let outcome = book.fire(
+                events,
+                &firing.events,
+                te,
+                &probe.state.y,
+                (t_a, &ends.y0),
+                (t_b, &state.y),
+                step_scale,
+                steps,
+                &mut warnings,
+            );
+            if outcome.failure.is_some() {
+                failure = outcome.failure;
             }
+            let stop_here = outcome.stop.is_some();
+            if stop_here {
+                stop_reason = outcome.stop;
+            }
+            let setters = outcome.setters;
             if stop_here || !setters.is_empty() {
                 // the run continues from (or ends at) the event: the rest of the step is dropped
                 match &engine {
@@ -550,29 +335,8 @@ pub(super) fn drive(
                 }
                 // state changes, in declaration order, each seeing the state at the event
                 let pre = sample_of(steps, &probe.state, &probe.eval, ledger.work(), kind);
-                let mut y_new = probe.state.y.clone();
-                for &i in &setters {
-                    (events[i].state_change().expect("a setter"))(&pre, sys, &mut y_new);
-                }
-                state.y.copy_from_slice(&y_new);
-                if !state.is_finite() {
-                    let i = state
-                        .y
-                        .iter()
-                        .position(|x| !x.is_finite())
-                        .expect("non-finite");
-                    failure = Some(Divergence {
-                        t: te,
-                        step: steps,
-                        quantity: coordinate_name(sys, i),
-                        value: state.y[i],
-                        message: format!(
-                            "the state change of the event `{}` at t = {te} s made {} = {}",
-                            events[setters[0]].name(),
-                            coordinate_name(sys, i),
-                            state.y[i]
-                        ),
-                    });
+                if let Err(d) = EventBook::apply(events, &setters, &pre, sys, &mut state.y) {
+                    failure = Some(d);
                     state.y.clone_from(&probe.state.y);
                     stop_reason = Some(StopReason::Diverged);
                     break;
@@ -583,15 +347,7 @@ pub(super) fn drive(
                 }
                 evaluations += 1;
                 ledger.jump(&eval_a);
-                for &i in &setters {
-                    if let Some(r) = records
-                        .iter_mut()
-                        .rev()
-                        .find(|r| r.name == events[i].name() && r.t == te)
-                    {
-                        r.after = Some(Snapshot::of(te, &state.y));
-                    }
-                }
+                book.changed(events, &setters, te, &state.y);
                 let post = sample_of(steps, &state, &eval_a, ledger.work(), kind);
                 emit(observers, &post)?;
                 event_values(events, &post, sys, &mut g_a);
@@ -656,20 +412,15 @@ pub(super) fn drive(
                 ends: &ends,
                 ledger: &ledger,
             };
-            while let Some(tg) = gr.next().filter(|tg| *tg <= t_b) {
-                step.probe(&mut probe, tg, true, &mut evaluations);
-                emit(
-                    observers,
-                    &sample_of(
-                        steps,
-                        &probe.state,
-                        &probe.eval,
-                        &probe.work,
-                        SampleKind::Grid,
-                    ),
-                )?;
-                gr.k += 1;
-            }
+            gr.emit_until(
+                &mut step,
+                &mut probe,
+                t_b,
+                true,
+                steps,
+                &mut evaluations,
+                observers,
+            )?;
         }
         match &engine {
             Engine::Fixed { .. } => ledger.advance(t_b, &eval_b),
@@ -693,7 +444,7 @@ pub(super) fn drive(
         }
     }
 
-    let last_kind = if terminal.is_some() && steps > 0 {
+    let last_kind = if book.terminal.is_some() && steps > 0 {
         SampleKind::Event
     } else {
         SampleKind::Step
@@ -723,8 +474,8 @@ pub(super) fn drive(
         stop_reason: stop_reason.expect("the loop sets a reason"),
         initial,
         final_state: state,
-        event: terminal,
-        events: records,
+        event: book.terminal,
+        events: book.records,
         divergence: failure,
         ledger,
         warnings,

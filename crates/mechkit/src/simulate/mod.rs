@@ -9,19 +9,21 @@
 //! event and the last step before it are reported, so the textbook's `while` loop answer and
 //! the refined answer sit side by side.
 
+mod book;
 mod condition;
 mod diagnose;
 mod drive;
 mod event;
 mod observe;
+mod probe;
 mod reduce;
 mod report;
 mod run;
 mod scan;
 mod stepping;
 
+pub use book::ZENO_LIMIT;
 pub use condition::Condition;
-pub use drive::ZENO_LIMIT;
 pub use event::{Direction, Event, EventAction};
 pub use observe::{Observer, ObserverError, Recorder};
 pub use reduce::{Reducer, Reduction};

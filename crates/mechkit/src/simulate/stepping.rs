@@ -3,6 +3,7 @@
 
 use std::cell::RefCell;
 
+use super::run::{DEFAULT_MAX_STEPS, Simulation};
 use crate::Real;
 use crate::ode::{
     AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, Method, MethodKind, OdeSystem, State,
@@ -244,5 +245,43 @@ impl Engine {
                 true
             }
         }
+    }
+}
+
+/// The largest number of steps: `max_steps`, unbounded with `t_max`, else the default budget
+/// (with a warning).
+pub(crate) fn step_budget(
+    sim: &Simulation<'_>,
+    stepping: &Stepping,
+    t0: Real,
+    warnings: &mut Vec<String>,
+) -> u64 {
+    match (sim.max_steps, sim.t_max) {
+        (Some(n), _) => n,
+        (None, Some(_)) => u64::MAX,
+        (None, None) => {
+            warnings.push(format!(
+                "no t_max was given: the run is bounded by {DEFAULT_MAX_STEPS} steps{}; set t_max to choose the end",
+                stepping
+                    .dt()
+                    .map(|dt| format!(" (t = {} s with dt = {dt} s)", t0 + DEFAULT_MAX_STEPS as Real * dt))
+                    .unwrap_or_default()
+            ));
+            DEFAULT_MAX_STEPS
+        }
+    }
+}
+
+/// The end of fixed step number `k + 1` of a grid started at `origin` (landing on `t_max`).
+pub(crate) fn fixed_next(
+    origin: Real,
+    k: u64,
+    dt: Real,
+    planned: Option<u64>,
+    t_max: Option<Real>,
+) -> Real {
+    match (planned, t_max) {
+        (Some(n), Some(tm)) if k + 1 >= n => tm,
+        _ => origin + (k + 1) as Real * dt,
     }
 }

@@ -1,0 +1,160 @@
+//! States between steps: the interpolated probe, the step it is read from, and the output
+//! times still to come.
+
+use super::event::Event;
+use super::observe::Observer;
+use super::report::SimulateError;
+use super::run::{Simulation, sample_of};
+use super::stepping::{Engine, StepEnds, WorkSystem};
+use crate::Real;
+use crate::energy::EnergyLedger;
+use crate::ode::State;
+use crate::particles::{Evaluation, ParticleSystem, Sample, SampleKind};
+
+/// A state between steps with what follows from it.
+pub(super) struct Probe {
+    pub state: State,
+    pub eval: Evaluation,
+    pub work: Vec<Real>,
+    pub scratch: Vec<Real>,
+}
+
+/// Everything the loop needs to interpolate inside the current step.
+pub(super) struct Step<'r, 'a> {
+    pub sys: &'a ParticleSystem,
+    pub ws: &'r WorkSystem<'a>,
+    pub engine: &'r mut Engine,
+    pub ends: &'r StepEnds,
+    pub ledger: &'r EnergyLedger,
+}
+
+impl Probe {
+    /// Buffers for `n2` state components and `nf` forces.
+    pub fn new(t0: Real, n2: usize, nf: usize) -> Self {
+        Self {
+            state: State::new(t0, vec![0.0; n2]),
+            eval: Evaluation::default(),
+            work: vec![0.0; nf],
+            scratch: Vec::new(),
+        }
+    }
+}
+
+impl Step<'_, '_> {
+    /// Fills `p` with the state at `t` (and the forces there when `forces`).
+    pub fn probe(&mut self, p: &mut Probe, t: Real, forces: bool, evaluations: &mut u64) {
+        p.state.t = t;
+        let have_work = self
+            .engine
+            .interpolate(self.ws, self.ends, t, &mut p.state.y, &mut p.work);
+        if forces {
+            let (q, v) = p.state.qv();
+            self.sys.evaluate(t, q, v, &mut p.eval, &mut p.scratch);
+            *evaluations += 1;
+            if !have_work {
+                self.ledger.preview_into(t, &p.eval.power, &mut p.work);
+            }
+        } else if !have_work {
+            p.work.clear();
+            p.work.extend_from_slice(self.ledger.work());
+        }
+    }
+}
+
+pub(super) fn event_values(
+    events: &[Event],
+    s: &Sample<'_>,
+    sys: &ParticleSystem,
+    out: &mut [Real],
+) {
+    for (o, e) in out.iter_mut().zip(events) {
+        *o = e.condition().value(s, sys);
+    }
+}
+
+pub(super) fn emit(
+    observers: &mut [&mut dyn Observer],
+    s: &Sample<'_>,
+) -> Result<(), SimulateError> {
+    for o in observers.iter_mut() {
+        o.observe(s)?;
+    }
+    Ok(())
+}
+
+/// The output times still to come: every `dt` from `t0`, or a list.
+pub(super) struct Grid {
+    pub t0: Real,
+    pub dt: Real,
+    pub list: Option<Vec<Real>>,
+    pub k: u64,
+    pub t_max: Option<Real>,
+}
+
+impl Grid {
+    /// The output times a run asked for (`None`: just the steps).
+    pub fn of(sim: &Simulation<'_>, t0: Real) -> Option<Grid> {
+        match (&sim.times, sim.interval) {
+            (Some(list), _) => Some(Grid {
+                t0,
+                dt: Real::NAN,
+                list: Some(list.iter().copied().filter(|t| *t > t0).collect()),
+                k: 0,
+                t_max: sim.t_max,
+            }),
+            (None, Some(dt)) => Some(Grid {
+                t0,
+                dt,
+                list: None,
+                k: 1,
+                t_max: sim.t_max,
+            }),
+            (None, None) => None,
+        }
+    }
+
+    /// The next output time.
+    pub fn next(&self) -> Option<Real> {
+        let t = match &self.list {
+            Some(list) => *list.get(usize::try_from(self.k).ok()?)?,
+            None => self.t0 + self.k as Real * self.dt,
+        };
+        match self.t_max {
+            Some(tm) if t > tm * (1.0 + 1e-12) + 1e-300 => None,
+            _ => Some(t),
+        }
+    }
+}
+
+impl Grid {
+    /// Passes the observers the state at every output time before `limit` (up to and including
+    /// it when `inclusive`), interpolated in `step`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn emit_until(
+        &mut self,
+        step: &mut Step<'_, '_>,
+        probe: &mut Probe,
+        limit: Real,
+        inclusive: bool,
+        step_index: u64,
+        evaluations: &mut u64,
+        observers: &mut [&mut dyn Observer],
+    ) -> Result<(), SimulateError> {
+        while let Some(t) = self
+            .next()
+            .filter(|t| *t < limit || inclusive && *t == limit)
+        {
+            step.probe(probe, t, true, evaluations);
+            let s = sample_of(
+                step_index,
+                &probe.state,
+                &probe.eval,
+                &probe.work,
+                SampleKind::Grid,
+            );
+            emit(observers, &s)?;
+            self.k += 1;
+        }
+        Ok(())
+    }
+}
