@@ -161,35 +161,33 @@ pub(super) fn drive(
             state.t = t_next;
             fixed_k += 1;
         } else {
+            let t_bound = sim.t_max.unwrap_or(Real::INFINITY);
+            let before = engine.adaptive_stats().map_or(0, |s| s.evaluations);
+            let result = engine.adaptive_step(&ws, &mut state, &mut work_b, t_bound);
+            evaluations += engine.adaptive_stats().map_or(0, |s| s.evaluations) - before;
+            if let Err(AdaptiveError::StepTooSmall {
+                t,
+                h,
+                h_min,
+                component,
+                non_finite,
+            }) = result
             {
-                let t_bound = sim.t_max.unwrap_or(Real::INFINITY);
-                let before = engine.adaptive_stats().map_or(0, |s| s.evaluations);
-                let result = engine.adaptive_step(&ws, &mut state, &mut work_b, t_bound);
-                evaluations += engine.adaptive_stats().map_or(0, |s| s.evaluations) - before;
-                if let Err(AdaptiveError::StepTooSmall {
-                    t,
-                    h,
-                    h_min,
-                    component,
-                    non_finite,
-                }) = result
-                {
-                    state.t = t_a;
-                    state.y.copy_from_slice(&ends.y0);
-                    let bad = ws.bad.borrow_mut().take();
-                    let (reason, d) = step_failure(
-                        sys,
-                        bad.as_ref(),
-                        (t, h, h_min, component, non_finite),
-                        steps,
-                        &mut scratch,
-                    );
-                    failure = Some(d);
-                    stop_reason = Some(reason);
-                    break;
-                }
-                ws.take_last(&mut eval_b);
+                state.t = t_a;
+                state.y.copy_from_slice(&ends.y0);
+                let bad = ws.bad.borrow_mut().take();
+                let (reason, d) = step_failure(
+                    sys,
+                    bad.as_ref(),
+                    (t, h, h_min, component, non_finite),
+                    steps,
+                    &mut scratch,
+                );
+                failure = Some(d);
+                stop_reason = Some(reason);
+                break;
             }
+            ws.take_last(&mut eval_b);
         }
         steps += 1;
         let h_taken = state.t - t_a;
