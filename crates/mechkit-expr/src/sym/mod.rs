@@ -17,6 +17,7 @@ mod expand;
 mod integrate;
 mod order;
 pub mod poly;
+mod rational_integral;
 mod solve;
 
 pub use integrate::Antiderivative;
