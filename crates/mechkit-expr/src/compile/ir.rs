@@ -110,20 +110,10 @@ impl Builder<'_> {
 
     /// Pushes `i`, or its value when all its operands are constants.
     fn fold(&mut self, i: Inst) -> u32 {
-        let operands: Vec<u32> = match i {
-            Inst::Const(_) | Inst::Load(_) => return self.push(i),
-            Inst::Neg(a) | Inst::Not(a) | Inst::Square(a) | Inst::Call1(_, a) => vec![a],
-            Inst::Add(a, b)
-            | Inst::Sub(a, b)
-            | Inst::Mul(a, b)
-            | Inst::Div(a, b)
-            | Inst::Cmp(_, a, b)
-            | Inst::And(a, b)
-            | Inst::Or(a, b)
-            | Inst::Pow(a, b)
-            | Inst::Call2(_, a, b) => vec![a, b],
-            Inst::Select(c, a, b) => vec![c, a, b],
-        };
+        if matches!(i, Inst::Const(_) | Inst::Load(_)) {
+            return self.push(i);
+        }
+        let operands = operands(i);
         if operands.iter().all(|r| self.constant(*r).is_some()) {
             let mut regs: Vec<f64> = self.insts.iter().map(|_| 0.0).collect();
             for r in &operands {

@@ -233,19 +233,25 @@ fn linear_substitution(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         if c.len() != 2 || !c[1].free_of(x) || c[1].is_zero() {
             continue;
         }
-        let t = fresh(ctx);
-        let g = f.replace(&u, &var(&t));
-        if !g.free_of(x) {
-            continue;
-        }
-        let saved = std::mem::replace(&mut ctx.x, t.clone());
-        let big_g = integrate(&g, ctx);
-        ctx.x = saved;
-        if let Some(big_g) = big_g {
-            return Some(Sym::quotient(big_g.substitute(&t, &u), c[1].clone()));
+        if let Some(big_g) = substituted(f, &u, ctx) {
+            return Some(Sym::quotient(big_g, c[1].clone()));
         }
     }
     None
+}
+
+/// `G(u)` with `G' = g` when `f = g(u)` with no `x` left over after writing `u` as a fresh
+/// variable: integrates `g` in that variable and substitutes `u` back.
+fn substituted(f: &Sym, u: &Sym, ctx: &mut Ctx) -> Option<Sym> {
+    let t = fresh(ctx);
+    let g = f.replace(u, &var(&t));
+    if !g.free_of(&ctx.x) {
+        return None;
+    }
+    let saved = std::mem::replace(&mut ctx.x, t.clone());
+    let big_g = integrate(&g, ctx);
+    ctx.x = saved;
+    Some(big_g?.substitute(&t, u))
 }
 
 /// `∫ g(u(x)) u'(x) dx = G(u(x))`: tries each inner expression `u` whose derivative divides
@@ -261,16 +267,8 @@ fn derivative_divides(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
             continue;
         }
         let q = Sym::quotient(f.clone(), du);
-        let t = fresh(ctx);
-        let g = q.replace(&u, &var(&t));
-        if !g.free_of(x) {
-            continue;
-        }
-        let saved = std::mem::replace(&mut ctx.x, t.clone());
-        let big_g = integrate(&g, ctx);
-        ctx.x = saved;
-        if let Some(big_g) = big_g {
-            return Some(big_g.substitute(&t, &u));
+        if let Some(big_g) = substituted(&q, &u, ctx) {
+            return Some(big_g);
         }
     }
     None
