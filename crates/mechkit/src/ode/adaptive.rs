@@ -314,12 +314,6 @@ impl AdaptiveRk {
         }
     }
 
-    /// The estimated error of component `i`, `Σ e_l k_l[i]` over the sparse weights `w`.
-    #[inline]
-    fn weighted(&self, w: &[(usize, Real)], i: usize) -> Real {
-        w.iter().map(|&(l, e)| e * self.stages.at(l, i)).sum()
-    }
-
     fn error_norm(&mut self, h: Real, y: &[Real]) -> Real {
         let n = self.controlled(y.len());
         self.stages.combine_into(&self.err_w, &mut self.err_buf);
@@ -349,10 +343,12 @@ impl AdaptiveRk {
         if v.is_nan() { Real::INFINITY } else { v }
     }
 
+    /// The component with the largest scaled error in the last attempt (`err_buf` holds its
+    /// estimate).
     fn dominant_component(&self, y: &[Real]) -> usize {
-        let n = self.controlled(y.len());
+        let n = self.controlled(y.len()).min(self.err_buf.len());
         let e = |i: usize| {
-            let v = self.weighted(&self.err_w, i) / self.scale(i, y[i], self.y_new[i]);
+            let v = self.err_buf[i] / self.scale(i, y[i], self.y_new[i]);
             if v.is_nan() { Real::INFINITY } else { v.abs() }
         };
         (0..n).max_by(|&a, &b| e(a).total_cmp(&e(b))).unwrap_or(0)

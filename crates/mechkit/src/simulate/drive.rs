@@ -9,7 +9,7 @@ use super::observe::Observer;
 use super::probe::{Grid, Probe, Step, emit, event_values};
 use super::report::{Divergence, RunReport, SimulateError, StopReason};
 use super::run::{DEFAULT_MAX_STEPS, Simulation, sample_of};
-use super::scan::{ScanResult, scan};
+use super::scan::{Fired, ScanBuffers, scan};
 use super::stepping::{Engine, StepEnds, Stepping, WorkSystem, fixed_next, step_budget};
 use crate::Real;
 use crate::energy::EnergyLedger;
@@ -120,6 +120,7 @@ pub(super) fn drive(
     let mut work_a = Vec::with_capacity(nf);
     let mut g_scan = Vec::with_capacity(m);
     let mut sides_scan = Vec::with_capacity(m);
+    let mut scan_buffers = ScanBuffers::default();
     let mut step_scale = Real::NAN;
 
     while stop_reason.is_none() {
@@ -251,19 +252,21 @@ pub(super) fn drive(
                 scan(
                     events,
                     &book.enabled,
-                    &sides_scan,
+                    &mut sides_scan,
                     (t_scan, &g_scan),
                     (t_b, &g_b),
                     interior,
                     &mut values,
+                    &mut scan_buffers,
                 )
             };
-            let (firing, at_values) = match result {
-                ScanResult::Quiet(s) => {
-                    sides = s;
-                    break;
-                }
-                ScanResult::Fired { firing, values } => (firing, values),
+            let Some(Fired {
+                firing,
+                values: at_values,
+            }) = result
+            else {
+                sides.clone_from(&sides_scan);
+                break;
             };
             let te = firing.t;
             // output times before the event

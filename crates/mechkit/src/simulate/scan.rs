@@ -14,32 +14,43 @@ pub(crate) struct Firing {
     pub events: Vec<usize>,
 }
 
-/// Where the scan ended.
-pub(crate) enum ScanResult {
-    /// Events fire at `firing.t`; `values` holds every event function there.
-    Fired { firing: Firing, values: Vec<Real> },
-    /// Nothing fired up to the step's end; the sides there.
-    Quiet(Vec<Side>),
+/// Events fire at `firing.t`; `values` holds every event function there.
+pub(crate) struct Fired {
+    pub firing: Firing,
+    pub values: Vec<Real>,
+}
+
+/// Buffers reused from step to step.
+#[derive(Debug, Default)]
+pub(crate) struct ScanBuffers {
+    prev: Vec<Real>,
+    vals: Vec<Real>,
 }
 
 /// Scans `(t_a, t_b]`: `sides` are the events' sides at `t_a`, `g_a`/`g_b` their values at the
 /// ends (NaN where unknown), `interior` the number of interior sample points, and
 /// `values(t, out)` evaluates every event function at `t` on the interpolant. Disabled events
-/// never fire.
+/// never fire. `sides` follows the scan: the sides at `t_b` when nothing fires (`None`), at
+/// the last sample point before the firing otherwise.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn scan(
     events: &[Event],
     enabled: &[bool],
-    sides: &[Side],
+    sides: &mut [Side],
     (t_a, g_a): (Real, &[Real]),
     (t_b, g_b): (Real, &[Real]),
     interior: usize,
     values: &mut dyn FnMut(Real, &mut [Real]),
-) -> ScanResult {
+    buffers: &mut ScanBuffers,
+) -> Option<Fired> {
     let m = events.len();
-    let mut cur = sides.to_vec();
-    let mut prev_vals = g_a.to_vec();
-    let mut vals = vec![Real::NAN; m];
+    let cur = sides;
+    let ScanBuffers { prev, vals } = buffers;
+    let prev_vals = prev;
+    prev_vals.clear();
+    prev_vals.extend_from_slice(g_a);
+    vals.clear();
+    vals.resize(m, Real::NAN);
     let mut t_prev = t_a;
     let parts = interior + 1;
     for j in 1..=parts {
@@ -51,7 +62,7 @@ pub(crate) fn scan(
         if j == parts {
             vals.copy_from_slice(g_b);
         } else {
-            values(t_j, &mut vals);
+            values(t_j, vals);
         }
         let mut first: Option<(Real, Vec<usize>)> = None;
         for i in (0..m).filter(|&i| enabled[i]) {
@@ -101,21 +112,21 @@ pub(crate) fn scan(
                 .collect();
             list.extend(also);
             list.sort_unstable();
-            return ScanResult::Fired {
+            return Some(Fired {
                 firing: Firing {
                     t: te,
                     events: list,
                 },
                 values: at,
-            };
+            });
         }
         for i in 0..m {
             cur[i] = cur[i].after(vals[i]);
         }
-        prev_vals.copy_from_slice(&vals);
+        prev_vals.copy_from_slice(vals);
         t_prev = t_j;
     }
-    ScanResult::Quiet(cur)
+    None
 }
 
 #[cfg(test)]
@@ -130,22 +141,25 @@ mod tests {
         let mut t = t_a;
         let mut found = Vec::new();
         let mut values = |t: Real, out: &mut [Real]| out[0] = f(t);
+        let mut buffers = ScanBuffers::default();
         loop {
-            match scan(
+            let fired = scan(
                 &events,
                 &[true],
-                &sides,
+                &mut sides,
                 (t, &[f(t)]),
                 (t_b, &[f(t_b)]),
                 interior,
                 &mut values,
-            ) {
-                ScanResult::Fired { firing, .. } => {
+                &mut buffers,
+            );
+            match fired {
+                Some(Fired { firing, .. }) => {
                     found.push(firing.t);
                     t = firing.t;
                     sides = vec![Side::Zero];
                 }
-                ScanResult::Quiet(_) => return found,
+                None => return found,
             }
         }
     }
