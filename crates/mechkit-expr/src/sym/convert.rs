@@ -1,7 +1,8 @@
 //! Between [`Expr`] (what is typed and printed) and [`Sym`] (what algebra works on).
 
 use super::Sym;
-use super::build::{is_negated, split_coefficient};
+use super::build::split_coefficient;
+use super::identities::is_negated;
 use crate::ast::{BinOp, Expr, Func};
 use crate::number::Number;
 

@@ -291,7 +291,7 @@ fn root_forms(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     let xv = var(x);
     let b_negative = match b.as_num() {
         Some(n) => n.is_negative(),
-        None => crate::sym::build::is_negated(b),
+        None => crate::sym::identities::is_negated(b),
     };
     if b_negative {
         let nb = Sym::negate(b.clone());

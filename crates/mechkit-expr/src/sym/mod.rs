@@ -14,6 +14,7 @@ mod convert;
 mod diff;
 mod eval;
 mod expand;
+mod identities;
 mod integrate;
 mod order;
 pub mod poly;

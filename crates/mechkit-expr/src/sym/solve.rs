@@ -75,7 +75,7 @@ impl Sym {
                             // 4*v0^2 - 8*g*h ≥ 0 says no more than v0^2 - 2*g*h ≥ 0
                             let shown = match &disc {
                                 Sym::Add(terms) => {
-                                    let (c, _) = super::build::content(terms);
+                                    let (c, _) = super::identities::content(terms);
                                     Sym::quotient(disc.clone(), Sym::Num(c.abs()))
                                 }
                                 other => other.clone(),
