@@ -35,7 +35,10 @@
 //!   Verlet, RK4).
 //! - [`particles`]: bodies in 1-3 dimensions, the names formulas use for their state.
 //! - [`forces`]: gravity, springs, drag with wind, constant and formula forces.
-//! - [`energy`]: the energy ledger (work of each force, kinetic and potential energy).
+//! - [`energy`]: the energy ledger (work of each force, kinetic and potential energy);
+//!   potentials, energy diagrams, equilibria and turning points; line integrals of force
+//!   fields; constant-power motion.
+//! - [`function`]: a formula with parameter values, evaluated as a function.
 //! - [`simulate`]: the run loop: stop conditions located between steps, observers, divergence
 //!   diagnosis.
 //! - [`roots`]: Brent's method; every root on an interval.
@@ -48,6 +51,7 @@ pub mod calculus;
 pub mod energy;
 mod error;
 pub mod forces;
+pub mod function;
 pub mod ode;
 pub mod particles;
 pub mod quad;
