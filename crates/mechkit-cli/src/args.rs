@@ -17,6 +17,8 @@ const EXAMPLES: &str = r#"Examples:
   mechkit solve "x^2 - 5*x + 6 = 0" --for x
   mechkit solve "cos(x) = x" --for x --in 0:1
   mechkit units "60 km/h" --to m/s
+  mechkit potential "U0*((a/r)^12-(b/r)^6)" --var r --range 0.8:3 --set U0=1,a=1,b=1 --energy=-0.1
+  mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
 Scenario format: docs/scenario.md. Commands: docs/cli.md."#;
@@ -54,6 +56,56 @@ pub enum Command {
     Solve(SolveArgs),
     /// Convert a quantity to SI or to another unit, and show its dimension.
     Units(UnitsArgs),
+    /// A potential U(x) (or a force F(x)): the force, equilibria and their stability, turning
+    /// points for an energy, the speed by the work-energy theorem, and the energy diagram.
+    Potential(PotentialArgs),
+}
+
+/// `mechkit potential`.
+#[derive(Debug, clap::Args)]
+pub struct PotentialArgs {
+    /// The potential U(x), e.g. "U0*((a/r)^12-(b/r)^6)" (or give --force instead).
+    #[arg(allow_hyphen_values = true)]
+    pub potential: Option<String>,
+    /// Start from the force F(x) instead: U = -∫F dx (symbolic when possible).
+    #[arg(long, allow_hyphen_values = true)]
+    pub force: Option<String>,
+    /// The variable.
+    #[arg(long, default_value = "x")]
+    pub var: String,
+    /// The range A:B to analyse and plot (write --range=-1:2 for a negative start).
+    #[arg(long, allow_hyphen_values = true)]
+    pub range: String,
+    /// Values of the other names, e.g. "U0=1 eV,a=3.4 Å".
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// A total energy: turning points and allowed/forbidden regions.
+    #[arg(long, allow_hyphen_values = true)]
+    pub energy: Option<String>,
+    /// Mass of a body released at --x0 with --v0: its energy, turning points and v(x).
+    #[arg(long)]
+    pub mass: Option<String>,
+    /// Start position of the body.
+    #[arg(long, allow_hyphen_values = true)]
+    pub x0: Option<String>,
+    /// Start speed of the body (default 0).
+    #[arg(long, allow_hyphen_values = true)]
+    pub v0: Option<String>,
+    /// Also report U, F (and v) at these points, comma-separated.
+    #[arg(long, allow_hyphen_values = true)]
+    pub at: Option<String>,
+    /// Grid intervals used to find equilibria and turning points.
+    #[arg(long, default_value_t = 2000)]
+    pub samples: usize,
+    /// Where to write the energy diagram (SVG) [default: out/energy_diagram.svg].
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Do not draw the diagram.
+    #[arg(long, conflicts_with = "plot")]
+    pub no_plot: bool,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `mechkit diff`.

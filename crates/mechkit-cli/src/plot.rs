@@ -5,7 +5,8 @@ use std::path::Path;
 use std::sync::Once;
 
 use anyhow::{Context, Result, anyhow};
-use mechkit::scenario::{PlotData, write_atomic};
+use mechkit::figure::{LineStyle, MarkerShape, PlotData};
+use mechkit::scenario::write_atomic;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 
@@ -56,7 +57,8 @@ fn tick(v: f64, scale: f64) -> String {
     }
     if (1e-3..1e5).contains(&scale) {
         let s = format!("{v:.6}");
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
+        let s = s.trim_end_matches('0').trim_end_matches('.');
+        if s == "-0" { "0".into() } else { s.to_string() }
     } else {
         let s = format!("{v:.2e}");
         // 1.50e11 -> 1.5e11
@@ -87,7 +89,14 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
         let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| anyhow!("{e}"))?;
         let points = || plot.series.iter().flat_map(|s| s.points.iter());
-        let (mut xr, mut yr) = (range(points().map(|p| p.0)), range(points().map(|p| p.1)));
+        let marks = || plot.markers.iter().map(|m| m.at);
+        let (mut xr, mut yr) = (
+            range(points().map(|p| p.0).chain(marks().map(|p| p.0))),
+            range(points().map(|p| p.1).chain(marks().map(|p| p.1))),
+        );
+        if let Some(limits) = plot.y_limits {
+            yr = limits;
+        }
         if plot.equal_aspect {
             // plotting area: 900 x 600 minus margins and label areas
             (xr, yr) = equalize(
@@ -117,6 +126,24 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
             .light_line_style(RGBColor(235, 235, 235))
             .draw()
             .map_err(|e| anyhow!("{e}"))?;
+        let mut band_labels: Vec<&str> = Vec::new();
+        for band in &plot.bands {
+            let shade = RGBColor(120, 120, 120).mix(0.15);
+            let anno = chart
+                .draw_series(std::iter::once(Rectangle::new(
+                    [(band.from.max(x0), y0), (band.to.min(x1), y1)],
+                    shade.filled(),
+                )))
+                .map_err(|e| anyhow!("{e}"))?;
+            if !band_labels.contains(&band.label.as_str()) {
+                band_labels.push(&band.label);
+                anno.label(band.label.clone()).legend(move |(x, y)| {
+                    Rectangle::new([(x, y - 5), (x + 20, y + 5)], shade.filled())
+                });
+            }
+        }
+        // keep points inside the shown range (a clipped potential would draw off the chart)
+        let clip = |(x, y): (f64, f64)| (x, y.clamp(y0, y1));
         for (i, s) in plot.series.iter().enumerate() {
             let color = PALETTE[i % PALETTE.len()];
             let pts: Vec<(f64, f64)> = s
@@ -124,21 +151,83 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
                 .iter()
                 .copied()
                 .filter(|(x, y)| x.is_finite() && y.is_finite())
+                .map(clip)
                 .collect();
-            chart
-                .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))
-                .map_err(|e| anyhow!("{e}"))?
-                .label(s.label.clone())
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
-                });
-            if let Some(&last) = pts.last() {
+            // a non-finite value breaks a line into pieces
+            let pieces: Vec<Vec<(f64, f64)>> = s
+                .points
+                .split(|(x, y)| !(x.is_finite() && y.is_finite()))
+                .filter(|piece| !piece.is_empty())
+                .map(|piece| piece.iter().copied().map(clip).collect())
+                .collect();
+            let stroke = color.stroke_width(2);
+            let anno = match s.style {
+                LineStyle::Dashed => chart
+                    .draw_series(DashedLineSeries::new(pts.iter().copied(), 8, 6, stroke))
+                    .map_err(|e| anyhow!("{e}"))?,
+                LineStyle::Markers => chart
+                    .draw_series(pts.iter().map(|&p| Circle::new(p, 3, color.filled())))
+                    .map_err(|e| anyhow!("{e}"))?,
+                _ => chart
+                    .draw_series(
+                        pieces
+                            .iter()
+                            .map(|piece| PathElement::new(piece.clone(), stroke)),
+                    )
+                    .map_err(|e| anyhow!("{e}"))?,
+            };
+            anno.label(s.label.clone()).legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+            });
+            if s.style == LineStyle::Solid
+                && let Some(&last) = pts.last()
+            {
                 chart
                     .draw_series(std::iter::once(Circle::new(last, 4, color.filled())))
                     .map_err(|e| anyhow!("{e}"))?;
             }
         }
-        if plot.series.len() > 1 {
+        let mut labelled: Vec<&str> = Vec::new();
+        for m in &plot.markers {
+            let at = m.at;
+            if !(at.0.is_finite() && at.1.is_finite()) || at.1 < y0 || at.1 > y1 {
+                continue;
+            }
+            let red = RGBColor(214, 39, 40);
+            let anno = match m.shape {
+                MarkerShape::Filled => {
+                    chart.draw_series(std::iter::once(Circle::new(at, 6, BLACK.filled())))
+                }
+                MarkerShape::Open => {
+                    chart.draw_series(std::iter::once(Circle::new(at, 6, BLACK.stroke_width(2))))
+                }
+                MarkerShape::Cross => {
+                    chart.draw_series(std::iter::once(Cross::new(at, 6, BLACK.stroke_width(2))))
+                }
+                _ => chart.draw_series(std::iter::once(TriangleMarker::new(at, 7, red.filled()))),
+            }
+            .map_err(|e| anyhow!("{e}"))?;
+            if labelled.contains(&m.label.as_str()) {
+                continue;
+            }
+            labelled.push(&m.label);
+            let anno = anno.label(m.label.clone());
+            match m.shape {
+                MarkerShape::Filled => {
+                    anno.legend(|(x, y)| Circle::new((x + 10, y), 6, BLACK.filled()));
+                }
+                MarkerShape::Open => {
+                    anno.legend(|(x, y)| Circle::new((x + 10, y), 6, BLACK.stroke_width(2)));
+                }
+                MarkerShape::Cross => {
+                    anno.legend(|(x, y)| Cross::new((x + 10, y), 6, BLACK.stroke_width(2)));
+                }
+                _ => {
+                    anno.legend(move |(x, y)| TriangleMarker::new((x + 10, y), 7, red.filled()));
+                }
+            }
+        }
+        if plot.series.len() + labelled.len() + plot.bands.len() > 1 {
             chart
                 .configure_series_labels()
                 .background_style(WHITE.mix(0.85))

@@ -38,6 +38,7 @@
 //! - [`energy`]: the energy ledger (work of each force, kinetic and potential energy);
 //!   potentials, energy diagrams, equilibria and turning points; line integrals of force
 //!   fields; constant-power motion.
+//! - [`figure`]: plot data (curves, markers, bands) for the command line to draw.
 //! - [`function`]: a formula with parameter values, evaluated as a function.
 //! - [`simulate`]: the run loop: stop conditions located between steps, observers, divergence
 //!   diagnosis.
@@ -50,6 +51,7 @@
 pub mod calculus;
 pub mod energy;
 mod error;
+pub mod figure;
 pub mod forces;
 pub mod function;
 pub mod ode;

@@ -7,6 +7,7 @@ use mechkit::calculus::{self, CalculusError, Params};
 use mechkit::expr::sym::Solutions;
 use serde_json::json;
 
+use super::input::{interval, params, value};
 use super::{Outcome, print};
 use crate::args::{DiffArgs, IntegrateArgs, SolveArgs, UnitsArgs};
 
@@ -15,21 +16,6 @@ macro_rules! wr {
     ($dst:expr, $($arg:tt)*) => {{
         let _ = write!($dst, $($arg)*);
     }};
-}
-
-/// A limit or interval end: a number or a quantity with units, in SI.
-fn value(text: &str, what: &str) -> Result<f64> {
-    match calculus::parse_params(&format!("{what}={text}")) {
-        Ok(v) => Ok(v[0].1),
-        Err(e) => bail!("{what}: {e}"),
-    }
-}
-
-fn params(set: Option<&str>) -> Result<Vec<(String, f64)>> {
-    Ok(match set {
-        Some(s) => calculus::parse_params(s).map_err(|e| anyhow::anyhow!("--set: {e}"))?,
-        None => Vec::new(),
-    })
 }
 
 fn show(p: &Params) -> String {
@@ -58,12 +44,12 @@ pub fn diff(args: &DiffArgs) -> Result<Outcome> {
 }
 
 pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
+    let p = params(args.set.as_deref())?;
     let limits = match (&args.from, &args.to) {
-        (Some(a), Some(b)) => Some((value(a, "--from")?, value(b, "--to")?)),
+        (Some(a), Some(b)) => Some((value(a, "--from", &p)?, value(b, "--to", &p)?)),
         (None, None) => None,
         _ => bail!("give both --from and --to for a definite integral"),
     };
-    let p = params(args.set.as_deref())?;
     let i = check_expr(
         calculus::integral(&args.expr, &args.var, limits, &p),
         "integrand",
@@ -139,13 +125,6 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
     })
 }
 
-fn interval(text: &str) -> Result<(f64, f64)> {
-    let Some((a, b)) = text.split_once(':') else {
-        bail!("--in takes an interval A:B, e.g. --in 0:10, not `{text}`");
-    };
-    Ok((value(a, "--in start")?, value(b, "--in end")?))
-}
-
 pub fn solve(args: &SolveArgs) -> Result<Outcome> {
     let p = params(args.set.as_deref())?;
     let unknowns: Vec<&str> = args
@@ -175,7 +154,11 @@ pub fn solve(args: &SolveArgs) -> Result<Outcome> {
         return Ok(Outcome::Success);
     }
     let x = unknowns.first().copied().unwrap_or("x");
-    let range = args.interval.as_deref().map(interval).transpose()?;
+    let range = args
+        .interval
+        .as_deref()
+        .map(|t| interval(t, "--in", &p))
+        .transpose()?;
     let s = check_expr(calculus::solve(&args.equation, x, range, &p), "equation")?;
     let symbolic: Option<Vec<String>> = match &s.symbolic {
         Some(Solutions::Roots(r)) => Some(r.iter().map(ToString::to_string).collect()),

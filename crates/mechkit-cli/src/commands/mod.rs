@@ -2,6 +2,8 @@
 
 mod calculus;
 mod check;
+mod input;
+mod potential;
 mod run;
 
 use std::fmt::Write as _;
@@ -25,6 +27,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Integrate(args) => calculus::integrate(&args),
         Command::Solve(args) => calculus::solve(&args),
         Command::Units(args) => calculus::units(&args),
+        Command::Potential(args) => potential::potential(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {

@@ -6,8 +6,8 @@ use serde::Serialize;
 
 use super::Scenario;
 use super::error::{ErrorKind, ScenarioError};
-use super::plot::{PlotData, Series};
 use crate::Real;
+use crate::figure::{PlotData, Series};
 use crate::ode::{AdaptiveConfig, Method, MethodKind, Tolerance};
 use crate::particles::{Sample, SampleKind};
 use crate::simulate::{Observer, ObserverError, RunReport, Simulation, Stepping};
@@ -277,46 +277,46 @@ impl Scenario {
                 event_error: event_t.zip(ref_event).map(|(a, b)| a - b),
                 stop_reason: report.stop_reason.name().to_string(),
             });
-            error_series.push(Series {
-                label: method.name().to_string(),
-                points: errors
+            error_series.push(Series::line(
+                method.name(),
+                errors
                     .iter()
                     .filter(|p| p.1 > 0.0)
                     .map(|&(t, d)| (t, d.log10()))
                     .collect(),
-            });
+            ));
             if energy.iter().any(|p| p.1.is_finite()) {
-                energy_series.push(Series {
-                    label: method.name().to_string(),
-                    points: energy
+                energy_series.push(Series::line(
+                    method.name(),
+                    energy
                         .iter()
                         .filter(|p| p.1 != 0.0 && p.1.is_finite())
                         .map(|&(t, e)| (t, e.log10()))
                         .collect(),
-                });
+                ));
             }
         }
-        let mut plots = vec![PlotData {
-            spec: "position error against the reference".into(),
-            file_stem: "compare_error".into(),
-            x_label: "t [s]".into(),
-            y_label: "log10 of the position error [m]".into(),
-            series: error_series,
-            equal_aspect: false,
-        }];
+        let mut error_plot = PlotData::new(
+            "position error against the reference",
+            "compare_error",
+            "t [s]",
+            "log10 of the position error [m]",
+        );
+        error_plot.series = error_series;
+        let mut plots = vec![error_plot];
         if !energy_series.is_empty() {
-            plots.push(PlotData {
-                spec: if nonconservative.is_empty() {
-                    "largest energy error |E - E0|/|E0| between output times".into()
+            let mut energy_plot = PlotData::new(
+                if nonconservative.is_empty() {
+                    "largest energy error |E - E0|/|E0| between output times"
                 } else {
-                    "energy error |E - E_ref|/|E0|".into()
+                    "energy error |E - E_ref|/|E0|"
                 },
-                file_stem: "compare_energy".into(),
-                x_label: "t [s]".into(),
-                y_label: "log10 of the relative energy error".into(),
-                series: energy_series,
-                equal_aspect: false,
-            });
+                "compare_energy",
+                "t [s]",
+                "log10 of the relative energy error",
+            );
+            energy_plot.series = energy_series;
+            plots.push(energy_plot);
         }
         Ok(Comparison {
             title: self.title.clone(),

@@ -54,11 +54,12 @@ mod values;
 
 use std::path::Path;
 
+pub use crate::figure::{PlotData, Series};
 pub use compare::{CompareSettings, Comparison, MethodResult};
 pub use error::{ErrorKind, Location, ScenarioError};
 pub use observe::Observable;
 pub use output::{csv_header, write_atomic};
-pub use plot::{OutputTimes, PlotData, PlotSpec, Series, SeriesSpec};
+pub use plot::{OutputTimes, PlotSpec, SeriesSpec};
 pub use run::RunOutput;
 pub use summary::{
     BodyState, BodySummary, DivergenceSummary, EnergySummary, EventSummary, Files, StartEnd,

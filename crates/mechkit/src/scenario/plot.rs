@@ -14,6 +14,7 @@ use super::values::{ValueEnv, resolve, scalar};
 use mechkit_expr::units::Dimension;
 
 use crate::Real;
+use crate::figure::{PlotData, Series};
 use crate::particles::{BodyRef, NameContext, Sample, StateVar, VarLevel};
 use crate::simulate::{Observer, ObserverError};
 
@@ -324,34 +325,6 @@ fn is_local(v: StateVar) -> bool {
     )
 }
 
-/// A curve's points.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Series {
-    /// Legend label.
-    pub label: String,
-    /// Points `(x, y)`.
-    pub points: Vec<(Real, Real)>,
-}
-
-/// The data of one plot, ready to render.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PlotData {
-    /// As written, e.g. `v(x)`; used as the title.
-    pub spec: String,
-    /// Suggested file name without extension.
-    pub file_stem: String,
-    /// Axis labels with units.
-    pub x_label: String,
-    /// Axis labels with units.
-    pub y_label: String,
-    /// The curves (a curve whose values are all NaN, such as `U` without potentials, is left
-    /// out).
-    pub series: Vec<Series>,
-    /// Whether both axes are positions, so the plot should keep lengths equal (a circle stays
-    /// round).
-    pub equal_aspect: bool,
-}
-
 /// Collects the points of every plot during a run.
 pub(crate) struct PlotRecorder<'a> {
     specs: &'a [PlotSpec],
@@ -407,24 +380,24 @@ impl<'a> PlotRecorder<'a> {
         self.specs
             .iter()
             .zip(self.points)
-            .map(|(spec, pts)| PlotData {
-                spec: spec.spec.clone(),
-                file_stem: spec.file_stem(),
-                x_label: spec.x_label.clone(),
-                y_label: spec.y_label.clone(),
-                series: spec
+            .map(|(spec, pts)| {
+                let mut plot = PlotData::new(
+                    spec.spec.clone(),
+                    spec.file_stem(),
+                    spec.x_label.clone(),
+                    spec.y_label.clone(),
+                );
+                plot.series = spec
                     .series
                     .iter()
                     .zip(pts)
                     .filter(|(_, p)| p.iter().any(|(x, y)| x.is_finite() && y.is_finite()))
-                    .map(|(s, p)| Series {
-                        label: s.label.clone(),
-                        points: p,
-                    })
-                    .collect(),
-                equal_aspect: spec.series.iter().all(|s| {
+                    .map(|(s, p)| Series::line(s.label.clone(), p))
+                    .collect();
+                plot.equal_aspect = spec.series.iter().all(|s| {
                     matches!(s.x, StateVar::Position(..)) && matches!(s.y, StateVar::Position(..))
-                }),
+                });
+                plot
             })
             .collect()
     }

@@ -7,9 +7,10 @@ use std::path::{Path, PathBuf};
 use super::error::{ErrorKind, ScenarioError};
 use super::observe::ObservableSet;
 use super::output::{CsvWriter, Keep, write_atomic};
-use super::plot::{PlotData, PlotRecorder};
+use super::plot::PlotRecorder;
 use super::summary::Summary;
 use super::{OutputTimes, Scenario};
+use crate::figure::PlotData;
 use crate::simulate::{Observer, RunReport, SimulateError, Simulation};
 
 /// What a run produced.

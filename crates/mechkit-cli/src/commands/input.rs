@@ -1,0 +1,104 @@
+//! Values typed on the command line: quantities with units (`"2 eV"`), constant formulas
+//! (`2*pi`, `b/4` with `--set b=1`), intervals `A:B`, and `name=value` lists.
+
+use anyhow::{Result, anyhow, bail};
+use mechkit::calculus::{self, Params};
+use mechkit::expr::Sym;
+
+/// `--set a=1,b=2 m` as names and SI values.
+pub fn params(set: Option<&str>) -> Result<Vec<(String, f64)>> {
+    Ok(match set {
+        Some(s) => calculus::parse_params(s).map_err(|e| anyhow!("--set: {e}"))?,
+        None => Vec::new(),
+    })
+}
+
+/// A number, a quantity with units (converted to SI), or a formula of the `--set` names and
+/// `pi`/`e` (`2*pi`, `b/4`). `what` names the flag in the error.
+pub fn value(text: &str, what: &str, params: &Params) -> Result<f64> {
+    let quantity_error = match calculus::parse_params(&format!("{what}={text}")) {
+        Ok(v) => return Ok(v[0].1),
+        Err(e) => e,
+    };
+    if let Ok(sym) = Sym::parse(text) {
+        let env = |n: &str| params.iter().find(|(k, _)| k == n).map(|(_, v)| *v);
+        match sym.eval(&env) {
+            Ok(v) if v.is_finite() => return Ok(v),
+            Ok(v) => bail!("{what}: `{text}` is {v}, not a finite number"),
+            Err(name) if !name.is_empty() && text.contains(name.as_str()) => bail!(
+                "{what}: `{text}` uses `{name}`, which has no value: give it with --set {name}=…"
+            ),
+            Err(_) => {}
+        }
+    }
+    bail!("{what}: {quantity_error}")
+}
+
+/// `A:B` (each end as in [`value`]); `flag` names the option in errors.
+pub fn interval(text: &str, flag: &str, params: &Params) -> Result<(f64, f64)> {
+    let Some((a, b)) = split_interval(text) else {
+        bail!(
+            "{flag} takes an interval A:B, e.g. {flag} 0:10 (or {flag}=-1:2 for a negative start), not `{text}`"
+        );
+    };
+    let (a, b) = (
+        value(a, &format!("{flag} start"), params)?,
+        value(b, &format!("{flag} end"), params)?,
+    );
+    if a == b {
+        bail!("{flag} {text}: the interval is empty; give two different ends");
+    }
+    Ok((a, b))
+}
+
+/// Splits `A:B` at the one colon outside parentheses.
+fn split_interval(text: &str) -> Option<(&str, &str)> {
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ':' if depth == 0 => return Some((&text[..i], &text[i + 1..])),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Splits a list at commas outside parentheses (`"atan2(y, x), 0"` has two items).
+pub fn split_top_level(text: &str, sep: char) -> Vec<&str> {
+    let mut out = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            c if c == sep && depth == 0 => {
+                out.push(text[start..i].trim());
+                start = i + c.len_utf8();
+            }
+            _ => {}
+        }
+    }
+    out.push(text[start..].trim());
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn values() {
+        let p = vec![("b".to_string(), 2.0)];
+        assert_eq!(value("3", "--x", &p).unwrap(), 3.0);
+        assert!((value("60 km/h", "--v", &p).unwrap() - 16.666_666_666_666_668).abs() < 1e-12);
+        assert_eq!(value("b/4", "--to", &p).unwrap(), 0.5);
+        assert!((value("2*pi", "--to", &p).unwrap() - std::f64::consts::TAU).abs() < 1e-15);
+        let e = value("c/4", "--to", &p).unwrap_err().to_string();
+        assert!(e.contains("--set c="), "{e}");
+        assert_eq!(interval("-1:2", "--range", &p).unwrap(), (-1.0, 2.0));
+        assert!(interval("1", "--range", &p).is_err());
+        assert_eq!(split_top_level("atan2(y, x), 0", ','), ["atan2(y, x)", "0"]);
+    }
+}
