@@ -18,6 +18,9 @@ const EXAMPLES: &str = r#"Examples:
   mechkit solve "cos(x) = x" --for x --in 0:1
   mechkit units "60 km/h" --to m/s
   mechkit potential "U0*((a/r)^12-(b/r)^6)" --var r --range 0.8:3 --set U0=1,a=1,b=1 --energy=-0.1
+  mechkit work examples/data/forcedata.d --plot out/work.svg
+  mechkit work --field "y, -x" --path "cos(s), sin(s)" --param s=0:2*pi
+  mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
   mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
@@ -59,6 +62,98 @@ pub enum Command {
     /// A potential U(x) (or a force F(x)): the force, equilibria and their stability, turning
     /// points for an energy, the speed by the work-energy theorem, and the energy diagram.
     Potential(PotentialArgs),
+    /// Motion at constant power (v, a, x at given times), or an average power W/t.
+    Power(PowerArgs),
+    /// The work ∫F dx from a data file (x, F columns; cumulative W(x)), or of a force field
+    /// along a path (--field with --path or --through).
+    Work(WorkArgs),
+}
+
+/// `mechkit work`.
+#[derive(Debug, clap::Args)]
+pub struct WorkArgs {
+    /// Data file: columns of x and F (whitespace or comma separated; # and % start comments).
+    pub file: Option<PathBuf>,
+    /// The column of x (name or 1-based number) [default: the first].
+    #[arg(long)]
+    pub x: Option<String>,
+    /// The column of F (name or 1-based number) [default: the second].
+    #[arg(long)]
+    pub f: Option<String>,
+    /// Quadrature rule: trapezoid, simpson, left, right or midpoint.
+    #[arg(long, default_value = "trapezoid")]
+    pub method: String,
+    /// What x is: position (∫F dx is a work, in J) or time (∫F dt is an impulse, in N·s)
+    /// [default: time when the x column is named t or time, else position].
+    #[arg(long, value_parser = ["position", "time"])]
+    pub of: Option<String>,
+    /// A mass: with position data, the speed v(x) from ½mv² = ½mv0² + W(x); with time data,
+    /// the change of velocity J/m.
+    #[arg(long)]
+    pub mass: Option<String>,
+    /// Start speed for v(x) (default 0).
+    #[arg(long, allow_hyphen_values = true)]
+    pub v0: Option<String>,
+    /// Where to write the cumulative integral as CSV (x, F, W).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Where to write the plot of W(x) (SVG).
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// A force field instead of data: components separated by commas, functions of x, y (, z),
+    /// e.g. "-k*x, -k*y".
+    #[arg(long, allow_hyphen_values = true)]
+    pub field: Option<String>,
+    /// The curve r(s) for --field, components separated by commas, e.g. "cos(s), sin(s)".
+    #[arg(long, allow_hyphen_values = true, requires = "field")]
+    pub path: Option<String>,
+    /// The parameter of --path and its range, e.g. "s=0:2*pi".
+    #[arg(long, allow_hyphen_values = true, requires = "path")]
+    pub param: Option<String>,
+    /// Straight segments through points for --field, e.g. "0,0; 1,0; 1,1".
+    #[arg(long, allow_hyphen_values = true, requires = "field")]
+    pub through: Option<String>,
+    /// Values of the other names in --field and --path, e.g. "k=2,m=1 kg".
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit power`.
+#[derive(Debug, clap::Args)]
+pub struct PowerArgs {
+    /// The engine's power, e.g. "20 kW".
+    #[arg(long)]
+    pub power: Option<String>,
+    /// The mass driven, e.g. "200 kg".
+    #[arg(long)]
+    pub mass: Option<String>,
+    /// Start speed (default 0: from rest).
+    #[arg(long)]
+    pub v0: Option<String>,
+    /// Times to report v, a and x at, comma-separated, e.g. "5 s,10 s".
+    #[arg(long)]
+    pub at: Option<String>,
+    /// Also report when this speed is reached.
+    #[arg(long)]
+    pub until_speed: Option<String>,
+    /// Average power instead: the work done ...
+    #[arg(long, requires = "time")]
+    pub work: Option<String>,
+    /// ... over this time.
+    #[arg(long, requires = "work")]
+    pub time: Option<String>,
+    /// Directory for the v(t) and x(t) plots [default: out/power].
+    #[arg(long, short)]
+    pub out: Option<PathBuf>,
+    /// Do not draw plots.
+    #[arg(long)]
+    pub no_plots: bool,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `mechkit potential`.

@@ -4,7 +4,10 @@ mod calculus;
 mod check;
 mod input;
 mod potential;
+mod power;
 mod run;
+mod work;
+mod work_field;
 
 use std::fmt::Write as _;
 
@@ -28,6 +31,8 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Solve(args) => calculus::solve(&args),
         Command::Units(args) => calculus::units(&args),
         Command::Potential(args) => potential::potential(&args),
+        Command::Power(args) => power::power(&args),
+        Command::Work(args) => work::work(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {
