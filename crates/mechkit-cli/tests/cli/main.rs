@@ -21,6 +21,7 @@
 //!
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
+mod book;
 mod calculus;
 mod diverge;
 mod errors;

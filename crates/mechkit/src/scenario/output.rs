@@ -32,8 +32,8 @@ fn temp_path(path: &Path) -> PathBuf {
     path.with_file_name(name)
 }
 
-/// The CSV header for a system: `t`, positions, velocities, then `K`, `U`, `E` and the work of
-/// each force.
+/// The CSV header for a system: `t`, positions, velocities, then `K`, `U`, `E`, the work of
+/// each force and its power `F·v`.
 pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
     let axes = &["x", "y", "z"][..sys.dim()];
     let mut cols = vec!["t".to_string()];
@@ -47,6 +47,7 @@ pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
         cols.push("E".into());
     }
     cols.extend(sys.forces().iter().map(|f| format!("work.{}", f.name())));
+    cols.extend(sys.forces().iter().map(|f| format!("power.{}", f.name())));
     cols
 }
 
@@ -139,7 +140,7 @@ impl CsvWriter {
             self.line.push(',');
             push_number(&mut self.line, s.eval.kinetic + u);
         }
-        for &w in s.work {
+        for &w in s.work.iter().chain(&s.eval.power) {
             self.line.push(',');
             push_number(&mut self.line, w);
         }

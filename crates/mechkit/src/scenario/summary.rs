@@ -159,6 +159,9 @@ pub struct Summary {
     pub bodies: BTreeMap<String, BodySummary>,
     /// Work done by each force (J), integrated as power along the computed path.
     pub work: BTreeMap<String, Real>,
+    /// Average power of each force over the run (W): its work divided by the duration (null
+    /// for a run of zero duration).
+    pub average_power: BTreeMap<String, Option<Real>>,
     /// Kinetic energy (J).
     pub kinetic_energy: StartEnd,
     /// Potential energy of the conservative forces (J); null when none has a potential.
@@ -287,6 +290,18 @@ impl Summary {
                 .cloned()
                 .zip(l.work().iter().copied())
                 .collect(),
+            average_power: {
+                let duration = report.final_state.t - report.initial.t;
+                l.names()
+                    .iter()
+                    .cloned()
+                    .zip(
+                        l.work()
+                            .iter()
+                            .map(|w| (duration > 0.0).then(|| w / duration)),
+                    )
+                    .collect()
+            },
             kinetic_energy: StartEnd {
                 start: Some(l.kinetic_start()),
                 end: Some(l.kinetic_end()),

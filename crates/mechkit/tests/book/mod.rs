@@ -11,6 +11,9 @@ use serde_json::Value;
 
 use crate::util::workspace;
 
+mod tolerance;
+use tolerance::tolerance;
+
 fn cases() -> BTreeMap<String, Value> {
     let text = std::fs::read_to_string(workspace().join("examples/book/cases.jsonl")).unwrap();
     text.lines()
@@ -20,40 +23,6 @@ fn cases() -> BTreeMap<String, Value> {
             (v["id"].as_str().unwrap().to_string(), v)
         })
         .collect()
-}
-
-/// The tolerance for expected key `key`: `abs_<p>`/`rel_<p>` for keys starting with `p`
-/// (longest prefix), else `abs`/`rel`, else half a unit of the expected value's last digit.
-fn tolerance(tol: &Value, key: &str, expected: f64) -> f64 {
-    let mut best: Option<(usize, f64)> = None;
-    if let Some(map) = tol.as_object() {
-        for (k, v) in map {
-            let v = v.as_f64().unwrap();
-            let (kind, prefix) = k.split_once('_').unwrap_or((k.as_str(), ""));
-            if !prefix.is_empty()
-                && key.starts_with(prefix)
-                && best.is_none_or(|(n, _)| prefix.len() > n)
-            {
-                let t = if kind == "rel" { v * expected.abs() } else { v };
-                best = Some((prefix.len(), t));
-            }
-        }
-        if best.is_none() {
-            if let Some(r) = map.get("rel").and_then(Value::as_f64) {
-                return r * expected.abs();
-            }
-            if let Some(a) = map.get("abs").and_then(Value::as_f64) {
-                return a;
-            }
-        }
-    }
-    best.map_or_else(|| half_last_digit(expected), |(_, t)| t)
-}
-
-fn half_last_digit(x: f64) -> f64 {
-    let text = format!("{x}");
-    let decimals = text.split_once('.').map_or(0, |(_, d)| d.len());
-    0.5 * 10f64.powi(-(decimals as i32))
 }
 
 #[test]
@@ -135,17 +104,4 @@ fn book_cases_reproduce_the_expected_answers() {
     }
     assert!(failures.is_empty(), "{failures:#?}");
     assert!(checked >= 25, "only {checked} values were checked");
-}
-
-#[test]
-fn tolerance_rules() {
-    let t: Value = serde_json::json!({"abs_t": 0.001, "abs_x": 1e-4});
-    assert_eq!(tolerance(&t, "t_last", 4.834), 0.001);
-    assert_eq!(tolerance(&t, "x_last", 2.8e-4), 1e-4);
-    assert!((tolerance(&t, "v_last", -0.5) - 0.05).abs() < 1e-15);
-    let t: Value = serde_json::json!({"rel": 1e-3});
-    assert!((tolerance(&t, "v", -4.8042) - 4.8042e-3).abs() < 1e-15);
-    let t: Value = serde_json::json!({"abs_W": 0.5, "rel_v": 0.01});
-    assert_eq!(tolerance(&t, "W_F", 900.0), 0.5);
-    assert!((tolerance(&t, "v", 11.0) - 0.11).abs() < 1e-12);
 }
