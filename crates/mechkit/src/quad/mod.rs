@@ -3,5 +3,9 @@
 //! of variable.
 
 mod gauss_kronrod;
+mod gauss_legendre;
+mod rule;
 
 pub use gauss_kronrod::{QuadError, QuadResult, Tolerance, integrate};
+pub use gauss_legendre::{MAX_GAUSS_POINTS, gauss_legendre};
+pub use rule::{Rule, RuleError, integrate_rule};
