@@ -14,6 +14,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit list-integrators
   mechkit diff "-F0*sin(2*pi*x/b)" --var x
   mechkit integrate "1/(a+x^2)" --var x --from 0 --to 1 --set a=1
+  mechkit integrate "-F0*sin(2*pi*x/b)" --from 0 --to b/4 --set F0=1,b=1 --method left,trapezoid --n 10,100
   mechkit solve "x^2 - 5*x + 6 = 0" --for x
   mechkit solve "cos(x) = x" --for x --in 0:1
   mechkit units "60 km/h" --to m/s
@@ -235,6 +236,14 @@ pub struct IntegrateArgs {
     /// Values of the other names, e.g. "a=1,b=2 m".
     #[arg(long, allow_hyphen_values = true)]
     pub set: Option<String>,
+    /// Also estimate the definite integral with fixed rules, comma-separated: left, right,
+    /// midpoint, trapezoid, simpson, gauss-legendre-N, or all; each is compared with the exact
+    /// value.
+    #[arg(long, value_delimiter = ',', requires = "from")]
+    pub method: Option<Vec<String>>,
+    /// Numbers of intervals for --method, comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "10", requires = "method")]
+    pub n: Vec<usize>,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

@@ -9,7 +9,8 @@ use mechkit_expr::{ExprError, Sym, parse};
 use thiserror::Error;
 
 use crate::Real;
-use crate::quad::{QuadResult, Tolerance, integrate as quadrature};
+use crate::function::Function;
+use crate::quad::{QuadResult, Rule, Tolerance, integrate as quadrature, integrate_rule};
 use crate::roots::find_all;
 
 /// A formula, a unit or a value that could not be read.
@@ -165,6 +166,69 @@ pub fn integral(
         assumptions,
         definite,
     })
+}
+
+/// One fixed rule's estimate of a definite integral, next to the exact value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RuleEstimate {
+    /// The rule.
+    pub rule: Rule,
+    /// Number of intervals.
+    pub n: usize,
+    /// Its value.
+    pub value: Real,
+    /// `value - reference`.
+    pub error: Real,
+}
+
+/// The estimates of `∫ text dx` over `limits` by each rule with each number of intervals, and
+/// the reference they are measured against: the closed form when the rule table has one
+/// (checked against adaptive quadrature), else adaptive Gauss-Kronrod quadrature.
+///
+/// ```
+/// use mechkit::calculus::rule_estimates;
+/// use mechkit::quad::Rule;
+/// let (reference, rows) = rule_estimates("1/(1 + x^2)", "x", (0.0, 1.0), &[],
+///     &[Rule::Trapezoid], &[10]).unwrap();
+/// assert!((reference - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+/// assert!((rows[0].value - 0.784_981).abs() < 1e-6);
+/// ```
+pub fn rule_estimates(
+    text: &str,
+    x: &str,
+    limits: (Real, Real),
+    params: &Params,
+    rules: &[Rule],
+    ns: &[usize],
+) -> Result<(Real, Vec<RuleEstimate>), CalculusError> {
+    let f = Function::parse(text, &[x], params)?;
+    let exact = integral(text, x, Some(limits), params)?
+        .definite
+        .and_then(|d| match (d.closed_form, d.agree, d.quadrature) {
+            (Some(c), Some(true), _) => Some(c),
+            (_, _, Ok(q)) => Some(q.value),
+            _ => None,
+        })
+        .ok_or_else(|| {
+            CalculusError::Invalid(format!(
+                "`{text}` could not be integrated from {} to {} to compare the rules with",
+                limits.0, limits.1
+            ))
+        })?;
+    let mut rows = Vec::new();
+    for &rule in rules {
+        for &n in ns {
+            let value = integrate_rule(|v| f.at1(v), limits.0, limits.1, rule, n)
+                .map_err(|e| CalculusError::Invalid(format!("{}: {e}", rule.name())))?;
+            rows.push(RuleEstimate {
+                rule,
+                n,
+                value,
+                error: value - exact,
+            });
+        }
+    }
+    Ok((exact, rows))
 }
 
 /// The answer to `lhs = rhs`.

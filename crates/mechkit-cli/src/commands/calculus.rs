@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 use anyhow::{Result, bail};
 use mechkit::calculus::{self, CalculusError, Params};
 use mechkit::expr::sym::Solutions;
+use mechkit::quad::Rule;
 use serde_json::json;
 
 use super::input::{interval, params, value};
@@ -55,6 +56,19 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
         "integrand",
     )?;
     let x = &args.var;
+    let rules = match (&args.method, limits) {
+        (Some(names), Some(lim)) => {
+            let rules = rule_list(names)?;
+            if let Some(bad) = args.n.iter().find(|&&n| n == 0) {
+                bail!("--n {bad}: the number of intervals must be at least 1");
+            }
+            Some(check_expr(
+                calculus::rule_estimates(&args.expr, x, lim, &p, &rules, &args.n),
+                "integrand",
+            )?)
+        }
+        _ => None,
+    };
     if args.json {
         let definite = i.definite.as_ref().map(|d| {
             json!({
@@ -72,6 +86,10 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
             "assumptions": i.assumptions,
             "parameters": p.iter().map(|(k, v)| (k.clone(), json!(v))).collect::<serde_json::Map<_, _>>(),
             "definite": definite,
+            "reference": rules.as_ref().map(|r| r.0),
+            "rules": rules.as_ref().map(|(_, rows)| rows.iter().map(|r| json!({
+                "rule": r.rule.name(), "n": r.n, "value": r.value, "error": r.error,
+            })).collect::<Vec<_>>()),
         });
         print(&format!("{j:#}\n"))?;
     } else {
@@ -114,6 +132,22 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
                 None => {}
             }
         }
+        if let Some((reference, rows)) = &rules {
+            wr!(
+                out,
+                "fixed rules against the exact value {reference} (error = estimate - exact):\n"
+            );
+            for r in rows {
+                wr!(
+                    out,
+                    "  {:<18} n = {:<6} {:<22} error {:+.3e}\n",
+                    r.rule.name(),
+                    r.n,
+                    r.value,
+                    r.error
+                );
+            }
+        }
         print(&out)?;
     }
     let nothing =
@@ -123,6 +157,24 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
     } else {
         Outcome::Success
     })
+}
+
+fn rule_list(names: &[String]) -> Result<Vec<Rule>> {
+    let mut rules = Vec::new();
+    for name in names.iter().map(|n| n.trim()) {
+        if name == "all" {
+            rules.extend(Rule::BASIC);
+            rules.push(Rule::GaussLegendre(Rule::DEFAULT_GAUSS_POINTS));
+            continue;
+        }
+        match Rule::parse(name) {
+            Some(r) => rules.push(r),
+            None => bail!(
+                "--method: unknown rule `{name}`; use left, right, midpoint, trapezoid, simpson, gauss-legendre-N (e.g. gauss-legendre-5) or all"
+            ),
+        }
+    }
+    Ok(rules)
 }
 
 pub fn solve(args: &SolveArgs) -> Result<Outcome> {
