@@ -34,7 +34,7 @@ fn divergence_keeps_the_trajectory_and_writes_the_summary() {
     let csv = std::fs::read_to_string(dir.path().join("trajectory.csv")).unwrap();
     let rows: Vec<&str> = csv.lines().collect();
     // no force has a potential, so there are no U and E columns
-    assert_eq!(rows[0], "t,probe.x,probe.vx,K,work.pull");
+    assert_eq!(rows[0], "t,probe.x,probe.vx,K,work.pull,power.pull");
     assert_eq!(rows.len(), 1 + 5, "t = 0 … 1 s");
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.path().join("summary.json")).unwrap())
