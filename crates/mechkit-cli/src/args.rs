@@ -166,12 +166,13 @@ pub struct PotentialArgs {
     /// Start from the force F(x) instead: U = -∫F dx (symbolic when possible).
     #[arg(long, allow_hyphen_values = true)]
     pub force: Option<String>,
-    /// The variable.
+    /// The variable; "x,y" or "x,y,z" for a potential in 2-D or 3-D (then only the force
+    /// F = -∇U is reported, and its values at --at points).
     #[arg(long, default_value = "x")]
     pub var: String,
     /// The range A:B to analyse and plot (write --range=-1:2 for a negative start).
     #[arg(long, allow_hyphen_values = true)]
-    pub range: String,
+    pub range: Option<String>,
     /// Values of the other names, e.g. "U0=1 eV,a=3.4 Å".
     #[arg(long, allow_hyphen_values = true)]
     pub set: Option<String>,
@@ -187,7 +188,8 @@ pub struct PotentialArgs {
     /// Start speed of the body (default 0).
     #[arg(long, allow_hyphen_values = true)]
     pub v0: Option<String>,
-    /// Also report U, F (and v) at these points, comma-separated.
+    /// Also report U, F (and v) at these points, comma-separated (in 2-D/3-D: points separated
+    /// by `;`, coordinates by `,`).
     #[arg(long, allow_hyphen_values = true)]
     pub at: Option<String>,
     /// Grid intervals used to find equilibria and turning points.

@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use anyhow::{Result, anyhow, bail};
-use mechkit::energy::{Diagram, Motion, Origin, Potential, Stability};
+use mechkit::energy::{Diagram, ForceField, Motion, Origin, Potential, Stability};
 use mechkit::figure::{Band, LineStyle, Marker, MarkerShape, PlotData, Series};
 use serde_json::{Value, json};
 
@@ -16,7 +16,13 @@ use crate::plot::render_svg;
 
 pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
     let p = params(args.set.as_deref())?;
-    let (a, b) = interval(&args.range, "--range", &p)?;
+    if args.var.contains(',') {
+        return gradient(args, &p);
+    }
+    let Some(range) = &args.range else {
+        bail!("give the range to analyse, e.g. --range 0.8:3 (or --range=-1:2)");
+    };
+    let (a, b) = interval(range, "--range", &p)?;
     let (a, b) = (a.min(b), a.max(b));
     let x = args.var.as_str();
     let pot = match (&args.potential, &args.force) {
@@ -138,6 +144,65 @@ pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
             (a, b),
             plot_path.as_ref(),
         ))?;
+    }
+    Ok(Outcome::Success)
+}
+
+/// `F = -∇U` of a potential of 2 or 3 coordinates.
+fn gradient(args: &PotentialArgs, p: &[(String, f64)]) -> Result<Outcome> {
+    let vars: Vec<&str> = args.var.split(',').map(str::trim).collect();
+    let expected = &["x", "y", "z"][..vars.len().min(3)];
+    if vars.len() > 3 || vars != expected {
+        bail!(
+            "--var for a potential field is x,y or x,y,z, not `{}`",
+            args.var
+        );
+    }
+    let Some(u) = &args.potential else {
+        bail!("a field from --force has no single formula to take the gradient of: give U(x, y)");
+    };
+    let field = ForceField::from_potential(u, vars.len(), p).map_err(|e| anyhow!("{e}"))?;
+    let components: Vec<String> = field.formulas().iter().map(ToString::to_string).collect();
+    let points: Vec<Vec<f64>> = match &args.at {
+        Some(list) => split_top_level(list, ';')
+            .into_iter()
+            .map(|pt| {
+                let c = split_top_level(pt, ',')
+                    .into_iter()
+                    .map(|v| value(v, "--at", p))
+                    .collect::<Result<Vec<f64>>>()?;
+                if c.len() == vars.len() {
+                    Ok(c)
+                } else {
+                    bail!("--at `{pt}`: a point needs {} coordinates", vars.len())
+                }
+            })
+            .collect::<Result<_>>()?,
+        None => Vec::new(),
+    };
+    let forces: Vec<Vec<f64>> = points
+        .iter()
+        .map(|r| {
+            let mut f = vec![0.0; vars.len()];
+            field.at(r, &mut f);
+            // -0.0 prints as 0
+            f.iter().map(|v| v + 0.0).collect()
+        })
+        .collect();
+    if args.json {
+        let j = json!({
+            "potential": u,
+            "vars": vars,
+            "force": components,
+            "at": points.iter().zip(&forces).map(|(r, f)| json!({"r": r, "force": f})).collect::<Vec<_>>(),
+        });
+        print(&format!("{j:#}\n"))?;
+    } else {
+        let mut out = format!("U = {u}\nF = -∇U = ({})\n", components.join(", "));
+        for (r, f) in points.iter().zip(&forces) {
+            let _ = writeln!(out, "at {r:?}: F = {f:?}");
+        }
+        print(&out)?;
     }
     Ok(Outcome::Success)
 }

@@ -63,6 +63,34 @@ impl ForceField {
         Ok(Self { components })
     }
 
+    /// The conservative field `F = -∇U` of a potential `U(x, y[, z])` in `dim` = 2 or 3
+    /// dimensions, by symbolic differentiation.
+    ///
+    /// ```
+    /// use mechkit::energy::ForceField;
+    /// let params = [("m".to_string(), 2.0), ("g".to_string(), 9.81), ("k".to_string(), 5.0)];
+    /// let f = ForceField::from_potential("m*g*y + k*x^2/2", 2, &params).unwrap();
+    /// let names: Vec<String> = f.formulas().iter().map(|c| c.to_string()).collect();
+    /// assert_eq!(names, ["-k*x", "-g*m"]);
+    /// let mut force = [0.0; 2];
+    /// f.at(&[0.1, 3.0], &mut force);
+    /// assert_eq!(force, [-0.5, -2.0 * 9.81]);
+    /// ```
+    pub fn from_potential(text: &str, dim: usize, params: &Params) -> Result<Self, CalculusError> {
+        if !(2..=3).contains(&dim) {
+            return Err(CalculusError::Invalid(format!(
+                "a potential field has 2 or 3 coordinates (x, y[, z]), not {dim}"
+            )));
+        }
+        let vars = &AXES[..dim];
+        let u = Function::parse(text, vars, params)?;
+        let components = vars
+            .iter()
+            .map(|v| u.with_sym(Sym::negate(u.sym().diff(v))))
+            .collect();
+        Ok(Self { components })
+    }
+
     /// 2 or 3.
     pub fn dim(&self) -> usize {
         self.components.len()

@@ -1,2 +1,3 @@
 mod diagram;
 mod ledger;
+mod power;
