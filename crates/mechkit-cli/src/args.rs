@@ -126,25 +126,25 @@ pub struct WorkArgs {
 #[derive(Debug, clap::Args)]
 pub struct PowerArgs {
     /// The engine's power, e.g. "20 kW".
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub power: Option<String>,
     /// The mass driven, e.g. "200 kg".
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mass: Option<String>,
     /// Start speed (default 0: from rest).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub v0: Option<String>,
     /// Times to report v, a and x at, comma-separated, e.g. "5 s,10 s".
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub at: Option<String>,
     /// Also report when this speed is reached.
     #[arg(long)]
     pub until_speed: Option<String>,
     /// Average power instead: the work done ...
-    #[arg(long, requires = "time")]
+    #[arg(long, requires = "time", allow_hyphen_values = true)]
     pub work: Option<String>,
     /// ... over this time.
-    #[arg(long, requires = "work")]
+    #[arg(long, requires = "work", allow_hyphen_values = true)]
     pub time: Option<String>,
     /// Directory for the v(t) and x(t) plots [default: out/power].
     #[arg(long, short)]

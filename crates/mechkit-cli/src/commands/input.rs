@@ -4,6 +4,7 @@
 use anyhow::{Result, anyhow, bail};
 use mechkit::calculus::{self, Params};
 use mechkit::expr::Sym;
+use mechkit::expr::units::{Dimension, Quantity};
 
 /// `--set a=1,b=2 m` as names and SI values.
 pub fn params(set: Option<&str>) -> Result<Vec<(String, f64)>> {
@@ -32,6 +33,22 @@ pub fn value(text: &str, what: &str, params: &Params) -> Result<f64> {
         }
     }
     bail!("{what}: {quantity_error}")
+}
+
+/// A quantity of dimension `dim`: a bare number (SI), or a value with units of that dimension
+/// (`"20 kW"` for a power). `what` names the flag in the error.
+pub fn quantity(text: &str, what: &str, dim: Dimension) -> Result<f64> {
+    let q = Quantity::parse(text).map_err(|e| anyhow!("{what}: {e}"))?;
+    if !q.dim.is_none() && q.dim != dim {
+        bail!(
+            "{what} `{text}` has the dimension {}, but {} is needed (a plain number is taken in {})",
+            q.dim.describe(),
+            dim.describe(),
+            dim.derived_symbol()
+                .map_or_else(|| dim.to_string(), str::to_string)
+        );
+    }
+    Ok(q.value)
 }
 
 /// `A:B` (each end as in [`value`]); `flag` names the option in errors.

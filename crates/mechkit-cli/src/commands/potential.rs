@@ -6,10 +6,11 @@ use std::path::PathBuf;
 
 use anyhow::{Result, anyhow, bail};
 use mechkit::energy::{Diagram, ForceField, Motion, Origin, Potential, Stability};
+use mechkit::expr::units::Dimension;
 use mechkit::figure::{Band, LineStyle, Marker, MarkerShape, PlotData, Series};
 use serde_json::{Value, json};
 
-use super::input::{interval, params, split_top_level, value};
+use super::input::{interval, params, quantity, split_top_level, value};
 use super::{Outcome, print};
 use crate::args::PotentialArgs;
 use crate::plot::render_svg;
@@ -41,7 +42,7 @@ pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
             if args.energy.is_some() {
                 bail!("--energy and --mass/--x0/--v0 both set the energy: give one of them");
             }
-            let m = value(m, "--mass", &p)?;
+            let m = quantity(m, "--mass", Dimension::MASS)?;
             if m.is_nan() || m <= 0.0 {
                 bail!("--mass must be positive, not {m}");
             }

@@ -9,15 +9,19 @@ use mechkit::energy::ConstantPower;
 use mechkit::figure::{PlotData, Series};
 use serde_json::json;
 
-use super::input::{split_top_level, value};
+use mechkit::expr::units::Dimension;
+
+use super::input::{quantity, split_top_level};
 use super::{Outcome, print};
 use crate::args::PowerArgs;
 use crate::plot::render_svg;
 
 pub fn power(args: &PowerArgs) -> Result<Outcome> {
-    let none = &[][..];
     if let (Some(w), Some(t)) = (&args.work, &args.time) {
-        let (w, t) = (value(w, "--work", none)?, value(t, "--time", none)?);
+        let (w, t) = (
+            quantity(w, "--work", Dimension::ENERGY)?,
+            quantity(t, "--time", Dimension::TIME)?,
+        );
         if t <= 0.0 {
             bail!("--time must be positive, not {t}");
         }
@@ -37,18 +41,21 @@ pub fn power(args: &PowerArgs) -> Result<Outcome> {
             "give --power and --mass for motion at constant power (e.g. --power \"20 kW\" --mass \"200 kg\" --at \"5 s\"), or --work and --time for an average power"
         );
     };
-    let (power, mass) = (value(power, "--power", none)?, value(mass, "--mass", none)?);
+    let (power, mass) = (
+        quantity(power, "--power", Dimension::POWER)?,
+        quantity(mass, "--mass", Dimension::MASS)?,
+    );
     let v0 = args
         .v0
         .as_deref()
-        .map_or(Ok(0.0), |v| value(v, "--v0", none))?;
+        .map_or(Ok(0.0), |v| quantity(v, "--v0", Dimension::VELOCITY))?;
     let motion = ConstantPower::new(power, mass, v0, 0.0).ok_or_else(|| {
         anyhow!("--power and --mass must be positive and --v0 not negative (got P = {power} W, m = {mass} kg, v0 = {v0} m/s)")
     })?;
     let times: Vec<f64> = match &args.at {
         Some(list) => split_top_level(list, ',')
             .into_iter()
-            .map(|t| value(t, "--at", none))
+            .map(|t| quantity(t, "--at", Dimension::TIME))
             .collect::<Result<_>>()?,
         None => Vec::new(),
     };
@@ -58,7 +65,7 @@ pub fn power(args: &PowerArgs) -> Result<Outcome> {
     let speed_target = args
         .until_speed
         .as_deref()
-        .map(|v| value(v, "--until-speed", none))
+        .map(|v| quantity(v, "--until-speed", Dimension::VELOCITY))
         .transpose()?;
     let t_speed =
         match speed_target {

@@ -24,6 +24,7 @@ mod adaptive;
 mod book;
 mod calculus;
 mod diverge;
+mod energy;
 mod errors;
 mod run;
 mod util;

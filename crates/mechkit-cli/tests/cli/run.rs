@@ -29,7 +29,7 @@ fn feather_run_writes_trajectory_summary_and_plots() {
     let csv = Csv::parse(&dir.read("out/trajectory.csv"));
     assert_eq!(
         csv.header.join(","),
-        "t,feather.x,feather.vx,K,U,E,work.gravity,work.air"
+        "t,feather.x,feather.vx,K,U,E,work.gravity,work.air,power.gravity,power.air"
     );
     assert!(csv.rows.len() > 10, "only {} rows", csv.rows.len());
     let first = &csv.rows[0];
