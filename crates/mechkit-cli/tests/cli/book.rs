@@ -163,14 +163,13 @@ fn book_cases_through_the_command_line() {
     let (mut checked, mut failures) = (0, Vec::new());
     for path in &scripts {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
-        let (id, variant) = match cases.contains_key(&stem) {
-            true => (stem.clone(), None),
-            false => {
-                let (id, v) = stem
-                    .rsplit_once('.')
-                    .expect("a script named after a case id");
-                (id.to_string(), Some(v.to_string()))
-            }
+        let (id, variant) = if cases.contains_key(&stem) {
+            (stem.clone(), None)
+        } else {
+            let (id, v) = stem
+                .rsplit_once('.')
+                .expect("a script named after a case id");
+            (id.to_string(), Some(v.to_string()))
         };
         let case = cases
             .get(&id)
