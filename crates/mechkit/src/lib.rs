@@ -41,10 +41,13 @@
 //! - [`roots`]: Brent's method; every root on an interval.
 //! - [`calculus`]: derivatives, integrals (closed form and quadrature), equations, units.
 //! - [`quad`]: adaptive Gauss-Kronrod quadrature of functions.
+//! - [`data`]: measured data files (columns of numbers, optional header) with line numbers in
+//!   every error.
 //! - [`scenario`] (feature `scenario`): TOML scenario files → model → run → summary.
 //! - [`units`]: re-export of the unit system of `mechkit-expr`.
 
 pub mod calculus;
+pub mod data;
 pub mod energy;
 mod error;
 pub mod forces;
