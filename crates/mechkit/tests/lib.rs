@@ -2,6 +2,7 @@
 
 mod book;
 mod data;
+mod deriv;
 mod energy;
 mod ode;
 mod scenario;
