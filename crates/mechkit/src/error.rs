@@ -15,6 +15,12 @@ pub enum Error {
     /// A simulation could not run.
     #[error(transparent)]
     Simulate(#[from] crate::simulate::SimulateError),
+    /// A data file could not be read, or lacks a column.
+    #[error(transparent)]
+    Data(#[from] crate::data::DataError),
+    /// Samples that cannot be differentiated.
+    #[error(transparent)]
+    Deriv(#[from] crate::deriv::DerivError),
     /// A scenario file is invalid or its run failed.
     #[cfg(feature = "scenario")]
     #[error(transparent)]

@@ -1,6 +1,8 @@
 //! Integration tests of the mechkit library, one module per area (as in nalgebra's tests).
 
 mod book;
+mod data;
+mod deriv;
 mod energy;
 mod ode;
 mod scenario;

@@ -1,0 +1,3 @@
+mod convergence;
+mod functions;
+mod tennis_ball;
