@@ -19,6 +19,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit solve "cos(x) = x" --for x --in 0:1
   mechkit units "60 km/h" --to m/s
   mechkit potential "U0*((a/r)^12-(b/r)^6)" --var r --range 0.8:3 --set U0=1,a=1,b=1 --energy=-0.1
+  mechkit derive examples/data/fallingtennisball02.txt --smooth 21:2
   mechkit work examples/data/forcedata.d --plot out/work.svg
   mechkit work --field "y, -x" --path "cos(s), sin(s)" --param s=0:2*pi
   mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
@@ -65,9 +66,41 @@ pub enum Command {
     Potential(PotentialArgs),
     /// Motion at constant power (v, a, x at given times), or an average power W/t.
     Power(PowerArgs),
+    /// Velocity and acceleration from a position-time data file (CSV and plots).
+    Derive(DeriveArgs),
     /// The work ∫F dx from a data file (x, F columns; cumulative W(x)), or of a force field
     /// along a path (--field with --path or --through).
     Work(WorkArgs),
+}
+
+/// `mechkit derive`.
+#[derive(Debug, clap::Args)]
+pub struct DeriveArgs {
+    /// Data file: a time column and position columns (whitespace or comma separated; # and %
+    /// start comments; an optional header line names the columns).
+    pub file: PathBuf,
+    /// The time column (name or 1-based number) [default: the first].
+    #[arg(long)]
+    pub t: Option<String>,
+    /// The position columns, comma-separated [default: every other column].
+    #[arg(long, value_delimiter = ',')]
+    pub x: Option<Vec<String>>,
+    /// Finite differences: central (second order), forward (the course's loop) or backward.
+    #[arg(long, default_value = "central")]
+    pub method: String,
+    /// Savitzky-Golay smoothing for noisy data: WINDOW[:ORDER] samples, e.g. 21:2 (uniform
+    /// time steps only).
+    #[arg(long)]
+    pub smooth: Option<String>,
+    /// Output directory for derived.csv and the plots [default: out/<file name>].
+    #[arg(long, short)]
+    pub out: Option<PathBuf>,
+    /// Do not draw plots.
+    #[arg(long)]
+    pub no_plots: bool,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `mechkit work`.

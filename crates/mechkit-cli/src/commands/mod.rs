@@ -2,6 +2,7 @@
 
 mod calculus;
 mod check;
+mod derive;
 mod input;
 mod potential;
 mod power;
@@ -33,6 +34,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Potential(args) => potential::potential(&args),
         Command::Power(args) => power::power(&args),
         Command::Work(args) => work::work(&args),
+        Command::Derive(args) => derive::derive(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {

@@ -6,6 +6,7 @@
 //!   grids) is the better default.
 //! - Noisy samples on a uniform grid: [`SavitzkyGolay`] filters smooth and differentiate by
 //!   local least-squares polynomials ([`uniform_step`] tells whether the grid is uniform).
+//! - Positions in time: [`kinematics`] gives velocity and acceleration either way.
 //! - Functions: [`central`] differences, and [`derivative`] by Ridders' extrapolation with an
 //!   error estimate.
 //!
@@ -51,6 +52,7 @@
 
 mod difference;
 mod error;
+mod kinematics;
 mod polyfit;
 mod richardson;
 mod savitzky_golay;
@@ -58,5 +60,6 @@ mod savitzky_golay;
 pub(crate) use difference::check_samples;
 pub use difference::{Difference, differentiate, differentiate_into, second_derivative};
 pub use error::DerivError;
+pub use kinematics::{Derivation, Kinematics, kinematics};
 pub use richardson::{Estimate, central, derivative};
 pub use savitzky_golay::{SavitzkyGolay, uniform_step};

@@ -58,7 +58,7 @@ pub use crate::figure::{PlotData, Series};
 pub use compare::{CompareSettings, Comparison, MethodResult};
 pub use error::{ErrorKind, Location, ScenarioError};
 pub use observe::Observable;
-pub use output::{csv_header, write_atomic};
+pub use output::{csv_header, push_number, write_atomic};
 pub use plot::{OutputTimes, PlotSpec, SeriesSpec};
 pub use run::RunOutput;
 pub use summary::{
