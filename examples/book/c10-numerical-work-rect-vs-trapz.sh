@@ -9,3 +9,9 @@ mechkit integrate "-F0*sin(2*pi*x/b)" --from 0 --to b/4 --set F0=1,b=1 --method 
 #> mid_n10 = /rules/2/value
 #> trapz_n10 = /rules/4/value
 #> trapz_n100 = /rules/5/value
+# The same force sampled at 101 points (examples/data/forcedata.d, written by forcedata.py)
+# and integrated as data, like the course's trapz over forcedata.d:
+mechkit work examples/data/forcedata.d --method left --json
+#> left_n100 = /work
+mechkit work examples/data/forcedata.d --method trapezoid --json
+#> trapz_n100 = /work

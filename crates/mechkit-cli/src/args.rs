@@ -12,7 +12,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit check examples/projectile_drag.toml
       validate a scenario without running it
   mechkit list-integrators
-  mechkit diff "-F0*sin(2*pi*x/b)" --var x
+  mechkit diff "-F0*sin(2*pi*x/b)" --var x --at 0.1 --set F0=1,b=1
   mechkit integrate "1/(a+x^2)" --var x --from 0 --to 1 --set a=1
   mechkit integrate "-F0*sin(2*pi*x/b)" --from 0 --to b/4 --set F0=1,b=1 --method left,trapezoid --n 10,100
   mechkit solve "x^2 - 5*x + 6 = 0" --for x
@@ -248,6 +248,16 @@ pub struct DiffArgs {
     /// The variable to differentiate with respect to.
     #[arg(long, default_value = "x")]
     pub var: String,
+    /// Also evaluate the derivative at this point, symbolically and by central differences
+    /// with Richardson extrapolation, and check that they agree.
+    #[arg(long, allow_hyphen_values = true)]
+    pub at: Option<String>,
+    /// Initial step of the numerical derivative (default 0.1).
+    #[arg(long, requires = "at")]
+    pub step: Option<String>,
+    /// Values of the other names, e.g. "F0=1,b=2" (needed with --at).
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

@@ -66,6 +66,49 @@ pub fn derivative(text: &str, x: &str) -> Result<Derivative, CalculusError> {
     Ok(Derivative { input, result })
 }
 
+/// The value of a derivative at a point by the symbolic derivative and by Ridders'
+/// extrapolation of central differences, side by side.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DerivativeCheck {
+    /// Where.
+    pub at: Real,
+    /// The symbolic derivative's value.
+    pub symbolic: Real,
+    /// Ridders' estimate.
+    pub numeric: Real,
+    /// Its error estimate.
+    pub numeric_error: Real,
+    /// Whether they agree within the estimate (or 1e-9 relative).
+    pub agree: bool,
+}
+
+/// `d/dx text` at `at`, symbolically and numerically (initial step `h`, e.g. 0.1 or a tenth
+/// of the scale of `x`), with `params` for the other names.
+///
+/// ```
+/// let c = mechkit::calculus::derivative_at("x^3*sin(x)", "x", 1.2, &[], 0.1).unwrap();
+/// assert!(c.agree && (c.symbolic - c.numeric).abs() < 1e-10);
+/// ```
+pub fn derivative_at(
+    text: &str,
+    x: &str,
+    at: Real,
+    params: &Params,
+    h: Real,
+) -> Result<DerivativeCheck, CalculusError> {
+    let f = Function::parse(text, &[x], params)?;
+    let symbolic = f.diff(x).at1(at);
+    let est = crate::deriv::derivative(|v| f.at1(v), at, h);
+    let agree = (symbolic - est.value).abs() <= (10.0 * est.error).max(1e-9 * symbolic.abs());
+    Ok(DerivativeCheck {
+        at,
+        symbolic,
+        numeric: est.value,
+        numeric_error: est.error,
+        agree,
+    })
+}
+
 /// An integral: the antiderivative when the rule table has one, and the definite value by
 /// both routes when limits are given.
 #[derive(Debug, Clone, PartialEq)]

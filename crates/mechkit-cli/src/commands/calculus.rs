@@ -35,13 +35,60 @@ fn check_expr<T>(r: Result<T, CalculusError>, flag: &str) -> Result<T> {
 
 pub fn diff(args: &DiffArgs) -> Result<Outcome> {
     let d = check_expr(calculus::derivative(&args.expr, &args.var), "formula")?;
+    let p = params(args.set.as_deref())?;
+    let check = match &args.at {
+        Some(at) => {
+            let at = value(at, "--at", &p)?;
+            let h = args
+                .step
+                .as_deref()
+                .map_or(Ok(0.1), |h| value(h, "--step", &p))?;
+            if h.is_nan() || h <= 0.0 {
+                bail!("--step must be positive");
+            }
+            Some(check_expr(
+                calculus::derivative_at(&args.expr, &args.var, at, &p, h),
+                "formula",
+            )?)
+        }
+        None => None,
+    };
+    let x = &args.var;
     if args.json {
-        let j = json!({ "input": d.input.to_string(), "var": args.var, "derivative": d.result.to_string() });
+        let j = json!({
+            "input": d.input.to_string(),
+            "var": x,
+            "derivative": d.result.to_string(),
+            "at": check.map(|c| json!({
+                "x": c.at, "symbolic": c.symbolic, "numeric": c.numeric,
+                "numeric_error": c.numeric_error, "agree": c.agree,
+            })),
+        });
         print(&format!("{j:#}\n"))?;
     } else {
-        print(&format!("d/d{} {} = {}\n", args.var, d.input, d.result))?;
+        let mut out = format!("d/d{x} {} = {}\n", d.input, d.result);
+        if let Some(c) = check {
+            wr!(
+                out,
+                "at {x} = {}:\n  symbolic  {}\n  numeric   {} ± {:.1e} (central differences, Richardson extrapolation)\n  {}\n",
+                c.at,
+                c.symbolic,
+                c.numeric,
+                c.numeric_error,
+                if c.agree {
+                    "the two agree"
+                } else {
+                    "they DISAGREE"
+                }
+            );
+        }
+        print(&out)?;
     }
-    Ok(Outcome::Success)
+    Ok(if check.is_some_and(|c| !c.agree) {
+        Outcome::ComputationFailed
+    } else {
+        Outcome::Success
+    })
 }
 
 pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {

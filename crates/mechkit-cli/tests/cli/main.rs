@@ -23,6 +23,7 @@
 mod adaptive;
 mod book;
 mod calculus;
+mod data;
 mod diverge;
 mod energy;
 mod errors;

@@ -2,7 +2,7 @@
 //! and potential energy, and the work-energy theorem as a check, `W_net = ΔK`), and the tools
 //! of the work-energy chapters: potentials and forces in 1-D, energy diagrams with equilibria
 //! and turning points, the speed a body has by the work-energy theorem, line integrals of force
-//! fields, and motion at constant power.
+//! fields, motion at constant power, and the work (or impulse) of a sampled force.
 
 mod constant_power;
 mod diagram;
@@ -10,6 +10,7 @@ mod ledger;
 mod line_integral;
 mod motion;
 mod potential;
+mod sampled_work;
 
 pub use constant_power::ConstantPower;
 pub use diagram::{Diagram, EnergyCut, Equilibrium, Region, Stability};
@@ -17,3 +18,4 @@ pub use ledger::EnergyLedger;
 pub use line_integral::{ForceField, Path, PathWork};
 pub use motion::Motion;
 pub use potential::{Origin, Potential};
+pub use sampled_work::SampledIntegral;
