@@ -36,14 +36,12 @@ fn column(text: &str, flag: &str) -> Result<ColumnRef> {
 
 /// Whether the abscissa is a time: by --of, else by the column's name.
 fn over_time(args: &WorkArgs, name: &str) -> bool {
-    match args.of.as_deref() {
-        Some(of) => of == "time",
-        None => {
-            let n = name.trim().to_ascii_lowercase();
-            let head = n.split([' ', '[', '(']).next().unwrap_or("");
-            head == "t" || head == "time"
-        }
+    if let Some(of) = args.of.as_deref() {
+        return of == "time";
     }
+    let n = name.trim().to_ascii_lowercase();
+    let head = n.split([' ', '[', '(']).next().unwrap_or("");
+    head == "t" || head == "time"
 }
 
 fn data_work(args: &WorkArgs, file: &Path) -> Result<Outcome> {

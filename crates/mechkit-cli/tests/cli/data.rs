@@ -2,6 +2,8 @@
 //! and plot), `derive` on position samples, `diff --at`, and every bad data file the issue
 //! names: a ragged row, a non-numeric cell, NaN, unsorted or duplicate x, fewer than 2 points.
 
+use std::fmt::Write as _;
+
 use crate::util::{Csv, Dir, examples, num};
 
 fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
@@ -21,7 +23,7 @@ fn work_of_a_spring_from_a_csv_with_a_header() {
     let mut text = String::from("# a spring\nx [m], F [N]\n");
     for i in 0..=30 {
         let x = 1.2 - 0.01 * f64::from(i);
-        text.push_str(&format!("{x}, {}\n", -100.0 * (x - 1.0)));
+        writeln!(text, "{x}, {}", -100.0 * (x - 1.0)).unwrap();
     }
     dir.create("spring.csv", &text);
     let j = json(
