@@ -222,6 +222,10 @@ pub struct RuleEstimate {
     pub value: Real,
     /// `value - reference`.
     pub error: Real,
+    /// The convergence order measured against the previous number of intervals of the same
+    /// rule, `ln(e_prev/e)/ln(n/n_prev)` (none for the first, or when an error is down at
+    /// rounding level).
+    pub observed_order: Option<Real>,
 }
 
 /// The estimates of `∫ text dx` over `limits` by each rule with each number of intervals, and
@@ -235,6 +239,8 @@ pub struct RuleEstimate {
 ///     &[Rule::Trapezoid], &[10]).unwrap();
 /// assert!((reference - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
 /// assert!((rows[0].value - 0.784_981).abs() < 1e-6);
+/// let (_, rows) = rule_estimates("exp(x)", "x", (0.0, 1.0), &[], &[Rule::Simpson], &[8, 16]).unwrap();
+/// assert!((rows[1].observed_order.unwrap() - 4.0).abs() < 0.05);
 /// ```
 pub fn rule_estimates(
     text: &str,
@@ -260,14 +266,24 @@ pub fn rule_estimates(
         })?;
     let mut rows = Vec::new();
     for &rule in rules {
+        let mut previous: Option<(usize, Real)> = None;
         for &n in ns {
             let value = integrate_rule(|v| f.at1(v), limits.0, limits.1, rule, n)
                 .map_err(|e| CalculusError::Invalid(format!("{}: {e}", rule.name())))?;
+            let error = value - exact;
+            // errors at the level of rounding carry no order
+            let noise = 1e3 * Real::EPSILON * exact.abs().max(Real::MIN_POSITIVE);
+            let observed_order = previous.and_then(|(n0, e0)| {
+                let o = (e0.abs() / error.abs()).ln() / (n as Real / n0 as Real).ln();
+                (o.is_finite() && n != n0 && e0.abs() > noise && error.abs() > noise).then_some(o)
+            });
+            previous = Some((n, error));
             rows.push(RuleEstimate {
                 rule,
                 n,
                 value,
-                error: value - exact,
+                error,
+                observed_order,
             });
         }
     }

@@ -136,6 +136,7 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
             "reference": rules.as_ref().map(|r| r.0),
             "rules": rules.as_ref().map(|(_, rows)| rows.iter().map(|r| json!({
                 "rule": r.rule.name(), "n": r.n, "value": r.value, "error": r.error,
+                "observed_order": r.observed_order,
             })).collect::<Vec<_>>()),
         });
         print(&format!("{j:#}\n"))?;
@@ -187,12 +188,16 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
             for r in rows {
                 wr!(
                     out,
-                    "  {:<18} n = {:<6} {:<22} error {:+.3e}\n",
+                    "  {:<18} n = {:<6} {:<22} error {:+.3e}",
                     r.rule.name(),
                     r.n,
                     r.value,
                     r.error
                 );
+                if let Some(o) = r.observed_order {
+                    wr!(out, "   order {o:.2}");
+                }
+                out.push('\n');
             }
         }
         print(&out)?;
