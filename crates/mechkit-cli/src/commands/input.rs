@@ -82,6 +82,14 @@ fn split_interval(text: &str) -> Option<(&str, &str)> {
     None
 }
 
+/// A number as the CSV files write it: shortest round-trip digits, in exponent form when
+/// that is shorter (`1e15`, `1e-31`).
+pub fn show(x: f64) -> String {
+    let mut s = String::new();
+    mechkit::scenario::push_number(&mut s, x);
+    s
+}
+
 /// Splits a list at commas outside parentheses (`"atan2(y, x), 0"` has two items).
 pub fn split_top_level(text: &str, sep: char) -> Vec<&str> {
     let mut out = Vec::new();

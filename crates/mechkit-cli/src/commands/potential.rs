@@ -10,7 +10,7 @@ use mechkit::expr::units::Dimension;
 use mechkit::figure::{Band, LineStyle, Marker, MarkerShape, PlotData, Series};
 use serde_json::{Value, json};
 
-use super::input::{interval, params, quantity, split_top_level, value};
+use super::input::{interval, params, quantity, show, split_top_level, value};
 use super::{Outcome, print};
 use crate::args::PotentialArgs;
 use crate::plot::render_svg;
@@ -317,12 +317,13 @@ fn text(
     for &v in at {
         let _ = write!(
             out,
-            "at {x} = {v}: U = {}, F = {}",
-            pot.potential(v),
-            pot.force(v)
+            "at {x} = {}: U = {}, F = {}",
+            show(v),
+            show(pot.potential(v)),
+            show(pot.force(v))
         );
         if let Some(m) = motion {
-            let _ = write!(out, ", v = {}", m.speed_at(pot, v));
+            let _ = write!(out, ", v = {}", show(m.speed_at(pot, v)));
         }
         out.push('\n');
     }
