@@ -3,6 +3,7 @@
 mod book;
 mod energy;
 mod ode;
+mod quad;
 mod scenario;
 mod simulate;
 mod util;
