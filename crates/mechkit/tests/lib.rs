@@ -5,6 +5,7 @@ mod data;
 mod deriv;
 mod energy;
 mod ode;
+mod quad;
 mod scenario;
 mod simulate;
 mod util;
