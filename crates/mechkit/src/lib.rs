@@ -40,7 +40,8 @@
 //!   diagnosis.
 //! - [`roots`]: Brent's method; every root on an interval.
 //! - [`calculus`]: derivatives, integrals (closed form and quadrature), equations, units.
-//! - [`quad`]: adaptive Gauss-Kronrod quadrature of functions.
+//! - [`quad`]: quadrature of functions (adaptive Gauss-Kronrod; the fixed rules of a course,
+//!   Gauss-Legendre) and of sampled data (trapezoid, Simpson, running integrals).
 //! - [`scenario`] (feature `scenario`): TOML scenario files → model → run → summary.
 //! - [`units`]: re-export of the unit system of `mechkit-expr`.
 
