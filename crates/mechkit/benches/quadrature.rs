@@ -49,7 +49,7 @@ fn quadrature(c: &mut Criterion) {
         .throughput(Throughput::Elements(N as u64))
         .sample_size(20)
         .warm_up_time(Duration::from_secs(1))
-        .measurement_time(Duration::from_secs(4));
+        .measurement_time(Duration::from_secs(5));
     group.bench_function("trapz", |b| b.iter(|| trapz(black_box(&x), black_box(&y))));
     group.bench_function("trapz_uniform", |b| {
         b.iter(|| trapz_uniform(black_box(h), black_box(&y)));

@@ -44,7 +44,8 @@
 //!   diagnosis.
 //! - [`roots`]: Brent's method; every root on an interval.
 //! - [`calculus`]: derivatives, integrals (closed form and quadrature), equations, units.
-//! - [`quad`]: adaptive Gauss-Kronrod quadrature of functions.
+//! - [`quad`]: quadrature of functions (adaptive Gauss-Kronrod; the fixed rules of a course,
+//!   Gauss-Legendre) and of sampled data (trapezoid, Simpson, running integrals).
 //! - [`data`]: measured data files (columns of numbers, optional header) with line numbers in
 //!   every error.
 //! - [`deriv`]: derivatives of sampled data (finite differences, Savitzky-Golay) and of

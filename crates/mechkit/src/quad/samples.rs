@@ -103,7 +103,9 @@ pub fn cumtrapz_into(x: &[Real], y: &[Real], out: &mut [Real]) {
 /// `∫ y dx` by composite Simpson on samples at any spacing, as SciPy's `simpson(y, x=x)`
 /// (≥ 1.11): parabolas through pairs of intervals, and with an odd number of intervals the
 /// last one from the parabola through the last three samples. Two samples give the
-/// trapezoid, fewer give 0.
+/// trapezoid, fewer give 0. Samples in reverse order give the negated integral when the number
+/// of intervals is even; when it is odd the pairs start from the other end, so the value
+/// differs by the rule's error (SciPy's does the same).
 ///
 /// Panics if `x` and `y` have different lengths.
 ///
@@ -233,6 +235,7 @@ mod tests {
 
     #[test]
     fn decreasing_x_negates() {
+        // 10 intervals: Simpson pairs the same intervals in both directions
         let x: Vec<Real> = (0..11).map(|i| (Real::from(i) * 0.3).powf(1.5)).collect();
         let y: Vec<Real> = x.iter().map(|x| x.sin()).collect();
         let (xr, yr): (Vec<Real>, Vec<Real>) = (
