@@ -21,6 +21,18 @@ pub enum Error {
     /// Samples that cannot be differentiated.
     #[error(transparent)]
     Deriv(#[from] crate::deriv::DerivError),
+    /// Adaptive quadrature failed.
+    #[error(transparent)]
+    Quad(#[from] crate::quad::QuadError),
+    /// A fixed quadrature rule cannot be applied.
+    #[error(transparent)]
+    Rule(#[from] crate::quad::RuleError),
+    /// Samples that cannot be integrated.
+    #[error(transparent)]
+    Samples(#[from] crate::quad::SamplesError),
+    /// A formula, unit or question of the calculus tools is invalid.
+    #[error(transparent)]
+    Calculus(#[from] crate::calculus::CalculusError),
     /// A scenario file is invalid or its run failed.
     #[cfg(feature = "scenario")]
     #[error(transparent)]

@@ -303,6 +303,19 @@ mod tests {
         assert_eq!(f.curl().iter().filter(|c| c.is_zero()).count(), 3);
         let u = f.potential().unwrap();
         assert_eq!(u.to_string(), "k*x^2/2 + k*y^2/2 + k*z^2/2");
+        // along a helix r(s) = (cos s, sin s, s), s from 0 to π: W = -ΔU = -k π²/2
+        let helix = Path::Parametric {
+            components: ["cos(s)", "sin(s)", "s"]
+                .iter()
+                .map(|c| Function::parse(c, &["s"], &[]).unwrap())
+                .collect(),
+            from: 0.0,
+            to: std::f64::consts::PI,
+        };
+        let w = f.work_along(&helix, Tolerance::default()).unwrap();
+        let pi2 = std::f64::consts::PI.powi(2);
+        assert!((w.work + 3.0 * pi2 / 2.0).abs() < 1e-12, "{w:?}");
+        assert!((w.length - std::f64::consts::PI * 2f64.sqrt()).abs() < 1e-12);
     }
 
     #[test]
