@@ -14,9 +14,18 @@ pub fn params(set: Option<&str>) -> Result<Vec<(String, f64)>> {
     })
 }
 
-/// A number, a quantity with units (converted to SI), or a formula of the `--set` names and
-/// `pi`/`e` (`2*pi`, `b/4`). `what` names the flag in the error.
+/// A number, a quantity with units (converted to SI), a formula of the `--set` names and
+/// `pi`/`e` (`2*pi`, `b/4`), or `inf`/`-inf` (for integration limits). `what` names the flag
+/// in the error.
 pub fn value(text: &str, what: &str, params: &Params) -> Result<f64> {
+    let bare = text.trim();
+    let (sign, magnitude) = match bare.strip_prefix('-') {
+        Some(rest) => (-1.0, rest.trim()),
+        None => (1.0, bare.strip_prefix('+').unwrap_or(bare).trim()),
+    };
+    if ["inf", "infinity", "∞"].contains(&magnitude.to_ascii_lowercase().as_str()) {
+        return Ok(sign * f64::INFINITY);
+    }
     let quantity_error = match calculus::parse_params(&format!("{what}={text}")) {
         Ok(v) => return Ok(v[0].1),
         Err(e) => e,
@@ -123,6 +132,8 @@ mod tests {
         let e = value("c/4", "--to", &p).unwrap_err().to_string();
         assert!(e.contains("--set c="), "{e}");
         assert_eq!(interval("-1:2", "--range", &p).unwrap(), (-1.0, 2.0));
+        assert_eq!(value("-inf", "--from", &p).unwrap(), f64::NEG_INFINITY);
+        assert_eq!(value("∞", "--to", &p).unwrap(), f64::INFINITY);
         assert!(interval("1", "--range", &p).is_err());
         assert_eq!(split_top_level("atan2(y, x), 0", ','), ["atan2(y, x)", "0"]);
     }

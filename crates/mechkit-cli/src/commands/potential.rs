@@ -24,6 +24,11 @@ pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
         bail!("give the range to analyse, e.g. --range 0.8:3 (or --range=-1:2)");
     };
     let (a, b) = interval(range, "--range", &p)?;
+    if !(a.is_finite() && b.is_finite()) {
+        bail!(
+            "--range {range}: a diagram samples its range, so both ends must be finite (for the speed far away use a large end, e.g. --range 0.01:1e9, or --at 1e15)"
+        );
+    }
     let (a, b) = (a.min(b), a.max(b));
     let x = args.var.as_str();
     let pot = match (&args.potential, &args.force) {

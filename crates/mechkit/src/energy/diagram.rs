@@ -122,7 +122,14 @@ impl Potential {
     /// assert!((d.equilibria[0].barrier.unwrap() - 1.0 / std::f64::consts::PI).abs() < 1e-12);
     /// assert_eq!(d.energy.unwrap().turning_points.len(), 4);
     /// ```
+    ///
+    /// # Panics
+    /// If `from` or `to` is not finite (a grid needs a finite range).
     pub fn diagram(&self, from: Real, to: Real, energy: Option<Real>, samples: usize) -> Diagram {
+        assert!(
+            from.is_finite() && to.is_finite(),
+            "an energy diagram needs a finite range, not [{from}, {to}]"
+        );
         let (a, b) = (from.min(to), from.max(to));
         let n = samples.max(2);
         let x: Vec<Real> = (0..=n)
