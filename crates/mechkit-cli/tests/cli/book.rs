@@ -13,8 +13,12 @@ use serde_json::Value;
 
 use crate::util::{Dir, examples};
 
-#[path = "../../../mechkit/tests/book/tolerance.rs"]
-mod tolerance;
+#[path = "../../../mechkit/tests/book/cases.rs"]
+mod shared;
+
+fn cases() -> BTreeMap<String, Value> {
+    shared::cases(&examples().join("book/cases.jsonl"))
+}
 
 /// Splits a command line into words as a POSIX shell would for the quoting used in the
 /// scripts: whitespace separates, `"…"` (with `\"` and `\\`) and `'…'` group.
@@ -67,17 +71,6 @@ fn shell_words(line: &str) -> Vec<String> {
         words.push(word);
     }
     words
-}
-
-fn cases() -> BTreeMap<String, Value> {
-    let text = std::fs::read_to_string(examples().join("book/cases.jsonl")).unwrap();
-    text.lines()
-        .filter(|l| !l.trim().is_empty())
-        .map(|l| {
-            let v: Value = serde_json::from_str(l).unwrap();
-            (v["id"].as_str().unwrap().to_string(), v)
-        })
-        .collect()
 }
 
 /// Runs one script; returns (checked, failures).
@@ -133,7 +126,7 @@ fn run_script(path: &Path, case: &Value, expected: &Value) -> (usize, Vec<String
             let ok = match (want, got) {
                 (Value::Number(w), Value::Number(g)) => {
                     let (w, g) = (w.as_f64().unwrap(), g.as_f64().unwrap());
-                    let tol = tolerance::tolerance(&case["tolerance"], key, w);
+                    let tol = shared::tolerance(&case["tolerance"], key, w);
                     println!("{stem}: {key} expected {w} got {g} (tolerance {tol:e})");
                     (g - w).abs() <= tol
                 }

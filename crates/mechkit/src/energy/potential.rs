@@ -177,16 +177,12 @@ impl Potential {
 mod tests {
     use super::*;
 
-    fn params(list: &[(&str, Real)]) -> Vec<(String, Real)> {
-        list.iter().map(|(k, v)| ((*k).to_string(), *v)).collect()
-    }
-
     #[test]
     fn force_from_potential_and_back() {
         let p = Potential::from_force(
             "-F0*sin(2*pi*x/b)",
             "x",
-            &params(&[("F0", 1.0), ("b", 1.0)]),
+            &crate::calculus::parse_params("F0=1,b=1").unwrap(),
             0.0,
         )
         .unwrap();

@@ -11,18 +11,11 @@ use serde_json::Value;
 
 use crate::util::workspace;
 
-mod tolerance;
-use tolerance::tolerance;
+mod cases;
+use cases::tolerance;
 
 fn cases() -> BTreeMap<String, Value> {
-    let text = std::fs::read_to_string(workspace().join("examples/book/cases.jsonl")).unwrap();
-    text.lines()
-        .filter(|l| !l.trim().is_empty())
-        .map(|l| {
-            let v: Value = serde_json::from_str(l).unwrap();
-            (v["id"].as_str().unwrap().to_string(), v)
-        })
-        .collect()
+    cases::cases(&workspace().join("examples/book/cases.jsonl"))
 }
 
 #[test]

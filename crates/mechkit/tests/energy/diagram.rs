@@ -5,8 +5,8 @@ use std::f64::consts::PI;
 
 use mechkit::energy::{Origin, Potential, Stability};
 
-fn params(list: &[(&str, f64)]) -> Vec<(String, f64)> {
-    list.iter().map(|(k, v)| ((*k).to_string(), *v)).collect()
+fn params(text: &str) -> Vec<(String, f64)> {
+    mechkit::calculus::parse_params(text).unwrap()
 }
 
 #[test]
@@ -15,7 +15,7 @@ fn lennard_jones_equilibrium_at_two_to_the_sixth() {
         let p = Potential::from_potential(
             "U0*((a/r)^12 - (b/r)^6)",
             "r",
-            &params(&[("U0", 2.0), ("a", a), ("b", b)]),
+            &params(&format!("U0=2,a={a},b={b}")),
         )
         .unwrap();
         let d = p.diagram(0.8 * a, 3.0 * a, None, 2000);
@@ -33,13 +33,7 @@ fn lennard_jones_equilibrium_at_two_to_the_sixth() {
 
 #[test]
 fn periodic_surface_alternates_stable_and_unstable_with_barrier_one_over_pi() {
-    let p = Potential::from_force(
-        "-F0*sin(2*pi*x/b)",
-        "x",
-        &params(&[("F0", 1.0), ("b", 1.0)]),
-        0.0,
-    )
-    .unwrap();
+    let p = Potential::from_force("-F0*sin(2*pi*x/b)", "x", &params("F0=1.0,b=1.0"), 0.0).unwrap();
     let d = p.diagram(-1.2, 2.2, Some(-0.1), 3000);
     let xs: Vec<f64> = d.equilibria.iter().map(|e| e.x).collect();
     assert_eq!(xs.len(), 7, "{xs:?}");
@@ -140,7 +134,7 @@ fn numeric_potential_gives_the_same_diagram_as_the_closed_form() {
 fn ion_head_on_turning_point_and_speed_far_away() {
     // U = C/x, m = 1, starts at x = b = 1 moving in at v0 = 2.5
     let (c, m, b, v0) = (1.0, 1.0, 1.0, 2.5);
-    let p = Potential::from_potential("C/x", "x", &params(&[("C", c)])).unwrap();
+    let p = Potential::from_potential("C/x", "x", &params(&format!("C={c}"))).unwrap();
     let motion = p.motion(m, b, v0, 0.05, 1e8, 4000);
     let x1 = c / (0.5 * m * v0 * v0 + c / b);
     assert!((motion.left_turn.unwrap() - x1).abs() < 1e-12);

@@ -1,7 +1,22 @@
-//! The tolerance of an expected value of `book_cases.jsonl`, shared by the library's and the
-//! command line's book tests (the CLI test crate includes this file by path).
+//! Reading `book_cases.jsonl` and the tolerance of an expected value, shared by the library's
+//! and the command line's book tests (the CLI test crate includes this file by path).
+
+use std::collections::BTreeMap;
+use std::path::Path;
 
 use serde_json::Value;
+
+/// The cases of a `cases.jsonl` file by id.
+pub fn cases(path: &Path) -> BTreeMap<String, Value> {
+    let text = std::fs::read_to_string(path).unwrap();
+    text.lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            let v: Value = serde_json::from_str(l).unwrap();
+            (v["id"].as_str().unwrap().to_string(), v)
+        })
+        .collect()
+}
 
 /// The tolerance for expected key `key`: `abs_<p>`/`rel_<p>` for keys starting with `p`
 /// (longest prefix), else `abs`/`rel`, else half a unit of the expected value's last digit.
