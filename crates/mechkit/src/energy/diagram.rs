@@ -192,9 +192,11 @@ fn singular_points(grid: &Grid<'_>, force: &[Real]) -> Vec<Real> {
     }
     for i in 1..x.len() {
         let f = |v: Real| grid.p.force(v);
+        // U inside the interval from its left end (a closed form, or quadrature over one step)
+        let u_here = |v: Real| grid.p.potential_between(x[i - 1], v, u[i - 1]);
         for (values, g) in [
             ((force[i - 1], force[i]), &f as &dyn Fn(Real) -> Real),
-            ((u[i - 1], u[i]), &|v: Real| grid.p.potential(v)),
+            ((u[i - 1], u[i]), &u_here),
         ] {
             let (g0, g1) = values;
             if !(g0.is_finite() && g1.is_finite()) || g0.signum() == g1.signum() {
