@@ -146,6 +146,7 @@ fn data_work(args: &WorkArgs, file: &Path) -> Result<Outcome> {
             "delta_v": delta_v,
             "v_end": delta_v.map(|d| v0 + d).or_else(|| speeds.as_ref().and_then(|s| s.last().copied()).filter(|v| v.is_finite())),
             "turning_point": turning,
+            "cumulative": w.cumulative,
             "csv": args.out.as_ref().map(|p| p.display().to_string()),
             "plot": args.plot.as_ref().map(|p| p.display().to_string()),
         });
