@@ -1,8 +1,8 @@
 # c05: a bat's force on a 0.145 kg baseball, measured every 40.4 us for 4 ms (100 samples,
 # examples/data/baseballforce.d). Expected impulse J = ∫F dt = 13.612 N s, exit speed J/m =
-# 93.87 m/s from rest, peak force 5464.1 N at t = 1.8586 ms. Exercises: mechkit work on a
+# 93.87 m/s from rest, peak force 5464.1 N at t = 1.8586 ms. Exercises: mechkit impulse on a
 # force-time file (trapezoids over the samples, the impulse-momentum theorem).
-mechkit work examples/data/baseballforce.d --of time --mass "0.145 kg" --json
+mechkit impulse examples/data/baseballforce.d --mass "0.145 kg" --json
 #> J_Ns = /impulse
 #> v_exit_mps = /delta_v
 #> F_max_N = /peak/f

@@ -22,6 +22,8 @@ const EXAMPLES: &str = r#"Examples:
   mechkit derive examples/data/fallingtennisball02.txt --smooth 21:2
   mechkit work examples/data/forcedata.d --plot out/work.svg
   mechkit work --field "y, -x" --path "cos(s), sin(s)" --param s=0:2*pi
+  mechkit collide --m1 "0.2 kg" --v1 "15 m/s" --m2 "1.5 kg" --v2 0 --restitution 0
+  mechkit impulse examples/data/baseballforce.d --mass "0.145 kg"
   mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
   mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
 
@@ -68,9 +70,80 @@ pub enum Command {
     Power(PowerArgs),
     /// Velocity and acceleration from a position-time data file (CSV and plots).
     Derive(DeriveArgs),
+    /// Two bodies colliding with a coefficient of restitution (1-D, 2-D or 3-D): velocities
+    /// after, impulse, kinetic energy lost, centre-of-mass frame.
+    Collide(CollideArgs),
+    /// The impulse ∫F dt of a force-time data file, the average force and Δv = J/m.
+    Impulse(ImpulseArgs),
     /// The work ∫F dx from a data file (x, F columns; cumulative W(x)), or of a force field
     /// along a path (--field with --path or --through).
     Work(WorkArgs),
+}
+
+/// `mechkit collide`.
+#[derive(Debug, clap::Args)]
+pub struct CollideArgs {
+    /// Mass of body 1, e.g. "0.2 kg".
+    #[arg(long, allow_hyphen_values = true)]
+    pub m1: String,
+    /// Velocity of body 1: one component in 1-D, or "vx, vy[, vz]", e.g. "15 m/s".
+    #[arg(long, allow_hyphen_values = true)]
+    pub v1: String,
+    /// Mass of body 2 ("inf" for an immovable wall).
+    #[arg(long, allow_hyphen_values = true)]
+    pub m2: String,
+    /// Velocity of body 2 (0 for at rest).
+    #[arg(long, allow_hyphen_values = true)]
+    pub v2: String,
+    /// Coefficient of restitution from 0 to 1, or elastic (1) or perfectly-inelastic (0).
+    #[arg(long, short = 'e', allow_hyphen_values = true)]
+    pub restitution: String,
+    /// Contact normal from body 1 to body 2 (2-D/3-D), e.g. "1, 0".
+    #[arg(long, allow_hyphen_values = true)]
+    pub normal: Option<String>,
+    /// Centre of sphere 1 (the normal follows from the two centres), e.g. "0 m, 0 m".
+    #[arg(long, allow_hyphen_values = true)]
+    pub r1: Option<String>,
+    /// Centre of sphere 2.
+    #[arg(long, allow_hyphen_values = true)]
+    pub r2: Option<String>,
+    /// Coulomb friction coefficient along the contact plane (oblique impacts).
+    #[arg(long, allow_hyphen_values = true)]
+    pub friction: Option<f64>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit impulse`.
+#[derive(Debug, clap::Args)]
+pub struct ImpulseArgs {
+    /// Data file with a time column and a force column.
+    pub file: PathBuf,
+    /// The time column (name or 1-based number) [default: the first].
+    #[arg(long)]
+    pub t: Option<String>,
+    /// The force column [default: the second].
+    #[arg(long)]
+    pub f: Option<String>,
+    /// Quadrature rule: trapezoid, simpson, left, right or midpoint.
+    #[arg(long, default_value = "trapezoid")]
+    pub method: String,
+    /// The mass that receives the impulse: Δv = J/m.
+    #[arg(long)]
+    pub mass: Option<String>,
+    /// Its velocity before (default 0).
+    #[arg(long, allow_hyphen_values = true)]
+    pub v0: Option<String>,
+    /// Where to write t, F and the running impulse J(t) as CSV.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Where to write the plot of J(t) (SVG).
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `mechkit derive`.

@@ -35,6 +35,7 @@
 //!   Verlet, RK4).
 //! - [`particles`]: bodies in 1-3 dimensions, the names formulas use for their state.
 //! - [`forces`]: gravity, springs, drag with wind, constant and formula forces.
+//! - [`collisions`]: two bodies colliding with restitution and friction.
 //! - [`energy`]: the energy ledger (work of each force, kinetic and potential energy);
 //!   potentials, energy diagrams, equilibria and turning points; line integrals of force
 //!   fields; constant-power motion.
@@ -54,6 +55,7 @@
 //! - [`units`]: re-export of the unit system of `mechkit-expr`.
 
 pub mod calculus;
+pub mod collisions;
 pub mod data;
 pub mod deriv;
 pub mod energy;

@@ -2,6 +2,7 @@
 
 mod calculus;
 mod check;
+mod collide;
 mod derive;
 mod input;
 mod potential;
@@ -35,6 +36,8 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Power(args) => power::power(&args),
         Command::Work(args) => work::work(&args),
         Command::Derive(args) => derive::derive(&args),
+        Command::Collide(args) => collide::collide(&args),
+        Command::Impulse(args) => work::impulse(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {

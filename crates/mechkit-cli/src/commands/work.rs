@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use anyhow::{Result, anyhow, bail};
-use mechkit::data::{ColumnRef, Table};
+use mechkit::data::{ColumnRef, Order, Table};
 use mechkit::energy::SampledIntegral;
 use mechkit::expr::units::Dimension;
 use mechkit::figure::{PlotData, Series};
@@ -16,18 +16,40 @@ use serde_json::json;
 use super::input::quantity;
 use super::work_field::field_work;
 use super::{Outcome, print};
-use crate::args::WorkArgs;
+use crate::args::{ImpulseArgs, WorkArgs};
 use crate::plot::render_svg;
 
 pub fn work(args: &WorkArgs) -> Result<Outcome> {
     match (&args.field, &args.file) {
         (Some(field), None) => field_work(args, field),
         (Some(_), Some(_)) => bail!("give either a data file or --field, not both"),
-        (None, Some(file)) => data_work(args, file),
+        (None, Some(file)) => data_work(args, file, false),
         (None, None) => bail!(
             "give a data file of x and F columns (mechkit work forcedata.d), or a force field with --field and a path"
         ),
     }
+}
+
+/// `mechkit impulse FILE`: `mechkit work FILE --of time`, with time required to increase.
+pub fn impulse(args: &ImpulseArgs) -> Result<Outcome> {
+    let work_args = WorkArgs {
+        file: Some(args.file.clone()),
+        x: args.t.clone(),
+        f: args.f.clone(),
+        method: args.method.clone(),
+        of: Some("time".into()),
+        mass: args.mass.clone(),
+        v0: args.v0.clone(),
+        out: args.out.clone(),
+        plot: args.plot.clone(),
+        field: None,
+        path: None,
+        param: None,
+        through: None,
+        set: None,
+        json: args.json,
+    };
+    data_work(&work_args, &args.file, true)
 }
 
 fn column(text: &str, flag: &str) -> Result<ColumnRef> {
@@ -44,7 +66,7 @@ fn over_time(args: &WorkArgs, name: &str) -> bool {
     head == "t" || head == "time"
 }
 
-fn data_work(args: &WorkArgs, file: &Path) -> Result<Outcome> {
+fn data_work(args: &WorkArgs, file: &Path, increasing_time: bool) -> Result<Outcome> {
     let table = Table::read(file).map_err(|e| anyhow!("{e}"))?;
     let (x_ref, f_ref) = (
         column(args.x.as_deref().unwrap_or("1"), "--x")?,
@@ -62,7 +84,14 @@ fn data_work(args: &WorkArgs, file: &Path) -> Result<Outcome> {
     } else {
         "the work integral"
     };
-    let (x, _) = table.abscissa(&x_ref, what).map_err(|e| anyhow!("{e}"))?;
+    let (x, order) = table.abscissa(&x_ref, what).map_err(|e| anyhow!("{e}"))?;
+    if increasing_time && order == Order::Decreasing {
+        bail!(
+            "{}: the time column `{}` decreases (negative time steps); an impulse needs increasing time: sort the file by time",
+            table.source(),
+            table.label(x_index)
+        );
+    }
     let f = table.column(&f_ref).map_err(|e| anyhow!("{e}"))?;
     let rule = SampleRule::parse(&args.method).ok_or_else(|| {
         anyhow!(

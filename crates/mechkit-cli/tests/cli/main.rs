@@ -23,6 +23,7 @@
 mod adaptive;
 mod book;
 mod calculus;
+mod collide;
 mod data;
 mod diverge;
 mod energy;
