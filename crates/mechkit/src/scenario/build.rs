@@ -5,6 +5,7 @@ use mechkit_expr::units::Dimension;
 use toml::de::{DeTable, DeValue};
 
 use super::Scenario;
+use super::contact::{Spheres, read_contacts};
 use super::doc::{Source, Table};
 use super::error::{ErrorKind, ScenarioError};
 use super::events::read_events;
@@ -30,8 +31,11 @@ const TOP_KEYS: &[&str] = &[
     "event",
     "observe",
     "output",
+    "contact",
+    "wall",
+    "plane",
 ];
-const BODY_KEYS: &[&str] = &["name", "mass", "position", "velocity"];
+const BODY_KEYS: &[&str] = &["name", "mass", "position", "velocity", "radius"];
 
 /// State names a constant may not take (formulas would become ambiguous).
 const RESERVED: &[&str] = &[
@@ -74,7 +78,7 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
     };
 
     let constants = constants(&root)?;
-    let (bodies, masses, q, v) = bodies(&root, dim, &constants)?;
+    let (bodies, masses, q, v, radius) = bodies(&root, dim, &constants)?;
     for (n, value, _) in &constants {
         if n == "m"
             && masses
@@ -136,7 +140,18 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         level: VarLevel::Derived,
     };
     let (stop, t_max, max_steps) = read_stop(&root, env, &names)?;
-    let events = read_events(&root, &names)?;
+    let mut events = read_events(&root, &names)?;
+    events.extend(read_contacts(
+        &root,
+        &Spheres {
+            dim,
+            names: &bodies,
+            masses: &masses,
+            radius: &radius,
+            q: &q,
+        },
+        env,
+    )?);
     let observables = read_observe(&root, &names)?;
     let (every, output_times, plots) = read_output(&root, &names, dim, env)?;
     if t_max.is_none() && max_steps.is_none() {
@@ -215,7 +230,13 @@ fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
     Ok(out)
 }
 
-type Bodies = (Vec<String>, Vec<Real>, Vec<Real>, Vec<Real>);
+type Bodies = (
+    Vec<String>,
+    Vec<Real>,
+    Vec<Real>,
+    Vec<Real>,
+    Vec<Option<Real>>,
+);
 
 fn bodies(
     root: &Table<'_, '_>,
@@ -229,6 +250,7 @@ fn bodies(
         ));
     }
     let (mut names, mut masses, mut q, mut v) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let mut radius = Vec::new();
     for (i, t) in tables.iter().enumerate() {
         t.check_keys(BODY_KEYS)?;
         let name = match t.string("name")? {
@@ -284,10 +306,21 @@ fn bodies(
             vector(t, "position", Dimension::LENGTH, dim, env)?.unwrap_or_else(|| vec![0.0; dim]);
         let u =
             vector(t, "velocity", Dimension::VELOCITY, dim, env)?.unwrap_or_else(|| vec![0.0; dim]);
+        let r = scalar(t, "radius", Dimension::LENGTH, env)?;
+        if let Some(r) = r
+            && !(r >= 0.0 && r.is_finite())
+        {
+            return Err(t.src.error(
+                ErrorKind::Invalid,
+                format!("the radius of `{name}` must be zero or positive, not {r} m"),
+                t.key_span("radius"),
+            ));
+        }
         names.push(name);
         masses.push(mass);
         q.extend(x);
         v.extend(u);
+        radius.push(r);
     }
-    Ok((names, masses, q, v))
+    Ok((names, masses, q, v, radius))
 }

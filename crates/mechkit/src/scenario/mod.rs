@@ -38,6 +38,7 @@
 
 mod build;
 mod compare;
+mod contact;
 mod doc;
 mod error;
 mod events;

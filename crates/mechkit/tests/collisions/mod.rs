@@ -1,1 +1,2 @@
+mod impacts;
 mod properties;

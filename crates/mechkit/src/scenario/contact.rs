@@ -1,0 +1,189 @@
+//! Collisions in a scenario: `radius` on bodies, `[[wall]]` (or `[[plane]]`) tables, and the
+//! `[contact]` table (model, restitution and friction, per-pair values in `[[contact.pair]]`),
+//! turned into the events of [`Impacts`].
+
+use mechkit_expr::units::Dimension;
+use toml::de::DeValue;
+
+use super::doc::{Table, string_list};
+use super::error::{ErrorKind, ScenarioError};
+use super::values::{ValueEnv, scalar, vector};
+use crate::Real;
+use crate::collisions::{Impacts, Restitution, Wall};
+use crate::simulate::Event;
+
+const WALL_KEYS: &[&str] = &["name", "point", "normal", "restitution", "friction"];
+const CONTACT_KEYS: &[&str] = &["model", "restitution", "friction", "pair"];
+const PAIR_KEYS: &[&str] = &["bodies", "restitution", "friction"];
+const MODELS: &[&str] = &["impulse"];
+
+/// The bodies as the collision setup sees them.
+pub(crate) struct Spheres<'b> {
+    pub dim: usize,
+    pub names: &'b [String],
+    pub masses: &'b [Real],
+    pub radius: &'b [Option<Real>],
+    pub q: &'b [Real],
+}
+
+fn restitution(
+    t: &Table<'_, '_>,
+    env: ValueEnv<'_>,
+    default: Restitution,
+) -> Result<Restitution, ScenarioError> {
+    let Some(e) = scalar(t, "restitution", Dimension::NONE, env)? else {
+        return Ok(default);
+    };
+    Restitution::new(e).map_err(|err| {
+        t.src
+            .error(
+                ErrorKind::Invalid,
+                err.to_string(),
+                t.key_span("restitution"),
+            )
+            .with_hint("1 is elastic, 0 perfectly inelastic (the bodies move on together)")
+    })
+}
+
+fn friction(t: &Table<'_, '_>, env: ValueEnv<'_>, default: Real) -> Result<Real, ScenarioError> {
+    match scalar(t, "friction", Dimension::NONE, env)? {
+        None => Ok(default),
+        Some(mu) if mu >= 0.0 => Ok(mu),
+        Some(mu) => Err(t.src.error(
+            ErrorKind::Invalid,
+            format!("the friction coefficient must be zero or positive, not {mu}"),
+            t.key_span("friction"),
+        )),
+    }
+}
+
+/// The collision events of the scenario (none when no body has a radius and there is no
+/// wall), after checking that nothing overlaps at the start.
+pub(crate) fn read_contacts(
+    root: &Table<'_, '_>,
+    s: &Spheres<'_>,
+    env: ValueEnv<'_>,
+) -> Result<Vec<Event>, ScenarioError> {
+    let contact = root.table("contact")?;
+    let mut walls = root.tables("wall")?;
+    walls.extend(root.tables("plane")?);
+    let any_radius = s.radius.iter().any(Option::is_some);
+    if contact.is_none() && walls.is_empty() {
+        return Ok(Vec::new());
+    }
+    if !any_radius {
+        let span = contact
+            .as_ref()
+            .map_or_else(|| walls[0].span.clone(), |c| c.span.clone());
+        return Err(root
+            .src
+            .error(
+                ErrorKind::Missing,
+                "collisions need bodies with a `radius`, but no [[body]] has one",
+                span,
+            )
+            .with_hint("add `radius = \"0.1 m\"` to each body that collides (0 for a point)"));
+    }
+    let (mut e0, mut mu0) = (Restitution::ELASTIC, 0.0);
+    let mut pairs = Vec::new();
+    if let Some(c) = &contact {
+        c.check_keys(CONTACT_KEYS)?;
+        if let Some((model, span)) = c.string("model")?
+            && !MODELS.contains(&model)
+        {
+            return Err(c
+                .src
+                .error(
+                    ErrorKind::Invalid,
+                    format!("unknown contact model `{model}`"),
+                    span,
+                )
+                .with_hint(format!("use one of: {}", MODELS.join(", "))));
+        }
+        e0 = restitution(c, env, e0)?;
+        mu0 = friction(c, env, mu0)?;
+        for p in c.tables("pair")? {
+            p.check_keys(PAIR_KEYS)?;
+            let names = string_list(&p, "bodies")?.ok_or_else(|| {
+                p.missing("bodies", "[\"a\", \"b\"]")
+                    .with_hint("name the two bodies of the pair: bodies = [\"a\", \"b\"]")
+            })?;
+            let index = |(n, span): &(&str, std::ops::Range<usize>)| {
+                s.names.iter().position(|b| b == n).ok_or_else(|| {
+                    p.src
+                        .error(
+                            ErrorKind::Invalid,
+                            format!("no body is named `{n}`"),
+                            span.clone(),
+                        )
+                        .with_hint(format!("the bodies are: {}", s.names.join(", ")))
+                })
+            };
+            if names.len() != 2 {
+                return Err(p.src.error(
+                    ErrorKind::Invalid,
+                    format!("a pair has two bodies, not {}", names.len()),
+                    p.key_span("bodies"),
+                ));
+            }
+            let (a, b) = (index(&names[0])?, index(&names[1])?);
+            pairs.push((a, b, restitution(&p, env, e0)?, friction(&p, env, mu0)?));
+        }
+    }
+    let mut impacts = Impacts::new(
+        s.dim,
+        s.names.to_vec(),
+        s.masses.to_vec(),
+        s.radius.to_vec(),
+    )
+    .with_default(e0, mu0);
+    for (a, b, e, mu) in pairs {
+        impacts = impacts.with_pair(a, b, e, mu);
+    }
+    for (i, w) in walls.iter().enumerate() {
+        w.check_keys(WALL_KEYS)?;
+        let name = w
+            .string("name")?
+            .map_or_else(|| format!("wall{}", i + 1), |(n, _)| n.to_string());
+        let point = vector(w, "point", Dimension::LENGTH, s.dim, env)?.ok_or_else(|| {
+            w.missing("point", "\"0 m\"")
+                .with_hint("a point of the plane, e.g. point = [\"0 m\", \"0 m\"]")
+        })?;
+        let normal = match w.get("normal") {
+            Some(v) if s.dim == 1 && matches!(v.get_ref(), DeValue::Integer(_) | DeValue::Float(_)) => {
+                vector(w, "normal", Dimension::NONE, 1, env)?.unwrap_or_default()
+            }
+            _ => vector(w, "normal", Dimension::NONE, s.dim, env)?.ok_or_else(|| {
+                w.missing("normal", "[0, 1]").with_hint(
+                    "the normal points from the wall to the side where the bodies are, e.g. normal = [0, 1] for a floor",
+                )
+            })?,
+        };
+        let (e, mu) = (restitution(w, env, e0)?, friction(w, env, mu0)?);
+        let wall = Wall::new(name, point, &normal, e, mu).ok_or_else(|| {
+            w.src.error(
+                ErrorKind::Invalid,
+                "a wall's normal cannot have zero length",
+                w.key_span("normal"),
+            )
+        })?;
+        impacts = impacts.with_wall(wall);
+    }
+    if let Some(o) = impacts.overlap(s.q) {
+        let what = match (o.other, o.wall) {
+            (Some(b), _) => format!("`{}` and `{}`", s.names[o.body], s.names[b]),
+            (_, Some(w)) => format!(
+                "`{}` and the wall `{}`",
+                s.names[o.body],
+                impacts.walls()[w].name
+            ),
+            _ => format!("`{}`", s.names[o.body]),
+        };
+        return Err(ScenarioError::new(
+            ErrorKind::Invalid,
+            format!("{what} overlap by {:.6e} m at t = 0", o.depth),
+        )
+        .with_hint("move them apart (touching is allowed) or make the radii smaller"));
+    }
+    Ok(impacts.events())
+}

@@ -1,0 +1,172 @@
+//! Event-driven collisions in simulations: the bouncing ball's apexes follow e^(2k) exactly,
+//! Newton's cradle hands the velocity to the last ball, and elastic disks in a box keep their
+//! energy without ever overlapping; scenarios with overlapping bodies or a bad restitution are
+//! refused with the pair named.
+
+use mechkit::collisions::{Impacts, Restitution, Wall};
+use mechkit::ode::State;
+use mechkit::particles::{ParticleSystem, Sample};
+use mechkit::prelude::*;
+use mechkit::scenario::Scenario;
+use mechkit::simulate::{Observer, ObserverError};
+
+use crate::util::workspace;
+
+#[test]
+fn bouncing_ball_apexes_follow_e_squared() {
+    let path = workspace().join("examples/bouncing_ball_floor.toml");
+    let out = Scenario::load(&path).unwrap().run().unwrap();
+    let s = &out.summary;
+    let apex: Vec<f64> = s
+        .events
+        .iter()
+        .filter(|e| e.name == "apex")
+        .map(|e| e.state["ball"].position[1] - 0.05)
+        .collect();
+    let bounces = s
+        .events
+        .iter()
+        .filter(|e| e.name == "ball hits floor")
+        .count();
+    assert!(bounces >= 30, "{bounces} bounces");
+    assert!(apex.len() >= 31);
+    for (k, h) in apex.iter().enumerate() {
+        let want = 0.8f64.powi(2 * k as i32);
+        assert!((h - want).abs() <= 1e-9 * want, "apex {k}: {h} vs {want}");
+    }
+}
+
+const CRADLE: &str = r#"
+dimensions = 1
+[[body]]
+name = "a"
+mass = "0.1 kg"
+radius = "1 cm"
+position = "0 m"
+velocity = "1 m/s"
+[[body]]
+name = "b"
+mass = "0.1 kg"
+radius = "1 cm"
+position = "5 cm"
+[[body]]
+name = "c"
+mass = "0.1 kg"
+radius = "1 cm"
+position = "7 cm"
+[contact]
+restitution = 1
+[integrator]
+method = "verlet"
+dt = "1 ms"
+[stop]
+t_max = "0.2 s"
+"#;
+
+#[test]
+fn newtons_cradle_passes_the_velocity_to_the_last_ball() {
+    let out = Scenario::from_str("cradle.toml", CRADLE)
+        .unwrap()
+        .run()
+        .unwrap();
+    let b = &out.summary.bodies;
+    assert!(b["a"].velocity[0].abs() < 1e-15 && b["b"].velocity[0].abs() < 1e-15);
+    assert!(
+        (b["c"].velocity[0] - 1.0).abs() < 1e-15,
+        "{:?}",
+        b["c"].velocity
+    );
+    // one impact, located when a reaches b at t = 0.03 s
+    assert_eq!(out.summary.events.len(), 1);
+    assert!((out.summary.events[0].t - 0.03).abs() < 1e-12);
+}
+
+#[test]
+fn overlapping_bodies_and_bad_restitution_are_refused() {
+    let overlap = CRADLE.replace("position = \"7 cm\"", "position = \"6.5 cm\"");
+    let e = Scenario::from_str("o.toml", &overlap)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("`b` and `c` overlap by 5.0"), "{e}");
+    let bad = CRADLE.replace("restitution = 1", "restitution = 1.2");
+    let e = Scenario::from_str("e.toml", &bad).unwrap_err().to_string();
+    assert!(e.contains("between 0") && e.contains("e.toml:"), "{e}");
+    let no_radius = CRADLE.replace("radius = \"1 cm\"", "");
+    let e = Scenario::from_str("r.toml", &no_radius)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("radius"), "{e}");
+}
+
+/// The smallest gap between two disks, relative to the radius, over every sample.
+struct GapWatch {
+    radius: f64,
+    worst: f64,
+}
+
+impl Observer for GapWatch {
+    fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        let n = s.q.len() / 2;
+        for a in 0..n {
+            for b in a + 1..n {
+                let d = ((s.q[2 * a] - s.q[2 * b]).powi(2)
+                    + (s.q[2 * a + 1] - s.q[2 * b + 1]).powi(2))
+                .sqrt();
+                self.worst = self.worst.min((d - 2.0 * self.radius) / self.radius);
+            }
+        }
+        Ok(())
+    }
+}
+
+#[test]
+fn elastic_disks_in_a_box_keep_their_energy_and_never_overlap() {
+    // 16 disks on a 4 x 4 grid in a unit box, with pseudo-random velocities
+    let (n, radius) = (16, 0.04);
+    let mut builder = ParticleSystem::builder(2);
+    let (mut q, mut v) = (Vec::new(), Vec::new());
+    let mut seed = 12345u64;
+    let mut rnd = || {
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    for i in 0..n {
+        builder = builder.body(format!("d{i}"), 1.0 + (i % 3) as f64);
+        q.extend([0.125 + 0.25 * (i % 4) as f64, 0.125 + 0.25 * (i / 4) as f64]);
+        v.extend([4.0 * rnd(), 4.0 * rnd()]);
+    }
+    let sys = builder.build().unwrap();
+    let names = (0..n).map(|i| format!("d{i}")).collect();
+    let mut impacts = Impacts::new(2, names, sys.masses().to_vec(), vec![Some(radius); n]);
+    for (name, p, nrm) in [
+        ("left", [0.0, 0.0], [1.0, 0.0]),
+        ("right", [1.0, 0.0], [-1.0, 0.0]),
+        ("bottom", [0.0, 0.0], [0.0, 1.0]),
+        ("top", [0.0, 1.0], [0.0, -1.0]),
+    ] {
+        impacts = impacts
+            .with_wall(Wall::new(name, p.to_vec(), &nrm, Restitution::ELASTIC, 0.0).unwrap());
+    }
+    let mut sim = Simulation::new(&sys, Method::VelocityVerlet, 2e-3).t_max(3.0);
+    for e in impacts.events() {
+        sim = sim.event(e);
+    }
+    let mut watch = GapWatch {
+        radius,
+        worst: f64::INFINITY,
+    };
+    let report = sim
+        .run(State::from_qv(0.0, &q, &v), &mut [&mut watch])
+        .unwrap();
+    let collisions = report.events.len();
+    assert!(collisions > 200, "{collisions} collisions");
+    let (k0, k1) = (report.ledger.kinetic_start(), report.ledger.kinetic_end());
+    assert!((k1 - k0).abs() <= 1e-9 * k0, "K {k0} -> {k1}");
+    assert!(
+        watch.worst >= -1e-9,
+        "overlap {:e} of the radius",
+        watch.worst
+    );
+}
