@@ -162,6 +162,9 @@ pub struct Summary {
     /// Average power of each force over the run (W): its work divided by the duration (null
     /// for a run of zero duration).
     pub average_power: BTreeMap<String, Option<Real>>,
+    /// Total momentum `Σ m v` (kg·m/s), one component per dimension, at the start and the end:
+    /// it changes only by the impulse of external forces (and of walls).
+    pub momentum: MomentumSummary,
     /// Kinetic energy (J).
     pub kinetic_energy: StartEnd,
     /// Potential energy of the conservative forces (J); null when none has a potential.
@@ -241,6 +244,27 @@ fn timed(sys: &ParticleSystem, s: &Snapshot) -> TimedState {
     }
 }
 
+/// Total momentum at the start and end of a run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MomentumSummary {
+    /// At the start.
+    pub start: Vec<Real>,
+    /// At the end.
+    pub end: Vec<Real>,
+}
+
+/// `Σ m v`, one component per dimension.
+fn total_momentum(sys: &ParticleSystem, v: &[Real]) -> Vec<Real> {
+    let d = sys.dim();
+    let mut p = vec![0.0; d];
+    for (i, m) in sys.masses().iter().enumerate() {
+        for k in 0..d {
+            p[k] += m * v[i * d + k];
+        }
+    }
+    p
+}
+
 impl Summary {
     pub(crate) fn new(
         title: &str,
@@ -301,6 +325,10 @@ impl Summary {
                             .map(|w| (duration > 0.0).then(|| w / duration)),
                     )
                     .collect()
+            },
+            momentum: MomentumSummary {
+                start: total_momentum(sys, report.initial.qv().1),
+                end: total_momentum(sys, v),
             },
             kinetic_energy: StartEnd {
                 start: Some(l.kinetic_start()),

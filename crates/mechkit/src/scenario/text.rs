@@ -88,6 +88,14 @@ impl Summary {
                 vec_text(&b.velocity)
             );
         }
+        if self.bodies.len() > 1 {
+            let _ = writeln!(
+                s,
+                "total momentum {} → {} kg·m/s",
+                vec_text(&self.momentum.start),
+                vec_text(&self.momentum.end)
+            );
+        }
         let _ = writeln!(s, "energy ledger (J)");
         for (name, w) in &self.work {
             let _ = writeln!(s, "  work of {name:<16} {}", num(*w));

@@ -76,6 +76,7 @@ fn newtons_cradle_passes_the_velocity_to_the_last_ball() {
         "{:?}",
         b["c"].velocity
     );
+    assert_eq!(out.summary.momentum.start, out.summary.momentum.end);
     // one impact, located when a reaches b at t = 0.03 s
     assert_eq!(out.summary.events.len(), 1);
     assert!((out.summary.events[0].t - 0.03).abs() < 1e-12);
