@@ -16,6 +16,9 @@ use crate::energy::EnergyLedger;
 use crate::ode::{AdaptiveError, State, steps_to_cover};
 use crate::particles::{Evaluation, SampleKind};
 
+/// Most interior samples an event may ask for in one step.
+const MAX_INTERIOR: usize = 100_000;
+
 #[allow(clippy::too_many_lines)]
 pub(super) fn drive(
     sim: &Simulation<'_>,
@@ -222,7 +225,13 @@ pub(super) fn drive(
             event_values(events, &at_b, sys, &mut g_b);
         }
 
-        // events, in time order
+        // events, in time order, sampled as densely as the densest demand
+        let step_interior = events.iter().fold(interior, |n, e| {
+            n.max(
+                e.samples_needed(&ends.y0, &state.y, t_b - t_a)
+                    .min(MAX_INTERIOR),
+            )
+        });
         let mut t_scan = t_a;
         g_scan.clone_from(&g_a);
         sides_scan.clone_from(&sides);
@@ -255,7 +264,7 @@ pub(super) fn drive(
                     &mut sides_scan,
                     (t_scan, &g_scan),
                     (t_b, &g_b),
-                    interior,
+                    step_interior,
                     &mut values,
                     &mut scan_buffers,
                 )

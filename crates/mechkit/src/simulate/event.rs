@@ -64,6 +64,7 @@ pub enum EventAction {
 }
 
 type SetFn = dyn Fn(&Sample<'_>, &ParticleSystem, &mut [Real]) + Send + Sync;
+type SamplingFn = dyn Fn(&[Real], &[Real], Real) -> usize + Send + Sync;
 
 /// When an event fires.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -93,6 +94,7 @@ pub struct Event {
     pub(crate) max_count: Option<u32>,
     set: Option<Arc<SetFn>>,
     set_description: Option<String>,
+    sampling: Option<Arc<SamplingFn>>,
 }
 
 impl fmt::Debug for Event {
@@ -127,6 +129,7 @@ impl Event {
             max_count: None,
             set: None,
             set_description: None,
+            sampling: None,
         }
     }
 
@@ -141,6 +144,7 @@ impl Event {
             max_count: None,
             set: None,
             set_description: None,
+            sampling: None,
         }
     }
 
@@ -183,6 +187,25 @@ impl Event {
         self.set_description
             .get_or_insert_with(|| "state change".into());
         self
+    }
+
+    /// How densely the event function must be sampled inside a step: `f(y_start, y_end, h)`
+    /// returns the number of interior sample points a step of length `h` from state `y_start`
+    /// (`[q, v]`) to `y_end` needs so that no zero crossing of this event can fall between
+    /// two samples (a contact gap asks for spacing below a fraction of the radii divided by the
+    /// relative speed). The run uses the most any event asks for, at least its default.
+    #[must_use]
+    pub fn sampling(
+        mut self,
+        f: impl Fn(&[Real], &[Real], Real) -> usize + Send + Sync + 'static,
+    ) -> Self {
+        self.sampling = Some(Arc::new(f));
+        self
+    }
+
+    /// The interior samples this event asks for in a step (0 when it has no demand).
+    pub(crate) fn samples_needed(&self, y0: &[Real], y1: &[Real], h: Real) -> usize {
+        self.sampling.as_ref().map_or(0, |f| f(y0, y1, h))
     }
 
     /// Describes the state change for reports (`vy = -e*vy`).

@@ -171,3 +171,63 @@ fn elastic_disks_in_a_box_keep_their_energy_and_never_overlap() {
         watch.worst
     );
 }
+
+#[test]
+fn no_tunnelling_whatever_the_speed() {
+    // a 1 mm bullet at 10 km/s toward a 1 mm ball 1 m away, with 10 ms steps: the bullet moves
+    // 100 m per step, 50,000 times the sum of the radii, and both step ends show a positive gap
+    let sys = ParticleSystem::builder(2)
+        .body("bullet", 0.01)
+        .body("ball", 0.01)
+        .build()
+        .unwrap();
+    let impacts = Impacts::new(
+        2,
+        vec!["bullet".into(), "ball".into()],
+        vec![0.01, 0.01],
+        vec![Some(1e-3), Some(1e-3)],
+    )
+    .with_wall(
+        Wall::new(
+            "plate",
+            vec![0.0, 0.0],
+            &[0.0, 1.0],
+            Restitution::ELASTIC,
+            0.0,
+        )
+        .unwrap(),
+    );
+    let mut sim = Simulation::new(&sys, Method::VelocityVerlet, 1e-2).t_max(0.02);
+    for e in impacts.events() {
+        sim = sim.event(e);
+    }
+    // the ball falls toward the plate at 10 km/s too, from 2 m: it must bounce, not tunnel
+    let q = [0.0, 0.5, 1.0, 0.5];
+    let v = [1e4, 0.0, 0.0, -1e4];
+    let mut q2 = q;
+    q2[3] = 2.0;
+    let report = sim.run(State::from_qv(0.0, &q2, &v), &mut []).unwrap();
+    let names: Vec<&str> = report.events.iter().map(|e| e.name.as_str()).collect();
+    assert!(names.contains(&"ball hits plate"), "{names:?}");
+    let hit = report
+        .events
+        .iter()
+        .find(|e| e.name == "ball hits plate")
+        .unwrap();
+    assert!((hit.t - (2.0 - 1e-3) / 1e4).abs() < 1e-12, "{}", hit.t);
+    // the bullet and the ball (no longer at its height) must not meet; a second run with the
+    // ball at rest in its path does
+    let report = sim
+        .run(State::from_qv(0.0, &q, &[1e4, 0.0, 0.0, 0.0]), &mut [])
+        .unwrap();
+    let hit = report
+        .events
+        .iter()
+        .find(|e| e.name == "bullet hits ball")
+        .expect("the bullet hits the ball");
+    assert!((hit.t - (1.0 - 2e-3) / 1e4).abs() < 1e-12, "{}", hit.t);
+    let (q_end, v_end) = report.final_state.qv();
+    assert_eq!(v_end[0], 0.0);
+    assert_eq!(v_end[2], 1e4);
+    assert!(q_end[0] < 1.0);
+}
