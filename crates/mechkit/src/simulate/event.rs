@@ -105,6 +105,7 @@ impl fmt::Debug for Event {
             .field("action", &self.action)
             .field("max_count", &self.max_count)
             .field("set", &self.set_description)
+            .field("sampling", &self.sampling.is_some())
             .finish()
     }
 }
