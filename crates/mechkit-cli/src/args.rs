@@ -25,6 +25,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit collide --m1 "0.2 kg" --v1 "15 m/s" --m2 "1.5 kg" --v2 0 --restitution 0
   mechkit impulse examples/data/baseballforce.d --mass "0.145 kg"
   mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
+  mechkit rocket --m0 "1000 kg" --m1 "400 kg" --mass-rate "10 kg/s" --exhaust-speed "2 km/s" --g "9.81 m/s^2" --coast
   mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
@@ -68,6 +69,10 @@ pub enum Command {
     Potential(PotentialArgs),
     /// Motion at constant power (v, a, x at given times), or an average power W/t.
     Power(PowerArgs),
+    /// A rocket (variable mass): Δv by the rocket equation, burn time, burnout speed and height
+    /// and the apex of the coast, in closed form and simulated (with optional quadratic drag),
+    /// and plots of v(t), x(t) and m(t).
+    Rocket(RocketArgs),
     /// Velocity and acceleration from a position-time data file (CSV and plots).
     Derive(DeriveArgs),
     /// Two bodies colliding with a coefficient of restitution (1-D, 2-D or 3-D): velocities
@@ -253,6 +258,44 @@ pub struct PowerArgs {
     #[arg(long, requires = "work", allow_hyphen_values = true)]
     pub time: Option<String>,
     /// Directory for the v(t) and x(t) plots [default: out/power].
+    #[arg(long, short)]
+    pub out: Option<PathBuf>,
+    /// Do not draw plots.
+    #[arg(long)]
+    pub no_plots: bool,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit rocket`.
+#[derive(Debug, clap::Args)]
+pub struct RocketArgs {
+    /// Mass at ignition, e.g. "1000 kg".
+    #[arg(long, allow_hyphen_values = true)]
+    pub m0: String,
+    /// Mass at burnout (the rocket without its propellant), e.g. "400 kg".
+    #[arg(long, allow_hyphen_values = true)]
+    pub m1: String,
+    /// Mass ejected per second, e.g. "10 kg/s".
+    #[arg(long, allow_hyphen_values = true)]
+    pub mass_rate: String,
+    /// Exhaust speed relative to the rocket, e.g. "2 km/s".
+    #[arg(long, allow_hyphen_values = true)]
+    pub exhaust_speed: String,
+    /// Uniform gravity against the thrust, e.g. "9.81 m/s^2" [default: 0, free space].
+    #[arg(long, allow_hyphen_values = true)]
+    pub g: Option<String>,
+    /// Quadratic drag coefficient D in F = -D v|v|, e.g. "0.02 kg/m" (simulation only).
+    #[arg(long, allow_hyphen_values = true)]
+    pub drag: Option<String>,
+    /// Also follow the coast after burnout up to the apex (needs --g).
+    #[arg(long)]
+    pub coast: bool,
+    /// Relative tolerance of the simulation (Dormand-Prince 5(4)); atol is 1000 times smaller.
+    #[arg(long, default_value_t = 1e-10)]
+    pub rtol: f64,
+    /// Directory for the v(t), x(t) and m(t) plots [default: out/rocket].
     #[arg(long, short)]
     pub out: Option<PathBuf>,
     /// Do not draw plots.

@@ -15,6 +15,9 @@ pub enum Error {
     /// A simulation could not run.
     #[error(transparent)]
     Simulate(#[from] crate::simulate::SimulateError),
+    /// An invalid rocket, or its simulation failed.
+    #[error(transparent)]
+    Rocket(#[from] crate::rocket::RocketError),
     /// A data file could not be read, or lacks a column.
     #[error(transparent)]
     Data(#[from] crate::data::DataError),

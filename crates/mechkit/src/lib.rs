@@ -36,6 +36,8 @@
 //! - [`particles`]: bodies in 1-3 dimensions, the names formulas use for their state.
 //! - [`forces`]: gravity, springs, drag with wind, constant and formula forces.
 //! - [`collisions`]: two bodies colliding with restitution and friction.
+//! - [`rocket`]: variable mass: the rocket equation (Tsiolkovsky's Δv, burn and coast in
+//!   uniform gravity in closed form) and a simulation with quadratic drag.
 //! - [`energy`]: the energy ledger (work of each force, kinetic and potential energy);
 //!   potentials, energy diagrams, equilibria and turning points; line integrals of force
 //!   fields; constant-power motion.
@@ -66,6 +68,7 @@ pub mod function;
 pub mod ode;
 pub mod particles;
 pub mod quad;
+pub mod rocket;
 pub mod roots;
 #[cfg(feature = "scenario")]
 pub mod scenario;

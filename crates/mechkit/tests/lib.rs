@@ -7,6 +7,7 @@ mod deriv;
 mod energy;
 mod ode;
 mod quad;
+mod rocket;
 mod scenario;
 mod simulate;
 mod util;

@@ -7,6 +7,7 @@ mod derive;
 mod input;
 mod potential;
 mod power;
+mod rocket;
 mod run;
 mod work;
 mod work_field;
@@ -34,6 +35,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Units(args) => calculus::units(&args),
         Command::Potential(args) => potential::potential(&args),
         Command::Power(args) => power::power(&args),
+        Command::Rocket(args) => rocket::rocket(&args),
         Command::Work(args) => work::work(&args),
         Command::Derive(args) => derive::derive(&args),
         Command::Collide(args) => collide::collide(&args),

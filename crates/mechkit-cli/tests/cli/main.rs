@@ -28,5 +28,6 @@ mod data;
 mod diverge;
 mod energy;
 mod errors;
+mod rocket;
 mod run;
 mod util;

@@ -1,0 +1,62 @@
+//! Why a rocket cannot be built or flown.
+
+use thiserror::Error;
+
+use crate::Real;
+use crate::ode::{AdaptiveError, ConfigError};
+
+/// An invalid rocket, or a simulation of it that failed.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum RocketError {
+    /// A mass that is not positive and finite.
+    #[error("{which} is {value} kg; masses must be positive and finite")]
+    Mass {
+        /// Which mass (`the mass at ignition m0`, `the burnout mass m1`).
+        which: &'static str,
+        /// The value.
+        value: Real,
+    },
+    /// The burnout mass is not below the mass at ignition.
+    #[error(
+        "the burnout mass m1 = {m1} kg must be below the mass at ignition m0 = {m0} kg (the difference is the propellant)"
+    )]
+    Burnout {
+        /// Mass at ignition.
+        m0: Real,
+        /// Mass at burnout.
+        m1: Real,
+    },
+    /// A mass rate that is not positive and finite.
+    #[error("the mass rate is {value} kg/s; it must be positive (the mass ejected per second)")]
+    MassRate {
+        /// The value.
+        value: Real,
+    },
+    /// An exhaust speed that is not positive and finite.
+    #[error(
+        "the exhaust speed is {value} m/s; it must be positive (the speed of the exhaust relative to the rocket)"
+    )]
+    ExhaustSpeed {
+        /// The value.
+        value: Real,
+    },
+    /// A negative or non-finite gravity.
+    #[error("g is {value} m/s²; it must be 0 (free space) or positive (pointing down)")]
+    Gravity {
+        /// The value.
+        value: Real,
+    },
+    /// A negative or non-finite drag coefficient.
+    #[error("the drag coefficient D is {value} kg/m; it must be zero or positive (F = −D v|v|)")]
+    Drag {
+        /// The value.
+        value: Real,
+    },
+    /// Invalid settings of the adaptive integrator.
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    /// The adaptive integrator could not advance.
+    #[error(transparent)]
+    Integrate(#[from] AdaptiveError),
+}
