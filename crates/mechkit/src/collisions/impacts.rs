@@ -330,12 +330,10 @@ impl Impacts {
     fn speed(&self, y: &[Real], a: Option<usize>, b: usize, normal: Option<&[Real]>) -> Real {
         let d = self.dim;
         let v = &y[y.len() / 2..];
-        let rel: Vec<Real> = (0..d)
-            .map(|k| v[b * d + k] - a.map_or(0.0, |a| v[a * d + k]))
-            .collect();
+        let rel = |k: usize| v[b * d + k] - a.map_or(0.0, |a| v[a * d + k]);
         match normal {
-            Some(n) => rel.iter().zip(n).map(|(x, m)| x * m).sum::<Real>().abs(),
-            None => rel.iter().map(|x| x * x).sum::<Real>().sqrt(),
+            Some(n) => (0..d).map(|k| rel(k) * n[k]).sum::<Real>().abs(),
+            None => (0..d).map(|k| rel(k) * rel(k)).sum::<Real>().sqrt(),
         }
     }
 

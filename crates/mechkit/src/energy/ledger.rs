@@ -31,6 +31,11 @@ pub struct EnergyLedger {
     potential_each_end: Vec<Real>,
     jump_kinetic: Real,
     jump_potential: Real,
+    impulse: Vec<Real>,
+    last_net: Vec<Real>,
+    momentum_start: Vec<Real>,
+    momentum_end: Vec<Real>,
+    jump_momentum: Vec<Real>,
 }
 
 impl EnergyLedger {
@@ -51,12 +56,33 @@ impl EnergyLedger {
             potential_each_end: eval.potential.clone(),
             jump_kinetic: 0.0,
             jump_potential: 0.0,
+            impulse: vec![0.0; eval.net.len()],
+            last_net: eval.net.clone(),
+            momentum_start: eval.momentum.clone(),
+            momentum_end: eval.momentum.clone(),
+            jump_momentum: vec![0.0; eval.momentum.len()],
         }
+    }
+
+    /// Adds the trapezoid of each force's net force from the last recorded time to `t`.
+    fn add_impulse(&mut self, t: Real, eval: &Evaluation) {
+        let h = t - self.last_t;
+        for ((j, f0), f1) in self
+            .impulse
+            .iter_mut()
+            .zip(&mut self.last_net)
+            .zip(&eval.net)
+        {
+            *j += 0.5 * h * (*f0 + f1);
+            *f0 = *f1;
+        }
+        self.momentum_end.clone_from(&eval.momentum);
     }
 
     /// Records the state reached at time `t` with the work of each force integrated elsewhere
     /// (adaptive runs carry it in the ODE).
     pub fn set(&mut self, t: Real, eval: &Evaluation, work: &[Real]) {
+        self.add_impulse(t, eval);
         self.work.copy_from_slice(work);
         self.last_power.clone_from(&eval.power);
         self.last_t = t;
@@ -68,6 +94,16 @@ impl EnergyLedger {
     /// Records a sudden change of the state at the current time (an event's action), `eval`
     /// being the evaluation after it: the changes of `K` and `U` are booked as jumps, not work.
     pub fn jump(&mut self, eval: &Evaluation) {
+        for ((j, p1), p0) in self
+            .jump_momentum
+            .iter_mut()
+            .zip(&eval.momentum)
+            .zip(&self.momentum_end)
+        {
+            *j += p1 - p0;
+        }
+        self.momentum_end.clone_from(&eval.momentum);
+        self.last_net.clone_from(&eval.net);
         self.jump_kinetic += eval.kinetic - self.kinetic_end;
         if let (Some(u1), Some(u0)) = (eval.potential_total, self.potential_end) {
             self.jump_potential += u1 - u0;
@@ -90,6 +126,7 @@ impl EnergyLedger {
 
     /// Records the state reached at time `t`.
     pub fn advance(&mut self, t: Real, eval: &Evaluation) {
+        self.add_impulse(t, eval);
         let h = t - self.last_t;
         for ((w, p0), p1) in self
             .work
@@ -188,6 +225,42 @@ impl EnergyLedger {
     pub fn energy_change(&self) -> Real {
         let (e0, e1) = self.energy();
         e1 - e0
+    }
+
+    /// Impulse `∫F dt` of force `i` so far, its net force summed over the bodies it acts on
+    /// (trapezoidal rule over the steps), `dim` components; zero for an internal force.
+    pub fn impulse(&self, i: usize) -> &[Real] {
+        let d = self.momentum_start.len();
+        &self.impulse[i * d..(i + 1) * d]
+    }
+
+    /// Total momentum at the start.
+    pub fn momentum_start(&self) -> &[Real] {
+        &self.momentum_start
+    }
+
+    /// Total momentum now.
+    pub fn momentum_end(&self) -> &[Real] {
+        &self.momentum_end
+    }
+
+    /// Momentum changed by events' state changes (impacts on walls; impacts between bodies
+    /// change nothing).
+    pub fn jump_momentum(&self) -> &[Real] {
+        &self.jump_momentum
+    }
+
+    /// `Δp - Σ J - Δp_events` per component: zero for an exact trajectory (the impulse-
+    /// momentum theorem as a check, like the work-energy residual).
+    pub fn momentum_residual(&self) -> Vec<Real> {
+        let d = self.momentum_start.len();
+        (0..d)
+            .map(|k| {
+                let dp = self.momentum_end[k] - self.momentum_start[k];
+                let j: Real = (0..self.names.len()).map(|i| self.impulse[i * d + k]).sum();
+                dp - j - self.jump_momentum[k]
+            })
+            .collect()
     }
 
     /// Work of the forces without a potential (drag, formulas): equals `ΔE` exactly.

@@ -55,22 +55,28 @@ impl ForceSet {
         }
     }
 
-    /// Sets `out` to the total force and `power[i]` to the power `F_i·v` of force `i`;
-    /// `scratch` holds one force at a time.
+    /// Sets `out` to the total force, `power[i]` to the power `F_i·v` of force `i` and
+    /// `net[i*dim..]` to its net force summed over the bodies; `scratch` holds one force at a
+    /// time.
     pub fn total_and_power_into(
         &self,
         k: &Kinematics<'_>,
         out: &mut [Real],
         power: &mut [Real],
+        net: &mut [Real],
         scratch: &mut [Real],
     ) {
         out.fill(0.0);
-        for (f, p) in self.forces.iter().zip(power.iter_mut()) {
+        let d = k.dim;
+        for (i, (f, p)) in self.forces.iter().zip(power.iter_mut()).enumerate() {
             scratch.fill(0.0);
             f.add_forces(k, scratch);
             *p = dot(scratch, k.v);
-            for (o, s) in out.iter_mut().zip(scratch.iter()) {
+            let n = &mut net[i * d..(i + 1) * d];
+            n.fill(0.0);
+            for (j, (o, s)) in out.iter_mut().zip(scratch.iter()).enumerate() {
                 *o += s;
+                n[j % d] += s;
             }
         }
     }

@@ -16,6 +16,11 @@ pub struct Evaluation {
     pub kinetic: Real,
     /// Sum of the potentials of the conservative forces; `None` if no force has one.
     pub potential_total: Option<Real>,
+    /// Net force of each force summed over the bodies it acts on, `dim` components per force
+    /// (zero for an internal force between bodies, which obeys Newton's third law).
+    pub net: Vec<Real>,
+    /// Total momentum `Σ m v`, `dim` components.
+    pub momentum: Vec<Real>,
 }
 
 /// The state at one instant with its derived quantities, as passed to observers.

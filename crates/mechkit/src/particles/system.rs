@@ -240,10 +240,11 @@ impl ParticleSystem {
         out.a.resize(n, 0.0);
         out.power.resize(nf, 0.0);
         out.potential.resize(nf, Real::NAN);
+        out.net.resize(nf * self.dim, 0.0);
         scratch.resize(n, 0.0);
         let k = self.kinematics(t, q, v);
         self.forces
-            .total_and_power_into(&k, &mut out.a, &mut out.power, scratch);
+            .total_and_power_into(&k, &mut out.a, &mut out.power, &mut out.net, scratch);
         for (a, w) in out.a.iter_mut().zip(&self.inv_mass) {
             *a *= w;
         }
@@ -257,6 +258,11 @@ impl ParticleSystem {
         }
         out.potential_total = total;
         out.kinetic = self.kinetic_energy(v);
+        out.momentum.clear();
+        out.momentum.resize(self.dim, 0.0);
+        for (i, vi) in v.iter().enumerate() {
+            out.momentum[i % self.dim] += self.mass[i / self.dim] * vi;
+        }
     }
 }
 

@@ -165,6 +165,8 @@ pub struct Summary {
     /// Total momentum `Σ m v` (kg·m/s), one component per dimension, at the start and the end:
     /// it changes only by the impulse of external forces (and of walls).
     pub momentum: MomentumSummary,
+    /// Impulse `∫F dt` of each force (N·s), its net force summed over the bodies it acts on.
+    pub impulse: BTreeMap<String, Vec<Real>>,
     /// Kinetic energy (J).
     pub kinetic_energy: StartEnd,
     /// Potential energy of the conservative forces (J); null when none has a potential.
@@ -244,25 +246,19 @@ fn timed(sys: &ParticleSystem, s: &Snapshot) -> TimedState {
     }
 }
 
-/// Total momentum at the start and end of a run.
+/// Total momentum at the start and end of a run, and where its change came from.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MomentumSummary {
     /// At the start.
     pub start: Vec<Real>,
     /// At the end.
     pub end: Vec<Real>,
-}
-
-/// `Σ m v`, one component per dimension.
-fn total_momentum(sys: &ParticleSystem, v: &[Real]) -> Vec<Real> {
-    let d = sys.dim();
-    let mut p = vec![0.0; d];
-    for (i, m) in sys.masses().iter().enumerate() {
-        for k in 0..d {
-            p[k] += m * v[i * d + k];
-        }
-    }
-    p
+    /// The impulse of all forces, `Σ ∫F dt` (internal forces contribute nothing).
+    pub external_impulse: Vec<Real>,
+    /// Changed by events (impacts on walls).
+    pub events_change: Vec<Real>,
+    /// `end - start - external_impulse - events_change`: zero for an exact trajectory.
+    pub residual: Vec<Real>,
 }
 
 impl Summary {
@@ -327,9 +323,20 @@ impl Summary {
                     .collect()
             },
             momentum: MomentumSummary {
-                start: total_momentum(sys, report.initial.qv().1),
-                end: total_momentum(sys, v),
+                start: l.momentum_start().to_vec(),
+                end: l.momentum_end().to_vec(),
+                external_impulse: (0..d)
+                    .map(|k| (0..l.names().len()).map(|i| l.impulse(i)[k]).sum::<Real>() + 0.0)
+                    .collect(),
+                events_change: l.jump_momentum().to_vec(),
+                residual: l.momentum_residual(),
             },
+            impulse: l
+                .names()
+                .iter()
+                .enumerate()
+                .map(|(i, n)| (n.clone(), l.impulse(i).to_vec()))
+                .collect(),
             kinetic_energy: StartEnd {
                 start: Some(l.kinetic_start()),
                 end: Some(l.kinetic_end()),

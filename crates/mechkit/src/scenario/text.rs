@@ -88,13 +88,18 @@ impl Summary {
                 vec_text(&b.velocity)
             );
         }
-        if self.bodies.len() > 1 {
+        let p = &self.momentum;
+        if self.bodies.len() > 1 || p.events_change.iter().any(|x| *x != 0.0) {
             let _ = writeln!(
                 s,
-                "total momentum {} → {} kg·m/s",
-                vec_text(&self.momentum.start),
-                vec_text(&self.momentum.end)
+                "momentum (kg·m/s)\n  total                  {} → {}\n  impulse of the forces  {}",
+                vec_text(&p.start),
+                vec_text(&p.end),
+                vec_text(&p.external_impulse)
             );
+            if p.events_change.iter().any(|x| *x != 0.0) {
+                let _ = writeln!(s, "  changed by events      {}", vec_text(&p.events_change));
+            }
         }
         let _ = writeln!(s, "energy ledger (J)");
         for (name, w) in &self.work {

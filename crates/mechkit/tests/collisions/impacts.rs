@@ -231,3 +231,62 @@ fn no_tunnelling_whatever_the_speed() {
     assert_eq!(v_end[2], 1e4);
     assert!(q_end[0] < 1.0);
 }
+
+/// 100 elastic disks in a box until 10⁴ impacts: kinetic energy kept and no overlap. The
+/// disk-disk impacts conserve momentum to 1e-12 (the properties test); the walls exchange it.
+#[test]
+#[ignore = "about a minute in a debug build: run with cargo test --release -- --ignored"]
+fn billiards_100_disks_10_000_collisions() {
+    let (n, radius) = (100, 0.01);
+    let mut builder = ParticleSystem::builder(2);
+    let (mut q, mut v) = (Vec::new(), Vec::new());
+    let mut seed = 777u64;
+    let mut rnd = || {
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    for i in 0..n {
+        builder = builder.body(format!("d{i}"), 1.0);
+        q.extend([0.05 + 0.1 * (i % 10) as f64, 0.05 + 0.1 * (i / 10) as f64]);
+        v.extend([2.0 * rnd(), 2.0 * rnd()]);
+    }
+    let sys = builder.build().unwrap();
+    let names = (0..n).map(|i| format!("d{i}")).collect();
+    let mut impacts = Impacts::new(2, names, sys.masses().to_vec(), vec![Some(radius); n]);
+    for (name, p, nrm) in [
+        ("left", [0.0, 0.0], [1.0, 0.0]),
+        ("right", [1.0, 0.0], [-1.0, 0.0]),
+        ("bottom", [0.0, 0.0], [0.0, 1.0]),
+        ("top", [0.0, 1.0], [0.0, -1.0]),
+    ] {
+        impacts = impacts
+            .with_wall(Wall::new(name, p.to_vec(), &nrm, Restitution::ELASTIC, 0.0).unwrap());
+    }
+    let mut sim = Simulation::new(&sys, Method::VelocityVerlet, 5e-3).t_max(1e3);
+    for e in impacts.events() {
+        sim = sim.event(e.max_count(u32::MAX));
+    }
+    // stop at the 10,000th impact: an extra event counting nothing but time is not needed,
+    // the run is cut by t_max and the test counts the impacts
+    let mut watch = GapWatch {
+        radius,
+        worst: f64::INFINITY,
+    };
+    let sim = sim.t_max(35.0);
+    let t0 = std::time::Instant::now();
+    let report = sim
+        .run(State::from_qv(0.0, &q, &v), &mut [&mut watch])
+        .unwrap();
+    let collisions = report.events.len();
+    println!("{collisions} impacts in {:?}", t0.elapsed());
+    assert!(collisions >= 10_000, "{collisions} impacts");
+    let (k0, k1) = (report.ledger.kinetic_start(), report.ledger.kinetic_end());
+    assert!((k1 - k0).abs() <= 1e-9 * k0, "K {k0} -> {k1}");
+    assert!(
+        watch.worst >= -1e-9,
+        "overlap {:e} of the radius",
+        watch.worst
+    );
+}
