@@ -289,11 +289,11 @@ mod tests {
     #[test]
     fn hertz_time_factor_is_the_integral() {
         // ∫₀¹ dx/sqrt(1 - x^(5/2)) with x = 1 - y² (smooth in y), midpoint rule
-        let n = 20_000;
+        let n: u32 = 20_000;
         let integral: Real = (0..n)
             .map(|i| {
-                let y = (i as Real + 0.5) / n as Real;
-                2.0 * y / (1.0 - (1.0 - y * y).powf(2.5)).sqrt() / n as Real
+                let y = (Real::from(i) + 0.5) / Real::from(n);
+                2.0 * y / (1.0 - (1.0 - y * y).powf(2.5)).sqrt() / Real::from(n)
             })
             .sum();
         assert!((2.0 * integral - 2.943_275_184_324_705).abs() < 1e-6);
