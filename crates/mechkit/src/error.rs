@@ -9,6 +9,9 @@ pub enum Error {
     /// An invalid particle system.
     #[error(transparent)]
     System(#[from] crate::particles::SystemError),
+    /// An invalid contact force.
+    #[error(transparent)]
+    Contact(#[from] crate::forces::ContactError),
     /// A stepper failed.
     #[error(transparent)]
     Integrate(#[from] crate::ode::IntegrateError),

@@ -34,7 +34,8 @@
 //! - [`ode`]: systems, states, and the fixed-step methods (Euler, Euler-Cromer, velocity
 //!   Verlet, RK4).
 //! - [`particles`]: bodies in 1-3 dimensions, the names formulas use for their state.
-//! - [`forces`]: gravity, springs, drag with wind, constant and formula forces.
+//! - [`forces`]: gravity, springs, drag with wind, constant and formula forces, contact
+//!   forces of overlapping spheres and walls.
 //! - [`collisions`]: two bodies colliding with restitution and friction.
 //! - [`rocket`]: variable mass: the rocket equation (Tsiolkovsky's Δv, burn and coast in
 //!   uniform gravity in closed form) and a simulation with quadratic drag.

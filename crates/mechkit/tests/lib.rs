@@ -5,6 +5,7 @@ mod collisions;
 mod data;
 mod deriv;
 mod energy;
+mod forces;
 mod ode;
 mod quad;
 mod rocket;

@@ -11,10 +11,16 @@
 //! | [`LinearDrag`] | `-b (v - w)` | — |
 //! | [`QuadraticDrag`] | `-D |v - w| (v - w)` | — |
 //! | [`ExpressionForce`] | a formula per component | — |
+//! | [`ContactForce`] | `F_e(δ) n̂` while overlapping by `δ > 0`: `k δ` or `k δ^(3/2)` (sphere pairs, walls) | `k δ²/2` or `(2/5) k δ^(5/2)` |
+//! | [`ContactDamper`] | its damping: `c δ̇` or `α F_e δ̇` along `n̂`, total clamped at `≥ 0` | — |
 //!
 //! `w` is the wind: still air, a constant vector, or a formula of position and time ([`Wind`]).
 
 mod constant;
+mod contact;
+mod contact_builder;
+mod contact_damper;
+mod contact_law;
 mod drag;
 mod expression;
 mod force;
@@ -24,6 +30,13 @@ mod spring;
 mod wind;
 
 pub use constant::ConstantForce;
+pub use contact::ContactForce;
+pub use contact_builder::{ContactError, ContactForceBuilder, ContactPair, ContactWall};
+pub use contact_damper::ContactDamper;
+pub use contact_law::{
+    ContactDamping, ContactLaw, hertz_contact_time, hertz_max_overlap, linear_contact_time,
+    linear_damping_ratio, linear_restitution, linear_restitution_clamped,
+};
 pub use drag::{LinearDrag, QuadraticDrag};
 pub use expression::ExpressionForce;
 pub use force::{Force, Target};

@@ -1,0 +1,4 @@
+mod errors;
+mod floor;
+mod head_on;
+mod setup;
