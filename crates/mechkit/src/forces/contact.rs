@@ -21,7 +21,7 @@
 //!
 //! - [`ContactForce`], the elastic part: position-dependent only, potential `Σ U(δ)` over the
 //!   overlapping contacts; its work over a whole contact is zero;
-//! - [`ContactDamper`] (from [`ContactForce::damper`], named `<name> damping`), the rest of the
+//! - [`ContactDamper`] (from [`ContactForce::damper`], named `<name>_damping`), the rest of the
 //!   normal force, `F - F_e`: velocity-dependent, no potential; its work is the energy the
 //!   contact dissipated, and equals `ΔE` when no other force dissipates.
 //!
@@ -89,7 +89,7 @@ use crate::particles::Kinematics;
 /// // the damper's work is the kinetic energy lost, the elastic force's is zero
 /// let l = &report.ledger;
 /// let lost = l.kinetic_end() - l.kinetic_start();
-/// assert!((l.work_of("contact damping").unwrap() - lost).abs() < 1e-8);
+/// assert!((l.work_of("contact_damping").unwrap() - lost).abs() < 1e-8);
 /// assert!(l.work_of("contact").unwrap().abs() < 1e-8);
 /// ```
 #[derive(Debug, Clone, PartialEq)]
@@ -203,12 +203,12 @@ impl ContactForce {
         out
     }
 
-    /// The damping part as a force of its own, named `<name> damping`; `None` when the contact
+    /// The damping part as a force of its own, named `<name>_damping`; `None` when the contact
     /// is not damped.
     pub fn damper(&self) -> Option<ContactDamper> {
         self.damping
             .is_active()
-            .then(|| ContactDamper::new(format!("{} damping", self.name), self.clone()))
+            .then(|| ContactDamper::new(format!("{}_damping", self.name), self.clone()))
     }
 
     /// The elastic force and, if damped, the damper, boxed for

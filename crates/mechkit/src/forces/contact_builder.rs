@@ -143,7 +143,7 @@ impl ContactForceBuilder {
         }
     }
 
-    /// Names the force (default `contact`; its damper is `<name> damping`).
+    /// Names the force (default `contact`; its damper is `<name>_damping`).
     #[must_use]
     pub fn name(mut self, name: impl Into<String>) -> Self {
         self.name = Some(name.into());

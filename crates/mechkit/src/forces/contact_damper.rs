@@ -87,7 +87,7 @@ mod tests {
         let d = c.damper().unwrap();
         assert_eq!(forces(&d, &[0.0, -0.5], &[0.0, -2.0]), vec![-8.0, 8.0]);
         assert!(d.velocity_dependent() && !c.velocity_dependent());
-        assert_eq!((d.name(), d.bodies()), ("contact damping", vec![0, 1]));
+        assert_eq!((d.name(), d.bodies()), ("contact_damping", vec![0, 1]));
         assert_eq!(c.clone().into_forces().len(), 2);
     }
 }

@@ -18,6 +18,7 @@ use super::values::{Constant, ValueEnv, resolve_any, scalar, vector};
 use crate::Real;
 use crate::ode::State;
 use crate::particles::{BodyRef, NameContext, ParticleSystem, VarLevel};
+use crate::simulate::Stepping;
 
 const TOP_KEYS: &[&str] = &[
     "title",
@@ -118,6 +119,26 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         force_names.push(f.name().to_string());
         builder = builder.boxed_force(f);
     }
+    let contacts = read_contacts(
+        &root,
+        &Spheres {
+            dim,
+            names: &bodies,
+            masses: &masses,
+            radius: &radius,
+            q: &q,
+        },
+        ValueEnv {
+            constants: &constants,
+            mass: None,
+            later: &[],
+        },
+    )?;
+    let contact_forces = !contacts.forces.is_empty();
+    for f in contacts.forces {
+        force_names.push(f.name().to_string());
+        builder = builder.boxed_force(f);
+    }
     if force_names.is_empty() {
         warnings.push("no [[force]] is defined: the bodies move in straight lines".into());
     }
@@ -130,7 +151,15 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         mass: None,
         later: &[],
     };
-    let stepping = read_integrator(&root, env, &system)?;
+    let mut stepping = read_integrator(&root, env, &system)?;
+    if contact_forces && let Stepping::Adaptive { config, .. } = &mut stepping {
+        // a contact force switches on and off: the work of each force goes under the error
+        // control too, or the steps stride over the kink at the end of a contact and the
+        // ledger's split between the spring and its damper suffers
+        config
+            .error_components
+            .get_or_insert(2 * q.len() + force_names.len());
+    }
     let names = NameContext {
         dim,
         bodies: &bodies,
@@ -141,17 +170,7 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
     };
     let (stop, t_max, max_steps) = read_stop(&root, env, &names)?;
     let mut events = read_events(&root, &names)?;
-    events.extend(read_contacts(
-        &root,
-        &Spheres {
-            dim,
-            names: &bodies,
-            masses: &masses,
-            radius: &radius,
-            q: &q,
-        },
-        env,
-    )?);
+    events.extend(contacts.events);
     let observables = read_observe(&root, &names)?;
     let (every, output_times, plots) = read_output(&root, &names, dim, env)?;
     if t_max.is_none() && max_steps.is_none() {

@@ -1,6 +1,7 @@
 //! Collisions in a scenario: `radius` on bodies, `[[wall]]` (or `[[plane]]`) tables, and the
-//! `[contact]` table (model, restitution and friction, per-pair values in `[[contact.pair]]`),
-//! turned into the events of [`Impacts`].
+//! `[contact]` table: with `model = "impulse"` (restitution and friction, per-pair values in
+//! `[[contact.pair]]`) the events of [`Impacts`]; with `model = "spring"` or `"hertz"`
+//! (stiffness and damping) a contact force ([`ContactForce`]) active while bodies overlap.
 
 use mechkit_expr::units::Dimension;
 use toml::de::DeValue;
@@ -10,12 +11,29 @@ use super::error::{ErrorKind, ScenarioError};
 use super::values::{ValueEnv, scalar, vector};
 use crate::Real;
 use crate::collisions::{Impacts, Restitution, Wall};
+use crate::forces::{ContactDamping, ContactForce, ContactLaw, Force};
 use crate::simulate::Event;
 
 const WALL_KEYS: &[&str] = &["name", "point", "normal", "restitution", "friction"];
-const CONTACT_KEYS: &[&str] = &["model", "restitution", "friction", "pair"];
+const CONTACT_KEYS: &[&str] = &[
+    "model",
+    "restitution",
+    "friction",
+    "pair",
+    "stiffness",
+    "damping",
+];
 const PAIR_KEYS: &[&str] = &["bodies", "restitution", "friction"];
-const MODELS: &[&str] = &["impulse"];
+const MODELS: &[&str] = &["impulse", "spring", "hertz"];
+
+/// What the collision setup adds to a scenario.
+#[derive(Default)]
+pub(crate) struct ContactSetup {
+    /// Impact events (the impulse model).
+    pub events: Vec<Event>,
+    /// Contact forces (the spring and Hertz models).
+    pub forces: Vec<Box<dyn Force>>,
+}
 
 /// The bodies as the collision setup sees them.
 pub(crate) struct Spheres<'b> {
@@ -57,19 +75,19 @@ fn friction(t: &Table<'_, '_>, env: ValueEnv<'_>, default: Real) -> Result<Real,
     }
 }
 
-/// The collision events of the scenario (none when no body has a radius and there is no
-/// wall), after checking that nothing overlaps at the start.
+/// The collision events or contact forces of the scenario (none when no body has a radius and
+/// there is no wall), after checking that nothing overlaps at the start.
 pub(crate) fn read_contacts(
     root: &Table<'_, '_>,
     s: &Spheres<'_>,
     env: ValueEnv<'_>,
-) -> Result<Vec<Event>, ScenarioError> {
+) -> Result<ContactSetup, ScenarioError> {
     let contact = root.table("contact")?;
     let mut walls = root.tables("wall")?;
     walls.extend(root.tables("plane")?);
     let any_radius = s.radius.iter().any(Option::is_some);
     if contact.is_none() && walls.is_empty() {
-        return Ok(Vec::new());
+        return Ok(ContactSetup::default());
     }
     if !any_radius {
         let span = contact
@@ -86,19 +104,21 @@ pub(crate) fn read_contacts(
     }
     let (mut e0, mut mu0) = (Restitution::ELASTIC, 0.0);
     let mut pairs = Vec::new();
+    let mut model = "impulse";
     if let Some(c) = &contact {
         c.check_keys(CONTACT_KEYS)?;
-        if let Some((model, span)) = c.string("model")?
-            && !MODELS.contains(&model)
-        {
-            return Err(c
-                .src
-                .error(
-                    ErrorKind::Invalid,
-                    format!("unknown contact model `{model}`"),
-                    span,
-                )
-                .with_hint(format!("use one of: {}", MODELS.join(", "))));
+        if let Some((m, span)) = c.string("model")? {
+            if !MODELS.contains(&m) {
+                return Err(c
+                    .src
+                    .error(
+                        ErrorKind::Invalid,
+                        format!("unknown contact model `{m}`"),
+                        span,
+                    )
+                    .with_hint(format!("use one of: {}", MODELS.join(", "))));
+            }
+            model = m;
         }
         e0 = restitution(c, env, e0)?;
         mu0 = friction(c, env, mu0)?;
@@ -130,16 +150,7 @@ pub(crate) fn read_contacts(
             pairs.push((a, b, restitution(&p, env, e0)?, friction(&p, env, mu0)?));
         }
     }
-    let mut impacts = Impacts::new(
-        s.dim,
-        s.names.to_vec(),
-        s.masses.to_vec(),
-        s.radius.to_vec(),
-    )
-    .with_default(e0, mu0);
-    for (a, b, e, mu) in pairs {
-        impacts = impacts.with_pair(a, b, e, mu);
-    }
+    let mut walls_read = Vec::new();
     for (i, w) in walls.iter().enumerate() {
         w.check_keys(WALL_KEYS)?;
         let name = w
@@ -167,6 +178,25 @@ pub(crate) fn read_contacts(
                 w.key_span("normal"),
             )
         })?;
+        walls_read.push(wall);
+    }
+    if model != "impulse" {
+        let c = contact
+            .as_ref()
+            .expect("a model other than impulse comes from [contact]");
+        return contact_force(c, model, s, &walls_read, env);
+    }
+    let mut impacts = Impacts::new(
+        s.dim,
+        s.names.to_vec(),
+        s.masses.to_vec(),
+        s.radius.to_vec(),
+    )
+    .with_default(e0, mu0);
+    for (a, b, e, mu) in pairs {
+        impacts = impacts.with_pair(a, b, e, mu);
+    }
+    for wall in walls_read {
         impacts = impacts.with_wall(wall);
     }
     if let Some(o) = impacts.overlap(s.q) {
@@ -185,5 +215,85 @@ pub(crate) fn read_contacts(
         )
         .with_hint("move them apart (touching is allowed) or make the radii smaller"));
     }
-    Ok(impacts.events())
+    Ok(ContactSetup {
+        events: impacts.events(),
+        forces: Vec::new(),
+    })
+}
+
+/// `model = "spring"` or `"hertz"`: a contact force between every two bodies with a radius and
+/// between each of them and every wall, with `stiffness` and optional `damping`.
+fn contact_force(
+    c: &Table<'_, '_>,
+    model: &str,
+    s: &Spheres<'_>,
+    walls: &[Wall],
+    env: ValueEnv<'_>,
+) -> Result<ContactSetup, ScenarioError> {
+    for key in ["restitution", "friction", "pair"] {
+        if c.get(key).is_some() {
+            return Err(c
+                .src
+                .error(
+                    ErrorKind::Invalid,
+                    format!("`{key}` belongs to the impulse model, not to `model = \"{model}\"`"),
+                    c.key_span(key),
+                )
+                .with_hint("a contact force loses energy through its `damping`"));
+        }
+    }
+    let hertz = model == "hertz";
+    // k δ (N/m) or k δ^(3/2) (N/m^(3/2)); damping c δ̇ (N s/m) or Hunt-Crossley α k δ^(3/2) δ̇ (s/m)
+    let (k_dim, c_dim) = if hertz {
+        (
+            Dimension::FORCE / Dimension::LENGTH.pow_ratio(3, 2).expect("m^(3/2) exists"),
+            Dimension::TIME / Dimension::LENGTH,
+        )
+    } else {
+        (Dimension::STIFFNESS, Dimension::LINEAR_DRAG)
+    };
+    let k = scalar(c, "stiffness", k_dim, env)?.ok_or_else(|| {
+        c.missing(
+            "stiffness",
+            if hertz {
+                "\"1e6 N/m^1.5\""
+            } else {
+                "\"1e4 N/m\""
+            },
+        )
+        .with_hint(format!("a `{model}` contact needs its stiffness"))
+    })?;
+    let law = if hertz {
+        ContactLaw::hertz(k)
+    } else {
+        ContactLaw::linear(k)
+    };
+    let damping = match scalar(c, "damping", c_dim, env)? {
+        None => ContactDamping::None,
+        Some(d) if hertz => ContactDamping::HuntCrossley { alpha: d },
+        Some(d) => ContactDamping::Linear { c: d },
+    };
+    let spheres: Vec<(usize, Real)> = s
+        .radius
+        .iter()
+        .enumerate()
+        .filter_map(|(i, r)| r.map(|r| (i, r)))
+        .collect();
+    let mut builder = ContactForce::builder(s.dim)
+        .name("contact")
+        .law(law)
+        .damping(damping)
+        .spheres(&spheres);
+    for w in walls {
+        builder = builder.wall(&w.point, &w.normal, &spheres);
+    }
+    let force = builder.build().map_err(|e| {
+        c.src
+            .error(ErrorKind::Invalid, e.to_string(), c.span.clone())
+            .with_hint("check `stiffness` and `damping` in [contact]")
+    })?;
+    Ok(ContactSetup {
+        events: Vec::new(),
+        forces: force.into_forces(),
+    })
 }

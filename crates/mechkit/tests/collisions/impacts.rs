@@ -289,3 +289,58 @@ fn billiards_100_disks_10_000_collisions() {
         watch.worst
     );
 }
+
+#[test]
+fn spring_floor_compression_from_energy_conservation() {
+    let path = workspace().join("examples/ball_on_spring_floor.toml");
+    let out = Scenario::load(&path).unwrap().run().unwrap();
+    let s = &out.summary;
+    let lowest = s.events.iter().find(|e| e.name == "lowest").unwrap();
+    let delta = 0.1 - lowest.state["ball"].position[1];
+    // m g (h - R + δ) = k δ²/2 with m = 0.1, g = 9.81, h - R = 0.9, k = 1000
+    let (m, g, k): (f64, f64, f64) = (0.1, 9.81, 1000.0);
+    let exact = (m * g + ((m * g).powi(2) + 2.0 * k * m * g * 0.9).sqrt()) / k;
+    assert!((delta - exact).abs() < 1e-9 * exact, "{delta} vs {exact}");
+    // the book's estimate neglects gravity's work during the compression: 2.3 % low
+    let book = (2.0 * m * g / k * 0.9f64).sqrt();
+    assert!((exact - book) / exact < 0.03 && book < exact);
+    // no damping: the ball comes back to its height, energy kept by the elastic contact
+    assert!((s.observables["height_back"] - 1.0).abs() < 1e-9);
+    assert!(s.energy.relative_drift.unwrap().abs() < 1e-8);
+}
+
+#[test]
+fn contact_models_check_their_keys() {
+    let spring =
+        std::fs::read_to_string(workspace().join("examples/ball_on_spring_floor.toml")).unwrap();
+    let damped = spring.replace(
+        "stiffness = \"1000 N/m\"",
+        "stiffness = \"1000 N/m\"\ndamping = \"0.5 N*s/m\"",
+    );
+    let out = Scenario::from_str("d.toml", &damped)
+        .unwrap()
+        .run()
+        .unwrap();
+    // the damper is a force of its own and takes the energy the ball does not bring back
+    let lost = out.summary.work["contact_damping"];
+    let e = &out.summary.energy;
+    assert!(lost < -1e-3, "{lost}");
+    // with contact forces the work integrals are under the error control too, so the ledger
+    // splits the energy between the spring and its damper accurately
+    assert!((e.end - e.start - lost).abs() < 1e-8 * lost.abs(), "{e:?}");
+    let wrong = spring.replace(
+        "stiffness = \"1000 N/m\"",
+        "stiffness = \"1000 N/m\"\nrestitution = 0.5",
+    );
+    let e = Scenario::from_str("w.toml", &wrong)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("impulse model"), "{e}");
+    let unit = spring.replace("\"1000 N/m\"", "\"1000 N\"");
+    let e = Scenario::from_str("u.toml", &unit).unwrap_err().to_string();
+    assert!(e.contains("stiffness"), "{e}");
+    let hertz = spring
+        .replace("model     = \"spring\"", "model = \"hertz\"")
+        .replace("\"1000 N/m\"", "1e5");
+    assert!(Scenario::from_str("h.toml", &hertz).unwrap().run().is_ok());
+}

@@ -107,7 +107,7 @@ fn the_ledger_books_the_dampers_work_as_the_energy_lost() {
         let (report, _) = drop_on_floor(damping, Some(stepping), &mut watch);
         let l = &report.ledger;
         let w_elastic = l.work_of("contact").unwrap();
-        let w_damper = l.work_of("contact damping").unwrap();
+        let w_damper = l.work_of("contact_damping").unwrap();
         let (e0, e1) = l.energy();
         let apex = report.final_state.y[1];
         println!(
