@@ -120,23 +120,34 @@ impl Observer for GapWatch {
     }
 }
 
-#[test]
-fn elastic_disks_in_a_box_keep_their_energy_and_never_overlap() {
-    // 16 disks on a 4 x 4 grid in a unit box, with pseudo-random velocities
-    let (n, radius) = (16, 0.04);
+/// `side × side` disks of `radius` on a grid in the unit box with its four walls, masses
+/// cycling through `masses`, and pseudo-random velocities up to `speed`/2 per component.
+struct Box2d {
+    sys: ParticleSystem,
+    impacts: Impacts,
+    q: Vec<f64>,
+    v: Vec<f64>,
+}
+
+fn disks_in_a_box(side: usize, radius: f64, masses: &[f64], speed: f64, seed: u64) -> Box2d {
+    let n = side * side;
     let mut builder = ParticleSystem::builder(2);
     let (mut q, mut v) = (Vec::new(), Vec::new());
-    let mut seed = 12345u64;
+    let mut seed = seed;
     let mut rnd = || {
         seed = seed
             .wrapping_mul(6_364_136_223_846_793_005)
             .wrapping_add(1_442_695_040_888_963_407);
         (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
     };
+    let cell = 1.0 / side as f64;
     for i in 0..n {
-        builder = builder.body(format!("d{i}"), 1.0 + (i % 3) as f64);
-        q.extend([0.125 + 0.25 * (i % 4) as f64, 0.125 + 0.25 * (i / 4) as f64]);
-        v.extend([4.0 * rnd(), 4.0 * rnd()]);
+        builder = builder.body(format!("d{i}"), masses[i % masses.len()]);
+        q.extend([
+            cell * (0.5 + (i % side) as f64),
+            cell * (0.5 + (i / side) as f64),
+        ]);
+        v.extend([speed * rnd(), speed * rnd()]);
     }
     let sys = builder.build().unwrap();
     let names = (0..n).map(|i| format!("d{i}")).collect();
@@ -150,6 +161,14 @@ fn elastic_disks_in_a_box_keep_their_energy_and_never_overlap() {
         impacts = impacts
             .with_wall(Wall::new(name, p.to_vec(), &nrm, Restitution::ELASTIC, 0.0).unwrap());
     }
+    Box2d { sys, impacts, q, v }
+}
+
+#[test]
+fn elastic_disks_in_a_box_keep_their_energy_and_never_overlap() {
+    // 16 disks on a 4 x 4 grid in a unit box
+    let radius = 0.04;
+    let Box2d { sys, impacts, q, v } = disks_in_a_box(4, radius, &[1.0, 2.0, 3.0], 4.0, 12345);
     let mut sim = Simulation::new(&sys, Method::VelocityVerlet, 2e-3).t_max(3.0);
     for e in impacts.events() {
         sim = sim.event(e);
@@ -237,33 +256,8 @@ fn no_tunnelling_whatever_the_speed() {
 #[test]
 #[ignore = "25 s in a release build, 14 min in debug: cargo test --release -p mechkit --test lib billiards -- --ignored"]
 fn billiards_100_disks_10_000_collisions() {
-    let (n, radius) = (100, 0.01);
-    let mut builder = ParticleSystem::builder(2);
-    let (mut q, mut v) = (Vec::new(), Vec::new());
-    let mut seed = 777u64;
-    let mut rnd = || {
-        seed = seed
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
-    for i in 0..n {
-        builder = builder.body(format!("d{i}"), 1.0);
-        q.extend([0.05 + 0.1 * (i % 10) as f64, 0.05 + 0.1 * (i / 10) as f64]);
-        v.extend([2.0 * rnd(), 2.0 * rnd()]);
-    }
-    let sys = builder.build().unwrap();
-    let names = (0..n).map(|i| format!("d{i}")).collect();
-    let mut impacts = Impacts::new(2, names, sys.masses().to_vec(), vec![Some(radius); n]);
-    for (name, p, nrm) in [
-        ("left", [0.0, 0.0], [1.0, 0.0]),
-        ("right", [1.0, 0.0], [-1.0, 0.0]),
-        ("bottom", [0.0, 0.0], [0.0, 1.0]),
-        ("top", [0.0, 1.0], [0.0, -1.0]),
-    ] {
-        impacts = impacts
-            .with_wall(Wall::new(name, p.to_vec(), &nrm, Restitution::ELASTIC, 0.0).unwrap());
-    }
+    let radius = 0.01;
+    let Box2d { sys, impacts, q, v } = disks_in_a_box(10, radius, &[1.0], 2.0, 777);
     let mut sim = Simulation::new(&sys, Method::VelocityVerlet, 5e-3).t_max(1e3);
     for e in impacts.events() {
         sim = sim.event(e.max_count(u32::MAX));
