@@ -72,11 +72,15 @@ impl ForceSet {
             scratch.fill(0.0);
             f.add_forces(k, scratch);
             *p = dot(scratch, k.v);
+            for (o, s) in out.iter_mut().zip(scratch.iter()) {
+                *o += s;
+            }
             let n = &mut net[i * d..(i + 1) * d];
             n.fill(0.0);
-            for (j, (o, s)) in out.iter_mut().zip(scratch.iter()).enumerate() {
-                *o += s;
-                n[j % d] += s;
+            for body in scratch.chunks_exact(d) {
+                for (nk, fk) in n.iter_mut().zip(body) {
+                    *nk += fk;
+                }
             }
         }
     }

@@ -260,8 +260,10 @@ impl ParticleSystem {
         out.kinetic = self.kinetic_energy(v);
         out.momentum.clear();
         out.momentum.resize(self.dim, 0.0);
-        for (i, vi) in v.iter().enumerate() {
-            out.momentum[i % self.dim] += self.mass[i / self.dim] * vi;
+        for (m, body) in self.mass.iter().zip(v.chunks_exact(self.dim)) {
+            for (p, vk) in out.momentum.iter_mut().zip(body) {
+                *p += m * vk;
+            }
         }
     }
 }
