@@ -24,6 +24,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit work --field "y, -x" --path "cos(s), sin(s)" --param s=0:2*pi
   mechkit collide --m1 "0.2 kg" --v1 "15 m/s" --m2 "1.5 kg" --v2 0 --restitution 0
   mechkit impulse examples/data/baseballforce.d --mass "0.145 kg"
+  mechkit com --mass "12.011 u" --at "0 pm" --mass "15.999 u" --at "112.8 pm" --in pm
   mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
   mechkit rocket --m0 "1000 kg" --m1 "400 kg" --mass-rate "10 kg/s" --exhaust-speed "2 km/s" --g "9.81 m/s^2" --coast
   mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
@@ -80,6 +81,9 @@ pub enum Command {
     Collide(CollideArgs),
     /// The impulse ∫F dt of a force-time data file, the average force and Δv = J/m.
     Impulse(ImpulseArgs),
+    /// The centre of mass of point masses (with velocities: momentum, centre-of-mass frame,
+    /// kinetic energy split).
+    Com(ComArgs),
     /// The work ∫F dx from a data file (x, F columns; cumulative W(x)), or of a force field
     /// along a path (--field with --path or --through).
     Work(WorkArgs),
@@ -115,6 +119,26 @@ pub struct CollideArgs {
     /// Coulomb friction coefficient along the contact plane (oblique impacts).
     #[arg(long, allow_hyphen_values = true)]
     pub friction: Option<f64>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit com`.
+#[derive(Debug, clap::Args)]
+pub struct ComArgs {
+    /// A body's mass, e.g. "5.972e24 kg"; repeat with --at for each body.
+    #[arg(long, action = clap::ArgAction::Append, allow_hyphen_values = true)]
+    pub mass: Vec<String>,
+    /// The body's position: one coordinate, or "x, y[, z]", e.g. "384400 km".
+    #[arg(long, action = clap::ArgAction::Append, allow_hyphen_values = true)]
+    pub at: Vec<String>,
+    /// The body's velocity (optional, for all bodies or none).
+    #[arg(long, action = clap::ArgAction::Append, allow_hyphen_values = true)]
+    pub velocity: Vec<String>,
+    /// Also express the centre of mass in this length, e.g. "6371 km" (Earth radii) or "pm".
+    #[arg(long = "in")]
+    pub unit: Option<String>,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

@@ -43,6 +43,7 @@
 //!   potentials, energy diagrams, equilibria and turning points; line integrals of force
 //!   fields; constant-power motion.
 //! - [`figure`]: plot data (curves, markers, bands) for the command line to draw.
+//! - [`mass`]: point-mass systems: centre of mass, momentum, the centre-of-mass frame.
 //! - [`function`]: a formula with parameter values, evaluated as a function.
 //! - [`simulate`]: the run loop: stop conditions located between steps, observers, divergence
 //!   diagnosis.
@@ -66,6 +67,7 @@ mod error;
 pub mod figure;
 pub mod forces;
 pub mod function;
+pub mod mass;
 pub mod ode;
 pub mod particles;
 pub mod quad;

@@ -3,6 +3,7 @@
 mod calculus;
 mod check;
 mod collide;
+mod com;
 mod derive;
 mod input;
 mod potential;
@@ -39,6 +40,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Work(args) => work::work(&args),
         Command::Derive(args) => derive::derive(&args),
         Command::Collide(args) => collide::collide(&args),
+        Command::Com(args) => com::com(&args),
         Command::Impulse(args) => work::impulse(&args),
         Command::ListIntegrators => {
             let mut text = String::new();

@@ -151,3 +151,48 @@ fn collide_and_impulse_bad_input() {
     dir.run(&["impulse", "back.d"])
         .assert_bad_input(&["negative time steps"]);
 }
+
+#[test]
+fn centre_of_mass_of_point_masses() {
+    let dir = Dir::new();
+    let j = json(
+        &dir,
+        &[
+            "com",
+            "--mass",
+            "1 kg",
+            "--at",
+            "0, 0",
+            "--mass",
+            "3 kg",
+            "--at",
+            "1 m, 2 m",
+            "--velocity",
+            "2, -1",
+            "--velocity",
+            "0.5, 4",
+            "--json",
+        ],
+    );
+    assert_eq!(num(&j, "/total_mass"), 4.0);
+    assert_eq!(
+        (num(&j, "/centre_of_mass/0"), num(&j, "/centre_of_mass/1")),
+        (0.75, 1.5)
+    );
+    assert_eq!(
+        (num(&j, "/momentum/0"), num(&j, "/momentum/1")),
+        (3.5, 11.0)
+    );
+    let k = num(&j, "/kinetic");
+    assert!((k - num(&j, "/kinetic_cm") - num(&j, "/kinetic_internal")).abs() < 1e-14 * k);
+    dir.run(&["com", "--mass", "1", "--at", "0", "--mass", "2"])
+        .assert_bad_input(&["2 masses but 1 positions"]);
+    dir.run(&["com", "--mass", "-1", "--at", "0"])
+        .assert_bad_input(&["--mass", "positive"]);
+    dir.run(&[
+        "com", "--mass", "1", "--at", "0", "--mass", "1", "--at", "1, 2",
+    ])
+    .assert_bad_input(&["same number of coordinates"]);
+    dir.run(&["com", "--mass", "1 m", "--at", "0"])
+        .assert_bad_input(&["--mass", "mass"]);
+}

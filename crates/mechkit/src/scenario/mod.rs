@@ -63,8 +63,8 @@ pub use output::{csv_header, push_number, write_atomic};
 pub use plot::{OutputTimes, PlotSpec, SeriesSpec};
 pub use run::RunOutput;
 pub use summary::{
-    BodyState, BodySummary, DivergenceSummary, EnergySummary, EventSummary, Files, MomentumSummary,
-    StartEnd, StepControl, Summary, TimedState,
+    BodyState, BodySummary, CentreOfMass, DivergenceSummary, EnergySummary, EventSummary, Files,
+    MomentumSummary, StartEnd, StepControl, Summary, TimedState,
 };
 
 use crate::Real;

@@ -5,6 +5,8 @@ use std::collections::BTreeMap;
 
 use serde::Serialize;
 
+use crate::mass::PointMasses;
+
 use crate::Real;
 use crate::ode::Tolerance;
 use crate::particles::ParticleSystem;
@@ -167,6 +169,8 @@ pub struct Summary {
     pub momentum: MomentumSummary,
     /// Impulse `∫F dt` of each force (N·s), its net force summed over the bodies it acts on.
     pub impulse: BTreeMap<String, Vec<Real>>,
+    /// The centre of mass of all bodies at the start and the end.
+    pub centre_of_mass: CentreOfMass,
     /// Kinetic energy (J).
     pub kinetic_energy: StartEnd,
     /// Potential energy of the conservative forces (J); null when none has a potential.
@@ -244,6 +248,37 @@ fn timed(sys: &ParticleSystem, s: &Snapshot) -> TimedState {
         t: s.t,
         state: states(sys, &s.q, &s.v),
     }
+}
+
+/// Position and velocity of the centre of mass at the start and end of a run.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CentreOfMass {
+    /// Total mass (kg).
+    pub total_mass: Real,
+    /// At the start.
+    pub start: BodyState,
+    /// At the end.
+    pub end: BodyState,
+    /// Kinetic energy relative to the centre of mass at the end (J): `K - ½ M V²`.
+    pub internal_kinetic_end: Real,
+}
+
+fn centre_of_mass(sys: &ParticleSystem, q: &[Real], v: &[Real]) -> (BodyState, Real) {
+    let p = PointMasses::new(
+        sys.dim(),
+        sys.masses().to_vec(),
+        q.to_vec(),
+        Some(v.to_vec()),
+    )
+    .expect("a built system has positive masses and matching coordinates")
+    .summary();
+    (
+        BodyState {
+            position: p.centre_of_mass,
+            velocity: p.cm_velocity.unwrap_or_default(),
+        },
+        p.kinetic_internal.unwrap_or(0.0),
+    )
 }
 
 /// Total momentum at the start and end of a run, and where its change came from.
@@ -330,6 +365,17 @@ impl Summary {
                     .collect(),
                 events_change: l.jump_momentum().to_vec(),
                 residual: l.momentum_residual(),
+            },
+            centre_of_mass: {
+                let (q0, v0) = report.initial.qv();
+                let (start, _) = centre_of_mass(sys, q0, v0);
+                let (end, internal) = centre_of_mass(sys, q, v);
+                CentreOfMass {
+                    total_mass: sys.masses().iter().sum(),
+                    start,
+                    end,
+                    internal_kinetic_end: internal,
+                }
             },
             impulse: l
                 .names()

@@ -77,6 +77,13 @@ fn newtons_cradle_passes_the_velocity_to_the_last_ball() {
         b["c"].velocity
     );
     assert_eq!(out.summary.momentum.start, out.summary.momentum.end);
+    // the centre of mass moves at P/M all along, and its kinetic energy is ½ M V²
+    let cm = &out.summary.centre_of_mass;
+    assert!((cm.start.velocity[0] - 1.0 / 3.0).abs() < 1e-15);
+    assert!((cm.end.velocity[0] - 1.0 / 3.0).abs() < 1e-15);
+    assert!((cm.end.position[0] - cm.start.position[0] - 0.2 / 3.0).abs() < 1e-12);
+    let k = out.summary.kinetic_energy.end.unwrap();
+    assert!((cm.internal_kinetic_end + 0.5 * 0.3 / 9.0 - k).abs() < 1e-15);
     // one impact, located when a reaches b at t = 0.03 s
     assert_eq!(out.summary.events.len(), 1);
     assert!((out.summary.events[0].t - 0.03).abs() < 1e-12);

@@ -1,0 +1,209 @@
+//! Systems of point masses: total mass, centre of mass and its velocity, total momentum
+//! `P = M V_cm`, velocities in the centre-of-mass frame, and the partition of the kinetic
+//! energy `K = ½ M V_cm² + K_internal` (König's theorem).
+
+use thiserror::Error;
+
+use crate::Real;
+
+/// Why a set of point masses is not valid.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum PointMassError {
+    /// No bodies.
+    #[error("no point masses were given")]
+    Empty,
+    /// A mass that is not positive and finite.
+    #[error("mass {index} is {mass}; masses must be positive")]
+    Mass {
+        /// 1-based index.
+        index: usize,
+        /// The value.
+        mass: Real,
+    },
+    /// Coordinates that do not come in groups of `dim`, or a dimension outside 1 to 3.
+    #[error("{what}: expected {expected} numbers ({dim} per body), got {got}")]
+    Shape {
+        /// Positions or velocities.
+        what: &'static str,
+        /// Spatial dimensions.
+        dim: usize,
+        /// Numbers expected.
+        expected: usize,
+        /// Numbers given.
+        got: usize,
+    },
+}
+
+/// Point masses in 1-3 dimensions, positions (and optionally velocities) `dim` per body.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointMasses {
+    dim: usize,
+    masses: Vec<Real>,
+    positions: Vec<Real>,
+    velocities: Option<Vec<Real>>,
+}
+
+/// The mass properties of a set of point masses.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MassSummary {
+    /// `M = Σ m`.
+    pub total_mass: Real,
+    /// `R = Σ m r / M`.
+    pub centre_of_mass: Vec<Real>,
+    /// `V = Σ m v / M` (when velocities were given).
+    pub cm_velocity: Option<Vec<Real>>,
+    /// `P = Σ m v = M V`.
+    pub momentum: Option<Vec<Real>>,
+    /// Each body's velocity relative to the centre of mass, `dim` per body.
+    pub cm_frame_velocities: Option<Vec<Real>>,
+    /// `K = Σ ½ m v²`.
+    pub kinetic: Option<Real>,
+    /// `½ M V²`, the kinetic energy of the centre of mass.
+    pub kinetic_cm: Option<Real>,
+    /// `Σ ½ m |v - V|²`, the kinetic energy relative to the centre of mass.
+    pub kinetic_internal: Option<Real>,
+}
+
+impl PointMasses {
+    /// Checks and stores the bodies.
+    ///
+    /// ```
+    /// use mechkit::mass::PointMasses;
+    /// // Earth and Moon on a line, 384,400 km apart
+    /// let em = PointMasses::new(1, vec![5.972e24, 7.342e22], vec![0.0, 3.844e8], None).unwrap();
+    /// let s = em.summary();
+    /// assert!((s.centre_of_mass[0] - 4.6686e6).abs() < 1e3);
+    /// ```
+    pub fn new(
+        dim: usize,
+        masses: Vec<Real>,
+        positions: Vec<Real>,
+        velocities: Option<Vec<Real>>,
+    ) -> Result<Self, PointMassError> {
+        if masses.is_empty() {
+            return Err(PointMassError::Empty);
+        }
+        if let Some((i, &m)) = masses
+            .iter()
+            .enumerate()
+            .find(|(_, m)| !(m.is_finite() && **m > 0.0))
+        {
+            return Err(PointMassError::Mass {
+                index: i + 1,
+                mass: m,
+            });
+        }
+        let expected = masses.len() * dim;
+        let shape = |what, got: usize| PointMassError::Shape {
+            what,
+            dim,
+            expected,
+            got,
+        };
+        if !(1..=3).contains(&dim) || positions.len() != expected {
+            return Err(shape("positions", positions.len()));
+        }
+        if let Some(v) = &velocities
+            && v.len() != expected
+        {
+            return Err(shape("velocities", v.len()));
+        }
+        Ok(Self {
+            dim,
+            masses,
+            positions,
+            velocities,
+        })
+    }
+
+    /// Spatial dimensions.
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
+    fn weighted_mean(&self, values: &[Real]) -> Vec<Real> {
+        let total: Real = self.masses.iter().sum();
+        let mut out = vec![0.0; self.dim];
+        for (m, body) in self.masses.iter().zip(values.chunks_exact(self.dim)) {
+            for (o, x) in out.iter_mut().zip(body) {
+                *o += m * x;
+            }
+        }
+        out.iter().map(|x| x / total).collect()
+    }
+
+    /// Total mass, centre of mass, and with velocities the momentum, the centre-of-mass frame
+    /// and the kinetic energy split.
+    pub fn summary(&self) -> MassSummary {
+        let total_mass: Real = self.masses.iter().sum();
+        let centre_of_mass = self.weighted_mean(&self.positions);
+        let (mut cm_velocity, mut momentum, mut frame) = (None, None, None);
+        let (mut kinetic, mut kinetic_cm, mut kinetic_internal) = (None, None, None);
+        if let Some(v) = &self.velocities {
+            let vc = self.weighted_mean(v);
+            let rel: Vec<Real> = v
+                .chunks_exact(self.dim)
+                .flat_map(|body| body.iter().zip(&vc).map(|(a, c)| a - c))
+                .collect();
+            let half_mv2 = |values: &[Real]| -> Real {
+                self.masses
+                    .iter()
+                    .zip(values.chunks_exact(self.dim))
+                    .map(|(m, b)| 0.5 * m * b.iter().map(|x| x * x).sum::<Real>())
+                    .sum()
+            };
+            kinetic = Some(half_mv2(v));
+            kinetic_internal = Some(half_mv2(&rel));
+            kinetic_cm = Some(0.5 * total_mass * vc.iter().map(|x| x * x).sum::<Real>());
+            momentum = Some(vc.iter().map(|x| total_mass * x).collect());
+            cm_velocity = Some(vc);
+            frame = Some(rel);
+        }
+        MassSummary {
+            total_mass,
+            centre_of_mass,
+            cm_velocity,
+            momentum,
+            cm_frame_velocities: frame,
+            kinetic,
+            kinetic_cm,
+            kinetic_internal,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn carbon_monoxide_and_koenig() {
+        // C (12.011 u) at 0, O (15.999 u) at 112.8 pm: the CM is 48.37 pm from the oxygen
+        let co = PointMasses::new(1, vec![12.011, 15.999], vec![0.0, 112.8], None).unwrap();
+        let cm = co.summary().centre_of_mass[0];
+        assert!((112.8 - cm - 48.370).abs() < 5e-4, "{cm}");
+        // König: K = ½ M V² + K_internal, and P = M V
+        let p = PointMasses::new(
+            2,
+            vec![1.0, 3.0],
+            vec![0.0, 0.0, 1.0, 2.0],
+            Some(vec![2.0, -1.0, 0.5, 4.0]),
+        )
+        .unwrap();
+        let s = p.summary();
+        let (k, kc, ki) = (
+            s.kinetic.unwrap(),
+            s.kinetic_cm.unwrap(),
+            s.kinetic_internal.unwrap(),
+        );
+        assert!((k - (kc + ki)).abs() < 1e-14 * k);
+        let m = s.momentum.unwrap();
+        assert!((m[0] - 3.5).abs() < 1e-15 && (m[1] - 11.0).abs() < 1e-15);
+        // in the CM frame the momenta add up to zero
+        let rel = s.cm_frame_velocities.unwrap();
+        assert!((1.0 * rel[0] + 3.0 * rel[2]).abs() < 1e-15);
+        assert!(PointMasses::new(1, vec![1.0, -1.0], vec![0.0, 1.0], None).is_err());
+        assert!(PointMasses::new(2, vec![1.0], vec![0.0], None).is_err());
+    }
+}
