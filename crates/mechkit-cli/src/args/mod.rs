@@ -1,0 +1,223 @@
+//! Command-line arguments, parsed into plain data (no library objects are built here).
+
+use std::path::PathBuf;
+
+use clap::{Parser, Subcommand};
+
+mod mechanics;
+pub use mechanics::{
+    CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, PotentialArgs, PowerArgs, RocketArgs, WorkArgs,
+};
+
+const EXAMPLES: &str = r#"Examples:
+  mechkit run examples/feather.toml --out out/feather
+      simulate, write out/feather/trajectory.csv, summary.json and SVG plots
+  mechkit run examples/kepler.toml --json
+      print the summary as JSON
+  mechkit check examples/projectile_drag.toml
+      validate a scenario without running it
+  mechkit list-integrators
+  mechkit diff "-F0*sin(2*pi*x/b)" --var x --at 0.1 --set F0=1,b=1
+  mechkit integrate "1/(a+x^2)" --var x --from 0 --to 1 --set a=1
+  mechkit integrate "-F0*sin(2*pi*x/b)" --from 0 --to b/4 --set F0=1,b=1 --method left,trapezoid --n 10,100
+  mechkit solve "x^2 - 5*x + 6 = 0" --for x
+  mechkit solve "cos(x) = x" --for x --in 0:1
+  mechkit units "60 km/h" --to m/s
+  mechkit potential "U0*((a/r)^12-(b/r)^6)" --var r --range 0.8:3 --set U0=1,a=1,b=1 --energy=-0.1
+  mechkit derive examples/data/fallingtennisball02.txt --smooth 21:2
+  mechkit work examples/data/forcedata.d --plot out/work.svg
+  mechkit work --field "y, -x" --path "cos(s), sin(s)" --param s=0:2*pi
+  mechkit collide --m1 "0.2 kg" --v1 "15 m/s" --m2 "1.5 kg" --v2 0 --restitution 0
+  mechkit impulse examples/data/baseballforce.d --mass "0.145 kg"
+  mechkit com --mass "12.011 u" --at "0 pm" --mass "15.999 u" --at "112.8 pm" --in pm
+  mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
+  mechkit rocket --m0 "1000 kg" --m1 "400 kg" --mass-rate "10 kg/s" --exhaust-speed "2 km/s" --g "9.81 m/s^2" --coast
+  mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
+
+Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
+Scenario format: docs/scenario.md. Commands: docs/cli.md."#;
+
+/// Computational classical mechanics: simulate scenario files with units and formulas, and
+/// report trajectories, plots and the energy ledger.
+#[derive(Debug, Parser)]
+#[command(
+    name = "mechkit",
+    version,
+    about = "Computational classical mechanics: simulate scenario files with units and formulas, and report trajectories, plots and the energy ledger.",
+    after_help = EXAMPLES
+)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Simulate a scenario: trajectory.csv, summary.json and plots in the output directory.
+    Run(RunArgs),
+    /// Check a scenario file without running it.
+    Check(CheckArgs),
+    /// List the integration methods.
+    ListIntegrators,
+    /// Differentiate a formula symbolically.
+    Diff(DiffArgs),
+    /// Integrate a formula: antiderivative, and the definite value by closed form and by
+    /// quadrature.
+    Integrate(IntegrateArgs),
+    /// Solve an equation, or a `;`-separated linear system.
+    Solve(SolveArgs),
+    /// Convert a quantity to SI or to another unit, and show its dimension.
+    Units(UnitsArgs),
+    /// A potential U(x) (or a force F(x)): the force, equilibria and their stability, turning
+    /// points for an energy, the speed by the work-energy theorem, and the energy diagram.
+    Potential(PotentialArgs),
+    /// Motion at constant power (v, a, x at given times), or an average power W/t.
+    Power(PowerArgs),
+    /// A rocket (variable mass): Δv by the rocket equation, burn time, burnout speed and height
+    /// and the apex of the coast, in closed form and simulated (with optional quadratic drag),
+    /// and plots of v(t), x(t) and m(t).
+    Rocket(RocketArgs),
+    /// Velocity and acceleration from a position-time data file (CSV and plots).
+    Derive(DeriveArgs),
+    /// Two bodies colliding with a coefficient of restitution (1-D, 2-D or 3-D): velocities
+    /// after, impulse, kinetic energy lost, centre-of-mass frame.
+    Collide(CollideArgs),
+    /// The impulse ∫F dt of a force-time data file, the average force and Δv = J/m.
+    Impulse(ImpulseArgs),
+    /// The centre of mass of point masses (with velocities: momentum, centre-of-mass frame,
+    /// kinetic energy split).
+    Com(ComArgs),
+    /// The work ∫F dx from a data file (x, F columns; cumulative W(x)), or of a force field
+    /// along a path (--field with --path or --through).
+    Work(WorkArgs),
+}
+
+/// `mechkit diff`.
+#[derive(Debug, clap::Args)]
+pub struct DiffArgs {
+    /// The formula, e.g. "-F0*sin(2*pi*x/b)".
+    #[arg(allow_hyphen_values = true)]
+    pub expr: String,
+    /// The variable to differentiate with respect to.
+    #[arg(long, default_value = "x")]
+    pub var: String,
+    /// Also evaluate the derivative at this point, symbolically and by central differences
+    /// with Richardson extrapolation, and check that they agree.
+    #[arg(long, allow_hyphen_values = true)]
+    pub at: Option<String>,
+    /// Initial step of the numerical derivative (default 0.1).
+    #[arg(long, requires = "at")]
+    pub step: Option<String>,
+    /// Values of the other names, e.g. "F0=1,b=2" (needed with --at).
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit integrate`.
+#[derive(Debug, clap::Args)]
+pub struct IntegrateArgs {
+    /// The integrand, e.g. "1/(a+x^2)".
+    #[arg(allow_hyphen_values = true)]
+    pub expr: String,
+    /// The variable of integration.
+    #[arg(long, default_value = "x")]
+    pub var: String,
+    /// Lower limit (a number, or a quantity with units).
+    #[arg(long, allow_hyphen_values = true)]
+    pub from: Option<String>,
+    /// Upper limit.
+    #[arg(long, allow_hyphen_values = true)]
+    pub to: Option<String>,
+    /// Values of the other names, e.g. "a=1,b=2 m".
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// Also estimate the definite integral with fixed rules, comma-separated: left, right,
+    /// midpoint, trapezoid, simpson, gauss-legendre-N, or all; each is compared with the exact
+    /// value.
+    #[arg(long, value_delimiter = ',', requires = "from")]
+    pub method: Option<Vec<String>>,
+    /// Numbers of intervals for --method, comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "10", requires = "method")]
+    pub n: Vec<usize>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit solve`.
+#[derive(Debug, clap::Args)]
+pub struct SolveArgs {
+    /// The equation "LHS = RHS" (or an expression equal to zero); several linear equations
+    /// separated by `;`.
+    #[arg(allow_hyphen_values = true)]
+    pub equation: String,
+    /// The unknown(s), comma-separated for a linear system.
+    #[arg(long = "for", default_value = "x")]
+    pub unknown: String,
+    /// Search interval for a numerical solution, "A:B".
+    #[arg(long = "in", allow_hyphen_values = true)]
+    pub interval: Option<String>,
+    /// Values of the other names, e.g. "m=2,g=9.81".
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit units`.
+#[derive(Debug, clap::Args)]
+pub struct UnitsArgs {
+    /// The quantity, e.g. "60 km/h".
+    #[arg(allow_hyphen_values = true)]
+    pub quantity: String,
+    /// The unit to convert to, e.g. "m/s".
+    #[arg(long)]
+    pub to: Option<String>,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit run`.
+#[derive(Debug, clap::Args)]
+pub struct RunArgs {
+    /// The scenario file (TOML).
+    pub file: PathBuf,
+    /// Output directory [default: out/<file name without .toml>].
+    #[arg(long, short)]
+    pub out: Option<PathBuf>,
+    /// Print the summary as JSON on stdout (instead of the human summary).
+    #[arg(long)]
+    pub json: bool,
+    /// Do not draw plots.
+    #[arg(long)]
+    pub no_plots: bool,
+    /// Instead of one run: run with each of these methods (comma-separated, e.g.
+    /// "euler,euler-cromer,rk4,dopri5") and compare them with a reference solution (DOP853 at
+    /// rtol 1e-12): errors, energy drift, cost; writes compare.json and plots.
+    #[arg(long, value_delimiter = ',')]
+    pub compare_methods: Option<Vec<String>>,
+    /// With --compare-methods: the step of fixed-step methods (default: the scenario's dt),
+    /// e.g. "1 ms".
+    #[arg(long, requires = "compare_methods")]
+    pub dt: Option<String>,
+    /// With --compare-methods: rtol of adaptive methods (default: the scenario's, else 1e-6).
+    #[arg(long, requires = "compare_methods")]
+    pub rtol: Option<f64>,
+    /// With --compare-methods: atol of adaptive methods (default: the scenario's, else 1e-9).
+    #[arg(long, requires = "compare_methods")]
+    pub atol: Option<f64>,
+}
+
+/// `mechkit check`.
+#[derive(Debug, clap::Args)]
+pub struct CheckArgs {
+    /// The scenario file (TOML).
+    pub file: PathBuf,
+}
