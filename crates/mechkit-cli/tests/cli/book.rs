@@ -156,21 +156,7 @@ fn book_cases_through_the_command_line() {
     let (mut checked, mut failures) = (0, Vec::new());
     for path in &scripts {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
-        let (id, variant) = if cases.contains_key(&stem) {
-            (stem.clone(), None)
-        } else {
-            let (id, v) = stem
-                .rsplit_once('.')
-                .expect("a script named after a case id");
-            (id.to_string(), Some(v.to_string()))
-        };
-        let case = cases
-            .get(&id)
-            .unwrap_or_else(|| panic!("{stem}: no case `{id}` in cases.jsonl"));
-        let expected = match &variant {
-            Some(v) => case["expected"][v.as_str()].clone(),
-            None => case["expected"].clone(),
-        };
+        let (case, expected) = shared::case_of(&cases, &stem);
         let (c, f) = run_script(path, case, &expected);
         assert!(c > 0, "{stem}: the script binds no expected value");
         checked += c;

@@ -18,6 +18,31 @@ pub fn cases(path: &Path) -> BTreeMap<String, Value> {
         .collect()
 }
 
+/// The case a file named `stem` reproduces (`<id>` or `<id>.<variant>`) and its expected
+/// values (the variant's, for a variant).
+pub fn case_of<'c>(cases: &'c BTreeMap<String, Value>, stem: &str) -> (&'c Value, Value) {
+    let (id, variant) = if cases.contains_key(stem) {
+        (stem, None)
+    } else {
+        let (id, v) = stem
+            .rsplit_once('.')
+            .unwrap_or_else(|| panic!("{stem}: no case with this id"));
+        (id, Some(v))
+    };
+    let case = cases
+        .get(id)
+        .unwrap_or_else(|| panic!("{stem}: no case `{id}` in cases.jsonl"));
+    let expected = match variant {
+        Some(v) => case["expected"][v].clone(),
+        None => case["expected"].clone(),
+    };
+    assert!(
+        !expected.is_null(),
+        "{stem}: no expected values (variant `{variant:?}`)"
+    );
+    (case, expected)
+}
+
 /// The tolerance for expected key `key`: `abs_<p>`/`rel_<p>` for keys starting with `p`
 /// (longest prefix), else `abs`/`rel`, else half a unit of the expected value's last digit.
 pub fn tolerance(tol: &Value, key: &str, expected: f64) -> f64 {

@@ -44,25 +44,7 @@ fn book_cases_reproduce_the_expected_answers() {
     assert!(!dir.is_empty());
     for path in dir {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
-        let (id, variant) = if cases.contains_key(&stem) {
-            (stem.clone(), None)
-        } else {
-            let (id, v) = stem
-                .rsplit_once('.')
-                .unwrap_or_else(|| panic!("{stem}: no case with this id"));
-            (id.to_string(), Some(v.to_string()))
-        };
-        let case = cases
-            .get(&id)
-            .unwrap_or_else(|| panic!("{stem}: no case `{id}` in cases.jsonl"));
-        let mut expected = case["expected"].clone();
-        if let Some(v) = &variant {
-            expected = expected[v.as_str()].clone();
-            assert!(
-                !expected.is_null(),
-                "{stem}: no variant `{v}` in the expected values"
-            );
-        }
+        let (case, expected) = cases::case_of(&cases, &stem);
         let summary = Scenario::load(&path).unwrap().run().unwrap().summary;
         let pairs: Vec<(String, Value)> = match &expected {
             Value::Object(map) => map.iter().map(|(k, v)| (k.clone(), v.clone())).collect(),

@@ -171,31 +171,40 @@ fn disks_in_a_box(side: usize, radius: f64, masses: &[f64], speed: f64, seed: u6
     Box2d { sys, impacts, q, v }
 }
 
+impl Box2d {
+    /// Runs with velocity Verlet steps of `dt` to `t_max`, checks that the kinetic energy is
+    /// kept to 1e-9 and that no two disks overlap by more than 1e-9 of their radius at any
+    /// sample, and returns the number of impacts.
+    fn run_elastic(self, radius: f64, dt: f64, t_max: f64) -> usize {
+        let mut sim = Simulation::new(&self.sys, Method::VelocityVerlet, dt).t_max(t_max);
+        for e in self.impacts.events() {
+            sim = sim.event(e);
+        }
+        let mut watch = GapWatch {
+            radius,
+            worst: f64::INFINITY,
+        };
+        let report = sim
+            .run(State::from_qv(0.0, &self.q, &self.v), &mut [&mut watch])
+            .unwrap();
+        let (k0, k1) = (report.ledger.kinetic_start(), report.ledger.kinetic_end());
+        assert!((k1 - k0).abs() <= 1e-9 * k0, "K {k0} -> {k1}");
+        assert!(
+            watch.worst >= -1e-9,
+            "overlap {:e} of the radius",
+            watch.worst
+        );
+        report.events.len()
+    }
+}
+
 #[test]
 fn elastic_disks_in_a_box_keep_their_energy_and_never_overlap() {
-    // 16 disks on a 4 x 4 grid in a unit box
+    // 16 disks on a 4 x 4 grid in a unit box, 3 s
     let radius = 0.04;
-    let Box2d { sys, impacts, q, v } = disks_in_a_box(4, radius, &[1.0, 2.0, 3.0], 4.0, 12345);
-    let mut sim = Simulation::new(&sys, Method::VelocityVerlet, 2e-3).t_max(3.0);
-    for e in impacts.events() {
-        sim = sim.event(e);
-    }
-    let mut watch = GapWatch {
-        radius,
-        worst: f64::INFINITY,
-    };
-    let report = sim
-        .run(State::from_qv(0.0, &q, &v), &mut [&mut watch])
-        .unwrap();
-    let collisions = report.events.len();
+    let collisions =
+        disks_in_a_box(4, radius, &[1.0, 2.0, 3.0], 4.0, 12345).run_elastic(radius, 2e-3, 3.0);
     assert!(collisions > 200, "{collisions} collisions");
-    let (k0, k1) = (report.ledger.kinetic_start(), report.ledger.kinetic_end());
-    assert!((k1 - k0).abs() <= 1e-9 * k0, "K {k0} -> {k1}");
-    assert!(
-        watch.worst >= -1e-9,
-        "overlap {:e} of the radius",
-        watch.worst
-    );
 }
 
 #[test]
@@ -263,32 +272,10 @@ fn no_tunnelling_whatever_the_speed() {
 #[test]
 #[ignore = "25 s in a release build, 14 min in debug: cargo test --release -p mechkit --test lib billiards -- --ignored"]
 fn billiards_100_disks_10_000_collisions() {
-    let radius = 0.01;
-    let Box2d { sys, impacts, q, v } = disks_in_a_box(10, radius, &[1.0], 2.0, 777);
-    let mut sim = Simulation::new(&sys, Method::VelocityVerlet, 5e-3).t_max(1e3);
-    for e in impacts.events() {
-        sim = sim.event(e.max_count(u32::MAX));
-    }
     // 35 s of motion give about 10,500 impacts
-    let mut watch = GapWatch {
-        radius,
-        worst: f64::INFINITY,
-    };
-    let sim = sim.t_max(35.0);
-    let t0 = std::time::Instant::now();
-    let report = sim
-        .run(State::from_qv(0.0, &q, &v), &mut [&mut watch])
-        .unwrap();
-    let collisions = report.events.len();
-    println!("{collisions} impacts in {:?}", t0.elapsed());
+    let radius = 0.01;
+    let collisions = disks_in_a_box(10, radius, &[1.0], 2.0, 777).run_elastic(radius, 5e-3, 35.0);
     assert!(collisions >= 10_000, "{collisions} impacts");
-    let (k0, k1) = (report.ledger.kinetic_start(), report.ledger.kinetic_end());
-    assert!((k1 - k0).abs() <= 1e-9 * k0, "K {k0} -> {k1}");
-    assert!(
-        watch.worst >= -1e-9,
-        "overlap {:e} of the radius",
-        watch.worst
-    );
 }
 
 #[test]
