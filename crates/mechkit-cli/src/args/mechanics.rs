@@ -41,7 +41,45 @@ pub struct CollideArgs {
 /// `mechkit com`.
 #[derive(Debug, clap::Args)]
 pub struct ComArgs {
-    /// A body's mass, e.g. "5.972e24 kg"; repeat with --at for each body.
+    /// A body file (TOML: shapes, composites, holes) or an image (PNG or JPEG) of the body.
+    pub file: Option<PathBuf>,
+    /// Image: a pixel is part of the body when its brightness on the channel (0-1 per
+    /// channel, so 0-3 for `sum`) is below this [default: 1.5 for sum, 0.5 for r, g, b].
+    #[arg(long, allow_hyphen_values = true)]
+    pub threshold: Option<f64>,
+    /// Image: the brightness used: sum (R+G+B), r, g or b.
+    #[arg(long, default_value = "sum")]
+    pub channel: String,
+    /// Image: the body is the bright pixels (above the threshold) instead of the dark ones.
+    #[arg(long)]
+    pub invert: bool,
+    /// Image: weight each selected pixel by its darkness (lightness when inverted) instead of
+    /// counting it as 1: a density that follows the shade.
+    #[arg(long)]
+    pub density_from_darkness: bool,
+    /// Image: the side of one pixel, e.g. "0.5 mm" (physical coordinates and areas).
+    #[arg(long, allow_hyphen_values = true)]
+    pub pixel_size: Option<String>,
+    /// Image: the scale from a known length, e.g. "240 px = 12 cm".
+    #[arg(long)]
+    pub scale: Option<String>,
+    /// Image: the pixel position of the physical origin "x, y" (column, row, from the
+    /// top-left corner) [default: the bottom-left corner]; physical y points up.
+    #[arg(long, allow_hyphen_values = true)]
+    pub origin: Option<String>,
+    /// The body's total mass, e.g. "2 kg" (image: spread over the selected pixels; body file:
+    /// rescales the parts' masses).
+    #[arg(long = "total-mass", allow_hyphen_values = true)]
+    pub total_mass: Option<String>,
+    /// Also the moment of inertia about this point, "x, y[, z]" (image: physical
+    /// coordinates, or pixels without a scale).
+    #[arg(long, allow_hyphen_values = true)]
+    pub about: Option<String>,
+    /// Image: write a PNG with the selected pixels tinted and the centre of mass marked.
+    #[arg(long)]
+    pub mark: Option<PathBuf>,
+    /// A point mass, e.g. "5.972e24 kg" with its --at, or inline "5.972e24 kg@0,0";
+    /// repeat for each body.
     #[arg(long, action = clap::ArgAction::Append, allow_hyphen_values = true)]
     pub mass: Vec<String>,
     /// The body's position: one coordinate, or "x, y[, z]", e.g. "384400 km".
@@ -288,6 +326,29 @@ pub struct PotentialArgs {
     /// Do not draw the diagram.
     #[arg(long, conflicts_with = "plot")]
     pub no_plot: bool,
+    /// Print JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit inertia`.
+#[derive(Debug, clap::Args)]
+pub struct InertiaArgs {
+    /// A body file (TOML): parts with shape, dimensions, density or mass, position,
+    /// orientation, `hole = true`.
+    pub file: PathBuf,
+    /// The point for the inertia tensor, "x, y, z" with units [default: the origin].
+    #[arg(long, allow_hyphen_values = true)]
+    pub about: Option<String>,
+    /// The direction of an axis through the --about point, "ax, ay, az": the moment about it.
+    #[arg(long, allow_hyphen_values = true)]
+    pub axis: Option<String>,
+    /// Rescale the parts so the body has this total mass, e.g. "2 kg".
+    #[arg(long = "total-mass", allow_hyphen_values = true)]
+    pub total_mass: Option<String>,
+    /// Express moments of inertia in this unit, e.g. "g*cm^2" or "u*pm^2".
+    #[arg(long = "in")]
+    pub unit: Option<String>,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

@@ -6,7 +6,8 @@ use clap::{Parser, Subcommand};
 
 mod mechanics;
 pub use mechanics::{
-    CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, PotentialArgs, PowerArgs, RocketArgs, WorkArgs,
+    CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
+    RocketArgs, WorkArgs,
 };
 
 const EXAMPLES: &str = r#"Examples:
@@ -87,8 +88,12 @@ pub enum Command {
     /// The impulse ∫F dt of a force-time data file, the average force and Δv = J/m.
     Impulse(ImpulseArgs),
     /// The centre of mass of point masses (with velocities: momentum, centre-of-mass frame,
-    /// kinetic energy split).
+    /// kinetic energy split), of a body file (shapes, composites with holes), or of the body
+    /// in a photo (PNG or JPEG: pixels selected by brightness).
     Com(ComArgs),
+    /// Mass, centre of mass and inertia tensor of a body file: about the centre of mass and
+    /// about a point, principal moments and axes, the moment about an axis.
+    Inertia(InertiaArgs),
     /// The work ∫F dx from a data file (x, F columns; cumulative W(x)), or of a force field
     /// along a path (--field with --path or --through).
     Work(WorkArgs),

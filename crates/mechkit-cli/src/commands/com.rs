@@ -28,7 +28,20 @@ fn fmt(v: &[f64], scale: f64) -> String {
     }
 }
 
+/// Whether a path names an image (by its extension).
+fn is_image(path: &std::path::Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "png" | "jpg" | "jpeg"))
+}
+
 pub fn com(args: &ComArgs) -> Result<Outcome> {
+    if let Some(file) = &args.file {
+        if is_image(file) {
+            return super::com_image::com_image(args);
+        }
+        bail!("{}: body files are not read yet", file.display());
+    }
     if args.mass.is_empty() {
         bail!(
             "give the bodies as --mass M --at POSITION pairs, e.g. --mass \"2 kg\" --at \"0 m\" --mass \"1 kg\" --at \"3 m\""

@@ -4,7 +4,9 @@ mod calculus;
 mod check;
 mod collide;
 mod com;
+mod com_image;
 mod derive;
+mod inertia;
 mod input;
 mod potential;
 mod power;
@@ -41,6 +43,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Derive(args) => derive::derive(&args),
         Command::Collide(args) => collide::collide(&args),
         Command::Com(args) => com::com(&args),
+        Command::Inertia(args) => inertia::inertia(&args),
         Command::Impulse(args) => work::impulse(&args),
         Command::ListIntegrators => {
             let mut text = String::new();

@@ -1,6 +1,55 @@
 //! Mass properties: systems of point masses (centre of mass, momentum, the centre-of-mass
-//! frame and the kinetic-energy split).
+//! frame and the kinetic-energy split), and rigid bodies: mass, centre of mass and inertia
+//! tensor of standard shapes, polygons and triangle meshes, composites with holes, and
+//! photographs (the pixels of the body).
 
 mod points;
+mod properties;
+
+use thiserror::Error;
+
+use crate::Real;
 
 pub use points::{MassSummary, PointMassError, PointMasses};
+pub use properties::{
+    MassProperties, Mat3, Principal, Vec3, inertia_from_second_moment, parallel_axis, principal,
+    second_moment_from_inertia,
+};
+
+/// Why mass properties cannot be computed.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum MassError {
+    /// The parts add up to no mass (holes as large as the body), or there are no parts.
+    #[error(
+        "the total mass is {total} kg (the parts' masses add up to {gross} kg in size): the holes cancel the body, or there is nothing"
+    )]
+    ZeroMass {
+        /// `Σ m` with holes negative.
+        total: Real,
+        /// `Σ |m|`.
+        gross: Real,
+    },
+    /// A shape without length, area or volume.
+    #[error("degenerate {shape}: {reason}")]
+    Degenerate {
+        /// The kind of shape.
+        shape: &'static str,
+        /// What is wrong.
+        reason: String,
+    },
+    /// A polygon whose edges cross.
+    #[error("the polygon crosses itself: edge {first} (vertices {first}-{}) meets edge {second}", first + 1)]
+    SelfIntersecting {
+        /// 1-based edge from vertex `first` to `first + 1`.
+        first: usize,
+        /// 1-based edge.
+        second: usize,
+    },
+    /// A triangle mesh that does not enclose a volume.
+    #[error("the mesh is not closed: {0}")]
+    OpenMesh(String),
+    /// Any other invalid value.
+    #[error("{0}")]
+    Invalid(String),
+}
