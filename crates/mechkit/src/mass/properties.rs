@@ -158,7 +158,7 @@ impl MassProperties {
     pub fn sum(parts: &[MassProperties]) -> Result<Self, MassError> {
         let mass: Real = parts.iter().map(|p| p.mass).sum();
         let gross: Real = parts.iter().map(|p| p.mass.abs()).sum();
-        if parts.is_empty() || !(mass > 1e-12 * gross) || !mass.is_finite() {
+        if parts.is_empty() || mass.is_nan() || mass <= 1e-12 * gross || !mass.is_finite() {
             return Err(MassError::ZeroMass { total: mass, gross });
         }
         let first: Vec3 = parts.iter().map(|p| p.mass * p.centre_of_mass).sum();
