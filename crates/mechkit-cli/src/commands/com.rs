@@ -8,6 +8,7 @@ use mechkit::expr::units::{Dimension, Quantity};
 use mechkit::mass::PointMasses;
 use serde_json::json;
 
+use super::body::{load, parts_json, parts_text, point, vec_json, vec_text};
 use super::input::{quantity, show, split_top_level};
 use super::{Outcome, print};
 use crate::args::ComArgs;
@@ -35,25 +36,118 @@ fn is_image(path: &std::path::Path) -> bool {
         .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "png" | "jpg" | "jpeg"))
 }
 
+/// `mechkit com BODYFILE`: mass and centre of mass of the body and of each part.
+fn body_file(args: &ComArgs, file: &std::path::Path) -> Result<Outcome> {
+    for (flag, given) in [
+        ("--mass/--at", !args.mass.is_empty() || !args.at.is_empty()),
+        ("--mark", args.mark.is_some()),
+        ("--pixel-size", args.pixel_size.is_some()),
+        ("--threshold", args.threshold.is_some()),
+    ] {
+        if given {
+            bail!("{flag} does not apply to a body file ({})", file.display());
+        }
+    }
+    let body = load(file, args.total_mass.as_deref())?;
+    let p = &body.whole;
+    let (scale, unit) = length_unit(args.unit.as_deref())?;
+    let about = match &args.about {
+        Some(a) => Some(point(a, "--about", Dimension::LENGTH)?),
+        None => None,
+    };
+    if args.json {
+        let j = json!({
+            "source": "body",
+            "title": body.title,
+            "total_mass": p.mass,
+            "centre_of_mass": vec_json(&p.centre_of_mass),
+            "centre_of_mass_in_unit": vec_json(&(p.centre_of_mass / scale)),
+            "unit": unit,
+            "about": about.map(|a| json!({
+                "point": vec_json(&a),
+                "distance": (p.centre_of_mass - a).norm(),
+            })),
+            "parts": parts_json(&body),
+        });
+        print(&format!("{j:#}\n"))?;
+    } else {
+        let mut out = format!("{}\ntotal mass {} kg\n", body.title, show(p.mass));
+        let _ = writeln!(
+            out,
+            "centre of mass at {} {}",
+            vec_text(&(p.centre_of_mass / scale)),
+            if args.unit.is_some() {
+                format!("(in units of {unit})")
+            } else {
+                "m".into()
+            }
+        );
+        if let Some(a) = about {
+            let _ = writeln!(
+                out,
+                "distance from {} m: {} m",
+                vec_text(&a),
+                show((p.centre_of_mass - a).norm())
+            );
+        }
+        out.push_str(&parts_text(&body));
+        print(&out)?;
+    }
+    Ok(Outcome::Success)
+}
+
+/// `--in UNIT` for a length: its size in SI and its text.
+fn length_unit(unit: Option<&str>) -> Result<(f64, String)> {
+    let Some(u) = unit else {
+        return Ok((1.0, "m".to_string()));
+    };
+    // a unit alone ("pm") is one of it
+    let q = Quantity::parse(u)
+        .or_else(|_| Quantity::parse(&format!("1 {u}")))
+        .map_err(|e| anyhow!("--in: {e}"))?;
+    if !(q.dim == Dimension::LENGTH || q.dim.is_none()) || q.value.is_nan() || q.value <= 0.0 {
+        bail!("--in `{u}` must be a positive length, e.g. \"6371 km\" or \"pm\"");
+    }
+    Ok((q.value, u.to_string()))
+}
+
 pub fn com(args: &ComArgs) -> Result<Outcome> {
     if let Some(file) = &args.file {
         if is_image(file) {
             return super::com_image::com_image(args);
         }
-        bail!("{}: body files are not read yet", file.display());
+        return body_file(args, file);
     }
     if args.mass.is_empty() {
         bail!(
             "give the bodies as --mass M --at POSITION pairs, e.g. --mass \"2 kg\" --at \"0 m\" --mass \"1 kg\" --at \"3 m\""
         );
     }
-    if args.at.len() != args.mass.len() {
+    // "5.97e24 kg@0, 0": the position inline, or one --at per --mass
+    let inline = args.mass.iter().filter(|m| m.contains('@')).count();
+    let (mass_texts, at_texts): (Vec<&str>, Vec<&str>) = if inline == 0 {
+        if args.at.len() != args.mass.len() {
+            bail!(
+                "{} masses but {} positions: give one --at after each --mass, or write --mass \"2 kg@1 m, 0\"",
+                args.mass.len(),
+                args.at.len()
+            );
+        }
+        (
+            args.mass.iter().map(String::as_str).collect(),
+            args.at.iter().map(String::as_str).collect(),
+        )
+    } else if inline == args.mass.len() && args.at.is_empty() {
+        args.mass
+            .iter()
+            .filter_map(|m| m.split_once('@'))
+            .map(|(m, at)| (m.trim(), at.trim()))
+            .unzip()
+    } else {
         bail!(
-            "{} masses but {} positions: give one --at after each --mass",
-            args.mass.len(),
-            args.at.len()
+            "give every position inline (--mass \"2 kg@1 m, 0\") or every one with --at, not a mix"
         );
-    }
+    };
     if !args.velocity.is_empty() && args.velocity.len() != args.mass.len() {
         bail!(
             "{} masses but {} velocities: give a --velocity for every body, or none",
@@ -61,13 +155,11 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
             args.velocity.len()
         );
     }
-    let masses = args
-        .mass
+    let masses = mass_texts
         .iter()
         .map(|m| quantity(m, "--mass", Dimension::MASS))
         .collect::<Result<Vec<_>>>()?;
-    let positions: Vec<Vec<f64>> = args
-        .at
+    let positions: Vec<Vec<f64>> = at_texts
         .iter()
         .map(|p| vector(p, "--at", Dimension::LENGTH))
         .collect::<Result<_>>()?;
@@ -88,22 +180,7 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
         }
         Some(v.concat())
     };
-    let (scale, unit) = match &args.unit {
-        Some(u) => {
-            // a unit alone ("pm") is one of it
-            let q = Quantity::parse(u)
-                .or_else(|_| Quantity::parse(&format!("1 {u}")))
-                .map_err(|e| anyhow!("--in: {e}"))?;
-            if !(q.dim == Dimension::LENGTH || q.dim.is_none())
-                || q.value.is_nan()
-                || q.value <= 0.0
-            {
-                bail!("--in `{u}` must be a positive length, e.g. \"6371 km\" or \"pm\"");
-            }
-            (q.value, u.clone())
-        }
-        None => (1.0, "m".to_string()),
-    };
+    let (scale, unit) = length_unit(args.unit.as_deref())?;
     let points = PointMasses::new(dim, masses, positions.concat(), velocities)
         .map_err(|e| anyhow!("--mass: {e}"))?;
     let s = points.summary();

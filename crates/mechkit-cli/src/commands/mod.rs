@@ -1,5 +1,6 @@
 //! One module per subcommand; each is glue around a library call.
 
+mod body;
 mod calculus;
 mod check;
 mod collide;

@@ -3,18 +3,26 @@
 //! tensor of standard shapes, polygons and triangle meshes, composites with holes, and
 //! photographs (the pixels of the body).
 
+mod composite;
+mod mesh;
 mod points;
+mod polygon;
 mod properties;
+mod shapes;
 
 use thiserror::Error;
 
 use crate::Real;
 
+pub use composite::{Amount, Body, Part};
+pub use mesh::TriangleMesh;
 pub use points::{MassSummary, PointMassError, PointMasses};
+pub use polygon::Polygon;
 pub use properties::{
     MassProperties, Mat3, Principal, Vec3, inertia_from_second_moment, parallel_axis, principal,
     second_moment_from_inertia,
 };
+pub use shapes::{Extent, Shape};
 
 /// Why mass properties cannot be computed.
 #[derive(Debug, Clone, PartialEq, Error)]

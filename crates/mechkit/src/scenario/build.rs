@@ -78,7 +78,7 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         }
     };
 
-    let constants = constants(&root)?;
+    let constants = constants(&root, RESERVED)?;
     let (bodies, masses, q, v, radius) = bodies(&root, dim, &constants)?;
     for (n, value, _) in &constants {
         if n == "m"
@@ -200,7 +200,11 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
     })
 }
 
-fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
+/// The `[constants]` table; names in `reserved` are refused (the state names of a scenario).
+pub(crate) fn constants(
+    root: &Table<'_, '_>,
+    reserved: &[&str],
+) -> Result<Vec<Constant>, ScenarioError> {
     let Some(t) = root.table("constants")? else {
         return Ok(Vec::new());
     };
@@ -226,7 +230,7 @@ fn constants(root: &Table<'_, '_>) -> Result<Vec<Constant>, ScenarioError> {
                 key.span(),
             ));
         }
-        if RESERVED.contains(&name) || mechkit_expr::Func::from_name(name).is_some() {
+        if reserved.contains(&name) || mechkit_expr::Func::from_name(name).is_some() {
             return Err(t
                 .src
                 .error(
