@@ -6,6 +6,7 @@ mod data;
 mod deriv;
 mod energy;
 mod forces;
+mod mass;
 mod ode;
 mod quad;
 mod rocket;
