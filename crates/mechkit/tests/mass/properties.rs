@@ -63,7 +63,8 @@ fn shape() -> impl Strategy<Value = Shape> {
         (length(), length(), length()).prop_map(|(a, b, c)| Shape::Cuboid {
             size: Vec3::new(a, b, c)
         }),
-        (length(), 0.1..6.28f64).prop_map(|(radius, angle)| Shape::Sector { radius, angle }),
+        (length(), 0.1..std::f64::consts::TAU)
+            .prop_map(|(radius, angle)| Shape::Sector { radius, angle }),
         (point(), point(), point()).prop_filter_map("a triangle", |(a, b, c)| {
             let s = Shape::Triangle {
                 vertices: [a, b, c],

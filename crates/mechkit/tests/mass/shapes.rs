@@ -219,7 +219,7 @@ fn sectors_make_disks_and_follow_fine_polygons() {
         .map(|k| {
             third.rotated(&Rotation3::from_axis_angle(
                 &Vec3::z_axis(),
-                2.0 * PI * k as f64 / 3.0,
+                2.0 * PI * f64::from(k) / 3.0,
             ))
         })
         .collect();
