@@ -28,6 +28,7 @@ mod data;
 mod diverge;
 mod energy;
 mod errors;
+mod mass;
 mod rocket;
 mod run;
 mod util;

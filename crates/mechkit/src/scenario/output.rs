@@ -32,14 +32,22 @@ fn temp_path(path: &Path) -> PathBuf {
     path.with_file_name(name)
 }
 
-/// The CSV header for a system: `t`, positions, velocities, then `K`, `U`, `E`, the work of
-/// each force and its power `F·v`.
+/// The CSV header for a system: `t`, positions, velocities, with two or more bodies the
+/// centre of mass (`cm.x`, `cm.vx`, `cm.ax`) and the split `K = K_cm + K_internal`, then `K`,
+/// `U`, `E`, the work of each force and its power `F·v`.
 pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
     let axes = &["x", "y", "z"][..sys.dim()];
     let mut cols = vec!["t".to_string()];
     for b in sys.bodies() {
         cols.extend(axes.iter().map(|a| format!("{}.{a}", b.name)));
         cols.extend(axes.iter().map(|a| format!("{}.v{a}", b.name)));
+    }
+    if sys.bodies().len() > 1 {
+        for prefix in ["", "v", "a"] {
+            cols.extend(axes.iter().map(|a| format!("cm.{prefix}{a}")));
+        }
+        cols.push("K_cm".into());
+        cols.push("K_internal".into());
     }
     cols.push("K".into());
     if has_potential {
@@ -89,6 +97,8 @@ pub(crate) struct CsvWriter {
     path: PathBuf,
     keep: Keep,
     dim: usize,
+    /// The masses, when there are two or more bodies (for the centre-of-mass columns).
+    masses: Option<Vec<Real>>,
     has_potential: bool,
     last_t: Option<Real>,
     line: String,
@@ -111,6 +121,7 @@ impl CsvWriter {
             path: path.to_path_buf(),
             keep,
             dim: sys.dim(),
+            masses: (sys.masses().len() > 1).then(|| sys.masses().to_vec()),
             has_potential,
             last_t: None,
             line: String::with_capacity(256),
@@ -130,6 +141,10 @@ impl CsvWriter {
                 self.line.push(',');
                 push_number(&mut self.line, x);
             }
+        }
+        if let Some(masses) = self.masses.take() {
+            self.push_centre_of_mass(&masses, s);
+            self.masses = Some(masses);
         }
         self.line.push(',');
         push_number(&mut self.line, s.eval.kinetic);
@@ -151,6 +166,35 @@ impl CsvWriter {
         self.last_t = Some(s.t);
         self.rows += 1;
         Ok(())
+    }
+
+    /// `cm.x…, cm.vx…, cm.ax…, K_cm, K_internal`: mass-weighted means of the bodies'
+    /// positions, velocities and accelerations, and König's split of the kinetic energy.
+    fn push_centre_of_mass(&mut self, masses: &[Real], s: &Sample<'_>) {
+        let d = self.dim;
+        let total: Real = masses.iter().sum();
+        let mut v_cm = [0.0; 3];
+        for values in [s.q, s.v, s.eval.a.as_slice()] {
+            let mut mean = [0.0; 3];
+            for (m, body) in masses.iter().zip(values.chunks_exact(d)) {
+                for (o, x) in mean.iter_mut().zip(body) {
+                    *o += m * x;
+                }
+            }
+            for x in &mut mean[..d] {
+                *x /= total;
+                self.line.push(',');
+                push_number(&mut self.line, *x);
+            }
+            if std::ptr::eq(values, s.v) {
+                v_cm = mean;
+            }
+        }
+        let k_cm = 0.5 * total * v_cm[..d].iter().map(|x| x * x).sum::<Real>();
+        self.line.push(',');
+        push_number(&mut self.line, k_cm);
+        self.line.push(',');
+        push_number(&mut self.line, s.eval.kinetic - k_cm);
     }
 
     /// Flushes and renames the file into place; returns the number of rows written.

@@ -185,6 +185,10 @@ pub(crate) fn example(want: Dimension) -> &'static str {
         d if d == Dimension::LINEAR_DRAG => "0.1 kg/s",
         d if d == Dimension::QUADRATIC_DRAG => "0.01 kg/m",
         d if d == Dimension::GRAVITATIONAL_PARAMETER => "3.986e14 m^3/s^2",
+        d if d == Dimension::MOMENT_OF_INERTIA => "0.5 kg*m^2",
+        d if d == Dimension::MASS / Dimension::LENGTH => "0.2 kg/m",
+        d if d == Dimension::MASS / Dimension::LENGTH.powi(2) => "7.8 kg/m^2",
+        d if d == Dimension::MASS / Dimension::LENGTH.powi(3) => "7800 kg/m^3",
         _ => "1.0",
     }
 }
