@@ -139,3 +139,52 @@ fn body_file_errors_say_where_and_what_to_write() {
     dir.run(&["inertia", "b.toml", "--axis", "0, 0, 0"])
         .assert_bad_input(&["--axis", "no length"]);
 }
+
+#[test]
+fn trajectory_has_the_centre_of_mass_and_the_kinetic_energy_split() {
+    // two bodies on a spring, thrown in uniform gravity: the centre of mass falls freely
+    // (cm.ay = -g, cm.vx constant) while the bodies oscillate about it
+    let dir = Dir::new();
+    dir.create(
+        "pair.toml",
+        r#"
+dimensions = 2
+[[body]]
+name = "a"
+mass = "1 kg"
+position = [0, 0]
+velocity = ["3 m/s", "10 m/s"]
+[[body]]
+name = "b"
+mass = "3 kg"
+position = ["1 m", 0]
+velocity = [0, "2 m/s"]
+[[force]]
+kind = "uniform-gravity"
+g = "9.81 m/s^2"
+[[force]]
+kind = "spring"
+k = "50 N/m"
+rest_length = "1 m"
+between = ["a", "b"]
+[integrator]
+method = "rk4"
+dt = "1 ms"
+[stop]
+t_max = "1 s"
+"#,
+    );
+    dir.run(&["run", "pair.toml", "--out", "out", "--no-plots"])
+        .assert_code(0);
+    let csv = crate::util::Csv::parse(&dir.read("out/trajectory.csv"));
+    let col = |n: &str| csv.column(n);
+    for row in &csv.rows {
+        let t = row[0];
+        assert!((row[col("cm.vx")] - 0.75).abs() < 1e-12);
+        assert!((row[col("cm.ay")] + 9.81).abs() < 1e-9);
+        assert!((row[col("cm.y")] - (4.0 * t - 4.905 * t * t)).abs() < 1e-9);
+        let (k, kc, ki) = (row[col("K")], row[col("K_cm")], row[col("K_internal")]);
+        assert!((k - kc - ki).abs() < 1e-12 * k);
+        assert!(ki > 0.0);
+    }
+}
