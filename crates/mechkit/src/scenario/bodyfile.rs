@@ -42,14 +42,10 @@ use crate::mass::{Amount, Body, Extent, Part, Polygon, Shape, TriangleMesh, Vec3
 
 const TOP_KEYS: &[&str] = &["title", "description", "density", "constants", "part"];
 const PART_KEYS: &[&str] = &[
-    "name",
-    "shape",
-    "mass",
-    "density",
-    "position",
-    "axis",
-    "rotation",
-    "hole",
+    "name", "shape", "mass", "density", "position", "axis", "rotation", "hole",
+];
+/// The keys that give a shape's dimensions (each shape takes some of them).
+const DIMENSION_KEYS: &[&str] = &[
     "length",
     "radius",
     "inner_radius",
@@ -94,13 +90,7 @@ pub struct BodyFile {
 impl BodyFile {
     /// Reads a body file; meshes named by `file = "part.obj"` are found next to it.
     pub fn load(path: &Path) -> Result<BodyFile, ScenarioError> {
-        let text = std::fs::read_to_string(path).map_err(|e| {
-            ScenarioError::new(
-                ErrorKind::Io,
-                format!("cannot read {}: {e}", path.display()),
-            )
-            .with_hint("check the file name")
-        })?;
+        let text = super::read_source(path)?;
         Self::from_str(&path.display().to_string(), &text, path.parent())
     }
 
@@ -163,7 +153,7 @@ fn part(
     default_density: Option<&((Real, Dim), Range<usize>)>,
     dir: Option<&Path>,
 ) -> Result<Part, ScenarioError> {
-    t.check_keys(PART_KEYS)?;
+    t.check_keys(&[PART_KEYS, DIMENSION_KEYS].concat())?;
     let (kind, kind_span) = t
         .string("shape")?
         .ok_or_else(|| t.missing("shape", "\"sphere\""))?;
@@ -184,18 +174,7 @@ fn part(
     let name = t
         .string("name")?
         .map_or_else(|| format!("{kind} {}", index + 1), |(s, _)| s.to_string());
-    for key in [
-        "length",
-        "radius",
-        "inner_radius",
-        "height",
-        "width",
-        "size",
-        "angle",
-        "vertices",
-        "faces",
-        "file",
-    ] {
+    for &key in DIMENSION_KEYS {
         if t.get(key).is_some() && !keys.contains(&key) {
             return Err(t
                 .src

@@ -120,13 +120,7 @@ impl Scenario {
 
     /// Reads and checks a scenario file.
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
-        let text = std::fs::read_to_string(path).map_err(|e| {
-            ScenarioError::new(
-                ErrorKind::Io,
-                format!("cannot read {}: {e}", path.display()),
-            )
-            .with_hint("check the file name")
-        })?;
+        let text = read_source(path)?;
         Scenario::from_str(&path.display().to_string(), &text)
     }
 
@@ -134,4 +128,15 @@ impl Scenario {
     pub fn name(&self) -> &str {
         &self.name
     }
+}
+
+/// The text of a scenario or body file, or an error that names it.
+fn read_source(path: &Path) -> Result<String, ScenarioError> {
+    std::fs::read_to_string(path).map_err(|e| {
+        ScenarioError::new(
+            ErrorKind::Io,
+            format!("cannot read {}: {e}", path.display()),
+        )
+        .with_hint("check the file name")
+    })
 }
