@@ -187,4 +187,23 @@ t_max = "1 s"
         assert!((k - kc - ki).abs() < 1e-12 * k);
         assert!(ki > 0.0);
     }
+    // the energy ledger split: the centre of mass falls in gravity (external), the spring's
+    // energy trades with the motion about the centre of mass (internal)
+    let j = dir.read_json("out/summary.json");
+    let cm = &j["centre_of_mass"];
+    let total = num(cm, "/total_mass");
+    let v2 = |p: &str| {
+        (0..2)
+            .map(|k| num(cm, &format!("{p}/velocity/{k}")).powi(2))
+            .sum::<f64>()
+    };
+    let d_kcm = 0.5 * total * (v2("/end") - v2("/start"));
+    let d_kint = num(cm, "/internal_kinetic_end") - num(cm, "/internal_kinetic_start");
+    let (d_uint, d_uext) = (
+        num(cm, "/internal_potential_change"),
+        num(cm, "/external_potential_change"),
+    );
+    assert!((d_kcm + d_uext).abs() < 1e-8, "{d_kcm} {d_uext}");
+    assert!((d_kint + d_uint).abs() < 1e-8, "{d_kint} {d_uint}");
+    assert!(d_uint.abs() > 1e-3);
 }

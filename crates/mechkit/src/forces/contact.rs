@@ -307,6 +307,10 @@ impl Force for ContactForce {
         Some(u)
     }
 
+    fn internal(&self) -> bool {
+        self.walls.is_empty()
+    }
+
     fn bodies(&self) -> Vec<usize> {
         self.body_list()
     }

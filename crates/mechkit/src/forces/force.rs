@@ -26,6 +26,12 @@ pub trait Force: Debug + Send + Sync {
 
     /// Indices of the bodies it acts on (for diagnostics).
     fn bodies(&self) -> Vec<usize>;
+
+    /// Whether the force acts only between bodies of the system, in action-reaction pairs: it
+    /// moves no momentum, and its potential energy is internal.
+    fn internal(&self) -> bool {
+        false
+    }
 }
 
 /// A body a single-body force acts on, with the force's coefficient for that body (a drag

@@ -172,6 +172,10 @@ impl Force for NewtonianGravity {
         })
     }
 
+    fn internal(&self) -> bool {
+        matches!(self.attractor, Attractor::Mutual { .. })
+    }
+
     fn bodies(&self) -> Vec<usize> {
         self.bodies.clone()
     }

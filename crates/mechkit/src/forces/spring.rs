@@ -108,6 +108,10 @@ impl Force for Spring {
         })
     }
 
+    fn internal(&self) -> bool {
+        matches!(self.ends, SpringEnds::Pair(..))
+    }
+
     fn bodies(&self) -> Vec<usize> {
         match &self.ends {
             SpringEnds::Anchor { bodies, .. } => bodies.clone(),

@@ -261,6 +261,13 @@ pub struct CentreOfMass {
     pub end: BodyState,
     /// Kinetic energy relative to the centre of mass at the end (J): `K - ½ M V²`.
     pub internal_kinetic_end: Real,
+    /// The same at the start (J).
+    pub internal_kinetic_start: Real,
+    /// Change of the potential energy of the internal forces (springs and gravity between
+    /// bodies, contacts between spheres) (J); null when none has a potential.
+    pub internal_potential_change: Option<Real>,
+    /// Change of the potential energy of the external forces (J); null when none has one.
+    pub external_potential_change: Option<Real>,
 }
 
 fn centre_of_mass(sys: &ParticleSystem, q: &[Real], v: &[Real]) -> (BodyState, Real) {
@@ -368,13 +375,26 @@ impl Summary {
             },
             centre_of_mass: {
                 let (q0, v0) = report.initial.qv();
-                let (start, _) = centre_of_mass(sys, q0, v0);
+                let (start, internal_start) = centre_of_mass(sys, q0, v0);
                 let (end, internal) = centre_of_mass(sys, q, v);
+                let potential_change = |internal: bool| {
+                    let changes: Vec<Real> = sys
+                        .forces()
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, f)| f.internal() == internal)
+                        .filter_map(|(i, _)| l.potential_change(i))
+                        .collect();
+                    (!changes.is_empty()).then(|| changes.iter().sum())
+                };
                 CentreOfMass {
                     total_mass: sys.masses().iter().sum(),
                     start,
                     end,
                     internal_kinetic_end: internal,
+                    internal_kinetic_start: internal_start,
+                    internal_potential_change: potential_change(true),
+                    external_potential_change: potential_change(false),
                 }
             },
             impulse: l
