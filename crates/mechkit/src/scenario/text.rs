@@ -88,6 +88,24 @@ impl Summary {
                 vec_text(&b.velocity)
             );
         }
+        if self.bodies.len() > 1 {
+            let c = &self.centre_of_mass;
+            let _ = writeln!(
+                s,
+                "centre of mass (M = {} kg)\n  position {} → {} m, velocity {} → {} m/s",
+                num(c.total_mass),
+                vec_text(&c.start.position),
+                vec_text(&c.end.position),
+                vec_text(&c.start.velocity),
+                vec_text(&c.end.velocity)
+            );
+            let _ = writeln!(
+                s,
+                "  kinetic energy about it {} → {} J",
+                num(c.internal_kinetic_start),
+                num(c.internal_kinetic_end)
+            );
+        }
         let p = &self.momentum;
         if self.bodies.len() > 1 || p.events_change.iter().any(|x| *x != 0.0) {
             let _ = writeln!(
