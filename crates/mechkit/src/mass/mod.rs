@@ -3,6 +3,7 @@
 //! tensor of standard shapes, polygons and triangle meshes, composites with holes, and
 //! photographs (the pixels of the body).
 
+pub mod image;
 mod points;
 mod properties;
 
