@@ -179,24 +179,38 @@ impl PixelBody {
 }
 
 /// The weighted sums, row by row: each row's `Σw`, `Σw x`, `Σw x²` in the inner loop, then
-/// the row's `y` applied once.
+/// the row's `y` applied once. Two pixels at a time, in two sets of accumulators, so that
+/// the additions of one pixel do not wait for the previous one's.
 fn accumulate(raster: &Raster, table: &[(Real, usize)], level: impl Fn(&[u8]) -> usize) -> Sums {
     let x_first = 0.5 - 0.5 * raster.width() as Real;
     let y_first = 0.5 - 0.5 * raster.height() as Real;
     let mut sums = Sums::default();
     for (j, row) in raster.rows().enumerate() {
         let y = y_first + j as Real;
-        let (mut n, mut s0, mut s1, mut s2) = (0usize, 0.0, 0.0, 0.0);
-        let mut x = x_first;
-        for px in row.chunks_exact(3) {
-            let (w, selected) = table[level(px)];
-            n += selected;
-            s0 += w;
-            let wx = w * x;
-            s1 += wx;
-            s2 += wx * x;
-            x += 1.0;
+        let mut n = 0usize;
+        let (mut s0, mut s1, mut s2) = ([0.0; 2], [0.0; 2], [0.0; 2]);
+        let mut x = [x_first, x_first + 1.0];
+        let pairs = row.chunks_exact(6);
+        let last = pairs.remainder();
+        for pair in pairs {
+            for (k, px) in pair.chunks_exact(3).enumerate() {
+                let (w, selected) = table[level(px)];
+                n += selected;
+                s0[k] += w;
+                let wx = w * x[k];
+                s1[k] += wx;
+                s2[k] += wx * x[k];
+                x[k] += 2.0;
+            }
         }
+        if !last.is_empty() {
+            let (w, selected) = table[level(last)];
+            n += selected;
+            s0[0] += w;
+            s1[0] += w * x[0];
+            s2[0] += w * x[0] * x[0];
+        }
+        let (s0, s1, s2) = (s0[0] + s0[1], s1[0] + s1[1], s2[0] + s2[1]);
         sums.count += n;
         sums.w += s0;
         sums.x += s1;
