@@ -122,4 +122,25 @@ mod tests {
         assert_eq!(img.rgb8(0, 0), [0; 3]);
         assert_eq!(img.rgb8(1, 0), [255; 3]);
     }
+
+    #[test]
+    fn jpeg_is_read() {
+        // a black square on white, through a lossy JPEG: the centre of mass survives
+        let img = Raster::from_fn(64, 48, |x, y| {
+            if (16..32).contains(&x) && (8..24).contains(&y) {
+                [0.0; 3]
+            } else {
+                [1.0; 3]
+            }
+        });
+        let mut jpeg = Vec::new();
+        ::image::codecs::jpeg::JpegEncoder::new_with_quality(&mut jpeg, 90)
+            .write_image(img.as_rgb8(), 64, 48, ExtendedColorType::Rgb8)
+            .unwrap();
+        let back = Raster::decode(&jpeg, "square.jpg").unwrap();
+        assert_eq!((back.width(), back.height()), (64, 48));
+        let body = PixelBody::measure(&back, &Selection::default()).unwrap();
+        assert_eq!(body.count, 256);
+        assert!((body.centre[0] - 24.0).abs() < 1e-9 && (body.centre[1] - 16.0).abs() < 1e-9);
+    }
 }
