@@ -29,11 +29,15 @@ fn fmt(v: &[f64], scale: f64) -> String {
     }
 }
 
-/// Whether a path names an image (by its extension).
+/// Whether a path names an image (by its extension; only PNG and JPEG are read, the others
+/// get an error that names their format).
 fn is_image(path: &std::path::Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "png" | "jpg" | "jpeg"))
+    path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
+        matches!(
+            e.to_ascii_lowercase().as_str(),
+            "png" | "jpg" | "jpeg" | "gif" | "bmp" | "tif" | "tiff" | "webp" | "heic" | "avif"
+        )
+    })
 }
 
 /// `mechkit com BODYFILE`: mass and centre of mass of the body and of each part.

@@ -1,16 +1,331 @@
-//! `mechkit com IMAGE`: the centre of mass of the body in a photo.
+//! `mechkit com IMAGE`: the centre of mass and moment of inertia of the body in a photo, by
+//! the course's method (the pixels with `R+G+B < 1.5` are the body).
 
-use anyhow::{Result, bail};
+use std::fmt::Write as _;
+use std::path::Path;
 
-use super::Outcome;
+use anyhow::{Context, Result, anyhow, bail};
+use mechkit::expr::units::{Dimension, Quantity};
+use mechkit::mass::image::{
+    Channel, Density, ImageError, PixelBody, PixelFrame, Raster, Selection, marked_png,
+};
+use mechkit::mass::{MassProperties, Vec3};
+use mechkit::scenario::write_atomic;
+use serde_json::{Value, json};
+
+use super::input::{quantity, show, split_top_level};
+use super::{Outcome, print};
 use crate::args::ComArgs;
 
+/// A number of pixels: `"240"`, `"240 px"`, `"240 pixels"`.
+fn pixels(text: &str, flag: &str) -> Result<f64> {
+    let t = text.trim();
+    let number = ["pixels", "pixel", "px"]
+        .iter()
+        .find_map(|u| t.strip_suffix(u))
+        .unwrap_or(t)
+        .trim();
+    match number.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        _ => bail!("{flag}: `{text}` is not a number of pixels (write e.g. 240 or \"240 px\")"),
+    }
+}
+
+/// `"x, y"` split in two, or an error that shows what to write.
+fn pair<'t>(text: &'t str, flag: &str, example: &str) -> Result<[&'t str; 2]> {
+    match split_top_level(text, ',').as_slice() {
+        [x, y] if !x.is_empty() && !y.is_empty() => Ok([x, y]),
+        _ => {
+            bail!("{flag} takes two coordinates \"x, y\", e.g. {flag} \"{example}\", not `{text}`")
+        }
+    }
+}
+
+/// The side of a pixel (m) from `--pixel-size` or `--scale`, or `None` to work in pixels.
+fn pixel_size(args: &ComArgs) -> Result<Option<f64>> {
+    let size = match (&args.pixel_size, &args.scale) {
+        (Some(_), Some(_)) => bail!("give either --pixel-size or --scale, not both"),
+        (None, None) => return Ok(None),
+        (Some(s), None) => quantity(s, "--pixel-size", Dimension::LENGTH)?,
+        (None, Some(s)) => scale(s)?,
+    };
+    if !(size.is_finite() && size > 0.0) {
+        bail!("the pixel size must be a positive length, e.g. --pixel-size \"0.5 mm\"");
+    }
+    Ok(Some(size))
+}
+
+/// `"240 px = 12 cm"` (either way round) → metres per pixel.
+fn scale(text: &str) -> Result<f64> {
+    let usage = || {
+        anyhow!(
+            "--scale takes a known length in pixels and in units, e.g. --scale \"240 px = 12 cm\", not `{text}`"
+        )
+    };
+    let (a, b) = text.split_once('=').ok_or_else(usage)?;
+    let is_pixels = |s: &str| s.trim().ends_with("px") || s.trim().ends_with("pixels");
+    let (px, length) = match (is_pixels(a), is_pixels(b)) {
+        (true, false) => (a, b),
+        (false, true) => (b, a),
+        _ => return Err(usage()),
+    };
+    let (px, length) = (
+        pixels(px, "--scale")?,
+        quantity(length, "--scale", Dimension::LENGTH)?,
+    );
+    if px <= 0.0 {
+        bail!("--scale `{text}`: the number of pixels must be positive");
+    }
+    Ok(length / px)
+}
+
+/// A physical coordinate of `--about`: a length with a scale, pixels without one.
+fn coordinate(text: &str, scaled: bool) -> Result<f64> {
+    if scaled {
+        return quantity(text, "--about", Dimension::LENGTH);
+    }
+    if Quantity::parse(text).is_ok_and(|q| !q.dim.is_none()) {
+        bail!(
+            "--about `{text}` is a length, but the image has no scale: give --pixel-size or --scale, or the point in pixels"
+        );
+    }
+    pixels(text, "--about")
+}
+
+/// The image's error, with the flags that change a selection that marks nothing or all.
+fn image_error(e: ImageError) -> anyhow::Error {
+    match e {
+        ImageError::SelectsNothing { .. } | ImageError::SelectsEverything { .. } => anyhow!(
+            "{e} (--threshold; --channel sum, r, g or b; --invert for a bright body on a dark background)"
+        ),
+        e => anyhow!(e),
+    }
+}
+
+/// Flags of point masses have no meaning with an image.
+fn reject_point_mass_flags(args: &ComArgs) -> Result<()> {
+    for (given, flag) in [
+        (!args.mass.is_empty(), "--mass"),
+        (!args.at.is_empty(), "--at"),
+        (!args.velocity.is_empty(), "--velocity"),
+        (args.unit.is_some(), "--in"),
+    ] {
+        if given {
+            bail!("{flag} is for point masses; it cannot be used with an image");
+        }
+    }
+    Ok(())
+}
+
+/// Everything measured, in the units of the output.
+struct Measured<'a> {
+    file: &'a Path,
+    raster: &'a Raster,
+    selection: Selection,
+    body: PixelBody,
+    frame: PixelFrame,
+    scaled: bool,
+    mass_given: bool,
+    props: MassProperties,
+    about: Option<([f64; 2], f64)>,
+}
+
 pub fn com_image(args: &ComArgs) -> Result<Outcome> {
-    bail!(
-        "{}: images are not read yet",
-        args.file
-            .as_deref()
-            .unwrap_or(std::path::Path::new("?"))
-            .display()
-    )
+    let file = args
+        .file
+        .as_deref()
+        .ok_or_else(|| anyhow!("give the image file"))?;
+    reject_point_mass_flags(args)?;
+    let channel = Channel::parse(&args.channel).map_err(|e| anyhow!("--channel: {e}"))?;
+    let threshold = args.threshold.unwrap_or(channel.default_threshold());
+    if !threshold.is_finite() {
+        bail!("--threshold must be a finite number, e.g. --threshold 1.5");
+    }
+    let selection = Selection::new(channel)
+        .threshold(threshold)
+        .inverted(args.invert)
+        .density(if args.density_from_darkness {
+            Density::Darkness
+        } else {
+            Density::Uniform
+        });
+    let size = pixel_size(args)?;
+    let total_mass = match &args.total_mass {
+        Some(m) => {
+            let m = quantity(m, "--total-mass", Dimension::MASS)?;
+            if !(m.is_finite() && m > 0.0) {
+                bail!("--total-mass must be a positive mass, e.g. --total-mass \"2 kg\"");
+            }
+            Some(m)
+        }
+        None => None,
+    };
+    let raster = Raster::open(file)?;
+    let origin = match &args.origin {
+        Some(text) => {
+            let [x, y] = pair(text, "--origin", "200, 400")?;
+            [pixels(x, "--origin")?, pixels(y, "--origin")?]
+        }
+        None => [0.0, raster.height() as f64],
+    };
+    let frame = PixelFrame::new(size.unwrap_or(1.0), origin).map_err(|e| anyhow!("{e}"))?;
+    let body = PixelBody::measure(&raster, &selection).map_err(|e| {
+        let e = image_error(e);
+        anyhow!("{}: {e}", file.display())
+    })?;
+    let props = body
+        .mass_properties(&frame, total_mass)
+        .map_err(|e| anyhow!("{e}"))?;
+    let about = match &args.about {
+        Some(text) => {
+            let [x, y] = pair(text, "--about", "0, 0")?;
+            let p = [
+                coordinate(x, size.is_some())?,
+                coordinate(y, size.is_some())?,
+            ];
+            let zz = props.inertia_about(&Vec3::new(p[0], p[1], 0.0))[(2, 2)];
+            Some((p, zz))
+        }
+        None => None,
+    };
+    if let Some(out) = &args.mark {
+        if !out
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("png"))
+        {
+            bail!("--mark writes a PNG image: name the file .png, e.g. --mark marked.png");
+        }
+        let png = marked_png(&raster, &selection, &body).map_err(|e| anyhow!("--mark: {e}"))?;
+        write_atomic(out, &png)
+            .with_context(|| format!("--mark: cannot write {}", out.display()))?;
+    }
+    let m = Measured {
+        file,
+        raster: &raster,
+        selection,
+        body,
+        frame,
+        scaled: size.is_some(),
+        mass_given: total_mass.is_some(),
+        props,
+        about,
+    };
+    if args.json {
+        print(&format!("{:#}\n", to_json(&m, args.mark.as_deref())))?;
+    } else {
+        print(&to_text(&m, args.mark.as_deref()))?;
+    }
+    Ok(Outcome::Success)
+}
+
+fn to_json(m: &Measured, mark: Option<&Path>) -> Value {
+    let i = &m.props.inertia;
+    let [x, y] = [m.props.centre_of_mass.x, m.props.centre_of_mass.y];
+    json!({
+        "source": "image",
+        "file": m.file.display().to_string(),
+        "width": m.raster.width(),
+        "height": m.raster.height(),
+        "channel": m.selection.channel.name(),
+        "threshold": m.selection.threshold,
+        "inverted": m.selection.invert,
+        "density": match m.selection.density {
+            Density::Darkness => "darkness",
+            _ => "uniform",
+        },
+        "selected_pixels": m.body.count,
+        "fraction": m.body.fraction(),
+        "weight": m.body.weight,
+        "pixel_centre_of_mass": m.body.centre,
+        "origin_pixel": m.frame.origin,
+        "pixel_size": m.scaled.then_some(m.frame.pixel_size),
+        "unit": if m.scaled { "m" } else { "px" },
+        "centre_of_mass": [x + 0.0, y + 0.0],
+        "area": m.body.area(m.frame.pixel_size),
+        "mass": m.mass_given.then_some(m.props.mass),
+        "inertia_cm": {
+            "xx": i[(0, 0)], "yy": i[(1, 1)], "zz": i[(2, 2)], "xy": i[(0, 1)] + 0.0,
+        },
+        "radius_of_gyration": (i[(2, 2)] / m.props.mass).sqrt(),
+        "about": m.about.map(|(p, zz)| json!({ "point": p, "zz": zz })),
+        "mark": mark.map(|p| p.display().to_string()),
+    })
+}
+
+fn to_text(m: &Measured, mark: Option<&Path>) -> String {
+    let len = if m.scaled { "m" } else { "px" };
+    let inertia_unit = if m.mass_given {
+        format!("kg·{len}²")
+    } else {
+        format!("{len}⁴")
+    };
+    let pt = |p: [f64; 2]| format!("({}, {})", show(p[0] + 0.0), show(p[1] + 0.0));
+    let i = &m.props.inertia;
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{}: {} × {} pixels; the body is {}: {} pixels ({} % of the image){}",
+        m.file.display(),
+        m.raster.width(),
+        m.raster.height(),
+        m.selection,
+        m.body.count,
+        show((1e4 * m.body.fraction()).round() / 100.0),
+        if m.selection.density == Density::Darkness {
+            ", density from the shade"
+        } else {
+            ""
+        }
+    );
+    let _ = writeln!(
+        out,
+        "centre of mass in pixels (x right, y down from the top-left corner): {}",
+        pt(m.body.centre)
+    );
+    let _ = writeln!(
+        out,
+        "centre of mass {} {len} (y up, origin at pixel {}{})",
+        pt([m.props.centre_of_mass.x, m.props.centre_of_mass.y]),
+        pt(m.frame.origin),
+        if m.scaled {
+            format!(", pixel size {} m", show(m.frame.pixel_size))
+        } else {
+            String::new()
+        }
+    );
+    let _ = writeln!(
+        out,
+        "area {} {len}²; mass {}",
+        show(m.body.area(m.frame.pixel_size)),
+        if m.mass_given {
+            format!("{} kg", show(m.props.mass))
+        } else {
+            format!("not given: density 1 per {len}², so the moments below are of the area")
+        }
+    );
+    let _ = writeln!(
+        out,
+        "moment of inertia about the centre of mass, axis perpendicular to the image: I_zz = {} {inertia_unit} (radius of gyration {} {len})",
+        show(i[(2, 2)]),
+        show((i[(2, 2)] / m.props.mass).sqrt())
+    );
+    let _ = writeln!(
+        out,
+        "  in the plane: I_xx = {}, I_yy = {}, I_xy = {} {inertia_unit}",
+        show(i[(0, 0)]),
+        show(i[(1, 1)]),
+        show(i[(0, 1)] + 0.0)
+    );
+    if let Some((p, zz)) = m.about {
+        let _ = writeln!(
+            out,
+            "about {} {len}: I_zz = {} {inertia_unit}",
+            pt(p),
+            show(zz)
+        );
+    }
+    if let Some(path) = mark {
+        let _ = writeln!(out, "marked image written to {}", path.display());
+    }
+    out
 }

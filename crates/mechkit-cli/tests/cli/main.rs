@@ -19,11 +19,14 @@
 //! - a run with no `t_max` whose stop condition never fires ends at the default step budget,
 //!   exits 0 and warns about `t_max`.
 //!
+//! - `mechkit com IMAGE` measures the pixels of a body (`com_image.rs`).
+//!
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
 mod book;
 mod calculus;
 mod collide;
+mod com_image;
 mod data;
 mod diverge;
 mod energy;

@@ -4,6 +4,7 @@
 //! photographs (the pixels of the body).
 
 mod composite;
+pub mod image;
 mod mesh;
 mod points;
 mod polygon;
