@@ -43,7 +43,9 @@
 //!   potentials, energy diagrams, equilibria and turning points; line integrals of force
 //!   fields; constant-power motion.
 //! - [`figure`]: plot data (curves, markers, bands) for the command line to draw.
-//! - [`mass`]: point-mass systems: centre of mass, momentum, the centre-of-mass frame.
+//! - [`mass`]: point-mass systems (centre of mass, momentum, the centre-of-mass frame), and
+//!   rigid bodies: mass, centre of mass and inertia tensor of shapes, polygons, triangle
+//!   meshes, composites with holes, and the body in a photo ([`mass::image`]).
 //! - [`function`]: a formula with parameter values, evaluated as a function.
 //! - [`simulate`]: the run loop: stop conditions located between steps, observers, divergence
 //!   diagnosis.
