@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use anyhow::{Result, anyhow, bail};
-use mechkit::expr::units::{Dimension, Quantity};
+use mechkit::expr::units::Dimension;
 use mechkit::mass::{MassProperties, Vec3};
 use mechkit::scenario::BodyFile;
 use serde_json::{Value, json};
@@ -69,22 +69,6 @@ pub fn point(text: &str, flag: &str, dim: Dimension) -> Result<Vec3> {
         }
     }
     Ok(p)
-}
-
-/// `--in UNIT` for a moment of inertia: its size in SI and its text.
-pub fn inertia_unit(unit: Option<&str>) -> Result<(f64, String)> {
-    let Some(u) = unit else {
-        return Ok((1.0, "kg*m^2".into()));
-    };
-    let q = Quantity::parse(u)
-        .or_else(|_| Quantity::parse(&format!("1 {u}")))
-        .map_err(|e| anyhow!("--in: {e}"))?;
-    if q.dim != Dimension::MOMENT_OF_INERTIA || !(q.value > 0.0 && q.value.is_finite()) {
-        bail!(
-            "--in `{u}` must be a unit of moment of inertia (mass × length²), e.g. \"g*cm^2\" or \"u*pm^2\""
-        );
-    }
-    Ok((q.value, u.to_string()))
 }
 
 pub fn vec_json(v: &Vec3) -> Value {

@@ -4,12 +4,12 @@
 use std::fmt::Write as _;
 
 use anyhow::{Result, anyhow, bail};
-use mechkit::expr::units::{Dimension, Quantity};
+use mechkit::expr::units::Dimension;
 use mechkit::mass::PointMasses;
 use serde_json::json;
 
 use super::body::{load, parts_json, parts_text, point, vec_json, vec_text};
-use super::input::{quantity, show, split_top_level};
+use super::input::{output_unit, quantity, show, split_top_level};
 use super::{Outcome, print};
 use crate::args::ComArgs;
 
@@ -54,7 +54,12 @@ fn body_file(args: &ComArgs, file: &std::path::Path) -> Result<Outcome> {
     }
     let body = load(file, args.total_mass.as_deref())?;
     let p = &body.whole;
-    let (scale, unit) = length_unit(args.unit.as_deref())?;
+    let (scale, unit) = output_unit(
+        args.unit.as_deref(),
+        Dimension::LENGTH,
+        ("m", "a positive length", "\"6371 km\" or \"pm\""),
+        true,
+    )?;
     let about = match &args.about {
         Some(a) => Some(point(a, "--about", Dimension::LENGTH)?),
         None => None,
@@ -98,21 +103,6 @@ fn body_file(args: &ComArgs, file: &std::path::Path) -> Result<Outcome> {
         print(&out)?;
     }
     Ok(Outcome::Success)
-}
-
-/// `--in UNIT` for a length: its size in SI and its text.
-fn length_unit(unit: Option<&str>) -> Result<(f64, String)> {
-    let Some(u) = unit else {
-        return Ok((1.0, "m".to_string()));
-    };
-    // a unit alone ("pm") is one of it
-    let q = Quantity::parse(u)
-        .or_else(|_| Quantity::parse(&format!("1 {u}")))
-        .map_err(|e| anyhow!("--in: {e}"))?;
-    if !(q.dim == Dimension::LENGTH || q.dim.is_none()) || q.value.is_nan() || q.value <= 0.0 {
-        bail!("--in `{u}` must be a positive length, e.g. \"6371 km\" or \"pm\"");
-    }
-    Ok((q.value, u.to_string()))
 }
 
 pub fn com(args: &ComArgs) -> Result<Outcome> {
@@ -184,7 +174,12 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
         }
         Some(v.concat())
     };
-    let (scale, unit) = length_unit(args.unit.as_deref())?;
+    let (scale, unit) = output_unit(
+        args.unit.as_deref(),
+        Dimension::LENGTH,
+        ("m", "a positive length", "\"6371 km\" or \"pm\""),
+        true,
+    )?;
     let points = PointMasses::new(dim, masses, positions.concat(), velocities)
         .map_err(|e| anyhow!("--mass: {e}"))?;
     let s = points.summary();

@@ -8,8 +8,8 @@ use mechkit::expr::units::Dimension;
 use mechkit::mass::{Mat3, Vec3};
 use serde_json::{Value, json};
 
-use super::body::{inertia_unit, load, parts_json, parts_text, point, vec_json, vec_text};
-use super::input::show;
+use super::body::{load, parts_json, parts_text, point, vec_json, vec_text};
+use super::input::{output_unit, show};
 use super::{Outcome, print};
 use crate::args::InertiaArgs;
 
@@ -34,7 +34,16 @@ fn tensor_text(m: &Mat3, scale: f64, indent: &str) -> String {
 
 pub fn inertia(args: &InertiaArgs) -> Result<Outcome> {
     let body = load(&args.file, args.total_mass.as_deref())?;
-    let (scale, unit) = inertia_unit(args.unit.as_deref())?;
+    let (scale, unit) = output_unit(
+        args.unit.as_deref(),
+        Dimension::MOMENT_OF_INERTIA,
+        (
+            "kg*m^2",
+            "a unit of moment of inertia (mass × length²)",
+            "\"g*cm^2\" or \"u*pm^2\"",
+        ),
+        false,
+    )?;
     let about = match &args.about {
         Some(p) => point(p, "--about", Dimension::LENGTH)?,
         None => Vec3::zeros(),

@@ -118,6 +118,29 @@ pub fn split_top_level(text: &str, sep: char) -> Vec<&str> {
     out
 }
 
+/// `--in UNIT`: the unit's size in SI and its text, checked to have dimension `dim` (a unit
+/// alone, "pm", is one of it; with `plain_ok` a bare number is a multiple of SI). `text` is
+/// (default unit, what the unit must be, examples) for the default and the error.
+pub fn output_unit(
+    unit: Option<&str>,
+    dim: Dimension,
+    text: (&str, &str, &str),
+    plain_ok: bool,
+) -> Result<(f64, String)> {
+    let (default, must_be, examples) = text;
+    let Some(u) = unit else {
+        return Ok((1.0, default.to_string()));
+    };
+    let q = Quantity::parse(u)
+        .or_else(|_| Quantity::parse(&format!("1 {u}")))
+        .map_err(|e| anyhow!("--in: {e}"))?;
+    let fits = q.dim == dim || (plain_ok && q.dim.is_none());
+    if !(fits && q.value > 0.0 && q.value.is_finite()) {
+        bail!("--in `{u}` must be {must_be}, e.g. {examples}");
+    }
+    Ok((q.value, u.to_string()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
