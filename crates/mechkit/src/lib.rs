@@ -73,6 +73,7 @@ pub mod mass;
 pub mod ode;
 pub mod particles;
 pub mod quad;
+pub mod rigid;
 pub mod rocket;
 pub mod roots;
 #[cfg(feature = "scenario")]

@@ -9,6 +9,7 @@ mod forces;
 mod mass;
 mod ode;
 mod quad;
+mod rigid;
 mod rocket;
 mod scenario;
 mod simulate;
