@@ -16,4 +16,4 @@ pub use names::NameContext;
 pub use sample::{Evaluation, Sample, SampleKind};
 pub use state_expr::StateExpr;
 pub use system::{Body, ParticleSystem, ParticleSystemBuilder, SystemError};
-pub use vars::{BodyRef, StateVar, VarLevel};
+pub use vars::{BodyRef, Coordinates, StateVar, VarLevel};

@@ -4,7 +4,7 @@
 use mechkit_expr::{Binding, Dim, ExprError, Formula, Scope};
 
 use super::state_expr::StateExpr;
-use super::vars::{AAXES, AXES, BodyRef, StateVar, VAXES, VarLevel};
+use super::vars::{AAXES, ANGLE, AXES, BodyRef, Coordinates, StateVar, VAXES, VarLevel};
 use crate::Real;
 
 /// What names mean where a formula is used: the system's bodies and forces, the constants,
@@ -24,6 +24,8 @@ pub struct NameContext<'a> {
     pub bare: Option<BodyRef>,
     /// How much of the state may be used.
     pub level: VarLevel,
+    /// What the bodies' coordinates are (positions, or angles about fixed axes).
+    pub coordinates: Coordinates,
 }
 
 impl NameContext<'_> {
@@ -62,6 +64,16 @@ impl NameContext<'_> {
     }
 
     fn body_field(&self, b: BodyRef, field: &str, derived: bool) -> Option<StateVar> {
+        if self.coordinates == Coordinates::Angle {
+            return match field {
+                "theta" => Some(StateVar::Position(b, 0)),
+                "omega" => Some(StateVar::Velocity(b, 0)),
+                "I" => Some(StateVar::Mass(b)),
+                "alpha" if derived => Some(StateVar::Acceleration(b, 0)),
+                "K" if derived => Some(StateVar::BodyKinetic(b)),
+                _ => None,
+            };
+        }
         let d = self.dim;
         let axis = |names: &[&str; 3]| names[..d].iter().position(|n| *n == field);
         if let Some(i) = axis(&AXES) {
@@ -96,15 +108,22 @@ impl NameContext<'_> {
         let d = self.dim;
         let derived = self.level == VarLevel::Derived;
         let mut fields: Vec<&str> = Vec::new();
-        fields.extend(&AXES[..d]);
-        fields.extend(&VAXES[..d]);
-        fields.extend(["v", "r", "m"]);
-        if d > 1 {
-            fields.push("speed");
-        }
-        if derived {
-            fields.extend(&AAXES[..d]);
-            fields.extend(["a", "K"]);
+        if self.coordinates == Coordinates::Angle {
+            fields.extend(["theta", "omega", "I"]);
+            if derived {
+                fields.extend(["alpha", "K"]);
+            }
+        } else {
+            fields.extend(&AXES[..d]);
+            fields.extend(&VAXES[..d]);
+            fields.extend(["v", "r", "m"]);
+            if d > 1 {
+                fields.push("speed");
+            }
+            if derived {
+                fields.extend(&AAXES[..d]);
+                fields.extend(["a", "K"]);
+            }
         }
         let mut out = vec!["t".to_string()];
         if self.bare.is_some() {
@@ -128,8 +147,13 @@ impl NameContext<'_> {
         let d = self.dim;
         let axes = AXES[..d].join(", ");
         let v = VAXES[..d].join(", ");
+        let angle = self.coordinates == Coordinates::Angle;
         let mut s = match (self.bare, self.bodies.first()) {
+            (Some(_), _) if angle => format!("names here: t, {}, {}, I", ANGLE[0], ANGLE[1]),
             (Some(_), _) => format!("names here: t, {axes}, {v}, v, r, m"),
+            (None, Some(b)) if angle => {
+                format!("names here: t and body quantities such as {b}.theta, {b}.omega")
+            }
             (None, Some(b)) => format!("names here: t and body quantities such as {b}.x, {b}.v"),
             (None, None) => "names here: t".to_string(),
         };
@@ -158,7 +182,7 @@ impl NameContext<'_> {
             return *d;
         }
         self.resolve(name)
-            .map_or(Dim::Unknown, |v| Dim::Known(v.dimension()))
+            .map_or(Dim::Unknown, |v| Dim::Known(self.coordinates.dimension(v)))
     }
 
     /// Compiles `formula`: constants are folded, state names become slots.
@@ -232,6 +256,7 @@ mod tests {
             constants,
             bare: Some(BodyRef::Local),
             level,
+            coordinates: Coordinates::Cartesian,
         }
     }
 

@@ -4,6 +4,7 @@ use thiserror::Error;
 
 use super::kinematics::{Kinematics, dot};
 use super::sample::Evaluation;
+use super::vars::Coordinates;
 use crate::Real;
 use crate::forces::{Force, ForceSet};
 use crate::ode::SecondOrderSystem;
@@ -51,6 +52,9 @@ pub enum SystemError {
     /// No bodies.
     #[error("the system has no bodies")]
     Empty,
+    /// Angle coordinates in more than one dimension.
+    #[error("angle coordinates have one angle per body (dimension 1), not {0}")]
+    AngleNotOneDimensional(usize),
 }
 
 /// Bodies and forces in 1, 2 or 3 dimensions.
@@ -62,6 +66,7 @@ pub struct ParticleSystem {
     inv_mass: Vec<Real>,
     forces: ForceSet,
     velocity_dependent: bool,
+    coordinates: Coordinates,
 }
 
 /// Builds a [`ParticleSystem`].
@@ -85,6 +90,7 @@ pub struct ParticleSystemBuilder {
     dim: usize,
     bodies: Vec<Body>,
     forces: ForceSet,
+    coordinates: Coordinates,
 }
 
 impl ParticleSystemBuilder {
@@ -112,6 +118,15 @@ impl ParticleSystemBuilder {
         self
     }
 
+    /// Sets what the coordinates are: [`Coordinates::Angle`] makes every body a rigid body
+    /// turning about a fixed axis (1-D only: one angle per body, the "mass" is the moment of
+    /// inertia about the axis and the forces are torques).
+    #[must_use]
+    pub fn coordinates(mut self, coordinates: Coordinates) -> Self {
+        self.coordinates = coordinates;
+        self
+    }
+
     /// Validates and builds.
     pub fn build(self) -> Result<ParticleSystem, SystemError> {
         if !(1..=3).contains(&self.dim) {
@@ -119,6 +134,9 @@ impl ParticleSystemBuilder {
         }
         if self.bodies.is_empty() {
             return Err(SystemError::Empty);
+        }
+        if self.coordinates == Coordinates::Angle && self.dim != 1 {
+            return Err(SystemError::AngleNotOneDimensional(self.dim));
         }
         for (i, b) in self.bodies.iter().enumerate() {
             if !(b.mass > 0.0 && b.mass.is_finite()) {
@@ -158,6 +176,7 @@ impl ParticleSystemBuilder {
             inv_mass,
             forces: self.forces,
             velocity_dependent,
+            coordinates: self.coordinates,
         })
     }
 }
@@ -174,6 +193,11 @@ impl ParticleSystem {
     /// Spatial dimensions.
     pub fn dim(&self) -> usize {
         self.dim
+    }
+
+    /// What the coordinates are (positions, or angles about fixed axes).
+    pub fn coordinates(&self) -> Coordinates {
+        self.coordinates
     }
 
     /// The bodies.

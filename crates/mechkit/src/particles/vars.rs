@@ -77,6 +77,58 @@ pub enum VarLevel {
 }
 
 pub(crate) const AXES: [&str; 3] = ["x", "y", "z"];
+pub(crate) const ANGLE: [&str; 3] = ["theta", "omega", "alpha"];
+
+/// What a body's coordinate is: a position in space, or the angle of a body turning about a
+/// fixed axis (a hinged rigid body, whose "mass" is then its moment of inertia about the
+/// axis and whose forces are torques).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Coordinates {
+    /// Positions `x`, `y`, `z` in metres, velocities `vx`…, masses in kg.
+    #[default]
+    Cartesian,
+    /// One angle `theta` in radians per body (1-D), angular velocity `omega`, angular
+    /// acceleration `alpha`, moment of inertia `I`; the generalised forces are torques and
+    /// the momentum is the angular momentum `I omega` about the axis.
+    Angle,
+}
+
+impl Coordinates {
+    /// The dimension of a state quantity in these coordinates.
+    pub fn dimension(self, var: StateVar) -> Dimension {
+        match (self, var) {
+            (Coordinates::Angle, StateVar::Position(..)) => Dimension::NONE,
+            (Coordinates::Angle, StateVar::Velocity(..)) => Dimension::FREQUENCY,
+            (Coordinates::Angle, StateVar::Acceleration(..)) => Dimension::base([0, 0, -2, 0, 0, 0, 0]),
+            (Coordinates::Angle, StateVar::Mass(_)) => Dimension::MOMENT_OF_INERTIA,
+            _ => var.dimension(),
+        }
+    }
+
+    /// The SI unit to label a state quantity with in these coordinates.
+    pub fn unit(self, var: StateVar) -> &'static str {
+        match (self, var) {
+            (Coordinates::Angle, StateVar::Position(..)) => "rad",
+            (Coordinates::Angle, StateVar::Velocity(..)) => "rad/s",
+            (Coordinates::Angle, StateVar::Acceleration(..)) => "rad/s²",
+            (Coordinates::Angle, StateVar::Mass(_)) => "kg m²",
+            _ => var.unit(),
+        }
+    }
+
+    /// The names of the position, velocity and acceleration components of a body in `dim`
+    /// dimensions: `x`, `vx`, `ax`, … or `theta`, `omega`, `alpha`.
+    pub fn component_names(self, dim: usize) -> [Vec<&'static str>; 3] {
+        match self {
+            Coordinates::Cartesian => [
+                AXES[..dim].to_vec(),
+                VAXES[..dim].to_vec(),
+                AAXES[..dim].to_vec(),
+            ],
+            Coordinates::Angle => [vec![ANGLE[0]], vec![ANGLE[1]], vec![ANGLE[2]]],
+        }
+    }
+}
 pub(crate) const VAXES: [&str; 3] = ["vx", "vy", "vz"];
 pub(crate) const AAXES: [&str; 3] = ["ax", "ay", "az"];
 

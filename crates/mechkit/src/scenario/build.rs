@@ -167,6 +167,7 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         constants: &constants,
         bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
         level: VarLevel::Derived,
+        coordinates: system.coordinates(),
     };
     let (stop, t_max, max_steps) = read_stop(&root, env, &names)?;
     let mut events = read_events(&root, &names)?;

@@ -289,6 +289,7 @@ fn compile_components(
         constants: ctx.constants,
         bare: Some(BodyRef::Local),
         level: VarLevel::Kinematic,
+        coordinates: crate::particles::Coordinates::Cartesian,
     };
     let mut out = Vec::new();
     for (text, span) in items {

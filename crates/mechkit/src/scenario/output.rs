@@ -37,10 +37,11 @@ fn temp_path(path: &Path) -> PathBuf {
 /// `U`, `E`, the work of each force and its power `F·v`.
 pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
     let axes = &["x", "y", "z"][..sys.dim()];
+    let [position, velocity, _] = sys.coordinates().component_names(sys.dim());
     let mut cols = vec!["t".to_string()];
     for b in sys.bodies() {
-        cols.extend(axes.iter().map(|a| format!("{}.{a}", b.name)));
-        cols.extend(axes.iter().map(|a| format!("{}.v{a}", b.name)));
+        cols.extend(position.iter().map(|a| format!("{}.{a}", b.name)));
+        cols.extend(velocity.iter().map(|a| format!("{}.{a}", b.name)));
     }
     if sys.bodies().len() > 1 {
         for prefix in ["", "v", "a"] {

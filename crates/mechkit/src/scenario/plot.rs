@@ -235,7 +235,7 @@ impl PlotSpec {
             })
         };
         let x = resolve(x_name)?;
-        let x_label = format!("{x_name} [{}]", x.unit());
+        let x_label = format!("{x_name} [{}]", local.coordinates.unit(x));
         let n_bodies = names.bodies.len();
         // `label` names the quantity when it is not the plot's own (energy plots); a series per
         // body is then labelled with both.
@@ -285,7 +285,7 @@ impl PlotSpec {
         Ok(PlotSpec {
             spec: spec.to_string(),
             x_label,
-            y_label: format!("{y_name} [{}]", y.unit()),
+            y_label: format!("{y_name} [{}]", local.coordinates.unit(y)),
             series: expand(y, None),
         })
     }
