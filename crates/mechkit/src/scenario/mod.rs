@@ -48,6 +48,7 @@ mod integrator;
 mod observe;
 mod output;
 mod plot;
+mod rigid;
 mod run;
 mod stop;
 mod summary;

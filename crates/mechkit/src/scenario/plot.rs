@@ -148,6 +148,12 @@ pub(crate) fn read_output(
                     ));
                 }
             },
+            None if names.coordinates == crate::particles::Coordinates::Angle => {
+                ["theta(t)", "omega(t)", "energy(t)"]
+                    .into_iter()
+                    .map(|s| (s.to_string(), None))
+                    .collect()
+            }
             None => default_plots(dim)
                 .into_iter()
                 .map(|s| (s.to_string(), None))

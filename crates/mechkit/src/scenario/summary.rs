@@ -139,6 +139,12 @@ pub struct Files {
 pub struct Summary {
     /// Scenario title.
     pub title: String,
+    /// `"angle"` for rigid bodies hinged to the world: each body's `position` is then its angle
+    /// (rad), `velocity` its angular velocity (rad/s), `mass` its moment of inertia about the
+    /// axis (kg m²), the momentum its angular momentum about the axis (kg m²/s) and the
+    /// impulses angular impulses (N m s). Absent for particles.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub coordinates: Option<&'static str>,
     /// The scenario file.
     pub scenario: String,
     /// Integration method.
@@ -336,6 +342,8 @@ impl Summary {
         let (e0, e1) = l.energy();
         Summary {
             title: title.to_string(),
+            coordinates: (sys.coordinates() == crate::particles::Coordinates::Angle)
+                .then_some("angle"),
             scenario: scenario.to_string(),
             method: report.method.name().to_string(),
             dt: report.dt,

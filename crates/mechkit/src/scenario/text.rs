@@ -80,15 +80,26 @@ impl Summary {
             let _ = writeln!(s, "  {label}: {}", d.message);
         }
         let _ = writeln!(s, "final state");
+        let angle = self.coordinates == Some("angle");
         for (name, b) in &self.bodies {
-            let _ = writeln!(
-                s,
-                "  {name}: position {} m, velocity {} m/s",
-                vec_text(&b.position),
-                vec_text(&b.velocity)
-            );
+            if angle {
+                let _ = writeln!(
+                    s,
+                    "  {name}: theta {} rad, omega {} rad/s (I = {} kg m² about the axis)",
+                    vec_text(&b.position),
+                    vec_text(&b.velocity),
+                    num(b.mass)
+                );
+            } else {
+                let _ = writeln!(
+                    s,
+                    "  {name}: position {} m, velocity {} m/s",
+                    vec_text(&b.position),
+                    vec_text(&b.velocity)
+                );
+            }
         }
-        if self.bodies.len() > 1 {
+        if self.bodies.len() > 1 && !angle {
             let c = &self.centre_of_mass;
             let _ = writeln!(
                 s,
@@ -110,7 +121,12 @@ impl Summary {
         if self.bodies.len() > 1 || p.events_change.iter().any(|x| *x != 0.0) {
             let _ = writeln!(
                 s,
-                "momentum (kg·m/s)\n  total                  {} → {}\n  impulse of the forces  {}",
+                "{}\n  total                  {} → {}\n  impulse of the forces  {}",
+                if angle {
+                    "angular momentum about the axes (kg m²/s)"
+                } else {
+                    "momentum (kg·m/s)"
+                },
                 vec_text(&p.start),
                 vec_text(&p.end),
                 vec_text(&p.external_impulse)

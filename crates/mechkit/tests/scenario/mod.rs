@@ -1,3 +1,4 @@
 mod errors;
 mod examples;
+mod rigid;
 mod run;

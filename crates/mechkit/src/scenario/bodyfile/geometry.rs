@@ -14,7 +14,7 @@ use crate::scenario::values::{ValueEnv, resolve, resolve_any};
 
 /// A list of points `[[x, y(, z)], …]` (or one point `[x, y(, z)]`), lengths, padded with
 /// zeros to 3-D.
-pub(super) fn points(
+pub(crate) fn points(
     t: &Table<'_, '_>,
     key: &str,
     env: ValueEnv<'_>,
@@ -74,7 +74,7 @@ pub(super) fn points(
     }
 }
 
-pub(super) fn direction(
+pub(crate) fn direction(
     t: &Table<'_, '_>,
     key: &str,
     env: ValueEnv<'_>,

@@ -33,7 +33,7 @@ use mechkit_expr::units::Dimension;
 use nalgebra::Rotation3;
 use toml::de::{DeTable, DeValue};
 
-mod geometry;
+pub(crate) mod geometry;
 
 use super::build::constants;
 use super::doc::{Source, Table, Value};
@@ -149,7 +149,7 @@ fn invalid(t: &Table<'_, '_>, key: &str, message: String) -> ScenarioError {
     t.src.error(ErrorKind::Invalid, message, span)
 }
 
-fn part(
+pub(crate) fn part(
     t: &Table<'_, '_>,
     index: usize,
     env: ValueEnv<'_>,
