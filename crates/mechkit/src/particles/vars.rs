@@ -99,7 +99,9 @@ impl Coordinates {
         match (self, var) {
             (Coordinates::Angle, StateVar::Position(..)) => Dimension::NONE,
             (Coordinates::Angle, StateVar::Velocity(..)) => Dimension::FREQUENCY,
-            (Coordinates::Angle, StateVar::Acceleration(..)) => Dimension::base([0, 0, -2, 0, 0, 0, 0]),
+            (Coordinates::Angle, StateVar::Acceleration(..)) => {
+                Dimension::base([0, 0, -2, 0, 0, 0, 0])
+            }
             (Coordinates::Angle, StateVar::Mass(_)) => Dimension::MOMENT_OF_INERTIA,
             _ => var.dimension(),
         }

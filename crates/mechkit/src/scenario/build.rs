@@ -13,7 +13,7 @@ use super::forces::{ForceContext, build_force};
 use super::integrator::read_integrator;
 use super::observe::read_observe;
 use super::plot::read_output;
-use super::rigid::{read_rigid_bodies, read_torques};
+use super::rigid::build_rigid;
 use super::stop::read_stop;
 use super::values::{Constant, ValueEnv, resolve_any, scalar, vector};
 use crate::Real;
@@ -42,7 +42,7 @@ const TOP_KEYS: &[&str] = &[
 const BODY_KEYS: &[&str] = &["name", "mass", "position", "velocity", "radius"];
 
 /// State names a constant may not take (formulas would become ambiguous).
-const RESERVED: &[&str] = &[
+pub(crate) const RESERVED: &[&str] = &[
     "t", "x", "y", "z", "vx", "vy", "vz", "v", "r", "speed", "ax", "ay", "az", "a", "K", "U", "E",
 ];
 
@@ -83,8 +83,8 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
 
     let rigid_tables = root.tables("rigid_body")?;
     if !rigid_tables.is_empty() {
-        let constants = constants(&root, &[RESERVED, RIGID_RESERVED].concat())?;
-        return build_rigid(name, root, title, dim, constants, &rigid_tables);
+        let constants = constants(&root, &[RESERVED, super::rigid::RIGID_RESERVED].concat())?;
+        return build_rigid(name, &root, title, dim, constants, &rigid_tables);
     }
     if let Some(v) = root.get("torque") {
         return Err(src
@@ -205,114 +205,6 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
         constants,
         system,
         initial: State::from_qv(0.0, &q, &v),
-        stepping,
-        t_max,
-        max_steps,
-        stop,
-        events,
-        observables,
-        every,
-        output_times,
-        plots,
-        warnings,
-    })
-}
-
-/// State names of a scenario with rigid bodies.
-const RIGID_RESERVED: &[&str] = &["theta", "omega", "alpha"];
-
-/// A scenario of rigid bodies hinged to the world: one angle per body.
-fn build_rigid(
-    name: &str,
-    root: Table<'_, '_>,
-    title: String,
-    dim: usize,
-    constants: Vec<Constant>,
-    tables: &[Table<'_, '_>],
-) -> Result<Scenario, ScenarioError> {
-    let src = root.src;
-    for key in ["body", "force", "contact", "wall", "plane"] {
-        if let Some(v) = root.get(key) {
-            return Err(src
-                .error(
-                    ErrorKind::Invalid,
-                    format!("a scenario of hinged [[rigid_body]]s cannot also have `{key}`"),
-                    v.span(),
-                )
-                .with_hint("rigid bodies turning about fixed axes are run in angle coordinates; put particles in a scenario of their own"));
-        }
-    }
-    if dim != 1 {
-        return Err(src
-            .error(
-                ErrorKind::Invalid,
-                "a hinged rigid body has one coordinate, its angle: leave out `dimensions`",
-                root.key_span("dimensions"),
-            ));
-    }
-    let dir = std::path::Path::new(name).parent();
-    let mut rigid = read_rigid_bodies(tables, &constants, dir)?;
-    let torques = read_torques(&root.tables("torque")?, &mut rigid, &constants)?;
-    let mut warnings = std::mem::take(&mut rigid.warnings);
-    if torques.is_empty() {
-        warnings.push("no [[torque]] is defined: the bodies turn at constant angular velocity".into());
-    }
-    let force_names: Vec<String> = torques.iter().map(|f| f.name().to_string()).collect();
-    for (i, n) in force_names.iter().enumerate() {
-        if force_names[..i].contains(n) {
-            return Err(ScenarioError::new(ErrorKind::Invalid, format!("two torques are named `{n}`"))
-                .with_hint("give each [[torque]] its own `name`; the energy ledger lists work by name"));
-        }
-    }
-    let system = crate::rigid::fixed_axis::system(&rigid.bodies, torques)
-        .map_err(|e| ScenarioError::new(ErrorKind::Invalid, e.to_string()))?;
-    let env = ValueEnv {
-        constants: &constants,
-        mass: None,
-        later: &[],
-    };
-    let stepping = read_integrator(&root, env, &system)?;
-    let bodies = rigid.names.clone();
-    let names = NameContext {
-        dim: 1,
-        bodies: &bodies,
-        forces: &force_names,
-        constants: &constants,
-        bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
-        level: VarLevel::Derived,
-        coordinates: system.coordinates(),
-    };
-    let (stop, t_max, max_steps) = read_stop(&root, env, &names)?;
-    let mut events = read_events(&root, &names)?;
-    // dry friction acts against the turning until the body stops: there the regime ends
-    for (b, direction, torque) in std::mem::take(&mut rigid.dry) {
-        let body = &bodies[b];
-        events.push(
-            crate::simulate::Event::new(format!("{body} stopped"), move |s, _| {
-                direction * s.v[b]
-            })
-            .direction(crate::simulate::Direction::Falling)
-            .stop(),
-        );
-        warnings.push(format!(
-            "`{body}` has dry bearing friction (`{torque}`): the run ends when it stops turning"
-        ));
-    }
-    let observables = read_observe(&root, &names)?;
-    let (every, output_times, plots) = read_output(&root, &names, 1, env)?;
-    if t_max.is_none() && max_steps.is_none() {
-        warnings.push(format!(
-            "[stop] has no t_max: the run is bounded by {} steps; set t_max",
-            crate::simulate::DEFAULT_MAX_STEPS
-        ));
-    }
-    Ok(Scenario {
-        name: name.to_string(),
-        title,
-        dim: 1,
-        constants,
-        system,
-        initial: State::from_qv(0.0, &rigid.theta, &rigid.omega),
         stepping,
         t_max,
         max_steps,

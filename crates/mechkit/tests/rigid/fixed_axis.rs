@@ -96,7 +96,10 @@ fn hinged_disk_and_errors() {
     assert!((body.moment() - 1.5 * 2.0 * 0.09).abs() < 1e-15);
     assert!((body.lever() - 0.3).abs() < 1e-15);
     let turned = body.offset_at(PI / 2.0);
-    assert!((turned - Vec3::new(0.0, -0.3, 0.0)).norm() < 1e-15, "{turned}");
+    assert!(
+        (turned - Vec3::new(0.0, -0.3, 0.0)).norm() < 1e-15,
+        "{turned}"
+    );
     assert!(body.pivot_warning().is_none());
     let far = HingedBody::new("disk", &disk, Vec3::new(30.0, 0.0, 0.0), Vec3::z()).unwrap();
     assert!(far.pivot_warning().unwrap().contains("radius of gyration"));
@@ -189,12 +192,19 @@ fn atwood_machine_with_massive_pulley() {
         .unwrap();
     let theta = r.final_state.y[0];
     let omega = r.final_state.y[1];
-    assert!((theta - 0.5 * alpha * t_end * t_end).abs() < 1e-12, "{theta}");
+    assert!(
+        (theta - 0.5 * alpha * t_end * t_end).abs() < 1e-12,
+        "{theta}"
+    );
     assert!((omega - alpha * t_end).abs() < 1e-12, "{omega}");
     // linear acceleration of the weights a = α R = (m1 - m2) g / (m1 + m2 + M/2)
     assert!((alpha * 0.1 - (m1 - m2) * G / (m1 + m2 + big_m / 2.0)).abs() < 1e-14);
     let ledger = &r.ledger;
-    assert!(ledger.work_energy_residual().abs() < 1e-10, "{}", ledger.work_energy_residual());
+    assert!(
+        ledger.work_energy_residual().abs() < 1e-10,
+        "{}",
+        ledger.work_energy_residual()
+    );
 }
 
 /// A flywheel spun up by a constant torque against viscous bearing friction reaches
@@ -227,7 +237,11 @@ fn flywheel_spin_up_against_viscous_friction() {
     let exact = tau / b * (1.0 - (-b * 5.0 / i).exp());
     assert!((omega - exact).abs() < 1e-9 * exact, "{omega} vs {exact}");
     let work = &r.ledger;
-    assert!(work.work_energy_residual().abs() < 1e-8, "{}", work.work_energy_residual());
+    assert!(
+        work.work_energy_residual().abs() < 1e-8,
+        "{}",
+        work.work_energy_residual()
+    );
 }
 
 /// Coulomb friction in the bearing stops a spinning wheel at t = I ω₀/τ₀ (event on ω = 0,
@@ -256,7 +270,11 @@ fn coulomb_bearing_stops_the_wheel_at_the_closed_form_time() {
         .run(State::from_qv(0.0, &[0.0], &[12.0]), &mut [])
         .unwrap();
     let t_stop = 0.4 * 12.0 / 0.3;
-    assert!((r.final_state.t - t_stop).abs() < 1e-12, "{}", r.final_state.t);
+    assert!(
+        (r.final_state.t - t_stop).abs() < 1e-12,
+        "{}",
+        r.final_state.t
+    );
     // turned through ω₀ t/2
     assert!((r.final_state.y[0] - 6.0 * t_stop).abs() < 1e-10);
 }

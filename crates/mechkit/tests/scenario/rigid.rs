@@ -24,7 +24,10 @@ fn physical_pendulum_period_through_a_scenario() {
     let up: Vec<f64> = s.events.iter().map(|e| e.t).collect();
     assert_eq!(up.len(), 2, "{up:?}");
     let exact = 4.0 * (l * l / 3.0 / (g * l / 2.0)).sqrt() * elliptic_k((PI / 3.0).sin()).unwrap();
-    assert!(((up[1] - up[0]) - exact).abs() < 1e-9 * exact, "{up:?} vs {exact}");
+    assert!(
+        ((up[1] - up[0]) - exact).abs() < 1e-9 * exact,
+        "{up:?} vs {exact}"
+    );
     assert!(s.observables["energy_drift"].abs() < 1e-11);
     assert!((s.observables["theta_max"] - 2.0 * PI / 3.0).abs() < 1e-15);
 }
@@ -35,7 +38,11 @@ fn physical_pendulum_period_through_a_scenario() {
 fn atwood_machine_through_a_scenario() {
     let s = run("atwood_massive_pulley.toml");
     let a = 2.0 * 9.81 / 5.0;
-    assert!((s.observables["a"] - a).abs() < 1e-12, "{}", s.observables["a"]);
+    assert!(
+        (s.observables["a"] - a).abs() < 1e-12,
+        "{}",
+        s.observables["a"]
+    );
     assert!((s.observables["drop"] - 0.5 * a).abs() < 1e-12);
     assert!(s.energy.end.abs() < 1e-9, "{}", s.energy.end);
 }
@@ -47,7 +54,7 @@ fn atwood_machine_through_a_scenario() {
 fn flywheel_stops_at_the_closed_form_time() {
     let s = run("flywheel_spin_down.toml");
     let i = 0.5 * 40.0 * 0.25 * 0.25;
-    let (tau, b, w0): (f64, f64, f64) = (0.8, 2e-4, 314.159265);
+    let (tau, b, w0): (f64, f64, f64) = (0.8, 2e-4, 314.159_265);
     let t_stop = i / b * (1.0 + b * w0 / tau).ln();
     assert_eq!(s.stop_reason, "event");
     let t = s.observables["spin_down_time"];
@@ -110,7 +117,10 @@ fn rigid_body_errors_are_located() {
         "kind = \"torsion-spring\"\nkappa = \"-2 N*m\"",
     ));
     assert!(e.to_string().contains("must not be negative"), "{e}");
-    let e = error(&with("kind = \"gravity\"", "kind = \"friction\"\ntorque = \"1 N*m\""));
+    let e = error(&with(
+        "kind = \"gravity\"",
+        "kind = \"friction\"\ntorque = \"1 N*m\"",
+    ));
     assert!(e.to_string().contains("starts at rest"), "{e}");
     let e = error(&with(
         "kind = \"gravity\"",
@@ -138,8 +148,16 @@ fn torque_formula_equals_the_built_in_friction() {
         "[[torque]]\nkind = \"gravity\"\n[[torque]]\nname = \"damper\"\nkind = \"friction\"\nb = \"0.05 N*m*s\"",
     );
     let formula = format!("[constants]\nc = \"0.05 N*m*s\"\n{formula}");
-    let a = Scenario::from_str("a.toml", &formula).unwrap().run().unwrap().summary;
-    let b = Scenario::from_str("b.toml", &built_in).unwrap().run().unwrap().summary;
+    let a = Scenario::from_str("a.toml", &formula)
+        .unwrap()
+        .run()
+        .unwrap()
+        .summary;
+    let b = Scenario::from_str("b.toml", &built_in)
+        .unwrap()
+        .run()
+        .unwrap()
+        .summary;
     assert_eq!(a.bodies["wheel"].position, b.bodies["wheel"].position);
     assert!(a.work["damper"] < 0.0);
     assert!((a.work["damper"] - b.work["damper"]).abs() < 1e-15);

@@ -81,7 +81,14 @@ impl HingedBody {
         let moment = props.moment_about_axis(&pivot, &axis)?;
         // the size of the body: its radius of gyration about the centre of mass
         let size = (props.inertia.trace() / (2.0 * props.mass)).max(0.0).sqrt();
-        HingedBody::build(name, props.mass, moment, props.centre_of_mass - pivot, axis, size)
+        HingedBody::build(
+            name,
+            props.mass,
+            moment,
+            props.centre_of_mass - pivot,
+            axis,
+            size,
+        )
     }
 
     /// A body given by its mass, moment of inertia about the axis through the pivot, and the

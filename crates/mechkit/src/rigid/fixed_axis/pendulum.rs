@@ -11,7 +11,7 @@ use crate::Real;
 /// modulus `k` (`|k| < 1`), by the arithmetic-geometric mean: `K = π / (2 AGM(1, √(1-k²)))`.
 /// Converges quadratically; exact to rounding. `None` for `|k| ≥ 1`.
 pub fn elliptic_k(k: Real) -> Option<Real> {
-    if !(k.abs() < 1.0) {
+    if k.is_nan() || k.abs() >= 1.0 {
         return None;
     }
     let (mut a, mut b) = (1.0, (1.0 - k * k).sqrt());
@@ -37,8 +37,7 @@ pub fn small_angle_period(body: &HingedBody, g: Real) -> Option<Real> {
 /// or an amplitude of π or more, which goes over the top).
 pub fn period(body: &HingedBody, g: Real, amplitude: Real) -> Option<Real> {
     let t0 = small_angle_period(body, g)?;
-    Some(t0 * 2.0 / PI * elliptic_k((0.5 * amplitude).sin())?)
-        .filter(|_| amplitude.abs() < PI)
+    Some(t0 * 2.0 / PI * elliptic_k((0.5 * amplitude).sin())?).filter(|_| amplitude.abs() < PI)
 }
 
 #[cfg(test)]

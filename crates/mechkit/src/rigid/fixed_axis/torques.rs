@@ -274,7 +274,13 @@ pub struct HangingWeight {
 }
 
 impl HangingWeight {
-    pub(crate) fn new(name: impl Into<String>, body: usize, mass: Real, radius: Real, g: Real) -> Self {
+    pub(crate) fn new(
+        name: impl Into<String>,
+        body: usize,
+        mass: Real,
+        radius: Real,
+        g: Real,
+    ) -> Self {
         HangingWeight {
             name: name.into(),
             body,

@@ -1,40 +1,22 @@
-//! `[[rigid_body]]` and `[[torque]]`: rigid bodies hinged to the world, each turning about a
-//! fixed axis, and the torques on them. A scenario with rigid bodies is run in angle
-//! coordinates ([`crate::particles::Coordinates::Angle`]): formulas use `theta`, `omega`,
-//! `alpha`, `I` instead of `x`, `v`, `a`, `m`.
-
-use std::path::Path;
+//! `[[torque]]`: the torques on hinged rigid bodies, one builder per kind.
 
 use mechkit_expr::Formula;
 use mechkit_expr::units::Dimension;
 use toml::de::DeValue;
 
-use super::bodyfile::geometry::{direction, points};
-use super::bodyfile::{BodyFile, part};
-use super::doc::{Table, string_list};
-use super::error::{ErrorKind, ScenarioError};
-use super::values::{Constant, ValueEnv, formula_error, required_scalar, scalar};
 use crate::Real;
 use crate::forces::{ExpressionForce, Force};
-use crate::mass::{Body, MassProperties, Vec3};
+use crate::mass::Vec3;
 use crate::particles::{BodyRef, Coordinates, NameContext, VarLevel};
-use crate::rigid::fixed_axis::HingedBody;
 use crate::rigid::fixed_axis::torques::{
     AttachedSpring, ConstantTorque, FrictionLaw, FrictionTorque, TorsionSpring,
 };
+use crate::scenario::bodyfile::geometry::points;
+use crate::scenario::doc::{Table, string_list};
+use crate::scenario::error::{ErrorKind, ScenarioError};
+use crate::scenario::values::{Constant, ValueEnv, formula_error, required_scalar, scalar};
 
-const RIGID_KEYS: &[&str] = &[
-    "name",
-    "part",
-    "body",
-    "mass",
-    "inertia",
-    "centre_of_mass",
-    "pivot",
-    "axis",
-    "theta",
-    "omega",
-];
+use super::bodies::RigidBodies;
 
 /// The torque kinds and the parameters each takes (besides `name`, `kind`, `on`).
 pub(crate) const TORQUE_KINDS: &[(&str, &[&str], &str)] = &[
@@ -70,160 +52,6 @@ pub(crate) const TORQUE_KINDS: &[(&str, &[&str], &str)] = &[
     ),
 ];
 
-/// The rigid bodies of a scenario, read.
-pub(crate) struct RigidBodies {
-    pub bodies: Vec<HingedBody>,
-    pub names: Vec<String>,
-    pub theta: Vec<Real>,
-    pub omega: Vec<Real>,
-    pub pivots: Vec<Vec3>,
-    pub warnings: Vec<String>,
-    /// Bodies with dry bearing friction: (body, direction of turning, torque name).
-    pub dry: Vec<(usize, Real, String)>,
-}
-
-/// Reads every `[[rigid_body]]`; `dir` is where body files are looked for.
-pub(crate) fn read_rigid_bodies(
-    tables: &[Table<'_, '_>],
-    constants: &[Constant],
-    dir: Option<&Path>,
-) -> Result<RigidBodies, ScenarioError> {
-    let env = ValueEnv {
-        constants,
-        mass: None,
-        later: &[],
-    };
-    let mut out = RigidBodies {
-        bodies: Vec::new(),
-        names: Vec::new(),
-        theta: Vec::new(),
-        omega: Vec::new(),
-        pivots: Vec::new(),
-        warnings: Vec::new(),
-        dry: Vec::new(),
-    };
-    for (i, t) in tables.iter().enumerate() {
-        t.check_keys(RIGID_KEYS)?;
-        let name = match t.string("name")? {
-            Some((n, span)) => {
-                let valid = n
-                    .chars()
-                    .next()
-                    .is_some_and(|c| c.is_alphabetic() || c == '_')
-                    && n.chars().all(|c| c.is_alphanumeric() || c == '_');
-                if !valid || out.names.iter().any(|b| b == n) {
-                    return Err(t.src.error(
-                        ErrorKind::Invalid,
-                        if valid {
-                            format!("two rigid bodies are named `{n}`")
-                        } else {
-                            format!("rigid body name `{n}` must be a letter or `_` followed by letters, digits or `_` (formulas use it as `{n}.theta`)")
-                        },
-                        span,
-                    ));
-                }
-                n.to_string()
-            }
-            None if tables.len() == 1 => "body".to_string(),
-            None => format!("body{}", i + 1),
-        };
-        let pivot = if t.get("pivot").is_some() {
-            points(t, "pivot", env, 1, 3)?[0]
-        } else {
-            Vec3::zeros()
-        };
-        let axis = if t.get("axis").is_some() {
-            direction(t, "axis", env)?
-        } else {
-            Vec3::z()
-        };
-        let located = |e: crate::rigid::fixed_axis::FixedAxisError, key: &str| {
-            let span = t.get(key).map_or_else(|| t.span.clone(), |v| v.span());
-            t.src
-                .error(ErrorKind::Invalid, e.to_string(), span)
-                .with_hint("the axis must pass beside the body's mass: choose another `axis` or `pivot`, or check the shape's orientation")
-        };
-        let body = if t.get("inertia").is_some() {
-            for key in ["part", "body"] {
-                if t.get(key).is_some() {
-                    return Err(t.src.error(ErrorKind::Invalid, format!("`{key}` and `inertia` both describe the body's mass distribution"), t.key_span(key)).with_hint("give either parts or a body file (the inertia is computed), or `mass`, `inertia` about the axis and `centre_of_mass`"));
-                }
-            }
-            let mass = required_scalar(t, "mass", Dimension::MASS, env)?;
-            let moment = required_scalar(t, "inertia", Dimension::MOMENT_OF_INERTIA, env)?;
-            let cm = if t.get("centre_of_mass").is_some() {
-                points(t, "centre_of_mass", env, 1, 3)?[0]
-            } else {
-                Vec3::zeros()
-            };
-            HingedBody::from_moment(name.clone(), mass, moment, cm - pivot, axis)
-                .map_err(|e| located(e, "inertia"))?
-        } else {
-            for key in ["mass", "centre_of_mass"] {
-                if t.get(key).is_some() {
-                    return Err(t.src.error(ErrorKind::Invalid, format!("`{key}` belongs with `inertia`; with parts or a body file the mass is theirs"), t.key_span(key)));
-                }
-            }
-            let props = mass_properties(t, env, dir)?;
-            HingedBody::new(name.clone(), &props, pivot, axis).map_err(|e| located(e, "axis"))?
-        };
-        if let Some(w) = body.pivot_warning() {
-            out.warnings.push(w);
-        }
-        out.theta
-            .push(scalar(t, "theta", Dimension::NONE, env)?.unwrap_or(0.0));
-        out.omega
-            .push(scalar(t, "omega", Dimension::FREQUENCY, env)?.unwrap_or(0.0));
-        out.names.push(name);
-        out.bodies.push(body);
-        out.pivots.push(pivot);
-    }
-    Ok(out)
-}
-
-fn mass_properties(
-    t: &Table<'_, '_>,
-    env: ValueEnv<'_>,
-    dir: Option<&Path>,
-) -> Result<MassProperties, ScenarioError> {
-    let body = match (t.get("part"), t.string("body")?) {
-        (Some(_), Some((_, span))) => {
-            return Err(t.src.error(
-                ErrorKind::Invalid,
-                "a rigid body has either `[[rigid_body.part]]` tables or a `body` file, not both",
-                span,
-            ));
-        }
-        (Some(_), None) => {
-            let parts = t.tables("part")?;
-            let mut list = Vec::new();
-            for (i, p) in parts.iter().enumerate() {
-                list.push(part(p, i, env, None, dir)?);
-            }
-            Body::new(list)
-        }
-        (None, Some((file, span))) => {
-            let path = dir.map_or_else(|| Path::new(file).to_path_buf(), |d| d.join(file));
-            BodyFile::load(&path)
-                .map_err(|e| {
-                    t.src
-                        .error(ErrorKind::Invalid, format!("body file `{file}`: {e}"), span)
-                        .with_hint("the body file's path is relative to the scenario file")
-                })?
-                .body
-        }
-        (None, None) => {
-            return Err(t
-                .missing("part", "[[rigid_body.part]]")
-                .with_hint("describe the body by `[[rigid_body.part]]` tables (shape, dimensions, mass: as in a body file), a `body = \"file.toml\"`, or `mass`, `inertia` (about the axis) and `centre_of_mass`"));
-        }
-    };
-    body.properties().map_err(|e| {
-        t.src
-            .error(ErrorKind::Invalid, format!("the rigid body: {e}"), t.span.clone())
-    })
-}
-
 /// Reads every `[[torque]]`; hanging weights add their `m r²` to their body.
 pub(crate) fn read_torques(
     tables: &[Table<'_, '_>],
@@ -243,8 +71,7 @@ pub(crate) fn read_torques(
                 kinds().join(", ")
             ))
         })?;
-        let Some((kind, params, _)) = TORQUE_KINDS.iter().find(|(k, _, _)| *k == kind_text)
-        else {
+        let Some((kind, params, _)) = TORQUE_KINDS.iter().find(|(k, _, _)| *k == kind_text) else {
             return Err(t
                 .src
                 .error(
@@ -268,7 +95,11 @@ pub(crate) fn read_torques(
                 n.to_string()
             }
             None if index == 0 => kind.split('-').next_back().unwrap_or(kind).to_string(),
-            None => format!("{}{}", kind.split('-').next_back().unwrap_or(kind), index + 1),
+            None => format!(
+                "{}{}",
+                kind.split('-').next_back().unwrap_or(kind),
+                index + 1
+            ),
         };
         let targets = match string_list(t, "on")? {
             None => (0..rigid.bodies.len()).collect(),
@@ -277,7 +108,11 @@ pub(crate) fn read_torques(
                 for (n, span) in list {
                     let b = rigid.names.iter().position(|b| b == n).ok_or_else(|| {
                         t.src
-                            .error(ErrorKind::Invalid, format!("no rigid body is named `{n}`"), span)
+                            .error(
+                                ErrorKind::Invalid,
+                                format!("no rigid body is named `{n}`"),
+                                span,
+                            )
                             .with_hint(format!("the rigid bodies are: {}", rigid.names.join(", ")))
                     })?;
                     v.push(b);
@@ -302,7 +137,12 @@ fn kinds() -> Vec<&'static str> {
     TORQUE_KINDS.iter().map(|(k, _, _)| *k).collect()
 }
 
-fn non_negative(t: &Table<'_, '_>, key: &str, value: Real, what: &str) -> Result<Real, ScenarioError> {
+fn non_negative(
+    t: &Table<'_, '_>,
+    key: &str,
+    value: Real,
+    what: &str,
+) -> Result<Real, ScenarioError> {
     if value >= 0.0 && value.is_finite() {
         Ok(value)
     } else {
@@ -328,7 +168,10 @@ fn torque(
             let g = gravity_vector(t, env)?;
             let axis = body.axis();
             if (g - axis * axis.dot(&g)).norm() <= 1e-12 * g.norm() {
-                rigid.warnings.push(format!("gravity is along the axis of `{}`: it exerts no torque", body.name()));
+                rigid.warnings.push(format!(
+                    "gravity is along the axis of `{}`: it exerts no torque",
+                    body.name()
+                ));
             }
             Box::new(body.gravity(name, b, g))
         }
@@ -375,12 +218,7 @@ fn torque(
                 ))
             }
             (None, Some(_)) => {
-                let c = required_scalar(
-                    t,
-                    "b",
-                    Dimension::ENERGY * Dimension::TIME,
-                    env,
-                )?;
+                let c = required_scalar(t, "b", Dimension::ENERGY * Dimension::TIME, env)?;
                 let c = non_negative(t, "b", c, "the friction coefficient")?;
                 Box::new(FrictionTorque::new(name, b, FrictionLaw::Viscous(c)))
             }
@@ -397,7 +235,10 @@ fn torque(
             let g = scalar(t, "g", Dimension::ACCELERATION, env)?.unwrap_or(9.81);
             let w = rigid.bodies[b]
                 .hang(name, b, mass, radius, g)
-                .map_err(|e| t.src.error(ErrorKind::Invalid, e.to_string(), t.key_span("mass")))?;
+                .map_err(|e| {
+                    t.src
+                        .error(ErrorKind::Invalid, e.to_string(), t.key_span("mass"))
+                })?;
             Box::new(w)
         }
         _ => unreachable!("kind {kind} is listed in TORQUE_KINDS"),
@@ -417,14 +258,18 @@ fn reads_state(f: &Formula, rigid: &RigidBodies, constants: &[Constant]) -> bool
             return false;
         }
         let field = n.rsplit_once('.').map_or(*n, |(b, f)| {
-            if rigid.names.iter().any(|r| r == b) { f } else { "" }
+            if rigid.names.iter().any(|r| r == b) {
+                f
+            } else {
+                ""
+            }
         });
         ["t", "theta", "omega", "I"].contains(&field)
     })
 }
 
 fn gravity_vector(t: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<Vec3, ScenarioError> {
-    match t.get("g").map(|v| v.get_ref()) {
+    match t.get("g").map(toml::Spanned::get_ref) {
         None => Ok(Vec3::new(0.0, -9.81, 0.0)),
         Some(DeValue::Array(items)) => {
             if !(2..=3).contains(&items.len()) {
@@ -432,7 +277,13 @@ fn gravity_vector(t: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<Vec3, Scenario
             }
             let mut g = Vec3::zeros();
             for (k, item) in items.iter().enumerate() {
-                g[k] = super::values::resolve(&t.src, "g", item, Dimension::ACCELERATION, env)?;
+                g[k] = crate::scenario::values::resolve(
+                    &t.src,
+                    "g",
+                    item,
+                    Dimension::ACCELERATION,
+                    env,
+                )?;
             }
             Ok(g)
         }
@@ -450,7 +301,9 @@ fn applied(
     rigid: &RigidBodies,
     env: ValueEnv<'_>,
 ) -> Result<Box<dyn Force>, ScenarioError> {
-    let v = t.get("torque").ok_or_else(|| t.missing("torque", "\"2 N*m\""))?;
+    let v = t
+        .get("torque")
+        .ok_or_else(|| t.missing("torque", "\"2 N*m\""))?;
     if let DeValue::String(text) = v.get_ref()
         && let Ok(f) = Formula::parse(text)
         && reads_state(&f, rigid, env.constants)

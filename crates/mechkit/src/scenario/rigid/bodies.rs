@@ -1,0 +1,186 @@
+//! `[[rigid_body]]`: a body (parts, a body file, or mass and moment) hinged at a pivot about
+//! an axis, with its initial angle and angular velocity.
+use std::path::Path;
+
+use mechkit_expr::units::Dimension;
+
+use crate::Real;
+use crate::mass::{Body, MassProperties, Vec3};
+use crate::rigid::fixed_axis::HingedBody;
+use crate::scenario::bodyfile::geometry::{direction, points};
+use crate::scenario::bodyfile::{BodyFile, part};
+use crate::scenario::doc::Table;
+use crate::scenario::error::{ErrorKind, ScenarioError};
+use crate::scenario::values::{Constant, ValueEnv, required_scalar, scalar};
+
+const RIGID_KEYS: &[&str] = &[
+    "name",
+    "part",
+    "body",
+    "mass",
+    "inertia",
+    "centre_of_mass",
+    "pivot",
+    "axis",
+    "theta",
+    "omega",
+];
+
+/// The rigid bodies of a scenario, read.
+pub(crate) struct RigidBodies {
+    pub bodies: Vec<HingedBody>,
+    pub names: Vec<String>,
+    pub theta: Vec<Real>,
+    pub omega: Vec<Real>,
+    pub pivots: Vec<Vec3>,
+    pub warnings: Vec<String>,
+    /// Bodies with dry bearing friction: (body, direction of turning, torque name).
+    pub dry: Vec<(usize, Real, String)>,
+}
+
+/// Reads every `[[rigid_body]]`; `dir` is where body files are looked for.
+pub(crate) fn read_rigid_bodies(
+    tables: &[Table<'_, '_>],
+    constants: &[Constant],
+    dir: Option<&Path>,
+) -> Result<RigidBodies, ScenarioError> {
+    let env = ValueEnv {
+        constants,
+        mass: None,
+        later: &[],
+    };
+    let mut out = RigidBodies {
+        bodies: Vec::new(),
+        names: Vec::new(),
+        theta: Vec::new(),
+        omega: Vec::new(),
+        pivots: Vec::new(),
+        warnings: Vec::new(),
+        dry: Vec::new(),
+    };
+    for (i, t) in tables.iter().enumerate() {
+        t.check_keys(RIGID_KEYS)?;
+        let name = match t.string("name")? {
+            Some((n, span)) => {
+                let valid = n
+                    .chars()
+                    .next()
+                    .is_some_and(|c| c.is_alphabetic() || c == '_')
+                    && n.chars().all(|c| c.is_alphanumeric() || c == '_');
+                if !valid || out.names.iter().any(|b| b == n) {
+                    return Err(t.src.error(
+                        ErrorKind::Invalid,
+                        if valid {
+                            format!("two rigid bodies are named `{n}`")
+                        } else {
+                            format!("rigid body name `{n}` must be a letter or `_` followed by letters, digits or `_` (formulas use it as `{n}.theta`)")
+                        },
+                        span,
+                    ));
+                }
+                n.to_string()
+            }
+            None if tables.len() == 1 => "body".to_string(),
+            None => format!("body{}", i + 1),
+        };
+        let pivot = if t.get("pivot").is_some() {
+            points(t, "pivot", env, 1, 3)?[0]
+        } else {
+            Vec3::zeros()
+        };
+        let axis = if t.get("axis").is_some() {
+            direction(t, "axis", env)?
+        } else {
+            Vec3::z()
+        };
+        let located = |e: crate::rigid::fixed_axis::FixedAxisError, key: &str| {
+            let span = t
+                .get(key)
+                .map_or_else(|| t.span.clone(), toml::Spanned::span);
+            t.src
+                .error(ErrorKind::Invalid, e.to_string(), span)
+                .with_hint("the axis must pass beside the body's mass: choose another `axis` or `pivot`, or check the shape's orientation")
+        };
+        let body = if t.get("inertia").is_some() {
+            for key in ["part", "body"] {
+                if t.get(key).is_some() {
+                    return Err(t.src.error(ErrorKind::Invalid, format!("`{key}` and `inertia` both describe the body's mass distribution"), t.key_span(key)).with_hint("give either parts or a body file (the inertia is computed), or `mass`, `inertia` about the axis and `centre_of_mass`"));
+                }
+            }
+            let mass = required_scalar(t, "mass", Dimension::MASS, env)?;
+            let moment = required_scalar(t, "inertia", Dimension::MOMENT_OF_INERTIA, env)?;
+            let cm = if t.get("centre_of_mass").is_some() {
+                points(t, "centre_of_mass", env, 1, 3)?[0]
+            } else {
+                Vec3::zeros()
+            };
+            HingedBody::from_moment(name.clone(), mass, moment, cm - pivot, axis)
+                .map_err(|e| located(e, "inertia"))?
+        } else {
+            for key in ["mass", "centre_of_mass"] {
+                if t.get(key).is_some() {
+                    return Err(t.src.error(ErrorKind::Invalid, format!("`{key}` belongs with `inertia`; with parts or a body file the mass is theirs"), t.key_span(key)));
+                }
+            }
+            let props = mass_properties(t, env, dir)?;
+            HingedBody::new(name.clone(), &props, pivot, axis).map_err(|e| located(e, "axis"))?
+        };
+        if let Some(w) = body.pivot_warning() {
+            out.warnings.push(w);
+        }
+        out.theta
+            .push(scalar(t, "theta", Dimension::NONE, env)?.unwrap_or(0.0));
+        out.omega
+            .push(scalar(t, "omega", Dimension::FREQUENCY, env)?.unwrap_or(0.0));
+        out.names.push(name);
+        out.bodies.push(body);
+        out.pivots.push(pivot);
+    }
+    Ok(out)
+}
+
+fn mass_properties(
+    t: &Table<'_, '_>,
+    env: ValueEnv<'_>,
+    dir: Option<&Path>,
+) -> Result<MassProperties, ScenarioError> {
+    let body = match (t.get("part"), t.string("body")?) {
+        (Some(_), Some((_, span))) => {
+            return Err(t.src.error(
+                ErrorKind::Invalid,
+                "a rigid body has either `[[rigid_body.part]]` tables or a `body` file, not both",
+                span,
+            ));
+        }
+        (Some(_), None) => {
+            let parts = t.tables("part")?;
+            let mut list = Vec::new();
+            for (i, p) in parts.iter().enumerate() {
+                list.push(part(p, i, env, None, dir)?);
+            }
+            Body::new(list)
+        }
+        (None, Some((file, span))) => {
+            let path = dir.map_or_else(|| Path::new(file).to_path_buf(), |d| d.join(file));
+            BodyFile::load(&path)
+                .map_err(|e| {
+                    t.src
+                        .error(ErrorKind::Invalid, format!("body file `{file}`: {e}"), span)
+                        .with_hint("the body file's path is relative to the scenario file")
+                })?
+                .body
+        }
+        (None, None) => {
+            return Err(t
+                .missing("part", "[[rigid_body.part]]")
+                .with_hint("describe the body by `[[rigid_body.part]]` tables (shape, dimensions, mass: as in a body file), a `body = \"file.toml\"`, or `mass`, `inertia` (about the axis) and `centre_of_mass`"));
+        }
+    };
+    body.properties().map_err(|e| {
+        t.src.error(
+            ErrorKind::Invalid,
+            format!("the rigid body: {e}"),
+            t.span.clone(),
+        )
+    })
+}
