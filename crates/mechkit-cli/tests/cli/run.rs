@@ -132,7 +132,11 @@ fn json_flag_prints_the_summary_on_stdout() {
 fn check_accepts_every_example() {
     let dir = Dir::new();
     let mut files = Vec::new();
-    for sub in [examples(), examples().join("book")] {
+    for sub in [
+        examples(),
+        examples().join("book"),
+        examples().join("rigid"),
+    ] {
         for entry in std::fs::read_dir(&sub).expect("the examples directory exists") {
             let path = entry.expect("a directory entry").path();
             if path.extension().is_some_and(|e| e == "toml") {
@@ -203,4 +207,32 @@ fn a_closed_stdout_is_not_a_crash() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert_eq!(out.status.code(), Some(0), "{stderr}");
+}
+
+/// A hinged rigid body runs end to end: the CSV has the angle and angular velocity, the
+/// summary says `"coordinates": "angle"`, the text summary names theta and omega, and the
+/// plots (theta(t), omega(t), energy(t), omega(theta)) are written.
+#[test]
+fn rigid_body_scenario_runs_end_to_end() {
+    let dir = Dir::new();
+    let file = examples().join("rigid/physical_pendulum.toml");
+    let out = dir.run(&["run", file.to_str().unwrap(), "--out", "out"]);
+    out.assert_code(0);
+    assert!(out.stdout.contains("rod: theta"), "{}", out.stdout);
+    let csv = Csv::parse(&dir.read("out/trajectory.csv"));
+    let theta = csv.column("rod.theta");
+    let omega = csv.column("rod.omega");
+    assert!((csv.rows[0][theta] - 120f64.to_radians()).abs() < 1e-15);
+    assert_eq!(csv.rows[0][omega], 0.0);
+    let s = dir.read_json("out/summary.json");
+    assert_eq!(at(&s, "/coordinates"), "angle");
+    assert!((num(&s, "/bodies/rod/mass") - 0.336).abs() < 1e-14);
+    for plot in [
+        "theta_t.svg",
+        "omega_t.svg",
+        "energy_t.svg",
+        "omega_theta.svg",
+    ] {
+        assert!(dir.path().join("out").join(plot).exists(), "{plot}");
+    }
 }
