@@ -24,6 +24,8 @@ pub struct Observable {
     parts: Vec<(Reduction, StateExpr)>,
     outer: Program,
     dim: Dim,
+    /// In a scenario of hinged bodies, 1/s and 1/s² are angular rates: shown as rad/s, rad/s².
+    angular: bool,
 }
 
 impl Observable {
@@ -34,7 +36,14 @@ impl Observable {
 
     /// The SI unit of its value, where its dimension is known: `m`, `m/s`, `J`.
     pub fn unit(&self) -> Option<String> {
-        self.dim.known().map(unit_text)
+        let d = self.dim.known()?;
+        if self.angular && d == Dimension::FREQUENCY {
+            return Some("rad/s".into());
+        }
+        if self.angular && d == Dimension::FREQUENCY.powi(2) {
+            return Some("rad/s^2".into());
+        }
+        Some(unit_text(d))
     }
 
     /// The reductions it combines.
@@ -61,6 +70,7 @@ impl Observable {
                 parts: vec![(Reduction::Final, expr)],
                 outer: Formula::parse("_r0")?.compile(&MapScope::new().slot("_r0", 0))?,
                 dim: f.dimension_with(&dim_of, &value_of)?,
+                angular: names.coordinates == crate::particles::Coordinates::Angle,
             });
         }
         let mut outer_text = text.to_string();
@@ -119,6 +129,7 @@ impl Observable {
             parts,
             outer,
             dim,
+            angular: names.coordinates == crate::particles::Coordinates::Angle,
         })
     }
 
