@@ -56,7 +56,10 @@ fn incline_marginal_angle_and_acceleration() {
         let c = Coulomb::new(mu_s, mu_d).unwrap();
         let alpha_c = c.marginal_angle();
         assert!((alpha_c.tan() - mu_s).abs() < 1e-15);
-        for (alpha, slides) in [(alpha_c * (1.0 - 1e-9), false), (alpha_c * (1.0 + 1e-9), true)] {
+        for (alpha, slides) in [
+            (alpha_c * (1.0 - 1e-9), false),
+            (alpha_c * (1.0 + 1e-9), true),
+        ] {
             let r = Incline::new(3.0, alpha, c).unwrap().at_rest().unwrap();
             assert_eq!(r.slides, slides, "μs = {mu_s}, α = {alpha}");
             assert!((r.normal - 3.0 * 9.81 * alpha.cos()).abs() < 1e-13);
@@ -118,7 +121,11 @@ fn earthquake_model_stick_and_slip_at_the_closed_form_times() {
     assert!(e_stick < 1e-12 && e_slip < 1e-10 && e_period < 1e-10 && e_shape < 1e-9);
     // in the steady cycle every slip covers the same distance
     let d0 = slips[1].slip_distance;
-    assert!(slips[1..].iter().all(|p| (p.slip_distance - d0).abs() < 1e-10 * d0));
+    assert!(
+        slips[1..]
+            .iter()
+            .all(|p| (p.slip_distance - d0).abs() < 1e-10 * d0)
+    );
 }
 
 #[test]
@@ -146,7 +153,10 @@ fn block_on_a_belt_each_slip_is_the_harmonic_solution() {
                 assert!((p.end.1 - mu_s * n / k).abs() < 1e-12);
             }
             Regime::Slip { direction } if p.ended == PhaseEnd::Switch => {
-                assert_eq!(direction, -1.0, "the block slides back relative to the belt");
+                assert_eq!(
+                    direction, -1.0,
+                    "the block slides back relative to the belt"
+                );
                 count += 1;
                 let t = block.exact_slip_end(p.start, direction).unwrap();
                 worst_end = worst_end.max((p.end.0 - t).abs());
@@ -161,7 +171,9 @@ fn block_on_a_belt_each_slip_is_the_harmonic_solution() {
         }
     }
     let e_shape = worst_slip_deviation(&block, &run);
-    println!("belt: {count} slips, switch times within {worst_end:.1e} s, slip motion {e_shape:.1e}");
+    println!(
+        "belt: {count} slips, switch times within {worst_end:.1e} s, slip motion {e_shape:.1e}"
+    );
     assert!(count >= 3 && worst_end < 1e-11 && e_shape < 1e-9);
 }
 
@@ -230,7 +242,11 @@ fn energy_ledger_closes_and_heat_only_grows() {
         assert!(l.residual.abs() < 1e-11 * scale.max(1.0), "{l:?}");
         assert!((l.work_friction - (l.work_belt - l.heat)).abs() < 1e-15 * scale.max(1.0));
         assert!(l.heat > 0.0);
-        assert!(run.samples.windows(2).all(|w| w[1].heat >= w[0].heat - 1e-15));
+        assert!(
+            run.samples
+                .windows(2)
+                .all(|w| w[1].heat >= w[0].heat - 1e-15)
+        );
         // sticking the block moves with the belt and static friction balances the spring
         for s in run.samples.iter().filter(|s| s.stuck) {
             assert_eq!(s.v, block.belt_speed);

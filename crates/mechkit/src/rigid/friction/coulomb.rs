@@ -298,8 +298,14 @@ mod tests {
     fn the_marginal_angle_separates_rest_from_sliding() {
         let c = Coulomb::new(0.5, 0.3).unwrap();
         let alpha = c.marginal_angle();
-        let below = Incline::new(1.0, alpha - 1e-9, c).unwrap().at_rest().unwrap();
-        let above = Incline::new(1.0, alpha + 1e-9, c).unwrap().at_rest().unwrap();
+        let below = Incline::new(1.0, alpha - 1e-9, c)
+            .unwrap()
+            .at_rest()
+            .unwrap();
+        let above = Incline::new(1.0, alpha + 1e-9, c)
+            .unwrap()
+            .at_rest()
+            .unwrap();
         assert!(!below.slides && above.slides);
         assert_eq!(below.acceleration, 0.0);
         // just above the marginal angle the block accelerates at g (sin α − μd cos α) > 0

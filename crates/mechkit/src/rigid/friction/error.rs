@@ -38,9 +38,7 @@ pub enum FrictionError {
         expected: &'static str,
     },
     /// An incline angle outside −90° … 90°.
-    #[error(
-        "the incline angle is {degrees}°; it must be between -90° and 90° (0 is a flat floor)"
-    )]
+    #[error("the incline angle is {degrees}°; it must be between -90° and 90° (0 is a flat floor)")]
     Angle {
         /// The angle in degrees.
         degrees: Real,

@@ -112,7 +112,9 @@ impl Motion<'_> {
         match self.regime {
             // the surface moves steadily: no acceleration relative to it, f balances F_s
             Regime::Stick => -self.block.spring_force(t, x),
-            Regime::Slip { direction } => -direction * self.block.friction.dynamic(self.block.normal()),
+            Regime::Slip { direction } => {
+                -direction * self.block.friction.dynamic(self.block.normal())
+            }
         }
     }
 }
