@@ -10,10 +10,18 @@ pub struct FrictionArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub mass: String,
     /// Static friction coefficient μs.
-    #[arg(long = "mu-s", allow_hyphen_values = true, required_unless_present = "mu")]
+    #[arg(
+        long = "mu-s",
+        allow_hyphen_values = true,
+        required_unless_present = "mu"
+    )]
     pub mu_s: Option<String>,
     /// Dynamic (kinetic) friction coefficient μd.
-    #[arg(long = "mu-d", allow_hyphen_values = true, required_unless_present = "mu")]
+    #[arg(
+        long = "mu-d",
+        allow_hyphen_values = true,
+        required_unless_present = "mu"
+    )]
     pub mu_d: Option<String>,
     /// One coefficient for both, μs = μd.
     #[arg(long, allow_hyphen_values = true, conflicts_with_all = ["mu_s", "mu_d"])]

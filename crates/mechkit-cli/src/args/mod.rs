@@ -7,11 +7,11 @@ use clap::{Parser, Subcommand};
 mod friction;
 mod mechanics;
 mod roll;
+pub use friction::FrictionArgs;
 pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
     RocketArgs, WorkArgs,
 };
-pub use friction::FrictionArgs;
 pub use roll::RollArgs;
 
 const EXAMPLES: &str = r#"Examples:

@@ -44,7 +44,9 @@ pub(super) fn coefficients(
         _ => bail!("give the friction coefficients: --mu-s and --mu-d, or --mu for both"),
     };
     let c = Coulomb::new(s, d).map_err(|e| match &e {
-        FrictionError::Coefficient { which: "static", .. } => anyhow!("{}: {e}", flags.0),
+        FrictionError::Coefficient {
+            which: "static", ..
+        } => anyhow!("{}: {e}", flags.0),
         _ => anyhow!("{}: {e}", flags.1),
     })?;
     if let Some(w) = c.warning() {
@@ -84,7 +86,11 @@ pub(super) fn sig(x: f64) -> String {
     } else {
         &text
     };
-    if text == "-0" { "0".to_string() } else { text.to_string() }
+    if text == "-0" {
+        "0".to_string()
+    } else {
+        text.to_string()
+    }
 }
 
 fn optional(text: Option<&str>, flag: &str, dim: Dimension, default: f64) -> Result<f64> {
@@ -110,7 +116,11 @@ fn flag(e: &FrictionError) -> &'static str {
 }
 
 pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
-    let c = coefficients(args.mu.as_deref(), args.mu_s.as_deref(), args.mu_d.as_deref())?;
+    let c = coefficients(
+        args.mu.as_deref(),
+        args.mu_s.as_deref(),
+        args.mu_d.as_deref(),
+    )?;
     let mass = quantity(&args.mass, "--mass", Dimension::MASS)?;
     let g = optional(args.g.as_deref(), "--g", Dimension::ACCELERATION, 9.81)?;
     let alpha = angle(args.angle.as_deref(), "--angle")?;
@@ -119,7 +129,12 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
         .map_err(with_flag)?
         .with_gravity(g)
         .with_loads(
-            optional(args.normal_load.as_deref(), "--normal-load", Dimension::FORCE, 0.0)?,
+            optional(
+                args.normal_load.as_deref(),
+                "--normal-load",
+                Dimension::FORCE,
+                0.0,
+            )?,
             optional(args.push.as_deref(), "--push", Dimension::FORCE, 0.0)?,
         );
     let report = incline.at_rest().map_err(with_flag)?;
@@ -151,7 +166,11 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
             .map_err(with_flag)?
             .with_gravity(g)
             .on_belt(opt(&args.belt_speed, "--belt-speed", Dimension::VELOCITY)?)
-            .driven(opt(&args.anchor_speed, "--anchor-speed", Dimension::VELOCITY)?)
+            .driven(opt(
+                &args.anchor_speed,
+                "--anchor-speed",
+                Dimension::VELOCITY,
+            )?)
             .starting_at(
                 opt(&args.x0, "--x0", Dimension::LENGTH)?,
                 opt(&args.v0, "--v0", Dimension::VELOCITY)?,
@@ -379,8 +398,10 @@ fn stick_slip_text(out: &mut String, block: &SpringBlock, run: &StickSlipRun, ar
 }
 
 fn write_outputs(block: &SpringBlock, run: &StickSlipRun, dir: &Path) -> Result<()> {
-    std::fs::create_dir_all(dir).map_err(|e| anyhow!("--out: cannot create {}: {e}", dir.display()))?;
-    let mut csv = String::from("t,x,v,anchor,spring_force,friction,stuck,heat,work_belt,work_anchor\n");
+    std::fs::create_dir_all(dir)
+        .map_err(|e| anyhow!("--out: cannot create {}: {e}", dir.display()))?;
+    let mut csv =
+        String::from("t,x,v,anchor,spring_force,friction,stuck,heat,work_belt,work_anchor\n");
     for s in &run.samples {
         for (i, v) in [s.t, s.x, s.v, block.anchor(s.t), s.spring_force, s.friction]
             .into_iter()
@@ -399,7 +420,8 @@ fn write_outputs(block: &SpringBlock, run: &StickSlipRun, dir: &Path) -> Result<
         csv.push('\n');
     }
     let path = dir.join("stick_slip.csv");
-    write_atomic(&path, csv.as_bytes()).map_err(|e| anyhow!("cannot write {}: {e}", path.display()))?;
+    write_atomic(&path, csv.as_bytes())
+        .map_err(|e| anyhow!("cannot write {}: {e}", path.display()))?;
     let bands: Vec<Band> = run
         .phases
         .iter()

@@ -58,7 +58,11 @@ fn build(args: &RollArgs) -> Result<(RollingMotion, f64)> {
     if args.mu.is_none() && args.mu_s.is_none() {
         bail!("give the friction coefficient: --mu for both, or --mu-s and --mu-d");
     }
-    let friction = coefficients(args.mu.as_deref(), args.mu_s.as_deref(), args.mu_d.as_deref())?;
+    let friction = coefficients(
+        args.mu.as_deref(),
+        args.mu_s.as_deref(),
+        args.mu_d.as_deref(),
+    )?;
     let slope = angle(args.slope.as_deref(), "--slope")?;
     let opt = |t: &Option<String>, f: &str, d: Dimension, default: f64| {
         t.as_deref().map_or(Ok(default), |t| quantity(t, f, d))
@@ -213,15 +217,36 @@ fn text(m: &RollingMotion, run: &RollingRun, args: &RollArgs) -> String {
     }
     match (run.roll_start, m.roll_start()) {
         (Some((t, _, v, _)), Some((tc, vc))) => {
-            let _ = writeln!(out, "rolling starts      {:<22} {:<22} difference", "simulated", "closed form");
-            let _ = writeln!(out, "  time [s]          {t:<22.15} {tc:<22.15} {:+.1e}", t - tc);
-            let _ = writeln!(out, "  speed [m/s]       {v:<22.15} {vc:<22.15} {:+.1e}", v - vc);
+            let _ = writeln!(
+                out,
+                "rolling starts      {:<22} {:<22} difference",
+                "simulated", "closed form"
+            );
+            let _ = writeln!(
+                out,
+                "  time [s]          {t:<22.15} {tc:<22.15} {:+.1e}",
+                t - tc
+            );
+            let _ = writeln!(
+                out,
+                "  speed [m/s]       {v:<22.15} {vc:<22.15} {:+.1e}",
+                v - vc
+            );
         }
         (Some((t, _, v, _)), None) => {
-            let _ = writeln!(out, "rolling starts at t = {} s with v = {} m/s", sig(t), sig(v));
+            let _ = writeln!(
+                out,
+                "rolling starts at t = {} s with v = {} m/s",
+                sig(t),
+                sig(v)
+            );
         }
         (None, Some((tc, _))) if tc > run.samples.last().map_or(0.0, |s| s.t) => {
-            let _ = writeln!(out, "rolling would start at t = {} s, after --t-max", sig(tc));
+            let _ = writeln!(
+                out,
+                "rolling would start at t = {} s, after --t-max",
+                sig(tc)
+            );
         }
         _ => out.push_str("it never rolls\n"),
     }
@@ -263,7 +288,11 @@ fn text(m: &RollingMotion, run: &RollingRun, args: &RollArgs) -> String {
         sig(l.potential.1),
         sig(l.work_friction)
     );
-    let _ = writeln!(out, "  K + U - W_friction is constant to {:.1e} J", l.residual);
+    let _ = writeln!(
+        out,
+        "  K + U - W_friction is constant to {:.1e} J",
+        l.residual
+    );
     let s = run.stats;
     let _ = writeln!(
         out,
@@ -271,13 +300,18 @@ fn text(m: &RollingMotion, run: &RollingRun, args: &RollArgs) -> String {
         args.rtol, s.accepted, s.rejected, s.evaluations
     );
     if let Some(d) = &args.out {
-        let _ = writeln!(out, "files: {}/roll.csv, v(t).svg, energy(t).svg", d.display());
+        let _ = writeln!(
+            out,
+            "files: {}/roll.csv, v(t).svg, energy(t).svg",
+            d.display()
+        );
     }
     out
 }
 
 fn write_outputs(m: &RollingMotion, run: &RollingRun, dir: &Path) -> Result<()> {
-    std::fs::create_dir_all(dir).map_err(|e| anyhow!("--out: cannot create {}: {e}", dir.display()))?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| anyhow!("--out: cannot create {}: {e}", dir.display()))?;
     let r = m.body.radius;
     let energies = |s: &mechkit::rigid::rolling::RollSample| {
         let (kt, kr) = m.kinetic(s.v, s.omega);
@@ -289,9 +323,19 @@ fn write_outputs(m: &RollingMotion, run: &RollingRun, dir: &Path) -> Result<()> 
     for s in &run.samples {
         let (kt, kr, u) = energies(s);
         let row = [
-            s.t, s.x, s.v, s.theta, s.omega, s.omega * r, s.slip_velocity, s.friction,
+            s.t,
+            s.x,
+            s.v,
+            s.theta,
+            s.omega,
+            s.omega * r,
+            s.slip_velocity,
+            s.friction,
             if s.rolling { 1.0 } else { 0.0 },
-            s.work_friction, kt, kr, u,
+            s.work_friction,
+            kt,
+            kr,
+            u,
         ];
         for (i, v) in row.into_iter().enumerate() {
             if i > 0 {
@@ -302,12 +346,17 @@ fn write_outputs(m: &RollingMotion, run: &RollingRun, dir: &Path) -> Result<()> 
         csv.push('\n');
     }
     let path = dir.join("roll.csv");
-    write_atomic(&path, csv.as_bytes()).map_err(|e| anyhow!("cannot write {}: {e}", path.display()))?;
+    write_atomic(&path, csv.as_bytes())
+        .map_err(|e| anyhow!("cannot write {}: {e}", path.display()))?;
     let bands: Vec<Band> = run
         .phases
         .iter()
         .filter(|p| p.contact == Contact::Rolling)
-        .map(|p| Band { from: p.start.0, to: p.end.0, label: "rolling".to_string() })
+        .map(|p| Band {
+            from: p.start.0,
+            to: p.end.0,
+            label: "rolling".to_string(),
+        })
         .collect();
     let curve = |f: &dyn Fn(&mechkit::rigid::rolling::RollSample) -> f64| -> Vec<(f64, f64)> {
         run.samples.iter().map(|s| (s.t, f(s))).collect()
@@ -324,10 +373,13 @@ fn write_outputs(m: &RollingMotion, run: &RollingRun, dir: &Path) -> Result<()> 
             .with_series(Series::line("K_trans", curve(&|s| energies(s).0)))
             .with_series(Series::line("K_rot", curve(&|s| energies(s).1)))
             .with_series(Series::line("U", curve(&|s| energies(s).2)))
-            .with_series(Series::line("K + U", curve(&|s| {
-                let (kt, kr, u) = energies(s);
-                kt + kr + u
-            })))
+            .with_series(Series::line(
+                "K + U",
+                curve(&|s| {
+                    let (kt, kr, u) = energies(s);
+                    kt + kr + u
+                }),
+            ))
             .with_series(
                 Series::line("E0 + W_friction", curve(&|s| e0 + s.work_friction))
                     .styled(LineStyle::Dashed),
