@@ -24,8 +24,9 @@ fn flag(e: &RollingError) -> &'static str {
     match e {
         RollingError::NoRadius { .. } => "--radius",
         RollingError::Mass { .. } => "--mass",
-        RollingError::InertiaFactor { .. } | RollingError::UnknownBody { .. } => "--body",
-        RollingError::ShapeCannotRoll { .. } => "--body",
+        RollingError::InertiaFactor { .. }
+        | RollingError::UnknownBody { .. }
+        | RollingError::ShapeCannotRoll { .. } => "--body",
         RollingError::Angle { .. } => "--slope",
         RollingError::Gravity { .. } => "--g",
         RollingError::Invalid { what, .. } if what.contains("v0") => "--v0",

@@ -201,7 +201,7 @@ fn released_block_stops_after_whole_half_cycles() {
         .collect();
     assert_eq!(slips.len(), expected);
     for p in &slips {
-        assert!(((p.end.0 - p.start.0) - half).abs() < 1e-11, "{:?}", p);
+        assert!(((p.end.0 - p.start.0) - half).abs() < 1e-11, "{p:?}");
     }
     let last = run.phases.last().unwrap();
     assert_eq!(last.regime, Regime::Stick);
