@@ -176,8 +176,10 @@ impl SpringBlock {
     /// use approx::assert_relative_eq;
     /// use mechkit::ode::{AdaptiveConfig, Tolerance};
     /// use mechkit::rigid::friction::{Coulomb, Regime, SpringBlock};
-    /// // a block on a belt at 0.1 m/s, tied to a wall: stick-slip cycles
-    /// let block = SpringBlock::new(1.0, 100.0, Coulomb::new(0.6, 0.4)?)?.on_belt(0.1);
+    /// // a block moving with a belt at 0.1 m/s, tied to a wall: stick-slip cycles
+    /// let block = SpringBlock::new(1.0, 100.0, Coulomb::new(0.6, 0.4)?)?
+    ///     .on_belt(0.1)
+    ///     .starting_at(0.0, 0.1);
     /// let config = AdaptiveConfig { rtol: Tolerance::Scalar(1e-12), atol: Tolerance::Scalar(1e-14), ..Default::default() };
     /// let run = block.simulate(5.0, &config)?;
     /// assert_eq!(run.phases[0].regime, Regime::Stick);
