@@ -4,11 +4,15 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand};
 
+mod friction;
 mod mechanics;
+mod roll;
+pub use friction::FrictionArgs;
 pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
     RocketArgs, WorkArgs,
 };
+pub use roll::RollArgs;
 
 const EXAMPLES: &str = r#"Examples:
   mechkit run examples/feather.toml --out out/feather
@@ -34,6 +38,8 @@ const EXAMPLES: &str = r#"Examples:
   mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
   mechkit rocket --m0 "1000 kg" --m1 "400 kg" --mass-rate "10 kg/s" --exhaust-speed "2 km/s" --g "9.81 m/s^2" --coast
   mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
+  mechkit friction --mass "1 kg" --mu-s 0.6 --mu-d 0.4 --spring-k "100 N/m" --anchor-speed "5 cm/s" --t-max "8 s" --out out/quake
+  mechkit roll --body sphere --radius "11 cm" --mass "0.45 kg" --slope "20 deg" --mu 0.3 --v0 "2 m/s" --omega0 "-30 rad/s" --t-max "3 s"
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
 Scenario format: docs/scenario.md. Commands: docs/cli.md."#;
@@ -97,6 +103,13 @@ pub enum Command {
     /// The work ∫F dx from a data file (x, F columns; cumulative W(x)), or of a force field
     /// along a path (--field with --path or --through).
     Work(WorkArgs),
+    /// Coulomb friction on a flat or inclined surface: normal force, static and dynamic
+    /// friction, marginal angle, whether a block slides; with --spring-k, the stick-slip
+    /// spring-block model (a belt or a slowly pulled anchor) with CSV and plots.
+    Friction(FrictionArgs),
+    /// A sphere, cylinder or hoop on a slope with friction: when slipping turns into rolling
+    /// (simulated and closed form), the regimes, the energy ledger, CSV and plots.
+    Roll(RollArgs),
 }
 
 /// `mechkit diff`.

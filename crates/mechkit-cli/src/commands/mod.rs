@@ -7,11 +7,13 @@ mod collide;
 mod com;
 mod com_image;
 mod derive;
+mod friction;
 mod inertia;
 mod input;
 mod potential;
 mod power;
 mod rocket;
+mod roll;
 mod run;
 mod work;
 mod work_field;
@@ -46,6 +48,8 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Com(args) => com::com(&args),
         Command::Inertia(args) => inertia::inertia(&args),
         Command::Impulse(args) => work::impulse(&args),
+        Command::Friction(args) => friction::friction(&args),
+        Command::Roll(args) => roll::roll(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {

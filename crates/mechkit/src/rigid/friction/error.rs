@@ -1,0 +1,105 @@
+//! Why a friction model cannot be built or run.
+
+use thiserror::Error;
+
+use crate::Real;
+use crate::ode::{AdaptiveError, ConfigError};
+
+/// An invalid friction model, or a simulation of it that failed.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum FrictionError {
+    /// A friction coefficient that is negative or not finite.
+    #[error(
+        "the {which} friction coefficient is {value}; it must be zero or positive (a ratio of forces, typically 0.05 to 1.5)"
+    )]
+    Coefficient {
+        /// `static` or `dynamic`.
+        which: &'static str,
+        /// The value.
+        value: Real,
+    },
+    /// A parameter that must be positive and finite (a mass, a spring constant).
+    #[error("{what} is {value}; it must be positive and finite")]
+    NotPositive {
+        /// What it is, with its unit (`the mass m (kg)`).
+        what: &'static str,
+        /// The value.
+        value: Real,
+    },
+    /// A parameter that must be finite (a speed, a position) or not negative (gravity).
+    #[error("{what} is {value}; {expected}")]
+    Invalid {
+        /// What it is.
+        what: &'static str,
+        /// The value.
+        value: Real,
+        /// What would be valid.
+        expected: &'static str,
+    },
+    /// An incline angle outside −90° … 90°.
+    #[error("the incline angle is {degrees}°; it must be between -90° and 90° (0 is a flat floor)")]
+    Angle {
+        /// The angle in degrees.
+        degrees: Real,
+    },
+    /// The loads pull the block off the surface: no contact, no friction.
+    #[error(
+        "the normal force is {normal} N: the loads pull the block off the surface (m g cos α + the extra normal load must be at least 0)"
+    )]
+    NoContact {
+        /// `N = m g cos α + extra`.
+        normal: Real,
+    },
+    /// The switches between regimes accumulate (Zeno) or are too many for the time span.
+    #[error(
+        "more than {max} stick/slip phases before t = {t} s; shorten the time span or raise the limit"
+    )]
+    TooManyPhases {
+        /// The limit.
+        max: usize,
+        /// Where it was reached.
+        t: Real,
+    },
+    /// Invalid settings of the adaptive integrator.
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    /// The adaptive integrator could not advance.
+    #[error(transparent)]
+    Integrate(#[from] AdaptiveError),
+}
+
+/// Checks that `value` is positive and finite.
+pub(crate) fn positive(what: &'static str, value: Real) -> Result<(), FrictionError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(FrictionError::NotPositive { what, value })
+    }
+}
+
+/// Checks that `value` is finite.
+pub(crate) fn finite(what: &'static str, value: Real) -> Result<(), FrictionError> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(FrictionError::Invalid {
+            what,
+            value,
+            expected: "it must be a finite number",
+        })
+    }
+}
+
+/// Checks that `g` is finite and not negative.
+pub(crate) fn gravity(g: Real) -> Result<(), FrictionError> {
+    if g.is_finite() && g >= 0.0 {
+        Ok(())
+    } else {
+        Err(FrictionError::Invalid {
+            what: "g (m/s²)",
+            value: g,
+            expected: "it must be 0 or positive (pointing down into the surface)",
+        })
+    }
+}
