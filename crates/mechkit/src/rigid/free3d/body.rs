@@ -212,9 +212,8 @@ impl SpinningBody {
 
     /// The torque of gravity about the pivot, world frame: `(R d) × (0, 0, −m g)` (N·m).
     pub fn torque_world(&self, q: &UnitQuaternion<Real>) -> Vec3 {
-        self.pivot.map_or_else(Vec3::zeros, |(d, g)| {
-            torque(&(q * d), self.body.mass * g)
-        })
+        self.pivot
+            .map_or_else(Vec3::zeros, |(d, g)| torque(&(q * d), self.body.mass * g))
     }
 }
 

@@ -94,11 +94,11 @@ impl Driver {
                 let t_next = clock.next();
                 let h = t_next - state.t;
                 window.begin(state, h);
-                let a = eq.formulation.attitude(&state.y);
+                let a = eq.formulation().attitude(&state.y);
                 let (mut q, mut lb) = (a.q, a.l_body());
-                split_step(eq.body, &mut q, &mut lb, h);
+                split_step(eq.body(), &mut q, &mut lb, h);
                 let next = Attitude { q, l: q * lb };
-                state.y = eq.formulation.to_state(&next);
+                state.y = eq.formulation().to_state(&next);
                 state.t = t_next;
                 window.end(eq, state);
                 Ok(1)
@@ -154,4 +154,3 @@ impl Window {
         eq.rhs_into(state.t, &state.y, &mut self.f1);
     }
 }
-

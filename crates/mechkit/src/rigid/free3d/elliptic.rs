@@ -149,7 +149,13 @@ mod tests {
 
     #[test]
     fn sn_of_f_is_sin() {
-        for &(phi, m) in &[(0.3, 0.2), (1.4, 0.9), (2.9, 0.5), (-4.0, 0.7), (7.0, 0.999)] {
+        for &(phi, m) in &[
+            (0.3, 0.2),
+            (1.4, 0.9),
+            (2.9, 0.5),
+            (-4.0, 0.7),
+            (7.0, 0.999),
+        ] {
             let u = incomplete_f(phi, m);
             let (sn, cn, _) = jacobi(u, m);
             assert!((sn - Real::sin(phi)).abs() < 1e-13, "{phi} {m}");

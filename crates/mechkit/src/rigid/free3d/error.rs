@@ -69,7 +69,9 @@ pub enum Free3dError {
         value: Real,
     },
     /// Too many fixed steps for the duration.
-    #[error("{steps:e} fixed steps of {dt} s would be needed; use a larger step or the adaptive method")]
+    #[error(
+        "{steps:e} fixed steps of {dt} s would be needed; use a larger step or the adaptive method"
+    )]
     TooManySteps {
         /// The number of steps.
         steps: Real,

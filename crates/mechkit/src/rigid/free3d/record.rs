@@ -7,8 +7,7 @@ use super::driver::Driver;
 use super::equations::{Formulation, SpinEquations};
 use super::run::{Conservation, Crossing, SpinSample};
 use crate::Real;
-use crate::mass::Vec3;
-use crate::ode::State;
+use crate::ode::{State, hermite};
 
 /// What is kept of the run as it goes.
 pub(super) struct Record<'a> {
@@ -20,17 +19,15 @@ pub(super) struct Record<'a> {
     pub(super) samples: Vec<SpinSample>,
     pub(super) crossings: Vec<Crossing>,
     pub(super) conservation: Conservation,
-    l0: Vec3,
-    l0_norm: Real,
-    l3_0: Real,
-    e0: Real,
+    /// `(|L|, L_z, L₃, E, φ)` at the start.
+    start: [Real; 5],
     e_scale: Real,
     /// The precession angle at the last step end, unwrapped.
     phi: Real,
     /// The intermediate axis (free bodies) and the smallest |ω| component taken as a sign.
     watch: Option<(usize, Real)>,
-    /// ω about the watched axis at the last step end.
-    g_end: Real,
+    /// ω about the watched axis and its rate at the last step end (where ω ≠ 0).
+    g_end: (Real, Real),
 }
 
 /// `x` wrapped to `(−π, π]`.
@@ -40,35 +37,38 @@ fn wrap(x: Real) -> Real {
 }
 
 impl<'a> Record<'a> {
-    pub(super) fn new(eq: &SpinEquations<'a>, start: &Attitude, t_end: Real, intervals: usize) -> Self {
-        let body = eq.body;
-        let l0_norm = start.l.norm();
-        let e0 = body.energy(start);
+    pub(super) fn new(
+        eq: &SpinEquations<'a>,
+        start: &Attitude,
+        t_end: Real,
+        intervals: usize,
+    ) -> Self {
+        let body = eq.body();
+        let y0 = eq.formulation().to_state(start);
+        let invariants = eq.invariants(&y0);
         let omega = body.omega_body(start);
         let watch = body
             .pivot()
             .is_none()
             .then(|| (body.body().intermediate_axis(), 1e-12 * omega.norm()));
-        let g_end = watch.map_or(0.0, |(k, _)| omega[k]);
+        let (w0, r0) = eq.omega_rate(&y0);
+        let g_end = watch.map_or((0.0, 0.0), |(k, _)| (w0[k], r0[k]));
         let mut r = Record {
             body,
-            formulation: eq.formulation,
+            formulation: eq.formulation(),
             t_end,
             intervals: intervals.max(1),
             next_sample: 0,
             samples: Vec::with_capacity(intervals.max(1) + 1),
             crossings: Vec::new(),
             conservation: Conservation::default(),
-            l0: start.l,
-            l0_norm,
-            l3_0: start.l_body().z,
-            e0,
-            e_scale: e0.abs().max(body.kinetic_energy(start)),
-            phi: start.euler_angles().0,
+            start: invariants,
+            e_scale: invariants[3].abs().max(body.kinetic_energy(start)),
+            phi: invariants[4],
             watch,
             g_end,
         };
-        r.sample(0.0, &eq.formulation.to_state(start));
+        r.sample(0.0, &y0);
         r
     }
 
@@ -86,7 +86,13 @@ impl<'a> Record<'a> {
         self.next_sample += 1;
     }
 
-    pub(super) fn after_step(&mut self, driver: &mut Driver, eq: &SpinEquations, t0: Real, end: &State) {
+    pub(super) fn after_step(
+        &mut self,
+        driver: &mut Driver,
+        eq: &SpinEquations,
+        t0: Real,
+        end: &State,
+    ) {
         let y1 = &end.y;
         let t1 = end.t;
         let mut y = [0.0; 7];
@@ -113,20 +119,22 @@ impl<'a> Record<'a> {
         let c = &mut self.conservation;
         let qn = (y1[0] * y1[0] + y1[1] * y1[1] + y1[2] * y1[2] + y1[3] * y1[3]).sqrt();
         c.quaternion_norm = c.quaternion_norm.max((qn - 1.0).abs());
-        let a = self.formulation.attitude(y1);
-        let scale = self.l0_norm.max(Real::MIN_POSITIVE);
-        c.l_norm = c.l_norm.max((a.l.norm() - self.l0_norm).abs() / scale);
-        c.l_z = c.l_z.max((a.l.z - self.l0.z).abs() / scale);
-        c.l_3 = c.l_3.max((a.l_body().z - self.l3_0).abs() / scale);
-        let e = self.body.energy(&a);
+        let [l_norm, l_z, l_3, e, phi] = eq.invariants(y1);
+        let [l0, lz0, l30, e0, _] = self.start;
+        let scale = l0.max(Real::MIN_POSITIVE);
+        c.l_norm = c.l_norm.max((l_norm - l0).abs() / scale);
+        c.l_z = c.l_z.max((l_z - lz0).abs() / scale);
+        c.l_3 = c.l_3.max((l_3 - l30).abs() / scale);
         c.energy = c
             .energy
-            .max((e - self.e0).abs() / self.e_scale.max(Real::MIN_POSITIVE));
-        self.phi += wrap(a.euler_angles().0 - self.phi);
+            .max((e - e0).abs() / self.e_scale.max(Real::MIN_POSITIVE));
+        self.phi += wrap(phi - self.phi);
     }
 
-    /// Zeros of ω about `axis` in `[t0, t1]`: the interpolant at four sub-intervals, each
-    /// sign change refined by Brent's method.
+    /// Zeros of ω about `axis` in `[t0, t1]`. A screen first: the cubic Hermite of ω from its
+    /// values and exact rates (Euler's equations) at both ends, at eight sub-intervals; only
+    /// where it or the end values change sign is the step's interpolant evaluated at the
+    /// sub-intervals, and each sign change refined by Brent's method.
     fn locate_crossings(
         &mut self,
         driver: &mut Driver,
@@ -136,27 +144,35 @@ impl<'a> Record<'a> {
         noise: Real,
         y1: &[Real],
     ) {
-        const PARTS: usize = 4;
+        const PARTS: usize = 8;
+        let (g0, d0) = self.g_end;
+        let (w1, r1) = eq.omega_rate(y1);
+        let (g1, d1) = (w1[axis], r1[axis]);
+        let h = t1 - t0;
+        let opposite = |g: Real| (g0 < 0.0 && g >= 0.0) || (g0 > 0.0 && g <= 0.0);
+        let may_cross = opposite(g1)
+            || (1..PARTS).any(|j| opposite(hermite(g0, d0, g1, d1, h, j as Real / PARTS as Real)));
+        if !may_cross {
+            if g1 != 0.0 {
+                self.g_end = (g1, d1);
+            }
+            return;
+        }
         let mut y = [0.0; 7];
         let mut omega_at = |driver: &mut Driver, t: Real| {
             driver.interpolate(eq, t, &mut y);
             eq.omega_body(&y)[axis]
         };
-        let (mut ta, mut ga) = (t0, self.g_end);
+        let (mut ta, mut ga) = (t0, g0);
         for j in 1..=PARTS {
             let tb = if j == PARTS {
                 t1
             } else {
-                t0 + (t1 - t0) * j as Real / PARTS as Real
+                t0 + h * j as Real / PARTS as Real
             };
-            let gb = if j == PARTS {
-                eq.omega_body(y1)[axis]
-            } else {
-                omega_at(driver, tb)
-            };
+            let gb = if j == PARTS { g1 } else { omega_at(driver, tb) };
             let significant = ga.abs().max(gb.abs()) > noise;
-            if significant && ((ga < 0.0 && gb >= 0.0) || (ga > 0.0 && gb <= 0.0)) && gb != 0.0
-            {
+            if significant && ((ga < 0.0 && gb > 0.0) || (ga > 0.0 && gb < 0.0)) {
                 let root = crate::roots::brent_with_values(
                     |t| omega_at(driver, t),
                     ta,
@@ -172,14 +188,13 @@ impl<'a> Record<'a> {
             }
             if gb != 0.0 {
                 (ta, ga) = (tb, gb);
-            } else {
-                ta = tb;
             }
         }
-        self.g_end = ga;
+        if g1 != 0.0 {
+            self.g_end = (g1, d1);
+        }
     }
 }
-
 
 #[cfg(test)]
 mod tests {
