@@ -5,10 +5,12 @@ use std::path::PathBuf;
 use clap::{Parser, Subcommand};
 
 mod mechanics;
+mod spin;
 pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
     RocketArgs, WorkArgs,
 };
+pub use spin::SpinArgs;
 
 const EXAMPLES: &str = r#"Examples:
   mechkit run examples/feather.toml --out out/feather
@@ -34,6 +36,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
   mechkit rocket --m0 "1000 kg" --m1 "400 kg" --mass-rate "10 kg/s" --exhaust-speed "2 km/s" --g "9.81 m/s^2" --coast
   mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
+  mechkit spin --moments "1, 2, 3" --omega "0.01, 1, 0.01" --t-max 100
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
 Scenario format: docs/scenario.md. Commands: docs/cli.md."#;
@@ -82,6 +85,10 @@ pub enum Command {
     Rocket(RocketArgs),
     /// Velocity and acceleration from a position-time data file (CSV and plots).
     Derive(DeriveArgs),
+    /// A free rigid body in 3-D (quaternion and angular momentum; the tennis-racket flip
+    /// against the elliptic-function period), or a heavy top on a pivot (nutation,
+    /// precession, steady precession).
+    Spin(SpinArgs),
     /// Two bodies colliding with a coefficient of restitution (1-D, 2-D or 3-D): velocities
     /// after, impulse, kinetic energy lost, centre-of-mass frame.
     Collide(CollideArgs),

@@ -13,6 +13,7 @@ mod potential;
 mod power;
 mod rocket;
 mod run;
+mod spin;
 mod work;
 mod work_field;
 
@@ -40,6 +41,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Potential(args) => potential::potential(&args),
         Command::Power(args) => power::power(&args),
         Command::Rocket(args) => rocket::rocket(&args),
+        Command::Spin(args) => spin::spin(&args),
         Command::Work(args) => work::work(&args),
         Command::Derive(args) => derive::derive(&args),
         Command::Collide(args) => collide::collide(&args),

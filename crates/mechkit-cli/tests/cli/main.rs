@@ -34,4 +34,5 @@ mod errors;
 mod mass;
 mod rocket;
 mod run;
+mod spin;
 mod util;

@@ -7,6 +7,9 @@ use super::error::Free3dError;
 use crate::Real;
 use crate::mass::{MassProperties, Mat3, Vec3, parallel_axis};
 
+/// An orientation: the rotation from the body frame to the world frame.
+pub type Orientation = UnitQuaternion<Real>;
+
 /// A rigid body as rotation sees it: its principal moments of inertia about the centre of
 /// mass (kg·m², the body frame is the principal axes) and its mass (kg).
 #[derive(Debug, Clone, Copy, PartialEq)]

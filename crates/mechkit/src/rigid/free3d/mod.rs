@@ -35,7 +35,7 @@ mod run;
 mod splitting;
 mod top;
 
-pub use body::{Attitude, FreeBody, SpinningBody};
+pub use body::{Attitude, FreeBody, Orientation, SpinningBody};
 pub use elliptic::{
     agm, carlson_rf, complete_k, complete_k_complement, incomplete_f, incomplete_f_complement,
     jacobi, jacobi_complement,
