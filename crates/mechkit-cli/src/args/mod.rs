@@ -8,11 +8,13 @@ mod friction;
 mod mechanics;
 mod roll;
 pub use friction::FrictionArgs;
+mod spin;
 pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
     RocketArgs, WorkArgs,
 };
 pub use roll::RollArgs;
+pub use spin::SpinArgs;
 
 const EXAMPLES: &str = r#"Examples:
   mechkit run examples/feather.toml --out out/feather
@@ -40,6 +42,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
   mechkit friction --mass "1 kg" --mu-s 0.6 --mu-d 0.4 --spring-k "100 N/m" --anchor-speed "5 cm/s" --t-max "8 s" --out out/quake
   mechkit roll --body sphere --radius "11 cm" --mass "0.45 kg" --slope "20 deg" --mu 0.3 --v0 "2 m/s" --omega0 "-30 rad/s" --t-max "3 s"
+  mechkit spin --moments "1, 2, 3" --omega "0.01, 1, 0.01" --t-max 100
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
 Scenario format: docs/scenario.md. Commands: docs/cli.md."#;
@@ -88,6 +91,10 @@ pub enum Command {
     Rocket(RocketArgs),
     /// Velocity and acceleration from a position-time data file (CSV and plots).
     Derive(DeriveArgs),
+    /// A free rigid body in 3-D (quaternion and angular momentum; the tennis-racket flip
+    /// against the elliptic-function period), or a heavy top on a pivot (nutation,
+    /// precession, steady precession).
+    Spin(SpinArgs),
     /// Two bodies colliding with a coefficient of restitution (1-D, 2-D or 3-D): velocities
     /// after, impulse, kinetic energy lost, centre-of-mass frame.
     Collide(CollideArgs),

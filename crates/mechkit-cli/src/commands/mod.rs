@@ -15,6 +15,7 @@ mod power;
 mod rocket;
 mod roll;
 mod run;
+mod spin;
 mod work;
 mod work_field;
 
@@ -42,6 +43,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Potential(args) => potential::potential(&args),
         Command::Power(args) => power::power(&args),
         Command::Rocket(args) => rocket::rocket(&args),
+        Command::Spin(args) => spin::spin(&args),
         Command::Work(args) => work::work(&args),
         Command::Derive(args) => derive::derive(&args),
         Command::Collide(args) => collide::collide(&args),

@@ -36,4 +36,5 @@ mod mass;
 mod rocket;
 mod roll;
 mod run;
+mod spin;
 mod util;

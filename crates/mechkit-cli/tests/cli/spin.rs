@@ -1,0 +1,187 @@
+//! `mechkit spin`: the tennis racket's flip period against the elliptic-function period
+//! 4K(m)/λ (computed here independently, K by its integral), |L| and E kept; a heavy top in
+//! steady precession; spin.csv and the plots; bad input (moments violating the triangle
+//! inequality, a zero or wrongly dimensioned ω, a fixed-step method without --dt).
+
+use std::f64::consts::PI;
+
+use crate::util::{Dir, at, num};
+
+fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
+    let mut all = vec!["spin"];
+    all.extend_from_slice(args);
+    all.push("--json");
+    let out = dir.run(&all);
+    out.assert_code(0);
+    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
+}
+
+/// K(m) by the midpoint rule on ∫₀^{π/2} dθ/√(1 − m sin²θ) (spectrally accurate for a
+/// periodic integrand): independent of the library's arithmetic-geometric mean.
+fn k_by_quadrature(m: f64) -> f64 {
+    let n = 20_000;
+    let h = PI / 2.0 / f64::from(n);
+    (0..n)
+        .map(|i| {
+            let s = (h * (f64::from(i) + 0.5)).sin();
+            h / (1.0 - m * s * s).sqrt()
+        })
+        .sum()
+}
+
+#[test]
+fn racket_flip_period_matches_the_elliptic_reference() {
+    let dir = Dir::new();
+    let j = json(
+        &dir,
+        &[
+            "--moments",
+            "1, 2, 3",
+            "--omega",
+            "0.01, 1, 0.01",
+            "--t-max",
+            "160 s",
+            "--out",
+            "racket",
+        ],
+    );
+    // Landau-Lifshitz §37 with I = (1, 2, 3), ω = (0.01, 1, 0.01): L² > 2EI₂
+    let (i1, i2, i3) = (1.0f64, 2.0, 3.0);
+    let w = [0.01f64, 1.0, 0.01];
+    let l2 = i1 * i1 * w[0] * w[0] + i2 * i2 * w[1] * w[1] + i3 * i3 * w[2] * w[2];
+    let e2 = i1 * w[0] * w[0] + i2 * w[1] * w[1] + i3 * w[2] * w[2];
+    assert!(l2 > e2 * i2);
+    let lambda = ((i3 - i2) * (l2 - e2 * i1) / (i1 * i2 * i3)).sqrt();
+    let m = (i2 - i1) * (e2 * i3 - l2) / ((i3 - i2) * (l2 - e2 * i1));
+    let period = 4.0 * k_by_quadrature(m) / lambda;
+    let simulated = num(&j, "/flip/period/simulated");
+    let rel = (simulated - period).abs() / period;
+    assert!(
+        rel < 1e-4,
+        "simulated {simulated}, reference {period}: {rel:e}"
+    );
+    assert!((num(&j, "/flip/period/elliptic") - period).abs() < 1e-9 * period);
+    assert!(num(&j, "/flip/period/relative_difference").abs() < 1e-6);
+    assert_eq!(num(&j, "/flip/zeros"), 8.0);
+    assert_eq!(num(&j, "/flip/axis"), 2.0);
+    assert!(num(&j, "/conservation/angular_momentum_norm") < 1e-14);
+    assert!(num(&j, "/conservation/energy") < 1e-8);
+    assert_eq!(at(&j, "/top"), &serde_json::Value::Null);
+    // the CSV: a header, 2001 rows, |L| constant
+    let csv = dir.read("racket/spin.csv");
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "t,qw,qx,qy,qz,w1,w2,w3,Lx,Ly,Lz,L,T,U,E"
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 2001);
+    assert_eq!(rows.last().unwrap()[0], 160.0);
+    let l0 = rows[0][11];
+    assert!(rows.iter().all(|r| (r[11] - l0).abs() < 1e-13 * l0));
+    assert!(dir.read("racket/omega(t).svg").starts_with("<svg"));
+}
+
+#[test]
+fn heavy_top_in_steady_precession() {
+    let dir = Dir::new();
+    let j = json(
+        &dir,
+        &[
+            "--moments",
+            "3e-3, 3e-3, 4e-3",
+            "--mass",
+            "0.5 kg",
+            "--top",
+            "--pivot",
+            "0, 0, -5 cm",
+            "--omega",
+            "0, 0, 50",
+            "--tilt",
+            "30 deg",
+            "--steady",
+            "--t-max",
+            "5 s",
+            "--out",
+            "top",
+        ],
+    );
+    let (lo, hi) = (
+        num(&j, "/top/nutation_deg/min"),
+        num(&j, "/top/nutation_deg/max"),
+    );
+    assert!(
+        (lo - 30.0).abs() < 1e-6 && (hi - 30.0).abs() < 1e-6,
+        "{lo} {hi}"
+    );
+    let (mean, steady) = (
+        num(&j, "/top/precession_rate/mean"),
+        num(&j, "/top/precession_rate/steady_slow"),
+    );
+    assert!((mean - steady).abs() < 1e-8 * steady, "{mean} {steady}");
+    assert!(num(&j, "/conservation/energy") < 1e-10);
+    assert!(num(&j, "/conservation/l_z") < 1e-10);
+    assert_eq!(at(&j, "/flip"), &serde_json::Value::Null);
+    for name in ["omega(t)", "nutation(t)", "precession(t)"] {
+        assert!(
+            dir.read(&format!("top/{name}.svg")).starts_with("<svg"),
+            "{name}"
+        );
+    }
+    assert!(
+        dir.read("top/spin.csv")
+            .starts_with("t,qw,qx,qy,qz,w1,w2,w3,Lx,Ly,Lz,L,T,U,E,theta,phi\n")
+    );
+}
+
+#[test]
+fn bad_input_exits_2_naming_the_flag() {
+    let dir = Dir::new();
+    let run = |extra: &[&str]| {
+        let mut args = vec!["spin", "--t-max", "10"];
+        args.extend_from_slice(extra);
+        dir.run(&args)
+    };
+    run(&["--moments", "1, 1, 3", "--omega", "0, 1, 0"]).assert_bad_input(&[
+        "--moments",
+        "triangle inequality",
+        "I3",
+    ]);
+    run(&["--moments", "1, -2, 3", "--omega", "0, 1, 0"])
+        .assert_bad_input(&["--moments", "I2 = -2"]);
+    run(&["--moments", "1, 2", "--omega", "0, 1, 0"]).assert_bad_input(&["--moments", "3"]);
+    run(&["--moments", "1, 2, 3", "--omega", "0, 0, 0"]).assert_bad_input(&["--omega is zero"]);
+    run(&["--moments", "1, 2, 3", "--omega", "0, 1 m, 0"]).assert_bad_input(&["--omega", "rad/s"]);
+    run(&[
+        "--moments",
+        "1, 2, 3",
+        "--omega",
+        "0, 1, 0",
+        "--method",
+        "rk4",
+    ])
+    .assert_bad_input(&["--dt"]);
+    run(&[
+        "--moments",
+        "1, 2, 3",
+        "--omega",
+        "0, 1, 0",
+        "--method",
+        "euler",
+    ])
+    .assert_bad_input(&["--method", "dop853"]);
+    run(&["--omega", "0, 1, 0"]).assert_bad_input(&["--moments"]);
+    run(&[
+        "--moments",
+        "1, 2, 3",
+        "--omega",
+        "0, 0, 5",
+        "--top",
+        "--pivot",
+        "0, 0, -1",
+        "--steady",
+    ])
+    .assert_bad_input(&["--steady", "symmetric top"]);
+}

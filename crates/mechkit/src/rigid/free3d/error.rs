@@ -1,0 +1,97 @@
+//! Why a spinning body cannot be built or simulated.
+
+use thiserror::Error;
+
+use crate::Real;
+use crate::ode::{AdaptiveError, ConfigError};
+
+/// An invalid body, initial state or setting, or a simulation that failed.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum Free3dError {
+    /// A principal moment that is not positive and finite.
+    #[error(
+        "the principal moment I{index} = {value} kg·m² must be positive and finite (a body of any extent has three positive principal moments)"
+    )]
+    Moment {
+        /// 1, 2 or 3.
+        index: usize,
+        /// The value.
+        value: Real,
+    },
+    /// Principal moments that no mass distribution has: one exceeds the sum of the others.
+    #[error(
+        "the principal moments I1 = {}, I2 = {}, I3 = {} kg·m² violate the triangle inequality: I{largest} exceeds the sum of the other two, which no distribution of positive mass allows (each moment is at most the sum of the others; equality is a flat body)",
+        moments[0], moments[1], moments[2]
+    )]
+    Triangle {
+        /// `[I1, I2, I3]`.
+        moments: [Real; 3],
+        /// Which moment (1, 2 or 3) is too large.
+        largest: usize,
+    },
+    /// A mass that is not positive and finite.
+    #[error("the mass is {value} kg; it must be positive and finite")]
+    Mass {
+        /// The value.
+        value: Real,
+    },
+    /// A negative or non-finite gravity.
+    #[error("g is {value} m/s²; it must be 0 or positive (pointing down, along −z)")]
+    Gravity {
+        /// The value.
+        value: Real,
+    },
+    /// A vector input with a component that is not finite.
+    #[error("{what} has a component that is not finite: ({}, {}, {})", value[0], value[1], value[2])]
+    NonFinite {
+        /// Which input (`the pivot offset`, `the angular velocity`, `the orientation`).
+        what: &'static str,
+        /// The value.
+        value: [Real; 3],
+    },
+    /// An orientation quaternion of zero or non-finite norm.
+    #[error("the orientation quaternion has norm {norm}; it must be a non-zero finite quaternion")]
+    Quaternion {
+        /// Its norm.
+        norm: Real,
+    },
+    /// A duration that is not positive and finite.
+    #[error("the duration t_end = {value} s must be positive and finite")]
+    Duration {
+        /// The value.
+        value: Real,
+    },
+    /// A fixed step that is not positive and finite.
+    #[error("the step dt = {value} s must be positive and finite")]
+    Step {
+        /// The value.
+        value: Real,
+    },
+    /// Too many fixed steps for the duration.
+    #[error(
+        "{steps:e} fixed steps of {dt} s would be needed; use a larger step or the adaptive method"
+    )]
+    TooManySteps {
+        /// The number of steps.
+        steps: Real,
+        /// The step.
+        dt: Real,
+    },
+    /// The splitting method needs the inertia about the rotation point to be diagonal in the
+    /// body frame.
+    #[error(
+        "the splitting method needs the pivot on a principal axis through the centre of mass (the offset ({}, {}, {}) m has more than one non-zero component); use an adaptive method",
+        offset[0], offset[1], offset[2]
+    )]
+    SplittingOffAxis {
+        /// The pivot offset.
+        offset: [Real; 3],
+    },
+    /// Invalid settings of the adaptive integrator.
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    /// The adaptive integrator could not advance.
+    #[error(transparent)]
+    Integrate(#[from] AdaptiveError),
+}
