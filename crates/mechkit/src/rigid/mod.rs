@@ -7,6 +7,7 @@
 //! leaving a surface) are located inside a step, never detected a step late.
 
 pub mod constrained;
+pub mod elliptic;
 pub mod fixed_axis;
 pub mod free3d;
 pub mod friction;

@@ -6,22 +6,17 @@ use std::f64::consts::PI;
 
 use super::HingedBody;
 use crate::Real;
+use crate::rigid::elliptic::complete_k_complement;
 
 /// The complete elliptic integral of the first kind `K(k) = ∫₀^{π/2} dφ/√(1 - k² sin²φ)` of
-/// modulus `k` (`|k| < 1`), by the arithmetic-geometric mean: `K = π / (2 AGM(1, √(1-k²)))`.
-/// Converges quadratically; exact to rounding. `None` for `|k| ≥ 1`.
+/// modulus `k` (`|k| < 1`; the parameter is `m = k²`), by the arithmetic-geometric mean
+/// ([`crate::rigid::elliptic`]), with `1 - k²` formed as `(1 - k)(1 + k)` so that no digits
+/// are lost near the top. `None` for `|k| ≥ 1`.
 pub fn elliptic_k(k: Real) -> Option<Real> {
     if k.is_nan() || k.abs() >= 1.0 {
         return None;
     }
-    let (mut a, mut b) = (1.0, (1.0 - k * k).sqrt());
-    for _ in 0..64 {
-        if (a - b).abs() <= 1e-16 * a {
-            break;
-        }
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    Some(PI / (a + b))
+    Some(complete_k_complement((1.0 - k.abs()) * (1.0 + k.abs())))
 }
 
 /// The small-angle period of `body` swinging in gravity `g` perpendicular to its axis,

@@ -26,7 +26,6 @@
 
 mod body;
 mod driver;
-mod elliptic;
 mod equations;
 mod error;
 mod poinsot;
@@ -35,11 +34,11 @@ mod run;
 mod splitting;
 mod top;
 
-pub use body::{Attitude, FreeBody, Orientation, SpinningBody};
-pub use elliptic::{
+pub use super::elliptic::{
     agm, carlson_rf, complete_k, complete_k_complement, incomplete_f, incomplete_f_complement,
     jacobi, jacobi_complement,
 };
+pub use body::{Attitude, FreeBody, Orientation, SpinningBody};
 pub use equations::{Formulation, SpinEquations};
 pub use error::Free3dError;
 pub use poinsot::Poinsot;

@@ -20,9 +20,9 @@
 //! Moments in any order are sorted first; an odd permutation of the axes reverses the sign of
 //! Euler's equations, which is undone by solving for `−ω`.
 
-use super::elliptic::{complete_k_complement, incomplete_f_complement, jacobi_complement};
 use crate::Real;
 use crate::mass::Vec3;
+use crate::rigid::elliptic::{complete_k_complement, incomplete_f_complement, jacobi_complement};
 
 /// The exact torque-free ω(t) of a body with distinct extreme moments.
 #[derive(Debug, Clone, Copy, PartialEq)]
