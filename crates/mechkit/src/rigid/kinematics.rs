@@ -186,13 +186,11 @@ impl AngularMotion {
     /// θ at `t`: the closed form, else θ₀ + ∫₀ᵗ ω by adaptive Gauss-Kronrod (NaN if that
     /// fails).
     pub fn theta(&self, t: Real) -> Real {
-        match &self.theta {
-            Some(f) => self.theta0 + f.at1(t),
-            None => {
-                let q = quadrature(|s| self.omega.at1(s), 0.0, t, Tolerance::default());
-                q.map_or(Real::NAN, |q| self.theta0 + q.value)
-            }
+        if let Some(f) = &self.theta {
+            return self.theta0 + f.at1(t);
         }
+        let q = quadrature(|s| self.omega.at1(s), 0.0, t, Tolerance::default());
+        q.map_or(Real::NAN, |q| self.theta0 + q.value)
     }
 
     /// θ, ω, α at `t`, with the numerical cross-checks (initial step 0.1 max(1, |t|) s).

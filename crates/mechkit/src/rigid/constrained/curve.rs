@@ -32,14 +32,15 @@ impl Side {
 
 #[derive(Debug, Clone, PartialEq)]
 enum Kind {
-    Circle {
-        radius: Real,
-    },
-    Graph {
-        y: Function,
-        dy: Function,
-        d2y: Function,
-    },
+    Circle { radius: Real },
+    Graph(Box<Graph>),
+}
+
+#[derive(Debug, Clone, PartialEq)]
+struct Graph {
+    y: Function,
+    dy: Function,
+    d2y: Function,
 }
 
 /// A curve in the vertical (x, y) plane, y up: a circle of radius R centred at the origin
@@ -106,7 +107,7 @@ impl Curve {
         let dy = y.diff("x");
         let d2y = dy.diff("x");
         Ok(Self {
-            kind: Kind::Graph { y, dy, d2y },
+            kind: Kind::Graph(Box::new(Graph { y, dy, d2y })),
         })
     }
 
@@ -114,7 +115,7 @@ impl Curve {
     pub fn radius(&self) -> Option<Real> {
         match self.kind {
             Kind::Circle { radius } => Some(radius),
-            Kind::Graph { .. } => None,
+            Kind::Graph(_) => None,
         }
     }
 
@@ -122,14 +123,14 @@ impl Curve {
     pub fn describe(&self) -> String {
         match &self.kind {
             Kind::Circle { radius } => format!("circle of radius {radius} m about the origin"),
-            Kind::Graph { y, .. } => format!("y = {}", y.sym()),
+            Kind::Graph(gr) => format!("y = {}", gr.y.sym()),
         }
     }
 
     /// y'(x) and y''(x) as formulas, for a graph.
     pub fn derivatives(&self) -> Option<(String, String)> {
         match &self.kind {
-            Kind::Graph { dy, d2y, .. } => Some((dy.sym().to_string(), d2y.sym().to_string())),
+            Kind::Graph(gr) => Some((gr.dy.sym().to_string(), gr.d2y.sym().to_string())),
             Kind::Circle { .. } => None,
         }
     }
@@ -138,7 +139,7 @@ impl Curve {
     pub fn point(&self, q: Real) -> [Real; 2] {
         match &self.kind {
             Kind::Circle { radius } => [radius * q.sin(), radius * q.cos()],
-            Kind::Graph { y, .. } => [q, y.at1(q)],
+            Kind::Graph(gr) => [q, gr.y.at1(q)],
         }
     }
 
@@ -152,10 +153,10 @@ impl Curve {
                     d2: [-r * s, -r * c],
                 }
             }
-            Kind::Graph { y, dy, d2y } => Geometry {
-                r: [q, y.at1(q)],
-                d1: [1.0, dy.at1(q)],
-                d2: [0.0, d2y.at1(q)],
+            Kind::Graph(gr) => Geometry {
+                r: [q, gr.y.at1(q)],
+                d1: [1.0, gr.dy.at1(q)],
+                d2: [0.0, gr.d2y.at1(q)],
             },
         }
     }
@@ -181,7 +182,7 @@ impl Curve {
     pub fn gap(&self, p: [Real; 2], side: Side) -> Real {
         let raw = match &self.kind {
             Kind::Circle { radius } => p[0].hypot(p[1]) - radius,
-            Kind::Graph { y, .. } => p[1] - y.at1(p[0]),
+            Kind::Graph(gr) => p[1] - gr.y.at1(p[0]),
         };
         side.sign() * raw
     }
@@ -191,7 +192,7 @@ impl Curve {
     pub fn coordinate_of(&self, p: [Real; 2]) -> Real {
         match &self.kind {
             Kind::Circle { .. } => p[0].atan2(p[1]),
-            Kind::Graph { .. } => p[0],
+            Kind::Graph(_) => p[0],
         }
     }
 
