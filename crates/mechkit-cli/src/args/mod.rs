@@ -4,11 +4,17 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand};
 
+mod bead;
 mod mechanics;
+mod rigid_collide;
+mod rotation;
+pub use bead::BeadArgs;
 pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
     RocketArgs, WorkArgs,
 };
+pub use rigid_collide::RigidCollideArgs;
+pub use rotation::RotationArgs;
 
 const EXAMPLES: &str = r#"Examples:
   mechkit run examples/feather.toml --out out/feather
@@ -34,6 +40,9 @@ const EXAMPLES: &str = r#"Examples:
   mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
   mechkit rocket --m0 "1000 kg" --m1 "400 kg" --mass-rate "10 kg/s" --exhaust-speed "2 km/s" --g "9.81 m/s^2" --coast
   mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
+  mechkit rotation --omega0 "1000 rpm" --omega1 "2000 rpm" --time "15 s"
+  mechkit bead --circle "1 m" --side outside --start 0 --speed "0.1 m/s" --t-max "3 s"
+  mechkit rigid-collide --rod --mass 1 --length 1 --release-angle "90 deg" --block-mass 0.3333 -e 1
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
 Scenario format: docs/scenario.md. Commands: docs/cli.md."#;
@@ -94,6 +103,17 @@ pub enum Command {
     /// Mass, centre of mass and inertia tensor of a body file: about the centre of mass and
     /// about a point, principal moments and axes, the moment about an axis.
     Inertia(InertiaArgs),
+    /// Angular kinematics: ω and α from θ(t) (or θ and α from ω(t)) symbolically, uniform
+    /// angular acceleration, circular motion (v = ωR, a_c = ω²R, a_t = αR, latitude), and
+    /// v = ω × r, a = α × r + ω × (ω × r) for a point in 3-D.
+    Rotation(RotationArgs),
+    /// A body on a circle or a curve y(x) under gravity: the normal force along the way, where
+    /// it leaves the curve (N = 0) and where it lands again; path.csv and path.svg.
+    Bead(BeadArgs),
+    /// A rigid-body impact: a hinged body (a rod, a body file, or a moment of inertia) struck
+    /// by a block, with restitution: ω and velocities after, impulse and hinge impulse, energy
+    /// lost, angular momentum about the pivot.
+    RigidCollide(RigidCollideArgs),
     /// The work ∫F dx from a data file (x, F columns; cumulative W(x)), or of a force field
     /// along a path (--field with --path or --through).
     Work(WorkArgs),

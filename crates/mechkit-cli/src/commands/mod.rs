@@ -1,5 +1,6 @@
 //! One module per subcommand; each is glue around a library call.
 
+mod bead;
 mod body;
 mod calculus;
 mod check;
@@ -11,7 +12,9 @@ mod inertia;
 mod input;
 mod potential;
 mod power;
+mod rigid_collide;
 mod rocket;
+mod rotation;
 mod run;
 mod work;
 mod work_field;
@@ -46,6 +49,9 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Com(args) => com::com(&args),
         Command::Inertia(args) => inertia::inertia(&args),
         Command::Impulse(args) => work::impulse(&args),
+        Command::Rotation(args) => rotation::rotation(&args),
+        Command::Bead(args) => bead::bead(&args),
+        Command::RigidCollide(args) => rigid_collide::rigid_collide(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {
