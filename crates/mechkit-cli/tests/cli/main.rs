@@ -23,6 +23,7 @@
 //!
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
+mod bead;
 mod book;
 mod calculus;
 mod collide;
@@ -32,6 +33,8 @@ mod diverge;
 mod energy;
 mod errors;
 mod mass;
+mod rigid_collide;
 mod rocket;
+mod rotation;
 mod run;
 mod util;
