@@ -75,7 +75,7 @@ pub fn bead(args: &BeadArgs) -> Result<Outcome> {
     let speed = match &args.drop_height {
         Some(h) => {
             let h = quantity(h, "--drop-height", Dimension::LENGTH)?;
-            if !(h >= 0.0) {
+            if h < 0.0 || !h.is_finite() {
                 bail!("--drop-height is {h} m; it must be zero or positive");
             }
             (2.0 * g * h).sqrt()
@@ -128,6 +128,11 @@ pub fn bead(args: &BeadArgs) -> Result<Outcome> {
     Ok(Outcome::Success)
 }
 
+/// An angle in degrees in (−180°, 180°].
+fn wrapped_degrees(a: f64) -> f64 {
+    a.sin().atan2(a.cos()).to_degrees()
+}
+
 fn stop_name(s: StopReason) -> &'static str {
     match s {
         StopReason::Landed => "landed",
@@ -154,7 +159,7 @@ fn to_json(model: &BeadOnCurve, start: Start, run: &BeadRun, files: Option<&Path
             "normal_force": d.normal_force,
         });
         if circle {
-            v["angle_from_top_deg"] = json!(d.coordinate.to_degrees());
+            v["angle_from_top_deg"] = json!(wrapped_degrees(d.coordinate));
             v["cos_angle"] = json!(d.coordinate.cos());
         }
         v
@@ -226,7 +231,7 @@ fn text(model: &BeadOnCurve, start: Start, run: &BeadRun, files: Option<&Path>) 
                 let _ = writeln!(
                     out,
                     "  angle from the top {}°, cos φ = {}",
-                    show(d.coordinate.to_degrees()),
+                    show(wrapped_degrees(d.coordinate)),
                     show(d.coordinate.cos())
                 );
             }
