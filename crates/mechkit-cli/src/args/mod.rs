@@ -4,16 +4,23 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand};
 
+mod bead;
 mod friction;
 mod mechanics;
+mod rigid_collide;
 mod roll;
-pub use friction::FrictionArgs;
+mod rotation;
 mod spin;
+
+pub use bead::BeadArgs;
+pub use friction::FrictionArgs;
 pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
     RocketArgs, WorkArgs,
 };
+pub use rigid_collide::RigidCollideArgs;
 pub use roll::RollArgs;
+pub use rotation::RotationArgs;
 pub use spin::SpinArgs;
 
 const EXAMPLES: &str = r#"Examples:
@@ -43,6 +50,9 @@ const EXAMPLES: &str = r#"Examples:
   mechkit friction --mass "1 kg" --mu-s 0.6 --mu-d 0.4 --spring-k "100 N/m" --anchor-speed "5 cm/s" --t-max "8 s" --out out/quake
   mechkit roll --body sphere --radius "11 cm" --mass "0.45 kg" --slope "20 deg" --mu 0.3 --v0 "2 m/s" --omega0 "-30 rad/s" --t-max "3 s"
   mechkit spin --moments "1, 2, 3" --omega "0.01, 1, 0.01" --t-max 100
+  mechkit rotation --omega0 "1000 rpm" --omega1 "2000 rpm" --time "15 s"
+  mechkit bead --circle "1 m" --side outside --start 0 --speed "0.1 m/s" --t-max "3 s"
+  mechkit rigid-collide --rod --mass 1 --length 1 --release-angle "90 deg" --block-mass 0.3333 -e 1
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
 Scenario format: docs/scenario.md. Commands: docs/cli.md."#;
@@ -107,6 +117,17 @@ pub enum Command {
     /// Mass, centre of mass and inertia tensor of a body file: about the centre of mass and
     /// about a point, principal moments and axes, the moment about an axis.
     Inertia(InertiaArgs),
+    /// Angular kinematics: ω and α from θ(t) (or θ and α from ω(t)) symbolically, uniform
+    /// angular acceleration, circular motion (v = ωR, a_c = ω²R, a_t = αR, latitude), and
+    /// v = ω × r, a = α × r + ω × (ω × r) for a point in 3-D.
+    Rotation(RotationArgs),
+    /// A body on a circle or a curve y(x) under gravity: the normal force along the way, where
+    /// it leaves the curve (N = 0) and where it lands again; path.csv and path.svg.
+    Bead(BeadArgs),
+    /// A rigid-body impact: a hinged body (a rod, a body file, or a moment of inertia) struck
+    /// by a block, with restitution: ω and velocities after, impulse and hinge impulse, energy
+    /// lost, angular momentum about the pivot.
+    RigidCollide(RigidCollideArgs),
     /// The work ∫F dx from a data file (x, F columns; cumulative W(x)), or of a force field
     /// along a path (--field with --path or --through).
     Work(WorkArgs),

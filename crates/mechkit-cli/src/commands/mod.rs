@@ -1,5 +1,6 @@
 //! One module per subcommand; each is glue around a library call.
 
+mod bead;
 mod body;
 mod calculus;
 mod check;
@@ -12,8 +13,10 @@ mod inertia;
 mod input;
 mod potential;
 mod power;
+mod rigid_collide;
 mod rocket;
 mod roll;
+mod rotation;
 mod run;
 mod spin;
 mod work;
@@ -52,6 +55,9 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Impulse(args) => work::impulse(&args),
         Command::Friction(args) => friction::friction(&args),
         Command::Roll(args) => roll::roll(&args),
+        Command::Rotation(args) => rotation::rotation(&args),
+        Command::Bead(args) => bead::bead(&args),
+        Command::RigidCollide(args) => rigid_collide::rigid_collide(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {

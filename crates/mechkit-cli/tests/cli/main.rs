@@ -23,6 +23,7 @@
 //!
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
+mod bead;
 mod book;
 mod calculus;
 mod collide;
@@ -33,8 +34,10 @@ mod energy;
 mod errors;
 mod friction;
 mod mass;
+mod rigid_collide;
 mod rocket;
 mod roll;
+mod rotation;
 mod run;
 mod spin;
 mod util;

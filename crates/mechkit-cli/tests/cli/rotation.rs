@@ -1,0 +1,87 @@
+//! `mechkit rotation`: ω and α from θ(t) and θ from ω(t) (symbolic, with the numerical
+//! check), uniform angular acceleration in rpm, circular motion with latitude, v = ω × r in
+//! 3-D, the text report, and bad input (no mode, a wrong dimension, a missing name, a bad
+//! latitude).
+
+use crate::util::{Dir, at, num};
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let mut all = vec!["rotation"];
+    all.extend_from_slice(args);
+    all.push("--json");
+    let out = Dir::new().run(&all);
+    out.assert_code(0);
+    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
+}
+
+#[test]
+fn formulas_give_omega_and_alpha() {
+    let j = json(&["--theta", "3*t^3 - t", "--at", "2 s, 0"]);
+    assert_eq!(at(&j, "/omega").as_str(), Some("9*t^2 - 1"));
+    assert_eq!(num(&j, "/at/0/omega"), 35.0);
+    assert_eq!(num(&j, "/at/0/alpha"), 36.0);
+    assert_eq!(num(&j, "/at/1/omega"), -1.0);
+    assert_eq!(at(&j, "/at/0/agree"), &serde_json::Value::Bool(true));
+    let j = json(&[
+        "--omega",
+        "a*t",
+        "--set",
+        "a=2 rad/s^2",
+        "--theta0",
+        "90 deg",
+        "--at",
+        "3",
+    ]);
+    assert!((num(&j, "/at/0/theta") - (std::f64::consts::FRAC_PI_2 + 9.0)).abs() < 1e-14);
+    assert_eq!(num(&j, "/at/0/alpha"), 2.0);
+}
+
+#[test]
+fn uniform_circle_and_vector_modes() {
+    let j = json(&["--omega0", "0", "--omega1", "60 rpm", "--time", "2 s"]);
+    assert!((num(&j, "/alpha") - std::f64::consts::PI).abs() < 1e-15);
+    assert!((num(&j, "/revolutions") - 1.0).abs() < 1e-15);
+    let j = json(&[
+        "--angular-speed",
+        "2 rad/s",
+        "--radius",
+        "3 m",
+        "--alpha",
+        "0.5 rad/s^2",
+    ]);
+    assert_eq!(num(&j, "/speed"), 6.0);
+    assert_eq!(num(&j, "/centripetal"), 12.0);
+    assert_eq!(num(&j, "/tangential"), 1.5);
+    let j = json(&["--omega-vector", "0, 0, 3", "--point", "2 m, 0, 1 m"]);
+    assert_eq!(num(&j, "/velocity/1"), 6.0);
+    assert_eq!(num(&j, "/acceleration/centripetal/0"), -18.0);
+    assert_eq!(num(&j, "/distance_from_axis"), 2.0);
+    let text = Dir::new().run(&["rotation", "--period", "1 min", "--radius", "1 m"]);
+    text.assert_code(0);
+    assert!(text.stdout.contains("a_c = ω²R"), "{}", text.stdout);
+}
+
+#[test]
+fn bad_rotation_input() {
+    let dir = Dir::new();
+    dir.run(&["rotation"])
+        .assert_bad_input(&["--theta or --omega"]);
+    dir.run(&["rotation", "--speed", "3 kg", "--radius", "1 m"])
+        .assert_bad_input(&["--speed", "dimension"]);
+    dir.run(&["rotation", "--theta", "a*t", "--at", "1"])
+        .assert_bad_input(&["--theta", "--set a="]);
+    dir.run(&[
+        "rotation",
+        "--period",
+        "1 d",
+        "--radius",
+        "1 m",
+        "--latitude",
+        "100 deg",
+    ])
+    .assert_bad_input(&["--latitude", "between -90° and 90°"]);
+    dir.run(&[
+        "rotation", "--omega0", "1", "--omega1", "2", "--time", "0 s",
+    ])
+    .assert_bad_input(&["--time", "positive"]);
+}

@@ -1,0 +1,48 @@
+//! Why a constrained motion cannot be set up or integrated.
+
+use thiserror::Error;
+
+use crate::Real;
+use crate::calculus::CalculusError;
+use crate::ode::{AdaptiveError, ConfigError};
+
+/// An invalid curve or start, or an integration that failed.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum ConstrainedError {
+    /// The curve's formula does not parse or names lack values.
+    #[error("{0}")]
+    Formula(#[from] CalculusError),
+    /// A value that must be positive (or finite) is not.
+    #[error("{what} is {value}; it must be {must_be}")]
+    Value {
+        /// Which value (`the radius`, `g`, `t_max`, …).
+        what: &'static str,
+        /// The value given.
+        value: Real,
+        /// What it must be.
+        must_be: &'static str,
+    },
+    /// The graph y(x) or its derivatives are undefined (or the tangent vertical) at `x`.
+    #[error(
+        "the curve is undefined or vertical at x = {x} (y = {y}, y' = {slope}); a graph y(x) \
+         cannot carry the body there: use a circle, or start elsewhere"
+    )]
+    Undefined {
+        /// Where.
+        x: Real,
+        /// y there.
+        y: Real,
+        /// y' there.
+        slope: Real,
+    },
+    /// A start given as an angle on a graph, or as x on a circle.
+    #[error("{0}")]
+    Start(String),
+    /// Invalid settings of the adaptive integrator.
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    /// The adaptive integrator could not advance.
+    #[error(transparent)]
+    Integrate(#[from] AdaptiveError),
+}

@@ -1,0 +1,33 @@
+//! Motion constrained to a curve: a bead or a particle on a circle or on a graph y(x) in a
+//! vertical plane under uniform gravity, without friction.
+//!
+//! The curve is a parametrised path r(q) (q = x for a graph, q = φ, the angle from the top,
+//! for a circle of radius R about the origin: r = (R sin φ, R cos φ)). With r' = dr/dq,
+//! Newton's law along the tangent gives the equation of motion
+//!
+//! q̈ = −(g y'(q) + (r'·r'') q̇²) / |r'|²,
+//!
+//! and along the unit normal n (the tangent turned counter-clockwise: up for a graph,
+//! outward for a circle) the normal force
+//!
+//! N·n = m ((r''·n) q̇² + g n_y),
+//!
+//! i.e. m(v²κ + g cos β) with the curvature κ and the slope angle β. A body resting on one side
+//! of the curve ([`Side::Outer`]: on top of a graph, outside a circle; [`Side::Inner`]: below,
+//! inside) can only be pushed: when N reaches zero it leaves the curve. That moment is located
+//! inside the step on the dense output of Dormand-Prince 5(4) by Brent's method, the state is
+//! integrated to it, and the body continues as a free projectile until it meets the curve again
+//! (the landing, located by Brent's method on the closed-form flight) or `t_max`. A threaded
+//! bead ([`Side::Bead`]) never leaves; the curve pulls or pushes as needed.
+//!
+//! Checks (tests in `tests/rigid/constrained.rs`): sliding off a frictionless cylinder from the
+//! top leaves at cos θ = 2/3 + v₀²/(3gR); the loop-the-loop needs h = 5R/2; a bead on a circle
+//! is a pendulum with the exact period; energy is conserved while on the curve.
+
+mod curve;
+mod error;
+mod run;
+
+pub use curve::{Curve, Side};
+pub use error::ConstrainedError;
+pub use run::{BeadOnCurve, BeadRun, BeadSample, Departure, Landing, Start, StopReason};
