@@ -46,6 +46,11 @@
 //! - [`mass`]: point-mass systems (centre of mass, momentum, the centre-of-mass frame), and
 //!   rigid bodies: mass, centre of mass and inertia tensor of shapes, polygons, triangle
 //!   meshes, composites with holes, and the body in a photo ([`mass::image`]).
+//! - [`rigid`]: rotation and rigid bodies: angular kinematics and circular motion, Coulomb
+//!   friction and stick-slip, a body on a curve leaving it where the normal force vanishes,
+//!   bodies hinged to the world (the physical pendulum, the Atwood machine with a massive
+//!   pulley, flywheels; `[[rigid_body]]` in scenarios), rolling and slipping on a slope, rigid
+//!   impacts, and free 3-D bodies and tops (quaternions, Euler's equations).
 //! - [`function`]: a formula with parameter values, evaluated as a function.
 //! - [`simulate`]: the run loop: stop conditions located between steps, observers, divergence
 //!   diagnosis.

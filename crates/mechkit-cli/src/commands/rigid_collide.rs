@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
 use mechkit::rigid::impact::{
-    Contact, HingedBody, HingedImpact, ImpactError, Particle, hinged_impact, release_omega,
+    Contact, HingedImpact, ImpactError, Particle, PivotedBody, hinged_impact, release_omega,
 };
 use serde_json::{Value, json};
 
@@ -60,7 +60,7 @@ fn flag_of(e: &ImpactError) -> &'static str {
 }
 
 /// The hinged body (at rest) and the default contact point (the lower end of a rod).
-fn hinged(args: &RigidCollideArgs) -> Result<(HingedBody, Option<[f64; 2]>, String)> {
+fn hinged(args: &RigidCollideArgs) -> Result<(PivotedBody, Option<[f64; 2]>, String)> {
     let err = |e: ImpactError| anyhow!("{}: {e}", flag_of(&e));
     let mass = || -> Result<f64> {
         let m = args
@@ -80,7 +80,7 @@ fn hinged(args: &RigidCollideArgs) -> Result<(HingedBody, Option<[f64; 2]>, Stri
             "centre" | "center" | "middle" => 0.5 * l,
             other => quantity(other, "--pivot-at", Dimension::LENGTH)?,
         };
-        let rod = HingedBody::rod(mass()?, l, 0.5 * l - from_top, 0.0).map_err(err)?;
+        let rod = PivotedBody::rod(mass()?, l, 0.5 * l - from_top, 0.0).map_err(err)?;
         let lower_end = [0.0, -(l - from_top)];
         let place = if from_top == 0.0 {
             "at its top end".to_string()
@@ -100,7 +100,7 @@ fn hinged(args: &RigidCollideArgs) -> Result<(HingedBody, Option<[f64; 2]>, Stri
             .cm_distance
             .as_deref()
             .map_or(Ok(0.0), |d| quantity(d, "--cm-distance", Dimension::LENGTH))?;
-        let body = HingedBody::new(i, mass()?, [0.0, -d], 0.0).map_err(err)?;
+        let body = PivotedBody::new(i, mass()?, [0.0, -d], 0.0).map_err(err)?;
         let what = format!(
             "body I_O = {} kg m², M = {} kg, centre of mass {} m below the pivot",
             show(i),
@@ -115,7 +115,7 @@ fn hinged(args: &RigidCollideArgs) -> Result<(HingedBody, Option<[f64; 2]>, Stri
             anyhow!("--body needs --pivot \"x, y, z\" (the axis is z through it)")
         })?;
         let pivot = super::body::point(pivot, "--pivot", Dimension::LENGTH)?;
-        let body = HingedBody::from_properties(&loaded.whole, &pivot, 0.0).map_err(err)?;
+        let body = PivotedBody::from_properties(&loaded.whole, &pivot, 0.0).map_err(err)?;
         let what = format!(
             "{} ({}): I_O = {} kg m² about z through the pivot, M = {} kg",
             loaded.title,
@@ -148,7 +148,7 @@ pub fn rigid_collide(args: &RigidCollideArgs) -> Result<Outcome> {
             bail!("give --omega (the body's angular velocity at the impact) or --release-angle")
         }
     };
-    let body = HingedBody { omega, ..body };
+    let body = PivotedBody { omega, ..body };
     let point = match &args.hit_at {
         Some(text) if text.contains(',') => planar(text, "--hit-at", Dimension::LENGTH)?,
         Some(text) => [0.0, -quantity(text, "--hit-at", Dimension::LENGTH)?],
@@ -187,7 +187,7 @@ pub fn rigid_collide(args: &RigidCollideArgs) -> Result<Outcome> {
 }
 
 fn to_json(
-    body: &HingedBody,
+    body: &PivotedBody,
     block: &Particle,
     c: &Contact,
     r: &HingedImpact,
@@ -222,7 +222,7 @@ fn to_json(
 
 fn text(
     what: &str,
-    body: &HingedBody,
+    body: &PivotedBody,
     block: &Particle,
     c: &Contact,
     r: &HingedImpact,

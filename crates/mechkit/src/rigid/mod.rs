@@ -1,10 +1,13 @@
-//! Rotation and rigid bodies: angular kinematics and circular motion, friction and contact,
-//! motion constrained to a curve, rotation about a fixed axis, planar bodies rolling and
-//! slipping, rigid impacts, and free rigid bodies in 3-D.
+//! Rotation and rigid bodies: angular kinematics and circular motion ([`kinematics`]),
+//! friction and stick-slip ([`friction`]), motion constrained to a curve ([`constrained`]),
+//! rotation about a fixed axis ([`fixed_axis`], the bodies of `[[rigid_body]]` scenarios),
+//! planar bodies rolling and slipping ([`rolling`]), rigid impacts ([`mod@impact`]), and free
+//! rigid bodies and tops in 3-D ([`free3d`]); [`elliptic`] holds the elliptic integrals and
+//! Jacobi functions their exact solutions are written in.
 //!
 //! Each model is a value type with a checked constructor and its own error type, integrated
 //! by the steppers of [`crate::ode`]; regime switches (stick to slip, slipping to rolling,
-//! leaving a surface) are located inside a step, never detected a step late.
+//! leaving a surface, a wheel stopping) are located inside a step, never detected a step late.
 
 pub mod constrained;
 pub mod elliptic;
@@ -14,3 +17,11 @@ pub mod friction;
 pub mod impact;
 pub mod kinematics;
 pub mod rolling;
+
+pub use constrained::{BeadOnCurve, Curve};
+pub use fixed_axis::HingedBody;
+pub use free3d::{FreeBody, SpinningBody};
+pub use friction::{Coulomb, Incline, SpringBlock};
+pub use impact::{Particle, PivotedBody, PlanarBody, hinged_impact, impact};
+pub use kinematics::{AngularMotion, CircularMotion, UniformAngularAcceleration};
+pub use rolling::{RollingBody, RollingMotion};

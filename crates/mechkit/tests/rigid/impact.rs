@@ -7,7 +7,7 @@
 //! rod landing on its end (L about the contact conserved, the end stopped for e = 0).
 
 use mechkit::rigid::impact::{
-    Contact, HingedBody, ImpactError, Particle, PlanarBody, hinged_impact, impact, release_omega,
+    Contact, ImpactError, Particle, PivotedBody, PlanarBody, hinged_impact, impact, release_omega,
 };
 
 const G: f64 = 9.81;
@@ -32,11 +32,11 @@ fn at_end(l: f64, e: f64) -> Contact {
 #[test]
 fn c16_b6_rod_hits_block() {
     let (big_m, l) = (1.0, 1.0);
-    let rod = HingedBody::rod(big_m, l, 0.5 * l, 0.0).unwrap();
+    let rod = PivotedBody::rod(big_m, l, 0.5 * l, 0.0).unwrap();
     let w0 = release_omega(&rod, G, std::f64::consts::FRAC_PI_2);
     assert!((w0 - (3.0 * G / l).sqrt()).abs() < 1e-14);
     assert!((w0 - 5.42494).abs() < 1e-5);
-    let rod = HingedBody { omega: w0, ..rod };
+    let rod = PivotedBody { omega: w0, ..rod };
     let m = big_m / 3.0;
     let elastic = hinged_impact(&rod, &block(m), &at_end(l, 1.0)).unwrap();
     assert!(elastic.omega_after.abs() < 1e-15, "{}", elastic.omega_after);
@@ -58,7 +58,7 @@ fn c16_b6_rod_hits_block() {
 /// K_after/K_before = 1 − (1 − e²) m_eff u²/(2 K_before).
 #[test]
 fn hinged_impact_conserves_angular_momentum_and_loses_energy_by_e() {
-    let rod = HingedBody::rod(2.0, 1.2, 0.6, 3.0).unwrap();
+    let rod = PivotedBody::rod(2.0, 1.2, 0.6, 3.0).unwrap();
     for e in [0.0, 0.3, 0.7, 1.0] {
         for (m, y, vx) in [(0.2, -1.2, -1.0), (1.0, -0.8, 0.5), (7.0, -0.3, -4.0)] {
             let particle = Particle {
@@ -95,7 +95,7 @@ fn hinged_impact_conserves_angular_momentum_and_loses_energy_by_e() {
 #[test]
 fn centre_of_percussion_has_no_hinge_impulse() {
     let l = 0.9;
-    let rod = HingedBody::rod(1.5, l, 0.5 * l, 0.0).unwrap();
+    let rod = PivotedBody::rod(1.5, l, 0.5 * l, 0.0).unwrap();
     let cp = rod.centre_of_percussion().unwrap();
     assert!((cp - 2.0 * l / 3.0).abs() < 1e-15);
     let ball = Particle {
@@ -193,20 +193,20 @@ fn a_rod_landing_on_its_end() {
 #[test]
 fn bad_bodies_and_contacts() {
     assert!(matches!(
-        HingedBody::new(0.0, 1.0, [0.0, -0.5], 1.0),
+        PivotedBody::new(0.0, 1.0, [0.0, -0.5], 1.0),
         Err(ImpactError::ZeroInertia { .. })
     ));
     assert!(matches!(
-        HingedBody::new(0.1, 1.0, [0.0, -0.5], 1.0),
+        PivotedBody::new(0.1, 1.0, [0.0, -0.5], 1.0),
         Err(ImpactError::ParallelAxis { .. })
     ));
-    let outside = HingedBody::rod(1.0, 1.0, 2.0, 1.0).unwrap();
+    let outside = PivotedBody::rod(1.0, 1.0, 2.0, 1.0).unwrap();
     let w = outside.warnings([0.0, -2.5]);
     assert!(
         w.iter().any(|w| w.contains("pivot is 1.5 m outside")),
         "{w:?}"
     );
-    let rod = HingedBody::rod(1.0, 1.0, 0.5, 1.0).unwrap();
+    let rod = PivotedBody::rod(1.0, 1.0, 0.5, 1.0).unwrap();
     assert!(rod.warnings([0.0, -1.0]).is_empty());
     assert!(rod.warnings([0.0, -1.7])[0].contains("off the body"));
     let away = Particle {

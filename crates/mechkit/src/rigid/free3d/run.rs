@@ -31,7 +31,7 @@ pub enum SpinIntegrator {
         /// The step (s), shortened so that whole steps cover the run.
         dt: Real,
     },
-    /// The splitting into exact rotations about the body axes ([`super::splitting`]): fixed
+    /// The splitting into exact rotations about the body axes: fixed
     /// step, symplectic, second order, `|L|` and `|q|` kept to rounding.
     Splitting {
         /// The step (s), shortened so that whole steps cover the run.

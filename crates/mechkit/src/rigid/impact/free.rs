@@ -127,7 +127,7 @@ impl PlanarBody {
     }
 }
 
-/// The result of [`impact`].
+/// The result of [`impact()`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FreeImpact {
     /// The first body after.

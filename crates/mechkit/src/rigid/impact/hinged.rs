@@ -7,7 +7,7 @@ use crate::mass::{MassProperties, Vec3};
 
 /// A rigid body turning about a fixed pivot at the origin (axis z).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct HingedBody {
+pub struct PivotedBody {
     /// Moment of inertia about the pivot's axis, I_O (kg m²).
     pub inertia: Real,
     /// Mass (kg).
@@ -45,7 +45,7 @@ fn finite(what: &'static str, value: Real) -> Result<Real, ImpactError> {
     }
 }
 
-impl HingedBody {
+impl PivotedBody {
     /// A checked body: I_O > 0 (else [`ImpactError::ZeroInertia`]), M > 0, and I_O ≥ M d²
     /// (the parallel-axis theorem).
     pub fn new(
@@ -83,8 +83,8 @@ impl HingedBody {
     /// (0, −offset), I_O = M L²/12 + M offset².
     ///
     /// ```
-    /// use mechkit::rigid::impact::HingedBody;
-    /// let rod = HingedBody::rod(3.0, 2.0, 1.0, 0.0).unwrap();
+    /// use mechkit::rigid::impact::PivotedBody;
+    /// let rod = PivotedBody::rod(3.0, 2.0, 1.0, 0.0).unwrap();
     /// assert!((rod.inertia - 3.0 * 4.0 / 3.0).abs() < 1e-15);
     /// assert_eq!(rod.centre_of_mass, [0.0, -1.0]);
     /// ```
@@ -191,12 +191,12 @@ impl HingedBody {
 /// mass at angle `theta0` from the vertical below the pivot: ω₀ = sqrt(2 M g d (1 − cos θ₀)/I_O).
 ///
 /// ```
-/// use mechkit::rigid::impact::{HingedBody, release_omega};
-/// let rod = HingedBody::rod(1.0, 1.0, 0.5, 0.0).unwrap();
+/// use mechkit::rigid::impact::{PivotedBody, release_omega};
+/// let rod = PivotedBody::rod(1.0, 1.0, 0.5, 0.0).unwrap();
 /// let w = release_omega(&rod, 9.81, std::f64::consts::FRAC_PI_2);
 /// assert!((w - (3.0 * 9.81_f64).sqrt()).abs() < 1e-14);
 /// ```
-pub fn release_omega(body: &HingedBody, g: Real, theta0: Real) -> Real {
+pub fn release_omega(body: &PivotedBody, g: Real, theta0: Real) -> Real {
     (2.0 * body.mass * g * body.cm_distance() * (1.0 - theta0.cos()) / body.inertia).sqrt()
 }
 
@@ -241,10 +241,10 @@ pub struct HingedImpact {
 /// particle). Frictionless: the impulse is along the normal.
 ///
 /// ```
-/// use mechkit::rigid::impact::{Contact, HingedBody, Particle, hinged_impact};
+/// use mechkit::rigid::impact::{Contact, PivotedBody, Particle, hinged_impact};
 /// // a rod (M = 1 kg, L = 1 m) hanging from its top end, swinging at 2 rad/s, hits a block
 /// // of M/3 at its lower end elastically: the rod stops, the block takes ω₀ L
-/// let rod = HingedBody::rod(1.0, 1.0, 0.5, 2.0).unwrap();
+/// let rod = PivotedBody::rod(1.0, 1.0, 0.5, 2.0).unwrap();
 /// let block = Particle { mass: 1.0 / 3.0, velocity: [0.0, 0.0] };
 /// let hit = Contact { point: [0.0, -1.0], normal: [1.0, 0.0], restitution: 1.0 };
 /// let r = hinged_impact(&rod, &block, &hit).unwrap();
@@ -252,7 +252,7 @@ pub struct HingedImpact {
 /// assert!((r.velocity_after[0] - 2.0).abs() < 1e-15);
 /// ```
 pub fn hinged_impact(
-    body: &HingedBody,
+    body: &PivotedBody,
     particle: &Particle,
     contact: &Contact,
 ) -> Result<HingedImpact, ImpactError> {

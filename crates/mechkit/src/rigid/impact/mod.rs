@@ -9,7 +9,7 @@
 //!
 //! r the arm from each centre of mass to P and I the moment of inertia about it; Newton's law
 //! of restitution u' = −e u gives J = −(1 + e) m_eff u, and the kinetic energy changes by
-//! ΔK = −½ (1 − e²) m_eff u² exactly. A body hinged at a pivot O ([`HingedBody`]) takes an
+//! ΔK = −½ (1 − e²) m_eff u² exactly. A body hinged at a pivot O ([`PivotedBody`]) takes an
 //! unknown impulse from the hinge, so its response is written about O: its term is
 //! (r_O × n)²/I_O with no 1/m, the angular momentum about O is conserved, and the hinge impulse
 //! follows from the change of the body's momentum. An immovable body ([`PlanarBody::fixed`]:
@@ -29,4 +29,4 @@ pub use contact::Contact;
 pub(crate) use contact::{cross, spin};
 pub use error::ImpactError;
 pub use free::{FreeImpact, PlanarBody, impact};
-pub use hinged::{HingedBody, HingedImpact, Particle, hinged_impact, release_omega};
+pub use hinged::{HingedImpact, Particle, PivotedBody, hinged_impact, release_omega};
