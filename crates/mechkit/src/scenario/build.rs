@@ -177,34 +177,87 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
             .error_components
             .get_or_insert(2 * q.len() + force_names.len());
     }
+    assemble(
+        &root,
+        Model {
+            name,
+            title,
+            dim,
+            constants,
+            system,
+            initial: State::from_qv(0.0, &q, &v),
+            stepping,
+            bodies,
+            forces: force_names,
+            events: contacts.events,
+            warnings,
+        },
+    )
+}
+
+/// What a scenario's model is, before the tables that name its state are read.
+pub(crate) struct Model<'n> {
+    pub name: &'n str,
+    pub title: String,
+    pub dim: usize,
+    pub constants: Vec<Constant>,
+    pub system: ParticleSystem,
+    pub initial: State,
+    pub stepping: Stepping,
+    pub bodies: Vec<String>,
+    pub forces: Vec<String>,
+    /// Events the model brings (collisions, a wheel stopping), after those of `[[event]]`.
+    pub events: Vec<crate::simulate::Event>,
+    pub warnings: Vec<String>,
+}
+
+/// Reads `[stop]`, `[[event]]`, `[observe]` and `[output]` against the model's names.
+pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, ScenarioError> {
+    let Model {
+        name,
+        title,
+        dim,
+        constants,
+        system,
+        initial,
+        stepping,
+        bodies,
+        forces,
+        events: model_events,
+        mut warnings,
+    } = m;
+    let env = ValueEnv {
+        constants: &constants,
+        mass: None,
+        later: &[],
+    };
     let names = NameContext {
         dim,
         bodies: &bodies,
-        forces: &force_names,
+        forces: &forces,
         constants: &constants,
         bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
         level: VarLevel::Derived,
         coordinates: system.coordinates(),
     };
-    let (stop, t_max, max_steps) = read_stop(&root, env, &names)?;
-    let mut events = read_events(&root, &names)?;
-    events.extend(contacts.events);
-    let observables = read_observe(&root, &names)?;
-    let (every, output_times, plots) = read_output(&root, &names, dim, env)?;
+    let (stop, t_max, max_steps) = read_stop(root, env, &names)?;
+    let mut events = read_events(root, &names)?;
+    events.extend(model_events);
+    let observables = read_observe(root, &names)?;
+    let (every, output_times, plots) = read_output(root, &names, dim, env)?;
     if t_max.is_none() && max_steps.is_none() {
         warnings.push(format!(
             "[stop] has no t_max: the run is bounded by {} steps; set t_max",
             crate::simulate::DEFAULT_MAX_STEPS
         ));
     }
-
     Ok(Scenario {
         name: name.to_string(),
         title,
         dim,
         constants,
         system,
-        initial: State::from_qv(0.0, &q, &v),
+        initial,
         stepping,
         t_max,
         max_steps,
@@ -271,6 +324,41 @@ pub(crate) fn constants(
     Ok(out)
 }
 
+/// The `name` of the `index`-th of `count` bodies (`body`, or `body1`, … when unnamed): a name
+/// formulas can use as `name.<field>`, not `work` or `power`, and not one of `taken`.
+pub(crate) fn body_name(
+    t: &Table<'_, '_>,
+    index: usize,
+    count: usize,
+    taken: &[String],
+    field: &str,
+) -> Result<String, ScenarioError> {
+    let Some((n, span)) = t.string("name")? else {
+        return Ok(if count == 1 {
+            "body".to_string()
+        } else {
+            format!("body{}", index + 1)
+        });
+    };
+    let valid = n
+        .chars()
+        .next()
+        .is_some_and(|c| c.is_alphabetic() || c == '_')
+        && n.chars().all(|c| c.is_alphanumeric() || c == '_');
+    let message = if !valid {
+        format!(
+            "body name `{n}` must be a letter or `_` followed by letters, digits or `_` (it is used in formulas as `{n}.{field}`)"
+        )
+    } else if ["work", "power"].contains(&n) {
+        format!("`{n}` cannot name a body: `{n}.F` means the {n} of force F")
+    } else if taken.iter().any(|b| b == n) {
+        format!("two bodies are named `{n}`")
+    } else {
+        return Ok(n.to_string());
+    };
+    Err(t.src.error(ErrorKind::Invalid, message, span))
+}
+
 type Bodies = (
     Vec<String>,
     Vec<Real>,
@@ -294,35 +382,7 @@ fn bodies(
     let mut radius = Vec::new();
     for (i, t) in tables.iter().enumerate() {
         t.check_keys(BODY_KEYS)?;
-        let name = match t.string("name")? {
-            Some((n, span)) => {
-                let valid = n
-                    .chars()
-                    .next()
-                    .is_some_and(|c| c.is_alphabetic() || c == '_')
-                    && n.chars().all(|c| c.is_alphanumeric() || c == '_');
-                if !valid {
-                    return Err(t.src.error(ErrorKind::Invalid, format!("body name `{n}` must be a letter or `_` followed by letters, digits or `_` (it is used in formulas as `{n}.x`)"), span));
-                }
-                if ["work", "power"].contains(&n) {
-                    return Err(t.src.error(
-                        ErrorKind::Invalid,
-                        format!("`{n}` cannot name a body: `{n}.F` means the {n} of force F"),
-                        span,
-                    ));
-                }
-                if names.iter().any(|b: &String| b == n) {
-                    return Err(t.src.error(
-                        ErrorKind::Invalid,
-                        format!("two bodies are named `{n}`"),
-                        span,
-                    ));
-                }
-                n.to_string()
-            }
-            None if tables.len() == 1 => "body".to_string(),
-            None => format!("body{}", i + 1),
-        };
+        let name = body_name(t, i, tables.len(), &names, "x")?;
         let env = ValueEnv {
             constants,
             mass: None,

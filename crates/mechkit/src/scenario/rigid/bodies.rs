@@ -9,6 +9,7 @@ use crate::mass::{Body, MassProperties, Vec3};
 use crate::rigid::fixed_axis::HingedBody;
 use crate::scenario::bodyfile::geometry::{direction, points};
 use crate::scenario::bodyfile::{BodyFile, part};
+use crate::scenario::build::body_name;
 use crate::scenario::doc::Table;
 use crate::scenario::error::{ErrorKind, ScenarioError};
 use crate::scenario::values::{Constant, ValueEnv, required_scalar, scalar};
@@ -60,29 +61,7 @@ pub(crate) fn read_rigid_bodies(
     };
     for (i, t) in tables.iter().enumerate() {
         t.check_keys(RIGID_KEYS)?;
-        let name = match t.string("name")? {
-            Some((n, span)) => {
-                let valid = n
-                    .chars()
-                    .next()
-                    .is_some_and(|c| c.is_alphabetic() || c == '_')
-                    && n.chars().all(|c| c.is_alphanumeric() || c == '_');
-                if !valid || out.names.iter().any(|b| b == n) {
-                    return Err(t.src.error(
-                        ErrorKind::Invalid,
-                        if valid {
-                            format!("two rigid bodies are named `{n}`")
-                        } else {
-                            format!("rigid body name `{n}` must be a letter or `_` followed by letters, digits or `_` (formulas use it as `{n}.theta`)")
-                        },
-                        span,
-                    ));
-                }
-                n.to_string()
-            }
-            None if tables.len() == 1 => "body".to_string(),
-            None => format!("body{}", i + 1),
-        };
+        let name = body_name(t, i, tables.len(), &out.names, "theta")?;
         let pivot = if t.get("pivot").is_some() {
             points(t, "pivot", env, 1, 3)?[0]
         } else {

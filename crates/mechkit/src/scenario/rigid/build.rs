@@ -3,15 +3,11 @@
 use super::bodies::read_rigid_bodies;
 use super::torques::read_torques;
 use crate::ode::State;
-use crate::particles::{BodyRef, NameContext, VarLevel};
 use crate::scenario::Scenario;
+use crate::scenario::build::{Model, assemble};
 use crate::scenario::doc::Table;
 use crate::scenario::error::{ErrorKind, ScenarioError};
-use crate::scenario::events::read_events;
 use crate::scenario::integrator::read_integrator;
-use crate::scenario::observe::read_observe;
-use crate::scenario::plot::read_output;
-use crate::scenario::stop::read_stop;
 use crate::scenario::values::{Constant, ValueEnv};
 
 /// State names of a scenario with rigid bodies.
@@ -74,18 +70,8 @@ pub(crate) fn build_rigid(
     };
     let stepping = read_integrator(root, env, &system)?;
     let bodies = rigid.names.clone();
-    let names = NameContext {
-        dim: 1,
-        bodies: &bodies,
-        forces: &force_names,
-        constants: &constants,
-        bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
-        level: VarLevel::Derived,
-        coordinates: system.coordinates(),
-    };
-    let (stop, t_max, max_steps) = read_stop(root, env, &names)?;
-    let mut events = read_events(root, &names)?;
     // dry friction acts against the turning until the body stops: there the regime ends
+    let mut events = Vec::new();
     for (b, direction, torque) in std::mem::take(&mut rigid.dry) {
         let body = &bodies[b];
         events.push(
@@ -97,30 +83,20 @@ pub(crate) fn build_rigid(
             "`{body}` has dry bearing friction (`{torque}`): the run ends when it stops turning"
         ));
     }
-    let observables = read_observe(root, &names)?;
-    let (every, output_times, plots) = read_output(root, &names, 1, env)?;
-    if t_max.is_none() && max_steps.is_none() {
-        warnings.push(format!(
-            "[stop] has no t_max: the run is bounded by {} steps; set t_max",
-            crate::simulate::DEFAULT_MAX_STEPS
-        ));
-    }
-    Ok(Scenario {
-        name: name.to_string(),
-        title,
-        dim: 1,
-        constants,
-        system,
-        initial: State::from_qv(0.0, &rigid.theta, &rigid.omega),
-        stepping,
-        t_max,
-        max_steps,
-        stop,
-        events,
-        observables,
-        every,
-        output_times,
-        plots,
-        warnings,
-    })
+    assemble(
+        root,
+        Model {
+            name,
+            title,
+            dim: 1,
+            constants,
+            system,
+            initial: State::from_qv(0.0, &rigid.theta, &rigid.omega),
+            stepping,
+            bodies,
+            forces: force_names,
+            events,
+            warnings,
+        },
+    )
 }
