@@ -52,8 +52,19 @@ pub struct RigidCollideArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub hit_at: Option<String>,
     /// Mass of the block (a free particle at the contact point).
-    #[arg(long, allow_hyphen_values = true)]
-    pub block_mass: String,
+    #[arg(long, allow_hyphen_values = true, required_unless_present = "landing")]
+    pub block_mass: Option<String>,
+    /// Instead of a hinged body: a free rod (--rod --mass --length) landing on its lower end
+    /// on the ground, tilted by --tilt above the horizontal, its centre of mass moving at
+    /// --velocity and turning at --omega.
+    #[arg(long, requires = "rod", conflicts_with_all = ["block_mass", "release_angle", "hit_at"])]
+    pub landing: bool,
+    /// With --landing: the rod's angle above the horizontal at the touch-down (0 to 90 deg).
+    #[arg(long, allow_hyphen_values = true, requires = "landing")]
+    pub tilt: Option<String>,
+    /// With --landing: the velocity of the rod's centre of mass before it lands, "vx, vy".
+    #[arg(long, allow_hyphen_values = true, requires = "landing")]
+    pub velocity: Option<String>,
     /// Velocity of the block before the impact [default: 0], "vx" or "vx, vy".
     #[arg(long, allow_hyphen_values = true, default_value = "0")]
     pub block_velocity: String,

@@ -14,6 +14,7 @@ mod input;
 mod potential;
 mod power;
 mod rigid_collide;
+mod rigid_landing;
 mod rocket;
 mod roll;
 mod rotation;

@@ -16,7 +16,7 @@ use super::{Outcome, print};
 use crate::args::RigidCollideArgs;
 
 /// "vx" or "vx, vy" (or "x, y") with units of `dim`.
-fn planar(text: &str, flag: &str, dim: Dimension) -> Result<[f64; 2]> {
+pub(super) fn planar(text: &str, flag: &str, dim: Dimension) -> Result<[f64; 2]> {
     let items = split_top_level(text, ',');
     if !(1..=2).contains(&items.len()) {
         bail!("{flag} `{text}` needs 1 or 2 components (x, y), e.g. \"2 m/s\" or \"2 m/s, 0\"");
@@ -31,7 +31,7 @@ fn planar(text: &str, flag: &str, dim: Dimension) -> Result<[f64; 2]> {
     Ok(out)
 }
 
-fn restitution(text: &str) -> Result<f64> {
+pub(super) fn restitution(text: &str) -> Result<f64> {
     let e = match text.trim().to_ascii_lowercase().as_str() {
         "elastic" => 1.0,
         "perfectly-inelastic" | "inelastic" | "plastic" => 0.0,
@@ -131,6 +131,9 @@ fn hinged(args: &RigidCollideArgs) -> Result<(PivotedBody, Option<[f64; 2]>, Str
 }
 
 pub fn rigid_collide(args: &RigidCollideArgs) -> Result<Outcome> {
+    if args.landing {
+        return super::rigid_landing::landing(args);
+    }
     let (body, default_hit, what) = hinged(args)?;
     let g = quantity(&args.g, "--g", Dimension::ACCELERATION)?;
     let (omega, release) = match (&args.omega, &args.release_angle) {
@@ -158,7 +161,11 @@ pub fn rigid_collide(args: &RigidCollideArgs) -> Result<Outcome> {
     };
     let normal = planar(&args.normal, "--normal", Dimension::NONE)?;
     let block = Particle {
-        mass: quantity(&args.block_mass, "--block-mass", Dimension::MASS)?,
+        mass: quantity(
+            args.block_mass.as_deref().unwrap_or_default(),
+            "--block-mass",
+            Dimension::MASS,
+        )?,
         velocity: planar(
             &args.block_velocity,
             "--block-velocity",

@@ -178,3 +178,69 @@ fn warnings_and_errors() {
     ])
     .assert_bad_input(&["--omega", "--release-angle"]);
 }
+
+/// A rod falling flat at v lands on one end with e = 0: ω = 3v/(2L) and the centre of mass
+/// keeps 3v/4; tilted, with spin and e = 0.5, the end rebounds at e times its approach speed
+/// and the angular momentum about the contact is unchanged.
+#[test]
+fn rod_landing_on_its_end() {
+    let j = json(&[
+        "--landing",
+        "--rod",
+        "--mass",
+        "2 kg",
+        "--length",
+        "1 m",
+        "--tilt",
+        "0 deg",
+        "--velocity",
+        "0, -4 m/s",
+        "-e",
+        "0",
+    ]);
+    assert!((num(&j, "/after/omega") + 6.0).abs() < 1e-14);
+    assert!((num(&j, "/after/velocity/1") + 3.0).abs() < 1e-14);
+    assert!(num(&j, "/after/end_velocity/1").abs() < 1e-14);
+    let j = json(&[
+        "--landing",
+        "--rod",
+        "--mass",
+        "1.5 kg",
+        "--length",
+        "0.8 m",
+        "--tilt",
+        "35 deg",
+        "--velocity",
+        "1 m/s, -3 m/s",
+        "--omega",
+        "2 rad/s",
+        "-e",
+        "0.5",
+    ]);
+    let u0 = num(&j, "/before/end_velocity/1");
+    assert!((num(&j, "/after/end_velocity/1") + 0.5 * u0).abs() < 1e-13);
+    let (l0, l1) = (
+        num(&j, "/angular_momentum_contact/before"),
+        num(&j, "/angular_momentum_contact/after"),
+    );
+    assert!((l0 - l1).abs() < 1e-14 * l0.abs().max(1.0));
+    let lost = num(&j, "/kinetic_energy/change");
+    assert!((lost - num(&j, "/kinetic_energy/change_closed_form")).abs() < 1e-13);
+    // an end moving up cannot land
+    let out = Dir::new().run(&[
+        "rigid-collide",
+        "--landing",
+        "--rod",
+        "--mass",
+        "1 kg",
+        "--length",
+        "1 m",
+        "--tilt",
+        "10 deg",
+        "--velocity",
+        "0, 2 m/s",
+        "-e",
+        "0",
+    ]);
+    out.assert_bad_input(&["--velocity"]);
+}
