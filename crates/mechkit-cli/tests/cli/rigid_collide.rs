@@ -9,9 +9,7 @@ fn json(args: &[&str]) -> serde_json::Value {
     let mut all = vec!["rigid-collide"];
     all.extend_from_slice(args);
     all.push("--json");
-    let out = Dir::new().run(&all);
-    out.assert_code(0);
-    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
+    Dir::new().run(&all).json()
 }
 
 #[test]

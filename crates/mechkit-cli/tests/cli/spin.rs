@@ -11,9 +11,7 @@ fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
     let mut all = vec!["spin"];
     all.extend_from_slice(args);
     all.push("--json");
-    let out = dir.run(&all);
-    out.assert_code(0);
-    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
+    dir.run(&all).json()
 }
 
 /// K(m) by the midpoint rule on ∫₀^{π/2} dθ/√(1 − m sin²θ) (spectrally accurate for a

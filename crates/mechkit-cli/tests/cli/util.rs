@@ -19,6 +19,13 @@ pub struct Output {
 }
 
 impl Output {
+    /// Standard output as JSON, after checking that the command succeeded.
+    pub fn json(&self) -> serde_json::Value {
+        self.assert_code(0);
+        serde_json::from_str(&self.stdout)
+            .unwrap_or_else(|e| panic!("stdout is not JSON ({e}):\n{}", self.stdout))
+    }
+
     /// Panics with the whole output unless the exit code is `code`.
     pub fn assert_code(&self, code: i32) -> &Self {
         assert_eq!(
