@@ -17,6 +17,7 @@ pub mod friction;
 pub mod impact;
 pub mod kinematics;
 pub mod rolling;
+pub(crate) mod segment;
 
 pub use constrained::{BeadOnCurve, Curve};
 pub use fixed_axis::HingedBody;

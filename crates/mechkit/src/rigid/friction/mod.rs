@@ -25,7 +25,6 @@
 
 mod coulomb;
 mod error;
-pub(crate) mod segment;
 mod spring_block;
 mod stick_slip;
 

@@ -4,10 +4,10 @@
 //! motion.
 
 use super::error::FrictionError;
-use super::segment::{SegmentEnd, run_segment};
 use super::spring_block::SpringBlock;
 use crate::Real;
 use crate::ode::{AdaptiveConfig, AdaptiveRk, AdaptiveStats, OdeSystem, State, Tableau};
+use crate::rigid::segment::{SegmentEnd, run_segment};
 
 /// The regime of the block relative to the surface.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -6,7 +6,7 @@ use super::error::RollingError;
 use super::motion::RollingMotion;
 use crate::Real;
 use crate::ode::{AdaptiveConfig, AdaptiveRk, AdaptiveStats, OdeSystem, State, Tableau};
-use crate::rigid::friction::segment::{SegmentEnd, run_segment};
+use crate::rigid::segment::{SegmentEnd, run_segment};
 
 /// The regime of the contact.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -3,7 +3,7 @@
 //! method, and the step is then redone up to exactly that time, so the next regime starts
 //! from a state the integrator reached, not from an interpolated one.
 //!
-//! Shared by the stick-slip block ([`super::SpringBlock`]) and the rolling body
+//! Shared by the stick-slip block ([`crate::rigid::friction::SpringBlock`]) and the rolling body
 //! ([`crate::rigid::rolling`]).
 
 use crate::Real;
