@@ -34,10 +34,22 @@ pub struct RotationArgs {
     /// Radius of the circle (circular motion), e.g. "50 m".
     #[arg(long, allow_hyphen_values = true)]
     pub radius: Option<String>,
-    /// Speed on the circle, e.g. "10 m/s" (needs --radius): ω = v/R, also the rolling
-    /// condition of a wheel of radius R.
-    #[arg(long, allow_hyphen_values = true, requires = "radius", conflicts_with_all = ["angular_speed", "period"])]
+    /// Speed on the circle, e.g. "10 m/s" (with --radius, or with --centripetal): ω = v/R, also
+    /// the rolling condition of a wheel of radius R.
+    #[arg(long, allow_hyphen_values = true, conflicts_with_all = ["angular_speed", "period"])]
     pub speed: Option<String>,
+    /// The centripetal acceleration allowed, e.g. "0.1 gn" (standard gravity) or "1 m/s^2", with --speed instead of
+    /// --radius: the smallest circle is R = v²/a.
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        requires = "speed",
+        conflicts_with = "radius"
+    )]
+    pub centripetal: Option<String>,
+    /// An angle turned on the circle, e.g. "90 deg": the time it takes (θ/ω) and the arc (θR).
+    #[arg(long, allow_hyphen_values = true)]
+    pub turn: Option<String>,
     /// Angular velocity of the circular motion, e.g. "0.2 rad/s" or "33 rpm".
     #[arg(long, allow_hyphen_values = true, conflicts_with = "period")]
     pub angular_speed: Option<String>,

@@ -28,7 +28,12 @@ pub fn rotation(args: &RotationArgs) -> Result<Outcome> {
         uniform(args)?
     } else if args.omega_vector.is_some() {
         vector(args)?
-    } else if args.radius.is_some() || args.period.is_some() || args.angular_speed.is_some() {
+    } else if args.radius.is_some()
+        || args.period.is_some()
+        || args.angular_speed.is_some()
+        || args.centripetal.is_some()
+        || args.speed.is_some()
+    {
         circle(args)?
     } else {
         bail!(
@@ -171,11 +176,24 @@ fn flag_of(e: &KinematicsError) -> &'static str {
 }
 
 fn circle(args: &RotationArgs) -> Result<(Value, String)> {
-    let radius = args
+    let mut radius = args
         .radius
         .as_deref()
         .map(|r| quantity(r, "--radius", Dimension::LENGTH))
         .transpose()?;
+    if let (Some(a), Some(v)) = (&args.centripetal, &args.speed) {
+        let a = quantity(a, "--centripetal", Dimension::ACCELERATION)?;
+        let v = quantity(v, "--speed", Dimension::VELOCITY)?;
+        if !(a > 0.0 && a.is_finite()) {
+            bail!("--centripetal must be a positive acceleration, e.g. \"0.1 gn\" or \"1 m/s^2\"");
+        }
+        radius = Some(v * v / a);
+    }
+    if args.speed.is_some() && radius.is_none() {
+        bail!(
+            "--speed needs --radius, or --centripetal (the acceleration allowed) for the smallest radius"
+        );
+    }
     let err = |e: KinematicsError| anyhow!("{}: {e}", flag_of(&e));
     let motion = if let Some(v) = &args.speed {
         let v = quantity(v, "--speed", Dimension::VELOCITY)?;
@@ -226,6 +244,25 @@ fn circle(args: &RotationArgs) -> Result<(Value, String)> {
             ),
         )
     };
+    if let Some(turn) = &args.turn {
+        let angle = quantity(turn, "--turn", Dimension::NONE)?;
+        if motion.omega == 0.0 {
+            bail!("--turn: the body does not turn (ω = 0)");
+        }
+        let time = (angle / motion.omega).abs();
+        body["turn"] =
+            json!({"angle": angle, "time": time, "arc": radius.map(|r| angle.abs() * r)});
+        let arc = radius.map_or_else(String::new, |r| {
+            format!(", along an arc of {} m", show(angle.abs() * r))
+        });
+        let _ = writeln!(
+            text,
+            "turning through {} rad ({}°) takes θ/ω = {} s{arc}",
+            show(angle),
+            show(angle.to_degrees()),
+            show(time)
+        );
+    }
     if let Some(lat) = &args.latitude {
         let lambda = quantity(lat, "--latitude", Dimension::NONE)?;
         let at = motion.at_latitude(lambda).map_err(err)?;

@@ -83,3 +83,26 @@ fn bad_rotation_input() {
     ])
     .assert_bad_input(&["--time", "positive"]);
 }
+
+/// A speed and an acceleration limit give the smallest circle R = v²/a; turning through an
+/// angle θ takes θ/ω along an arc θR. Without a radius or a limit, a speed is an error.
+#[test]
+fn acceleration_limit_and_turn() {
+    let j = json(&[
+        "--speed",
+        "30 m/s",
+        "--centripetal",
+        "2 m/s^2",
+        "--turn",
+        "180 deg",
+    ]);
+    assert!((num(&j, "/radius") - 450.0).abs() < 1e-12);
+    assert!((num(&j, "/centripetal") - 2.0).abs() < 1e-14);
+    let half_turn = std::f64::consts::PI * 450.0 / 30.0;
+    assert!((num(&j, "/turn/time") - half_turn).abs() < 1e-12);
+    assert!((num(&j, "/turn/arc") - std::f64::consts::PI * 450.0).abs() < 1e-10);
+    let out = Dir::new().run(&["rotation", "--speed", "30 m/s"]);
+    out.assert_bad_input(&["--radius", "--centripetal"]);
+    let out = Dir::new().run(&["rotation", "--speed", "30 m/s", "--centripetal", "0 m/s^2"]);
+    out.assert_bad_input(&["--centripetal"]);
+}
