@@ -16,7 +16,7 @@ pub struct SweepOptions {
     /// Only this slice of the runs.
     pub shard: Option<Shard>,
     /// A plot to record in every run for the overlay, e.g. `v(x)`; `Some("")` means the
-    /// scenario's first plot.
+    /// scenario's first plot, if it has one.
     pub plot: Option<String>,
 }
 
@@ -72,12 +72,7 @@ pub fn run_sweep(
         .map_err(|source| SweepError::Scenario { source })?;
     let spec = match &options.plot {
         None => None,
-        Some(s) if s.trim().is_empty() => Some(base.plots.first().cloned().ok_or_else(|| {
-            SweepError::Sampling(
-                "the scenario has no plot in [output] plots\n  = hint: name one with --plot \"v(x)\""
-                    .into(),
-            )
-        })?),
+        Some(s) if s.trim().is_empty() => base.plots.first().cloned(),
         Some(s) => Some(plot_spec(&base, s)?),
     };
     let len = grid.len();
