@@ -90,14 +90,20 @@ pub fn sweep(args: &SweepArgs) -> Result<Outcome> {
             None => overlay.file_stem.clone(),
         };
         let path = dir.join(format!("{stem}.svg"));
-        let title = format!("{}: {}", overlay.spec, grid.describe());
+        let sets: Vec<&str> = grid.params.iter().map(|p| p.text.as_str()).collect();
+        let title = format!("{} runs, {}", table.rows.len(), sets.join("; "));
         plot::render_svg(&overlay, &title, &path)?;
         plot_path = Some(path);
     }
     let failed = table
         .rows
         .iter()
-        .filter(|r| matches!(r.stop_reason.as_str(), "diverged" | "step_too_small" | "zeno"))
+        .filter(|r| {
+            matches!(
+                r.stop_reason.as_str(),
+                "diverged" | "step_too_small" | "zeno"
+            )
+        })
         .count();
     if failed > 0 {
         eprintln!(
@@ -164,8 +170,9 @@ pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
     }
     let mut parts = Vec::new();
     for f in &files {
-        let text = std::fs::read_to_string(f)
-            .with_context(|| format!("cannot read {}\n  = hint: check the file name", f.display()))?;
+        let text = std::fs::read_to_string(f).with_context(|| {
+            format!("cannot read {}\n  = hint: check the file name", f.display())
+        })?;
         parts.push((f.display().to_string(), text));
     }
     let merged = merge_parts(&parts)?;

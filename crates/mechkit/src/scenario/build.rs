@@ -5,7 +5,6 @@ use mechkit_expr::units::Dimension;
 use toml::de::{DeTable, DeValue};
 
 use super::Scenario;
-use super::sweep::ConstantOverride;
 use super::contact::{Spheres, read_contacts};
 use super::doc::{Source, Table};
 use super::error::{ErrorKind, ScenarioError};
@@ -16,6 +15,7 @@ use super::observe::read_observe;
 use super::plot::read_output;
 use super::rigid::build_rigid;
 use super::stop::read_stop;
+use super::sweep::ConstantOverride;
 use super::values::{Constant, ValueEnv, resolve_any, scalar, vector};
 use crate::Real;
 use crate::ode::State;
@@ -369,7 +369,10 @@ fn unknown_override(o: &ConstantOverride, names: &[&str]) -> ScenarioError {
     };
     ScenarioError::new(
         ErrorKind::UnknownKey,
-        format!("`{}` is not a constant of the scenario: {list}", o.name),
+        format!(
+            "`{}` (in --set) is not a constant of the scenario: {list}",
+            o.name
+        ),
     )
     .with_hint(hint.unwrap_or_else(|| {
         "a sweep varies entries of [constants]; add the parameter there and use it in the formulas".into()

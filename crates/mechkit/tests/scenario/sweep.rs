@@ -42,8 +42,17 @@ fn grid(sets: &[&str], sampling: Sampling) -> SweepGrid {
     )
 }
 
-fn run(sets: &[&str], options: &SweepOptions) -> Result<mechkit::scenario::sweep::SweepTable, SweepError> {
-    run_sweep("throw.toml", THROW, &grid(sets, Sampling::Grid), options, &|| {})
+fn run(
+    sets: &[&str],
+    options: &SweepOptions,
+) -> Result<mechkit::scenario::sweep::SweepTable, SweepError> {
+    run_sweep(
+        "throw.toml",
+        THROW,
+        &grid(sets, Sampling::Grid),
+        options,
+        &|| {},
+    )
 }
 
 #[test]
@@ -51,7 +60,11 @@ fn thousand_runs_give_thousand_rows_with_their_values_and_exact_landings() {
     let table = run(&["v0=1 m/s:10 m/s:1000"], &SweepOptions::default()).unwrap();
     assert_eq!(table.rows.len(), 1000);
     let csv = table.to_csv();
-    assert_eq!(csv.lines().count(), 2 + 1000, "manifest, header, 1,000 rows");
+    assert_eq!(
+        csv.lines().count(),
+        2 + 1000,
+        "manifest, header, 1,000 rows"
+    );
     assert_eq!(
         csv.lines().nth(1).unwrap(),
         "index,v0,stop_reason,t_end,steps,t_land,x_max,K_end,U_end,E_end,work_energy_residual"
@@ -138,7 +151,14 @@ fn grid_order_has_the_last_parameter_fastest() {
     let points: Vec<Vec<f64>> = table.rows.iter().map(|r| r.values.clone()).collect();
     assert_eq!(
         points,
-        [[1., 9.], [1., 10.], [1., 11.], [2., 9.], [2., 10.], [2., 11.]]
+        [
+            [1., 9.],
+            [1., 10.],
+            [1., 11.],
+            [2., 9.],
+            [2., 10.],
+            [2., 11.]
+        ]
     );
     // g is re-read for the force too: the landing time is 2 v0/g
     for r in &table.rows {
@@ -154,7 +174,10 @@ fn random_points_are_seeded_inside_the_ranges_and_the_same_in_shards() {
     );
     assert_eq!(g.len(), 200);
     let pts: Vec<Vec<f64>> = (0..200).map(|i| g.point(i)).collect();
-    assert!(pts.iter().all(|p| (1.0..=5.0).contains(&p[0]) && (p[1] == 9.0 || p[1] == 10.0)));
+    assert!(
+        pts.iter()
+            .all(|p| (1.0..=5.0).contains(&p[0]) && (p[1] == 9.0 || p[1] == 10.0))
+    );
     let mean = pts.iter().map(|p| p[0]).sum::<f64>() / 200.0;
     assert!((mean - 3.0).abs() < 0.25, "mean {mean}");
     assert!(pts.iter().any(|p| p[1] == 9.0) && pts.iter().any(|p| p[1] == 10.0));
@@ -235,7 +258,10 @@ fn bad_parameters_are_clear_errors() {
         }
     };
     let e = err(&["vo=1:2:3"]);
-    assert!(e.contains("`vo` is not a constant") && e.contains("did you mean `v0`"), "{e}");
+    assert!(
+        e.contains("`vo` (in --set) is not a constant") && e.contains("did you mean `v0`"),
+        "{e}"
+    );
     assert!(e.contains("g, v0, vup"), "{e}");
     let e = err(&["v0=1 kg:2 kg:3"]);
     assert!(e.contains("kg (mass)") && e.contains("velocity"), "{e}");

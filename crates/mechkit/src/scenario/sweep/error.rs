@@ -17,7 +17,9 @@ pub enum SweepError {
         hint: String,
     },
     /// The same parameter set twice.
-    #[error("--set gives `{name}` twice\n  = hint: give each constant one --set (a list: `{name}=1,2,4`)")]
+    #[error(
+        "--set gives `{name}` twice\n  = hint: give each constant one --set (a list: `{name}=1,2,4`)"
+    )]
     Duplicate {
         /// The constant.
         name: String,
@@ -50,7 +52,9 @@ pub enum SweepError {
         source: ScenarioError,
     },
     /// A part to merge that is not a sweep table.
-    #[error("{file}: {reason}\n  = hint: give the sweep.partK.csv files that `mechkit sweep --shard K/N` wrote")]
+    #[error(
+        "{file}: {reason}\n  = hint: give the sweep.partK.csv files that `mechkit sweep --shard K/N` wrote"
+    )]
     NotATable {
         /// The file.
         file: String,
@@ -58,7 +62,9 @@ pub enum SweepError {
         reason: String,
     },
     /// Parts of different sweeps.
-    #[error("{file} is from another sweep than {first}: {what} differs\n  = hint: merge only the parts of one sweep (same scenario text, same --set, same sampling)")]
+    #[error(
+        "{file} is from another sweep than {first}: {what} differs\n  = hint: merge only the parts of one sweep (same scenario text, same --set, same sampling)"
+    )]
     Mismatch {
         /// The first part.
         first: String,

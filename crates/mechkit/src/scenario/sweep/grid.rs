@@ -104,8 +104,10 @@ impl SweepGrid {
                         let u = rng.uniform();
                         match p.range {
                             Some((a, b)) => a + (b - a) * u,
-                            None => p.values[((u * p.values.len() as Real) as usize)
-                                .min(p.values.len() - 1)],
+                            None => {
+                                p.values[((u * p.values.len() as Real) as usize)
+                                    .min(p.values.len() - 1)]
+                            }
                         }
                     })
                     .collect()
@@ -173,8 +175,14 @@ impl Shard {
             reason: reason.to_string(),
         };
         let (k, n) = text.trim().split_once('/').ok_or_else(|| bad("no `/`"))?;
-        let k: usize = k.trim().parse().map_err(|_| bad("K is not a whole number"))?;
-        let n: usize = n.trim().parse().map_err(|_| bad("N is not a whole number"))?;
+        let k: usize = k
+            .trim()
+            .parse()
+            .map_err(|_| bad("K is not a whole number"))?;
+        let n: usize = n
+            .trim()
+            .parse()
+            .map_err(|_| bad("N is not a whole number"))?;
         if n == 0 || k == 0 || k > n {
             return Err(bad("K must be between 1 and N"));
         }

@@ -33,7 +33,7 @@ impl ConstantOverride {
             return Err(ScenarioError::new(
                 ErrorKind::Dimension,
                 format!(
-                    "the value given for `{}` is {}, but the constant is {} in the scenario",
+                    "the value given for `{}` in --set is {}, but the constant is {} in the scenario",
                     self.name,
                     d.describe(),
                     k.describe()
@@ -89,7 +89,11 @@ impl Parameter {
     pub fn parse(text: &str) -> Result<Parameter, SweepError> {
         let text = text.trim();
         let Some((name, spec)) = text.split_once('=') else {
-            return Err(bad(text, "no `=` between the constant and its values", USAGE));
+            return Err(bad(
+                text,
+                "no `=` between the constant and its values",
+                USAGE,
+            ));
         };
         let name = name.trim();
         let valid = name
@@ -117,7 +121,10 @@ impl Parameter {
             let [a, b, n] = parts[..] else {
                 return Err(bad(
                     text,
-                    format!("a range has three parts START:END:COUNT, not {}", parts.len()),
+                    format!(
+                        "a range has three parts START:END:COUNT, not {}",
+                        parts.len()
+                    ),
                     USAGE,
                 ));
             };

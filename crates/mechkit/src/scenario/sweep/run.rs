@@ -68,8 +68,8 @@ pub fn run_sweep(
             .map(|(p, v)| p.with_value(v))
             .collect()
     };
-    let base = build_with(name, text, &overrides(0))
-        .map_err(|source| SweepError::Scenario { source })?;
+    let base =
+        build_with(name, text, &overrides(0)).map_err(|source| SweepError::Scenario { source })?;
     let spec = match &options.plot {
         None => None,
         Some(s) if s.trim().is_empty() => base.plots.first().cloned(),
@@ -147,6 +147,7 @@ fn plot_spec(s: &Scenario, spec: &str) -> Result<PlotSpec, SweepError> {
         level: VarLevel::Derived,
         coordinates: s.system.coordinates(),
     };
-    PlotSpec::parse(spec, &names)
-        .map_err(|(message, hint)| SweepError::Sampling(format!("--plot: {message}\n  = hint: {hint}")))
+    PlotSpec::parse(spec, &names).map_err(|(message, hint)| {
+        SweepError::Sampling(format!("--plot: {message}\n  = hint: {hint}"))
+    })
 }

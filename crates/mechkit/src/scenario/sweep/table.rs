@@ -137,7 +137,7 @@ impl SweepTable {
     pub fn overlay(&self, legend: usize) -> Option<PlotData> {
         let first = self.rows.iter().find_map(|r| r.plot.as_ref())?;
         let mut plot = PlotData::new(
-            format!("{} for {} runs", first.spec, self.rows.len()),
+            first.spec.clone(),
             format!("sweep_{}", first.file_stem),
             first.x_label.clone(),
             first.y_label.clone(),
@@ -173,7 +173,11 @@ impl SweepTable {
 fn short(v: f64) -> String {
     let s = format!("{v:.4}");
     let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s.is_empty() || s == "-" { "0".into() } else { s.to_string() }
+    if s.is_empty() || s == "-" {
+        "0".into()
+    } else {
+        s.to_string()
+    }
 }
 
 /// Joins the parts written by `mechkit sweep --shard K/N` (given as file name and text) into
@@ -196,9 +200,10 @@ pub fn merge_parts(parts: &[(String, String)]) -> Result<String, SweepError> {
             reason: reason.to_string(),
         };
         let mut lines = text.lines();
-        let head = lines.next().filter(|l| l.starts_with(MAGIC)).ok_or_else(|| {
-            not("the first line is not a `# mechkit sweep of …` manifest")
-        })?;
+        let head = lines
+            .next()
+            .filter(|l| l.starts_with(MAGIC))
+            .ok_or_else(|| not("the first line is not a `# mechkit sweep of …` manifest"))?;
         let mut header = lines.next().ok_or_else(|| not("no header row"))?;
         if header.starts_with("# shard ") {
             header = lines.next().ok_or_else(|| not("no header row"))?;
