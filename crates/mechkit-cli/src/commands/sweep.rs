@@ -1,6 +1,7 @@
 //! `mechkit sweep FILE --set …`: a scenario over a grid or a random sample of its constants,
 //! in parallel; `mechkit sweep-merge`: the parts of a sharded sweep joined.
 
+use std::fmt::Write as _;
 use std::io::IsTerminal as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -136,7 +137,7 @@ pub fn sweep(args: &SweepArgs) -> Result<Outcome> {
             csv.display()
         );
         if let Some(p) = &plot_path {
-            text.push_str(&format!("wrote {}\n", p.display()));
+            let _ = writeln!(text, "wrote {}", p.display());
         }
         print(&text)?;
     }
@@ -151,9 +152,10 @@ pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
                 .with_context(|| format!("cannot read the directory {}", p.display()))?
                 .filter_map(|e| e.ok().map(|e| e.path()))
                 .filter(|f| {
-                    f.file_name()
-                        .and_then(|n| n.to_str())
-                        .is_some_and(|n| n.starts_with("sweep.part") && n.ends_with(".csv"))
+                    f.extension().is_some_and(|e| e == "csv")
+                        && f.file_name()
+                            .and_then(|n| n.to_str())
+                            .is_some_and(|n| n.starts_with("sweep.part"))
                 })
                 .collect();
             if found.is_empty() {

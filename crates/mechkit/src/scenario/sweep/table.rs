@@ -10,6 +10,7 @@
 //! ```
 
 use std::collections::BTreeMap;
+use std::fmt::Write as _;
 use std::path::Path;
 
 use super::{Shard, SweepError, SweepGrid, SweepRow};
@@ -82,7 +83,7 @@ impl SweepTable {
     pub fn to_csv(&self) -> String {
         let mut out = format!("# {}\n", self.manifest);
         if let Some(s) = self.shard {
-            out.push_str(&format!("# shard {}/{}\n", s.k, s.n));
+            let _ = writeln!(out, "# shard {}/{}", s.k, s.n);
         }
         let header: Vec<String> = self
             .header()
@@ -105,7 +106,7 @@ impl SweepTable {
             field(&mut out, &r.stop_reason);
             out.push(',');
             push_number(&mut out, r.t_end);
-            out.push_str(&format!(",{}", r.steps));
+            let _ = write!(out, ",{}", r.steps);
             for &v in r.observables.iter().chain([&r.kinetic_end]) {
                 out.push(',');
                 push_number(&mut out, v);
