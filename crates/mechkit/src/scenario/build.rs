@@ -15,7 +15,7 @@ use super::observe::read_observe;
 use super::plot::read_output;
 use super::rigid::build_rigid;
 use super::stop::read_stop;
-use super::sweep::ConstantOverride;
+use super::sweep::{ConstantOverride, unknown_override};
 use super::values::{Constant, ValueEnv, resolve_any, scalar, vector};
 use crate::Real;
 use crate::ode::State;
@@ -358,25 +358,6 @@ fn constants_with(
         return Err(unknown_override(o, &names));
     }
     Ok(out)
-}
-
-fn unknown_override(o: &ConstantOverride, names: &[&str]) -> ScenarioError {
-    let hint = mechkit_expr::did_you_mean(&mechkit_expr::nearest(&o.name, names.iter().copied()));
-    let list = if names.is_empty() {
-        "the scenario has no [constants]".to_string()
-    } else {
-        format!("its constants are {}", names.join(", "))
-    };
-    ScenarioError::new(
-        ErrorKind::UnknownKey,
-        format!(
-            "`{}` (in --set) is not a constant of the scenario: {list}",
-            o.name
-        ),
-    )
-    .with_hint(hint.unwrap_or_else(|| {
-        "a sweep varies entries of [constants]; add the parameter there and use it in the formulas".into()
-    }))
 }
 
 /// The `name` of the `index`-th of `count` bodies (`body`, or `body1`, … when unnamed): a name

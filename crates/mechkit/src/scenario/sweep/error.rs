@@ -24,9 +24,10 @@ pub enum SweepError {
         /// The constant.
         name: String,
     },
-    /// Sampling options that do not fit.
+    /// Options that do not fit (no --set, --random 0, a --plot that is not a plot of the
+    /// scenario).
     #[error("{0}")]
-    Sampling(String),
+    Options(String),
     /// A `--shard` text that cannot be read.
     #[error("--shard \"{text}\": {reason}\n  = hint: write K/N with 1 <= K <= N, e.g. --shard 2/8")]
     BadShard {

@@ -37,7 +37,7 @@ impl SweepGrid {
     /// Checks the parameters: at least one, no name twice.
     pub fn check(&self) -> Result<(), SweepError> {
         if self.params.is_empty() {
-            return Err(SweepError::Sampling(
+            return Err(SweepError::Options(
                 "a sweep needs at least one --set\n  = hint: e.g. --set \"v0=0:5:51\"".into(),
             ));
         }
@@ -49,7 +49,7 @@ impl SweepGrid {
             }
         }
         if let Sampling::Random { n: 0, .. } = self.sampling {
-            return Err(SweepError::Sampling(
+            return Err(SweepError::Options(
                 "--random needs at least 1 point\n  = hint: e.g. --random 1000 --seed 1".into(),
             ));
         }

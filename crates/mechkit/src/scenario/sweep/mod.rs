@@ -45,6 +45,7 @@ mod table;
 
 pub use error::SweepError;
 pub use grid::{Sampling, Shard, SweepGrid};
+pub(crate) use param::unknown_override;
 pub use param::{ConstantOverride, Parameter};
 pub use run::{SweepOptions, SweepRow, run_sweep};
 pub use table::{SweepTable, merge_parts};

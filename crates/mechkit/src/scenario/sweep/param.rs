@@ -49,6 +49,26 @@ impl ConstantOverride {
     }
 }
 
+/// The error for a swept name that is not among the constants `names` of the file.
+pub(crate) fn unknown_override(o: &ConstantOverride, names: &[&str]) -> ScenarioError {
+    let hint = mechkit_expr::did_you_mean(&mechkit_expr::nearest(&o.name, names.iter().copied()));
+    let list = if names.is_empty() {
+        "the scenario has no [constants]".to_string()
+    } else {
+        format!("its constants are {}", names.join(", "))
+    };
+    ScenarioError::new(
+        ErrorKind::UnknownKey,
+        format!(
+            "`{}` (in --set) is not a constant of the scenario: {list}",
+            o.name
+        ),
+    )
+    .with_hint(hint.unwrap_or_else(|| {
+        "a sweep varies entries of [constants]; add the parameter there and use it in the formulas".into()
+    }))
+}
+
 /// One swept constant and its values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Parameter {

@@ -148,6 +148,6 @@ fn plot_spec(s: &Scenario, spec: &str) -> Result<PlotSpec, SweepError> {
         coordinates: s.system.coordinates(),
     };
     PlotSpec::parse(spec, &names).map_err(|(message, hint)| {
-        SweepError::Sampling(format!("--plot: {message}\n  = hint: {hint}"))
+        SweepError::Options(format!("--plot: {message}\n  = hint: {hint}"))
     })
 }
