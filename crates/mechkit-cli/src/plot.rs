@@ -176,9 +176,12 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
                     )
                     .map_err(|e| anyhow!("{e}"))?,
             };
-            anno.label(s.label.clone()).legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
-            });
+            // an empty label keeps the curve out of the legend (a sweep's thinned legend)
+            if !s.label.is_empty() {
+                anno.label(s.label.clone()).legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                });
+            }
             if s.style == LineStyle::Solid
                 && let Some(&last) = pts.last()
             {

@@ -11,6 +11,7 @@ mod rigid_collide;
 mod roll;
 mod rotation;
 mod spin;
+mod sweep;
 
 pub use bead::BeadArgs;
 pub use friction::FrictionArgs;
@@ -22,6 +23,7 @@ pub use rigid_collide::RigidCollideArgs;
 pub use roll::RollArgs;
 pub use rotation::RotationArgs;
 pub use spin::SpinArgs;
+pub use sweep::{SweepArgs, SweepMergeArgs};
 
 const EXAMPLES: &str = r#"Examples:
   mechkit run examples/feather.toml --out out/feather
@@ -52,6 +54,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit spin --moments "1, 2, 3" --omega "0.01, 1, 0.01" --t-max 100
   mechkit rotation --omega0 "1000 rpm" --omega1 "2000 rpm" --time "15 s"
   mechkit bead --circle "1 m" --side outside --start 0 --speed "0.1 m/s" --t-max "3 s"
+  mechkit sweep examples/sweep/throw.toml --set "v0=0:5:51" --plot "v(x)"
   mechkit rigid-collide --rod --mass 1 --length 1 --release-angle "90 deg" --block-mass 0.3333 -e 1
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
@@ -138,6 +141,13 @@ pub enum Command {
     /// A sphere, cylinder or hoop on a slope with friction: when slipping turns into rolling
     /// (simulated and closed form), the regimes, the energy ledger, CSV and plots.
     Roll(RollArgs),
+    /// Run a scenario over a grid (or a seeded random sample) of its constants in parallel:
+    /// one summary row per run (sweep.csv) and the runs' plots in one figure; --shard K/N
+    /// runs one slice of a sweep spread over machines.
+    Sweep(SweepArgs),
+    /// Join the sweep.partK.csv files of a sharded sweep into sweep.csv, checking that they
+    /// are parts of one sweep and hold every run once.
+    SweepMerge(SweepMergeArgs),
 }
 
 /// `mechkit diff`.

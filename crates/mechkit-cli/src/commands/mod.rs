@@ -20,6 +20,7 @@ mod roll;
 mod rotation;
 mod run;
 mod spin;
+mod sweep;
 mod work;
 mod work_field;
 
@@ -59,6 +60,8 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Rotation(args) => rotation::rotation(&args),
         Command::Bead(args) => bead::bead(&args),
         Command::RigidCollide(args) => rigid_collide::rigid_collide(&args),
+        Command::Sweep(args) => sweep::sweep(&args),
+        Command::SweepMerge(args) => sweep::sweep_merge(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {

@@ -20,6 +20,7 @@
 //!   exits 0 and warns about `t_max`.
 //!
 //! - `mechkit com IMAGE` measures the pixels of a body (`com_image.rs`).
+//! - `mechkit sweep` and `sweep-merge`: 1,000 runs, threads, shards (`sweep.rs`).
 //!
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
@@ -40,4 +41,5 @@ mod roll;
 mod rotation;
 mod run;
 mod spin;
+mod sweep;
 mod util;

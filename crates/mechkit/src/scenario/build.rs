@@ -15,6 +15,7 @@ use super::observe::read_observe;
 use super::plot::read_output;
 use super::rigid::build_rigid;
 use super::stop::read_stop;
+use super::sweep::{ConstantOverride, unknown_override};
 use super::values::{Constant, ValueEnv, resolve_any, scalar, vector};
 use crate::Real;
 use crate::ode::State;
@@ -47,6 +48,15 @@ pub(crate) const RESERVED: &[&str] = &[
 ];
 
 pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
+    build_with(name, text, &[])
+}
+
+/// [`build`] with some `[constants]` given other values (a sweep's parameters).
+pub(crate) fn build_with(
+    name: &str,
+    text: &str,
+    overrides: &[ConstantOverride],
+) -> Result<Scenario, ScenarioError> {
     let src = Source { name, text };
     let doc = DeTable::parse(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
@@ -83,7 +93,11 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
 
     let rigid_tables = root.tables("rigid_body")?;
     if !rigid_tables.is_empty() {
-        let constants = constants(&root, &[RESERVED, super::rigid::RIGID_RESERVED].concat())?;
+        let constants = constants_with(
+            &root,
+            &[RESERVED, super::rigid::RIGID_RESERVED].concat(),
+            overrides,
+        )?;
         return build_rigid(name, &root, title, dim, constants, &rigid_tables);
     }
     if let Some(v) = root.get("torque") {
@@ -95,7 +109,7 @@ pub(crate) fn build(name: &str, text: &str) -> Result<Scenario, ScenarioError> {
             )
             .with_hint("add a [[rigid_body]] with a `pivot`, or use [[force]] on particles"));
     }
-    let constants = constants(&root, RESERVED)?;
+    let constants = constants_with(&root, RESERVED, overrides)?;
     let (bodies, masses, q, v, radius) = bodies(&root, dim, &constants)?;
     for (n, value, _) in &constants {
         if n == "m"
@@ -276,7 +290,20 @@ pub(crate) fn constants(
     root: &Table<'_, '_>,
     reserved: &[&str],
 ) -> Result<Vec<Constant>, ScenarioError> {
+    constants_with(root, reserved, &[])
+}
+
+/// [`constants`], with the values of `overrides` in place of those in the file; every later
+/// constant, body and force that uses them sees the new value.
+fn constants_with(
+    root: &Table<'_, '_>,
+    reserved: &[&str],
+    overrides: &[ConstantOverride],
+) -> Result<Vec<Constant>, ScenarioError> {
     let Some(t) = root.table("constants")? else {
+        if let Some(o) = overrides.first() {
+            return Err(unknown_override(o, &[]));
+        }
         return Ok(Vec::new());
     };
     let names: Vec<&str> = t
@@ -318,8 +345,17 @@ pub(crate) fn constants(
             mass: None,
             later: &names[i..],
         };
-        let (v, d) = resolve_any(&t.src, name, value, env)?;
+        let (mut v, mut d) = resolve_any(&t.src, name, value, env)?;
+        if let Some(o) = overrides.iter().find(|o| o.name == name) {
+            (v, d) = o.apply(d)?;
+        }
         out.push((name.to_string(), v, d));
+    }
+    if let Some(o) = overrides
+        .iter()
+        .find(|o| !out.iter().any(|(n, _, _)| *n == o.name))
+    {
+        return Err(unknown_override(o, &names));
     }
     Ok(out)
 }

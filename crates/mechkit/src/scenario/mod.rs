@@ -52,6 +52,7 @@ mod rigid;
 mod run;
 mod stop;
 mod summary;
+pub mod sweep;
 mod text;
 mod values;
 

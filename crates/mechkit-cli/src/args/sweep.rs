@@ -1,0 +1,59 @@
+//! `mechkit sweep` and `mechkit sweep-merge`.
+
+use std::path::PathBuf;
+
+/// `mechkit sweep`.
+#[derive(Debug, clap::Args)]
+pub struct SweepArgs {
+    /// The scenario file; the swept parameters are entries of its [constants].
+    pub file: PathBuf,
+    /// A swept constant: "v0=0:5:51" (51 values from 0 to 5, SI), "v0=0 km/h:18 km/h:51"
+    /// (with units), "k=1,2,4" (a list) or "k=2 N/m" (one value). Repeat for a grid of all
+    /// combinations (the last --set varies fastest).
+    #[arg(long = "set", required = true, allow_hyphen_values = true)]
+    pub set: Vec<String>,
+    /// Instead of the grid, N points drawn uniformly (between a range's bounds, among a
+    /// list's values) from a seeded generator.
+    #[arg(long, value_name = "N")]
+    pub random: Option<usize>,
+    /// Seed of --random.
+    #[arg(long, default_value_t = 1, requires = "random")]
+    pub seed: u64,
+    /// Run only the K-th of N slices (runs with index % N == K - 1) and write
+    /// sweep.partK.csv; join the parts with `mechkit sweep-merge`.
+    #[arg(long, value_name = "K/N")]
+    pub shard: Option<String>,
+    /// Worker threads [default: all cores]; the table does not depend on it.
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// The plot of every run drawn in one figure, e.g. "v(x)" [default: the scenario's first
+    /// plot].
+    #[arg(long)]
+    pub plot: Option<String>,
+    /// No overlay plot.
+    #[arg(long, conflicts_with = "plot")]
+    pub no_plot: bool,
+    /// Output directory [default: out/<file stem>].
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// No progress bar.
+    #[arg(long, short)]
+    pub quiet: bool,
+    /// Print what was done as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `mechkit sweep-merge`.
+#[derive(Debug, clap::Args)]
+pub struct SweepMergeArgs {
+    /// The parts: sweep.partK.csv files, or directories holding them.
+    #[arg(required = true)]
+    pub parts: Vec<PathBuf>,
+    /// The merged table [default: sweep.csv beside the first part].
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Print what was done as JSON.
+    #[arg(long)]
+    pub json: bool,
+}

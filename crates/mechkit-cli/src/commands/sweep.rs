@@ -1,0 +1,205 @@
+//! `mechkit sweep FILE --set …`: a scenario over a grid or a random sample of its constants,
+//! in parallel; `mechkit sweep-merge`: the parts of a sharded sweep joined.
+
+use std::fmt::Write as _;
+use std::io::IsTerminal as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::{Context as _, Result, bail};
+use indicatif::{ProgressBar, ProgressStyle};
+use mechkit::scenario::sweep::{
+    Parameter, Sampling, Shard, SweepGrid, SweepOptions, merge_parts, run_sweep,
+};
+use mechkit::scenario::write_atomic;
+
+use super::{Outcome, print};
+use crate::args::{SweepArgs, SweepMergeArgs};
+use crate::plot;
+
+/// Curves labelled in the overlay's legend at most.
+const LEGEND: usize = 10;
+
+pub fn sweep(args: &SweepArgs) -> Result<Outcome> {
+    let params = args
+        .set
+        .iter()
+        .map(|s| Parameter::parse(s))
+        .collect::<Result<Vec<_>, _>>()?;
+    let sampling = match args.random {
+        Some(n) => Sampling::Random { n, seed: args.seed },
+        None => Sampling::Grid,
+    };
+    let grid = SweepGrid::new(params, sampling);
+    grid.check()?;
+    let shard = args.shard.as_deref().map(Shard::parse).transpose()?;
+    let threads = match args.threads {
+        Some(0) => bail!("--threads must be at least 1\n  = hint: leave it out to use every core"),
+        Some(n) => n,
+        None => std::thread::available_parallelism().map_or(1, std::num::NonZero::get),
+    };
+    let text = std::fs::read_to_string(&args.file).with_context(|| {
+        format!(
+            "cannot read {}\n  = hint: check the file name",
+            args.file.display()
+        )
+    })?;
+    let name = args.file.display().to_string();
+    let dir = args.out.clone().unwrap_or_else(|| {
+        let stem = args
+            .file
+            .file_stem()
+            .map_or_else(|| "sweep".into(), |s| s.to_string_lossy().into_owned());
+        PathBuf::from("out").join(stem)
+    });
+    let options = SweepOptions {
+        shard,
+        plot: if args.no_plot {
+            None
+        } else {
+            Some(args.plot.clone().unwrap_or_default())
+        },
+    };
+    let count = shard.map_or(grid.len(), |s| s.indices(grid.len()).len());
+    let bar = if args.quiet || !std::io::stderr().is_terminal() {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(count as u64).with_style(
+            ProgressStyle::with_template("{bar:40} {pos}/{len} runs {per_sec} eta {eta}")
+                .expect("the template is valid"),
+        )
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .context("cannot start the worker threads")?;
+    let start = Instant::now();
+    let result = pool.install(|| run_sweep(&name, &text, &grid, &options, &|| bar.inc(1)));
+    bar.finish_and_clear();
+    let table = result?;
+    let seconds = start.elapsed().as_secs_f64();
+
+    std::fs::create_dir_all(&dir)
+        .with_context(|| format!("cannot create the output directory {}", dir.display()))?;
+    let csv = dir.join(table.file_name());
+    write_atomic(&csv, table.to_csv().as_bytes())
+        .with_context(|| format!("cannot write {}", csv.display()))?;
+    let mut plot_path = None;
+    if let Some(overlay) = table.overlay(LEGEND) {
+        let stem = match shard {
+            Some(s) => format!("{}.part{}", overlay.file_stem, s.k),
+            None => overlay.file_stem.clone(),
+        };
+        let path = dir.join(format!("{stem}.svg"));
+        let sets: Vec<&str> = grid.params.iter().map(|p| p.text.as_str()).collect();
+        let title = format!("{} runs, {}", table.rows.len(), sets.join("; "));
+        plot::render_svg(&overlay, &title, &path)?;
+        plot_path = Some(path);
+    }
+    let failed = table
+        .rows
+        .iter()
+        .filter(|r| {
+            matches!(
+                r.stop_reason.as_str(),
+                "diverged" | "step_too_small" | "zeno"
+            )
+        })
+        .count();
+    if failed > 0 {
+        eprintln!(
+            "warning: {failed} of {} runs failed (see stop_reason in {})",
+            table.rows.len(),
+            csv.display()
+        );
+    }
+    let rate = table.rows.len() as f64 / seconds.max(1e-9);
+    if args.json {
+        let json = serde_json::json!({
+            "scenario": name,
+            "runs": grid.len(),
+            "rows": table.rows.len(),
+            "shard": shard.map(|s| format!("{}/{}", s.k, s.n)),
+            "threads": threads,
+            "seconds": seconds,
+            "runs_per_second": rate,
+            "failed": failed,
+            "csv": csv.display().to_string(),
+            "plot": plot_path.as_ref().map(|p| p.display().to_string()),
+        });
+        print(&format!("{json:#}\n"))?;
+    } else {
+        let mut text = format!(
+            "{} runs of {} on {threads} thread{} in {seconds:.3} s ({rate:.0} runs/s)\nwrote {}\n",
+            table.rows.len(),
+            name,
+            if threads == 1 { "" } else { "s" },
+            csv.display()
+        );
+        if let Some(p) = &plot_path {
+            let _ = writeln!(text, "wrote {}", p.display());
+        }
+        print(&text)?;
+    }
+    Ok(Outcome::Success)
+}
+
+pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
+    let mut files: Vec<PathBuf> = Vec::new();
+    for p in &args.parts {
+        if p.is_dir() {
+            let mut found: Vec<PathBuf> = std::fs::read_dir(p)
+                .with_context(|| format!("cannot read the directory {}", p.display()))?
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|f| {
+                    f.extension().is_some_and(|e| e == "csv")
+                        && f.file_name()
+                            .and_then(|n| n.to_str())
+                            .is_some_and(|n| n.starts_with("sweep.part"))
+                })
+                .collect();
+            if found.is_empty() {
+                bail!(
+                    "{} holds no sweep.partK.csv files\n  = hint: give the directory `mechkit sweep --shard K/N --out DIR` wrote to",
+                    p.display()
+                );
+            }
+            found.sort();
+            files.extend(found);
+        } else {
+            files.push(p.clone());
+        }
+    }
+    let mut parts = Vec::new();
+    for f in &files {
+        let text = std::fs::read_to_string(f).with_context(|| {
+            format!("cannot read {}\n  = hint: check the file name", f.display())
+        })?;
+        parts.push((f.display().to_string(), text));
+    }
+    let merged = merge_parts(&parts)?;
+    let out = args.out.clone().unwrap_or_else(|| {
+        files[0]
+            .parent()
+            .unwrap_or_else(|| Path::new("."))
+            .join("sweep.csv")
+    });
+    write_atomic(&out, merged.as_bytes())
+        .with_context(|| format!("cannot write {}", out.display()))?;
+    let rows = merged.lines().count() - 2;
+    if args.json {
+        let json = serde_json::json!({
+            "parts": files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>(),
+            "rows": rows,
+            "csv": out.display().to_string(),
+        });
+        print(&format!("{json:#}\n"))?;
+    } else {
+        print(&format!(
+            "merged {} parts, {rows} runs\nwrote {}\n",
+            files.len(),
+            out.display()
+        ))?;
+    }
+    Ok(Outcome::Success)
+}

@@ -1,0 +1,153 @@
+//! Running a sweep: each point's scenario built with its values and run in memory, in
+//! parallel (rayon), the rows kept in run order.
+
+use rayon::prelude::*;
+
+use super::{Shard, SweepError, SweepGrid, SweepTable};
+use crate::Real;
+use crate::figure::PlotData;
+use crate::particles::{BodyRef, NameContext, VarLevel};
+use crate::scenario::build::build_with;
+use crate::scenario::{PlotSpec, Scenario};
+
+/// What to run and keep besides the summary rows.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SweepOptions {
+    /// Only this slice of the runs.
+    pub shard: Option<Shard>,
+    /// A plot to record in every run for the overlay, e.g. `v(x)`; `Some("")` means the
+    /// scenario's first plot, if it has one.
+    pub plot: Option<String>,
+}
+
+/// One run's summary.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepRow {
+    /// The run index in the whole sweep.
+    pub index: usize,
+    /// The parameter values (SI), in the order of the sweep's parameters.
+    pub values: Vec<Real>,
+    /// Why the run ended (`event:…`, `t_max`, `diverged`, …).
+    pub stop_reason: String,
+    /// Time at the end (s).
+    pub t_end: Real,
+    /// Steps taken.
+    pub steps: u64,
+    /// The `[observe]` values, in the scenario's order.
+    pub observables: Vec<Real>,
+    /// Kinetic energy at the end (J).
+    pub kinetic_end: Real,
+    /// Potential energy at the end (J); `None` when no force has a potential.
+    pub potential_end: Option<Real>,
+    /// Mechanical energy at the end (J).
+    pub energy_end: Real,
+    /// The work-energy residual `W_net − ΔK` (J).
+    pub work_energy_residual: Real,
+    /// The recorded plot, when asked for.
+    pub plot: Option<PlotData>,
+}
+
+/// Runs the points of `grid` (the shard's slice of them, when one is given) of the scenario
+/// `text` (`name` is used in error locations). `on_done` is called after each run (from the
+/// worker threads), e.g. to advance a progress bar. Runs go to rayon's current thread pool.
+///
+/// A run that fails numerically (diverges) is a row with its `stop_reason`; a point whose
+/// values make the scenario invalid (a negative mass) is an error naming the run.
+pub fn run_sweep(
+    name: &str,
+    text: &str,
+    grid: &SweepGrid,
+    options: &SweepOptions,
+    on_done: &(dyn Fn() + Sync),
+) -> Result<SweepTable, SweepError> {
+    grid.check()?;
+    let overrides = |i: usize| -> Vec<_> {
+        grid.params
+            .iter()
+            .zip(grid.point(i))
+            .map(|(p, v)| p.with_value(v))
+            .collect()
+    };
+    let base =
+        build_with(name, text, &overrides(0)).map_err(|source| SweepError::Scenario { source })?;
+    let spec = match &options.plot {
+        None => None,
+        Some(s) if s.trim().is_empty() => base.plots.first().cloned(),
+        Some(s) => Some(plot_spec(&base, s)?),
+    };
+    let len = grid.len();
+    let indices: Vec<usize> = match options.shard {
+        Some(s) => s.indices(len),
+        None => (0..len).collect(),
+    };
+    let one = |i: usize| -> Result<SweepRow, SweepError> {
+        let values = grid.point(i);
+        let fail = |source| SweepError::Run {
+            index: i,
+            values: grid
+                .params
+                .iter()
+                .zip(&values)
+                .map(|(p, v)| format!("{}={v}", p.name))
+                .collect::<Vec<_>>()
+                .join(", "),
+            source,
+        };
+        let mut scenario = build_with(name, text, &overrides(i)).map_err(fail)?;
+        scenario.plots = spec.iter().cloned().collect();
+        let out = scenario.run().map_err(fail)?;
+        let s = &out.summary;
+        let row = SweepRow {
+            index: i,
+            values,
+            stop_reason: s.stop_reason.clone(),
+            t_end: s.t_end,
+            steps: s.steps,
+            observables: scenario
+                .observables
+                .iter()
+                .map(|o| s.observables.get(&o.name).copied().unwrap_or(Real::NAN))
+                .collect(),
+            kinetic_end: s.kinetic_energy.end.unwrap_or(Real::NAN),
+            potential_end: s.potential_energy.end,
+            energy_end: s.energy.end,
+            work_energy_residual: s.work_energy_residual,
+            plot: out.plots.into_iter().next(),
+        };
+        on_done();
+        Ok(row)
+    };
+    let results: Vec<Result<SweepRow, SweepError>> = indices.par_iter().map(|&i| one(i)).collect();
+    let rows = results.into_iter().collect::<Result<Vec<_>, _>>()?;
+    Ok(SweepTable {
+        manifest: super::table::manifest(name, text, grid),
+        runs: len,
+        shard: options.shard,
+        params: grid.params.iter().map(|p| p.name.clone()).collect(),
+        observables: base.observables.iter().map(|o| o.name.clone()).collect(),
+        rows,
+    })
+}
+
+/// Parses a plot spec against a scenario's names.
+fn plot_spec(s: &Scenario, spec: &str) -> Result<PlotSpec, SweepError> {
+    let bodies: Vec<String> = s.system.bodies().iter().map(|b| b.name.clone()).collect();
+    let forces: Vec<String> = s
+        .system
+        .forces()
+        .iter()
+        .map(|f| f.name().to_string())
+        .collect();
+    let names = NameContext {
+        dim: s.dim,
+        bodies: &bodies,
+        forces: &forces,
+        constants: &s.constants,
+        bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
+        level: VarLevel::Derived,
+        coordinates: s.system.coordinates(),
+    };
+    PlotSpec::parse(spec, &names).map_err(|(message, hint)| {
+        SweepError::Options(format!("--plot: {message}\n  = hint: {hint}"))
+    })
+}
