@@ -136,6 +136,7 @@ fn check_accepts_every_example() {
         examples(),
         examples().join("book"),
         examples().join("rigid"),
+        examples().join("sweep"),
         examples().join("../bench/workloads"),
     ] {
         for entry in std::fs::read_dir(&sub).expect("the examples directory exists") {

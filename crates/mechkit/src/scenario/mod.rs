@@ -39,6 +39,7 @@
 mod bodyfile;
 mod build;
 mod compare;
+mod constants;
 mod contact;
 mod doc;
 mod error;

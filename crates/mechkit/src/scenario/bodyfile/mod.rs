@@ -35,7 +35,7 @@ use toml::de::{DeTable, DeValue};
 
 pub(crate) mod geometry;
 
-use super::build::constants;
+use super::constants::constants;
 use super::doc::{Source, Table, Value};
 use super::error::{ErrorKind, ScenarioError};
 use super::values::{ValueEnv, dim_text, required_scalar, resolve, resolve_any, scalar};
