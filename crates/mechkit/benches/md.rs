@@ -17,7 +17,10 @@ use mechkit::md::{
 fn melt(threads: usize) -> Md<LennardJones> {
     let (sim_box, x) = Lattice::Fcc.build(20, 0.8442).unwrap();
     let v = maxwell_boltzmann(1.44, 1.0, 3, x.len(), 87287).unwrap();
-    let config = MdConfig { threads, ..MdConfig::default() };
+    let config = MdConfig {
+        threads,
+        ..MdConfig::default()
+    };
     Md::new(sim_box, LennardJones::reduced(2.5).unwrap(), x, v, config).unwrap()
 }
 
@@ -31,15 +34,26 @@ fn md(c: &mut Criterion) {
     for threads in [1, 2] {
         let mut md = melt(threads);
         md.run(20).unwrap(); // leave the perfect lattice
-        let pool = (threads > 1)
-            .then(|| rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap());
+        let pool = (threads > 1).then(|| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+        });
         let x = md.positions().to_vec();
         let mut f = vec![[0.0; 3]; x.len()];
         let lj = LennardJones::reduced(2.5).unwrap();
         let list = md.neighbour_list().clone();
         group.bench_function(format!("forces, {threads} thread(s)"), |b| {
             b.iter(|| {
-                compute_forces(&lj, md.sim_box(), black_box(&list), black_box(&x), &mut f, pool.as_ref())
+                compute_forces(
+                    &lj,
+                    md.sim_box(),
+                    black_box(&list),
+                    black_box(&x),
+                    &mut f,
+                    pool.as_ref(),
+                )
             });
         });
         group.bench_function(format!("neighbour-list build, {threads} thread(s)"), |b| {

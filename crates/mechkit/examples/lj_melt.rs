@@ -10,12 +10,18 @@ use mechkit::md::{Lattice, LennardJones, Md, MdConfig, maxwell_boltzmann};
 
 fn main() {
     let arg = |k: usize, default: usize| {
-        std::env::args().nth(k).and_then(|s| s.parse().ok()).unwrap_or(default)
+        std::env::args()
+            .nth(k)
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(default)
     };
     let (threads, cells, steps) = (arg(1, 1), arg(2, 20), arg(3, 100));
     let (sim_box, x) = Lattice::Fcc.build(cells, 0.8442).expect("lattice");
     let v = maxwell_boltzmann(1.44, 1.0, 3, x.len(), 87287).expect("velocities");
-    let config = MdConfig { threads, ..MdConfig::default() };
+    let config = MdConfig {
+        threads,
+        ..MdConfig::default()
+    };
     let lj = LennardJones::reduced(2.5).expect("potential");
     let mut md = Md::new(sim_box, lj, x, v, config).expect("system");
     let n = md.len() as f64;

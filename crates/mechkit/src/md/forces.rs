@@ -83,7 +83,7 @@ pub fn all_pairs_forces<P: PairPotential>(
 ) -> PairSums {
     let rc2 = potential.cutoff() * potential.cutoff();
     let mut sums = PairSums::default();
-    f.iter_mut().for_each(|fi| *fi = [0.0; 3]);
+    f.fill([0.0; 3]);
     for i in 0..x.len() {
         for j in i + 1..x.len() {
             let d = sim_box.separation(&x[i], &x[j]);

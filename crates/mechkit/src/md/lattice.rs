@@ -48,9 +48,15 @@ impl Lattice {
 
     /// The lattice named `name` (`chain`, `square`, `hexagonal`, `sc`, `fcc`).
     pub fn from_name(name: &str) -> Option<Self> {
-        [Self::Chain, Self::Square, Self::Hexagonal, Self::SimpleCubic, Self::Fcc]
-            .into_iter()
-            .find(|l| l.name() == name || (name == "simple-cubic" && *l == Self::SimpleCubic))
+        [
+            Self::Chain,
+            Self::Square,
+            Self::Hexagonal,
+            Self::SimpleCubic,
+            Self::Fcc,
+        ]
+        .into_iter()
+        .find(|l| l.name() == name || (name == "simple-cubic" && *l == Self::SimpleCubic))
     }
 
     /// The basis: positions of the atoms in the unit cell, in units of the cell's edges.
@@ -58,7 +64,12 @@ impl Lattice {
         match self {
             Self::Chain | Self::Square | Self::SimpleCubic => &[[0.0; 3]],
             Self::Hexagonal => &[[0.0, 0.0, 0.0], [0.5, 0.5, 0.0]],
-            Self::Fcc => &[[0.0, 0.0, 0.0], [0.5, 0.5, 0.0], [0.5, 0.0, 0.5], [0.0, 0.5, 0.5]],
+            Self::Fcc => &[
+                [0.0, 0.0, 0.0],
+                [0.5, 0.5, 0.0],
+                [0.5, 0.0, 0.5],
+                [0.0, 0.5, 0.5],
+            ],
         }
     }
 
@@ -95,7 +106,10 @@ impl Lattice {
             return Err(MdError::NoCells { cells });
         }
         if !(density.is_finite() && density > 0.0) {
-            return Err(MdError::NotPositive { name: "the density", value: density });
+            return Err(MdError::NotPositive {
+                name: "the density",
+                value: density,
+            });
         }
         let dim = self.dim();
         let edges = self.cell_edges(self.constant_for_density(density));

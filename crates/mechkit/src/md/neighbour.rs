@@ -75,11 +75,19 @@ impl CellList {
             } else {
                 let lo = x.iter().map(|p| p[a]).fold(Real::INFINITY, Real::min);
                 let hi = x.iter().map(|p| p[a]).fold(Real::NEG_INFINITY, Real::max);
-                if x.is_empty() { (0.0, 0.0) } else { (lo, hi - lo) }
+                if x.is_empty() {
+                    (0.0, 0.0)
+                } else {
+                    (lo, hi - lo)
+                }
             };
             n[a] = ((REACH as Real * extent / range).floor() as usize).clamp(1, 1 << 10);
             origin[a] = lo;
-            width[a] = if extent > 0.0 { extent / n[a] as Real } else { 1.0 };
+            width[a] = if extent > 0.0 {
+                extent / n[a] as Real
+            } else {
+                1.0
+            };
         }
         let adjacent = std::array::from_fn(|a| {
             (0..n[a])
@@ -126,13 +134,21 @@ impl CellList {
             fill[c] += 1;
         }
         let sorted = atoms.iter().map(|&i| x[i as usize]).collect();
-        Self { n, origin, width, first, atoms, sorted, adjacent }
+        Self {
+            n,
+            origin,
+            width,
+            first,
+            atoms,
+            sorted,
+            adjacent,
+        }
     }
 
     fn coords(&self, p: &[Real; 3]) -> [usize; 3] {
         std::array::from_fn(|a| {
-            (((p[a] - self.origin[a]) / self.width[a]).floor() as i64).clamp(0, self.n[a] as i64 - 1)
-                as usize
+            (((p[a] - self.origin[a]) / self.width[a]).floor() as i64)
+                .clamp(0, self.n[a] as i64 - 1) as usize
         })
     }
 }
@@ -156,9 +172,8 @@ impl NeighbourList {
             let hi = (lo + CHUNK).min(x.len());
             let mut counts = Vec::with_capacity(hi - lo);
             let mut list = Vec::with_capacity((hi - lo) * 80);
-            for i in lo..hi {
+            for (i, &xi) in x.iter().enumerate().take(hi).skip(lo) {
                 let before = list.len();
-                let xi = x[i];
                 let c = cells.coords(&xi);
                 for &cx in &cells.adjacent[0][c[0]] {
                     for &cy in &cells.adjacent[1][c[1]] {
@@ -195,7 +210,11 @@ impl NeighbourList {
             }
             neighbours.extend_from_slice(&list);
         }
-        Self { start, neighbours, range }
+        Self {
+            start,
+            neighbours,
+            range,
+        }
     }
 
     /// The neighbours of particle `i`.

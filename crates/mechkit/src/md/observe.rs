@@ -50,7 +50,11 @@ impl<P: PairPotential> Md<P> {
     /// Kinetic energy ½ m Σ v².
     pub fn kinetic_energy(&self) -> Real {
         0.5 * self.config.mass
-            * self.v.iter().map(|v| v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sum::<Real>()
+            * self
+                .v
+                .iter()
+                .map(|v| v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+                .sum::<Real>()
     }
 
     /// Energies, temperature and pressure now.
@@ -112,7 +116,10 @@ impl<P: PairPotential> Md<P> {
             .enumerate()
             .map(|(k, &c)| {
                 let (lo, hi) = (k as Real * width, (k + 1) as Real * width);
-                (0.5 * (lo + hi), c as Real / (n * rho * (ball(hi) - ball(lo))))
+                (
+                    0.5 * (lo + hi),
+                    c as Real / (n * rho * (ball(hi) - ball(lo))),
+                )
             })
             .collect()
     }

@@ -33,13 +33,23 @@ pub struct LennardJones {
 impl LennardJones {
     /// ε, σ and the cut-off r_c; `shift` subtracts U(r_c) so the energy is continuous.
     pub fn new(epsilon: Real, sigma: Real, cutoff: Real, shift: bool) -> Result<Self, MdError> {
-        for (name, value) in [("epsilon", epsilon), ("sigma", sigma), ("the cut-off", cutoff)] {
+        for (name, value) in [
+            ("epsilon", epsilon),
+            ("sigma", sigma),
+            ("the cut-off", cutoff),
+        ] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(MdError::NotPositive { name, value });
             }
         }
         let s6 = sigma.powi(6);
-        let mut lj = Self { epsilon, sigma, cutoff, shift: 0.0, s6 };
+        let mut lj = Self {
+            epsilon,
+            sigma,
+            cutoff,
+            shift: 0.0,
+            s6,
+        };
         if shift {
             lj.shift = lj.energy_force(cutoff * cutoff).0;
         }
@@ -107,7 +117,10 @@ impl PairPotential for SoftSphere {
     fn energy_force(&self, r2: Real) -> (Real, Real) {
         let r = r2.sqrt();
         let overlap = 1.0 - r / self.sigma;
-        (0.5 * self.epsilon * overlap * overlap, self.epsilon * overlap / (self.sigma * r))
+        (
+            0.5 * self.epsilon * overlap * overlap,
+            self.epsilon * overlap / (self.sigma * r),
+        )
     }
 }
 
@@ -123,13 +136,20 @@ pub struct LinearSpring {
 impl LinearSpring {
     /// Stiffness `k`, rest length `rest_length` and cut-off `cutoff` (> rest length).
     pub fn new(k: Real, rest_length: Real, cutoff: Real) -> Result<Self, MdError> {
-        for (name, value) in [("k", k), ("the rest length", rest_length), ("the cut-off", cutoff)]
-        {
+        for (name, value) in [
+            ("k", k),
+            ("the rest length", rest_length),
+            ("the cut-off", cutoff),
+        ] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(MdError::NotPositive { name, value });
             }
         }
-        Ok(Self { k, rest_length, cutoff })
+        Ok(Self {
+            k,
+            rest_length,
+            cutoff,
+        })
     }
 }
 
@@ -161,7 +181,8 @@ mod tests {
         ];
         for (law, r) in laws {
             let h = 1e-6;
-            let du = (law.energy_force((r + h) * (r + h)).0 - law.energy_force((r - h) * (r - h)).0)
+            let du = (law.energy_force((r + h) * (r + h)).0
+                - law.energy_force((r - h) * (r - h)).0)
                 / (2.0 * h);
             let f_over_r = law.energy_force(r * r).1;
             assert!((f_over_r * r + du).abs() < 1e-7, "{f_over_r} vs {du}");
@@ -169,6 +190,14 @@ mod tests {
         let lj = LennardJones::new(1.0, 1.0, 2.5, true).unwrap();
         assert!(lj.energy_force(6.25).0.abs() < 1e-15);
         let min = 2f64.powf(1.0 / 6.0);
-        assert!((LennardJones::reduced(2.5).unwrap().energy_force(min * min).0 + 1.0).abs() < 1e-14);
+        assert!(
+            (LennardJones::reduced(2.5)
+                .unwrap()
+                .energy_force(min * min)
+                .0
+                + 1.0)
+                .abs()
+                < 1e-14
+        );
     }
 }

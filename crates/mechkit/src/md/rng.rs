@@ -25,7 +25,14 @@ impl Xoshiro256 {
     /// A generator seeded from `seed` through splitmix64 (never the all-zero state).
     pub fn seed(seed: u64) -> Self {
         let mut x = seed;
-        Self { s: [splitmix64(&mut x), splitmix64(&mut x), splitmix64(&mut x), splitmix64(&mut x)] }
+        Self {
+            s: [
+                splitmix64(&mut x),
+                splitmix64(&mut x),
+                splitmix64(&mut x),
+                splitmix64(&mut x),
+            ],
+        }
     }
 
     /// The next 64 random bits.
@@ -63,10 +70,10 @@ mod tests {
         let (mut a, mut b) = (Xoshiro256::seed(7), Xoshiro256::seed(7));
         assert!((0..100).all(|_| a.next_u64() == b.next_u64()));
         let mut r = Xoshiro256::seed(1);
-        let n = 100_000;
-        let mean = (0..n).map(|_| r.uniform()).sum::<Real>() / n as Real;
+        let n = 100_000u32;
+        let mean = (0..n).map(|_| r.uniform()).sum::<Real>() / Real::from(n);
         assert!((mean - 0.5).abs() < 5e-3, "mean {mean}");
-        let var = (0..n).map(|_| r.normal().powi(2)).sum::<Real>() / n as Real;
+        let var = (0..n).map(|_| r.normal().powi(2)).sum::<Real>() / Real::from(n);
         assert!((var - 1.0).abs() < 2e-2, "variance {var}");
     }
 }

@@ -26,12 +26,19 @@ impl SimBox {
         let mut p = [false; 3];
         for a in 0..dim {
             if !(lengths[a].is_finite() && lengths[a] > 0.0) {
-                return Err(MdError::NotPositive { name: "a box length", value: lengths[a] });
+                return Err(MdError::NotPositive {
+                    name: "a box length",
+                    value: lengths[a],
+                });
             }
             l[a] = lengths[a];
             p[a] = periodic[a];
         }
-        Ok(Self { dim, lengths: l, periodic: p })
+        Ok(Self {
+            dim,
+            lengths: l,
+            periodic: p,
+        })
     }
 
     /// A box periodic along all `dim` axes.

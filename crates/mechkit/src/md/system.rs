@@ -26,7 +26,12 @@ pub struct MdConfig {
 impl Default for MdConfig {
     /// The LJ melt's settings: dt = 0.005 τ, skin 0.3 σ, m = 1, one thread.
     fn default() -> Self {
-        Self { dt: 0.005, skin: 0.3, mass: 1.0, threads: 1 }
+        Self {
+            dt: 0.005,
+            skin: 0.3,
+            mass: 1.0,
+            threads: 1,
+        }
     }
 }
 
@@ -63,21 +68,33 @@ impl<P: PairPotential> Md<P> {
         config: MdConfig,
     ) -> Result<Self, MdError> {
         if v.len() != x.len() {
-            return Err(MdError::Length { what: "the velocities", got: v.len(), expected: x.len() });
+            return Err(MdError::Length {
+                what: "the velocities",
+                got: v.len(),
+                expected: x.len(),
+            });
         }
-        for (name, value) in
-            [("the time step dt", config.dt), ("the mass", config.mass), ("the skin", config.skin)]
-        {
+        for (name, value) in [
+            ("the time step dt", config.dt),
+            ("the mass", config.mass),
+            ("the skin", config.skin),
+        ] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(MdError::NotPositive { name, value });
             }
         }
         if config.threads == 0 {
-            return Err(MdError::NotPositive { name: "the number of threads", value: 0.0 });
+            return Err(MdError::NotPositive {
+                name: "the number of threads",
+                value: 0.0,
+            });
         }
         sim_box.check_range(potential.cutoff() + config.skin)?;
         let pool = if config.threads > 1 {
-            rayon::ThreadPoolBuilder::new().num_threads(config.threads).build().ok()
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(config.threads)
+                .build()
+                .ok()
         } else {
             None
         };
@@ -131,7 +148,12 @@ impl<P: PairPotential> Md<P> {
         let dt = self.config.dt;
         let limit = 0.25 * self.config.skin * self.config.skin;
         let mut moved_far = false;
-        for ((x, v), (f, x_b)) in self.x.iter_mut().zip(&mut self.v).zip(self.f.iter().zip(&self.x_built)) {
+        for ((x, v), (f, x_b)) in self
+            .x
+            .iter_mut()
+            .zip(&mut self.v)
+            .zip(self.f.iter().zip(&self.x_built))
+        {
             let mut d2 = 0.0;
             for a in 0..3 {
                 v[a] += h * f[a];
@@ -165,7 +187,10 @@ impl<P: PairPotential> Md<P> {
         for _ in 0..steps {
             self.step();
             if !self.sums.potential.is_finite() {
-                return Err(MdError::Diverged { step: self.steps, energy: self.sums.potential });
+                return Err(MdError::Diverged {
+                    step: self.steps,
+                    energy: self.sums.potential,
+                });
             }
         }
         Ok(())

@@ -26,12 +26,18 @@ fn compare<P: PairPotential>(law: &P, sim_box: &SimBox, x: &[[f64; 3]]) -> f64 {
 }
 
 /// A lattice with every atom displaced by up to ±`jitter` per axis (seeded).
-fn jittered(lattice: Lattice, cells: usize, density: f64, jitter: f64, seed: u64) -> (SimBox, Vec<[f64; 3]>) {
+fn jittered(
+    lattice: Lattice,
+    cells: usize,
+    density: f64,
+    jitter: f64,
+    seed: u64,
+) -> (SimBox, Vec<[f64; 3]>) {
     let (b, mut x) = lattice.build(cells, density).unwrap();
     let mut rng = Xoshiro256::seed(seed);
     for p in &mut x {
-        for k in 0..lattice.dim() {
-            p[k] += jitter * (2.0 * rng.uniform() - 1.0);
+        for c in p.iter_mut().take(lattice.dim()) {
+            *c += jitter * (2.0 * rng.uniform() - 1.0);
         }
         b.wrap(p);
     }
@@ -66,7 +72,15 @@ fn open_boxes_with_random_soft_spheres_and_springs_match_all_pairs_to_1e_12() {
         let n = [40, 200, 400][dim - 1];
         let size = [20.0, 8.0, 5.0][dim - 1]; // beyond the box on purpose: open axes
         let x: Vec<[f64; 3]> = (0..n)
-            .map(|_| std::array::from_fn(|k| if k < dim { size * rng.uniform() - 1.0 } else { 0.0 }))
+            .map(|_| {
+                std::array::from_fn(|k| {
+                    if k < dim {
+                        size * rng.uniform() - 1.0
+                    } else {
+                        0.0
+                    }
+                })
+            })
             .collect();
         assert!(compare(&soft, &b, &x) < 1e-12, "soft spheres, dim {dim}");
         assert!(compare(&spring, &b, &x) < 1e-12, "springs, dim {dim}");
@@ -74,7 +88,9 @@ fn open_boxes_with_random_soft_spheres_and_springs_match_all_pairs_to_1e_12() {
     // Mixed: periodic in x only.
     let b = SimBox::new(2, [7.0, 7.0, 0.0], [true, false, false]).unwrap();
     let mut rng = Xoshiro256::seed(9);
-    let x: Vec<[f64; 3]> = (0..150).map(|_| [7.0 * rng.uniform(), 9.0 * rng.uniform(), 0.0]).collect();
+    let x: Vec<[f64; 3]> = (0..150)
+        .map(|_| [7.0 * rng.uniform(), 9.0 * rng.uniform(), 0.0])
+        .collect();
     assert!(compare(&soft, &b, &x) < 1e-12);
 }
 
@@ -87,7 +103,11 @@ fn forces_during_a_run_equal_all_pairs() {
     let lj = LennardJones::reduced(2.5).unwrap();
     let mut md = Md::new(b, lj, x, v, MdConfig::default()).unwrap();
     md.run(60).unwrap();
-    assert!(md.rebuilds() > 1, "the list was rebuilt {} times", md.rebuilds());
+    assert!(
+        md.rebuilds() > 1,
+        "the list was rebuilt {} times",
+        md.rebuilds()
+    );
     let mut g = vec![[0.0; 3]; md.len()];
     let sums = all_pairs_forces(&lj, md.sim_box(), md.positions(), &mut g);
     let scale = g.iter().flatten().fold(1.0f64, |m, v| m.max(v.abs()));

@@ -10,7 +10,10 @@ fn lj_pair_from_1_5_sigma_turns_where_u_equals_e() {
     let lj = LennardJones::reduced(2.5).unwrap();
     let b = SimBox::new(3, [10.0; 3], [false; 3]).unwrap();
     let x = vec![[0.0, 0.0, 0.0], [1.5, 0.0, 0.0]];
-    let config = MdConfig { dt: 1e-4, ..MdConfig::default() };
+    let config = MdConfig {
+        dt: 1e-4,
+        ..MdConfig::default()
+    };
     let mut md = Md::new(b, lj, x, vec![[0.0; 3]; 2], config).unwrap();
     let e0 = md.thermo().total;
     let u = |r: f64| lj.energy_force(r * r).0;
@@ -20,7 +23,10 @@ fn lj_pair_from_1_5_sigma_turns_where_u_equals_e() {
     for _ in 0..40_000 {
         md.step();
         let p = md.positions();
-        let r = (0..3).map(|k| (p[1][k] - p[0][k]).powi(2)).sum::<f64>().sqrt();
+        let r = (0..3)
+            .map(|k| (p[1][k] - p[0][k]).powi(2))
+            .sum::<f64>()
+            .sqrt();
         r_min = r_min.min(r);
         r_max = r_max.max(r);
         worst = worst.max((md.thermo().total - e0).abs());
@@ -31,5 +37,9 @@ fn lj_pair_from_1_5_sigma_turns_where_u_equals_e() {
     assert!((r_min - inner).abs() < 1e-6, "r_min {r_min} vs {inner}");
     assert!((r_max - 1.5).abs() < 1e-6, "r_max {r_max}");
     assert!(worst < 1e-6 * e0.abs(), "energy error {worst:e}");
-    eprintln!("inner {inner}: r_min - inner = {:e}, r_max - 1.5 = {:e}, |dE| = {worst:e}", r_min - inner, r_max - 1.5);
+    eprintln!(
+        "inner {inner}: r_min - inner = {:e}, r_max - 1.5 = {:e}, |dE| = {worst:e}",
+        r_min - inner,
+        r_max - 1.5
+    );
 }
