@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 
 mod bead;
 mod friction;
+mod md;
 mod mechanics;
 mod rigid_collide;
 mod roll;
@@ -14,6 +15,7 @@ mod spin;
 
 pub use bead::BeadArgs;
 pub use friction::FrictionArgs;
+pub use md::MdArgs;
 pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
     RocketArgs, WorkArgs,
@@ -52,6 +54,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit spin --moments "1, 2, 3" --omega "0.01, 1, 0.01" --t-max 100
   mechkit rotation --omega0 "1000 rpm" --omega1 "2000 rpm" --time "15 s"
   mechkit bead --circle "1 m" --side outside --start 0 --speed "0.1 m/s" --t-max "3 s"
+  mechkit md --lattice fcc --cells 20 --density 0.8442 --temperature 1.44 --steps 100 --threads 2
   mechkit rigid-collide --rod --mass 1 --length 1 --release-angle "90 deg" --block-mass 0.3333 -e 1
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
@@ -105,6 +108,9 @@ pub enum Command {
     /// against the elliptic-function period), or a heavy top on a pivot (nutation,
     /// precession, steady precession).
     Spin(SpinArgs),
+    /// Many particles with a Lennard-Jones pair potential from a lattice (reduced units):
+    /// neighbour lists, periodic box, velocity Verlet, thermo, g(r), extended XYZ.
+    Md(MdArgs),
     /// Two bodies colliding with a coefficient of restitution (1-D, 2-D or 3-D): velocities
     /// after, impulse, kinetic energy lost, centre-of-mass frame.
     Collide(CollideArgs),

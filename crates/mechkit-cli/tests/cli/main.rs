@@ -34,6 +34,7 @@ mod energy;
 mod errors;
 mod friction;
 mod mass;
+mod md;
 mod rigid_collide;
 mod rocket;
 mod roll;
