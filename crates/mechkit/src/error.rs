@@ -21,6 +21,9 @@ pub enum Error {
     /// An invalid rocket, or its simulation failed.
     #[error(transparent)]
     Rocket(#[from] crate::rocket::RocketError),
+    /// An invalid many-particle system, or its run diverged.
+    #[error(transparent)]
+    Md(#[from] crate::md::MdError),
     /// A data file could not be read, or lacks a column.
     #[error(transparent)]
     Data(#[from] crate::data::DataError),

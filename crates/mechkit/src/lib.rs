@@ -46,6 +46,8 @@
 //! - [`mass`]: point-mass systems (centre of mass, momentum, the centre-of-mass frame), and
 //!   rigid bodies: mass, centre of mass and inertia tensor of shapes, polygons, triangle
 //!   meshes, composites with holes, and the body in a photo ([`mass::image`]).
+//! - [`md`]: many-particle molecular dynamics: Lennard-Jones and other cut-off pair
+//!   potentials, cell and neighbour lists, periodic boxes, lattices, velocity Verlet on threads.
 //! - [`rigid`]: rotation and rigid bodies: angular kinematics and circular motion, Coulomb
 //!   friction and stick-slip, a body on a curve leaving it where the normal force vanishes,
 //!   bodies hinged to the world (the physical pendulum, the Atwood machine with a massive
@@ -75,6 +77,7 @@ pub mod figure;
 pub mod forces;
 pub mod function;
 pub mod mass;
+pub mod md;
 pub mod ode;
 pub mod particles;
 pub mod quad;

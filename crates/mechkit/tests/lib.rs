@@ -7,6 +7,7 @@ mod deriv;
 mod energy;
 mod forces;
 mod mass;
+mod md;
 mod ode;
 mod quad;
 mod rigid;

@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 
 mod bead;
 mod friction;
+mod md;
 mod mechanics;
 mod rigid_collide;
 mod roll;
@@ -15,6 +16,7 @@ mod sweep;
 
 pub use bead::BeadArgs;
 pub use friction::FrictionArgs;
+pub use md::MdArgs;
 pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
     RocketArgs, WorkArgs,
@@ -55,6 +57,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit rotation --omega0 "1000 rpm" --omega1 "2000 rpm" --time "15 s"
   mechkit bead --circle "1 m" --side outside --start 0 --speed "0.1 m/s" --t-max "3 s"
   mechkit sweep examples/sweep/throw.toml --set "v0=0:5:51" --plot "v(x)"
+  mechkit md --lattice fcc --cells 20 --density 0.8442 --temperature 1.44 --steps 100 --threads 2
   mechkit rigid-collide --rod --mass 1 --length 1 --release-angle "90 deg" --block-mass 0.3333 -e 1
 
 Exit codes: 0 success, 1 the computation failed (e.g. diverged), 2 bad input.
@@ -108,6 +111,9 @@ pub enum Command {
     /// against the elliptic-function period), or a heavy top on a pivot (nutation,
     /// precession, steady precession).
     Spin(SpinArgs),
+    /// Many particles with a Lennard-Jones pair potential from a lattice (reduced units):
+    /// neighbour lists, periodic box, velocity Verlet, thermo, g(r), extended XYZ.
+    Md(MdArgs),
     /// Two bodies colliding with a coefficient of restitution (1-D, 2-D or 3-D): velocities
     /// after, impulse, kinetic energy lost, centre-of-mass frame.
     Collide(CollideArgs),

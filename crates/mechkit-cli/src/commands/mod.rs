@@ -11,6 +11,7 @@ mod derive;
 mod friction;
 mod inertia;
 mod input;
+mod md;
 mod potential;
 mod power;
 mod rigid_collide;
@@ -49,6 +50,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Power(args) => power::power(&args),
         Command::Rocket(args) => rocket::rocket(&args),
         Command::Spin(args) => spin::spin(&args),
+        Command::Md(args) => md::md(&args),
         Command::Work(args) => work::work(&args),
         Command::Derive(args) => derive::derive(&args),
         Command::Collide(args) => collide::collide(&args),

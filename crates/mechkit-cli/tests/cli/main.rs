@@ -35,6 +35,7 @@ mod energy;
 mod errors;
 mod friction;
 mod mass;
+mod md;
 mod rigid_collide;
 mod rocket;
 mod roll;

@@ -1,0 +1,157 @@
+//! `mechkit md`: the Lennard-Jones melt and its relatives, through `mechkit::md`.
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use anyhow::{Context, Result, anyhow, bail};
+use mechkit::md::{Lattice, LennardJones, Md, MdConfig, MdError, Thermo, maxwell_boltzmann};
+use mechkit::scenario::write_atomic;
+use serde_json::json;
+
+use super::Outcome;
+use crate::args::MdArgs;
+
+/// The flag behind a library error, to say where the input went wrong.
+fn flag(e: &MdError) -> &'static str {
+    match e {
+        MdError::NotPositive { name, .. } => match *name {
+            "the density" => "--density",
+            "the temperature" => "--temperature",
+            "the time step dt" => "--dt",
+            "the skin" => "--skin",
+            "the number of threads" => "--threads",
+            "the cut-off" => "--cutoff",
+            _ => "input",
+        },
+        MdError::NoCells { .. } | MdError::TooFewParticles { .. } => "--cells",
+        MdError::BoxTooSmall { .. } => "--cells (or --cutoff, --skin)",
+        _ => "input",
+    }
+}
+
+fn thermo_json(t: &Thermo, n: f64) -> serde_json::Value {
+    json!({
+        "step": t.step, "t": t.t, "temperature": t.temperature,
+        "potential_per_atom": t.potential / n, "total_per_atom": t.total / n,
+        "kinetic_per_atom": t.kinetic / n, "pressure": t.pressure,
+    })
+}
+
+/// Runs `mechkit md`.
+pub fn md(args: &MdArgs) -> Result<Outcome> {
+    let lattice = Lattice::from_name(&args.lattice).ok_or_else(|| {
+        anyhow!(
+            "--lattice: unknown lattice '{}'; use fcc, sc, hexagonal, square or chain",
+            args.lattice
+        )
+    })?;
+    if args.thermo_every == 0 || args.xyz_every == Some(0) {
+        bail!("--thermo-every and --xyz-every must be at least 1 (a step count)");
+    }
+    let with_flag = |e: MdError| anyhow!("{}: {e}", flag(&e));
+    let (sim_box, x) = lattice.build(args.cells, args.density).map_err(with_flag)?;
+    let config = MdConfig {
+        dt: args.dt,
+        skin: args.skin,
+        mass: 1.0,
+        threads: args.threads,
+    };
+    let v = maxwell_boltzmann(args.temperature, 1.0, lattice.dim(), x.len(), args.seed)
+        .map_err(with_flag)?;
+    let lj = LennardJones::new(1.0, 1.0, args.cutoff, args.shift).map_err(with_flag)?;
+    let mut md = Md::new(sim_box, lj, x, v, config).map_err(with_flag)?;
+    let n = md.len() as f64;
+    if let Some(dir) = &args.out {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("--out: cannot create {}", dir.display()))?;
+    }
+    let mut rows = vec![md.thermo()];
+    let mut xyz = String::new();
+    let frame = |md: &Md<LennardJones>, xyz: &mut String| {
+        let mut buf = Vec::new();
+        md.write_xyz_frame(&mut buf, "Ar")
+            .expect("writing to memory");
+        xyz.push_str(&String::from_utf8_lossy(&buf));
+    };
+    if args.xyz_every.is_some() {
+        frame(&md, &mut xyz);
+    }
+    let start = Instant::now();
+    let mut failure = None;
+    for step in 1..=args.steps {
+        if let Err(e) = md.run(1) {
+            failure = Some(e);
+            break;
+        }
+        if step % args.thermo_every == 0 || step == args.steps {
+            rows.push(md.thermo());
+        }
+        if args.xyz_every.is_some_and(|k| step % k == 0) {
+            frame(&md, &mut xyz);
+        }
+    }
+    let seconds = start.elapsed().as_secs_f64();
+    let rate = n * md.steps() as f64 / seconds.max(1e-12);
+    if let Some(dir) = &args.out {
+        let mut csv = format!("{}\n", Thermo::CSV_HEADER);
+        for r in &rows {
+            let _ = writeln!(csv, "{}", r.csv_row());
+        }
+        let path = dir.join("thermo.csv");
+        write_atomic(&path, csv.as_bytes())
+            .with_context(|| format!("cannot write {}", path.display()))?;
+        let mut rdf = String::from("r,g\n");
+        for (r, g) in md.radial_distribution(100, args.cutoff + args.skin) {
+            let _ = writeln!(rdf, "{r},{g}");
+        }
+        let path = dir.join("rdf.csv");
+        write_atomic(&path, rdf.as_bytes())
+            .with_context(|| format!("cannot write {}", path.display()))?;
+        if !xyz.is_empty() {
+            let path = dir.join("trajectory.xyz");
+            write_atomic(&path, xyz.as_bytes())
+                .with_context(|| format!("cannot write {}", path.display()))?;
+        }
+    }
+    let last = md.thermo();
+    if args.json {
+        let body = json!({
+            "atoms": md.len(), "lattice": lattice.name(), "steps": md.steps(),
+            "threads": args.threads, "seconds": seconds, "atom_steps_per_second": rate,
+            "list_builds": md.rebuilds(),
+            "energy_change_per_atom": (last.total - rows[0].total) / n,
+            "msd": md.mean_square_displacement(),
+            "thermo": rows.iter().map(|t| thermo_json(t, n)).collect::<Vec<_>>(),
+        });
+        println!("{}", serde_json::to_string_pretty(&body)?);
+    } else {
+        println!(
+            "{} atoms ({} lattice), reduced LJ units; per-atom energies",
+            md.len(),
+            lattice.name()
+        );
+        println!("  Step         Temp       E_pair       TotEng        Press");
+        for t in &rows {
+            println!(
+                "{:>6} {:>12.7} {:>12.7} {:>12.7} {:>12.7}",
+                t.step,
+                t.temperature,
+                t.potential / n,
+                t.total / n,
+                t.pressure
+            );
+        }
+        println!(
+            "{} steps on {} thread(s) in {seconds:.3} s: {rate:.3e} atom-steps/s, {} list builds, msd {:.4}",
+            md.steps(),
+            args.threads,
+            md.rebuilds(),
+            md.mean_square_displacement()
+        );
+    }
+    if let Some(e) = failure {
+        eprintln!("error: {e}");
+        return Ok(Outcome::ComputationFailed);
+    }
+    Ok(Outcome::Success)
+}

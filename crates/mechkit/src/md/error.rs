@@ -1,0 +1,79 @@
+//! Why a many-particle system cannot be built or run.
+
+use thiserror::Error;
+
+use crate::Real;
+
+/// An invalid box, lattice, potential or run setting of [`crate::md`].
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum MdError {
+    /// A parameter that must be positive and finite is not.
+    #[error("{name} is {value}; it must be positive and finite")]
+    NotPositive {
+        /// Which parameter (`the density`, `the time step dt`, …).
+        name: &'static str,
+        /// The value given.
+        value: Real,
+    },
+    /// A dimension other than 1, 2 or 3.
+    #[error("the dimension is {dim}; it must be 1, 2 or 3")]
+    Dimension {
+        /// The dimension given.
+        dim: usize,
+    },
+    /// A lattice that does not exist in the requested dimension.
+    #[error("the {lattice} lattice is {needs}-dimensional, but the box is {dim}-dimensional")]
+    LatticeDimension {
+        /// The lattice's name.
+        lattice: &'static str,
+        /// Its dimension.
+        needs: usize,
+        /// The box's dimension.
+        dim: usize,
+    },
+    /// A lattice with no unit cells.
+    #[error("the lattice needs at least one unit cell along each axis (got {cells})")]
+    NoCells {
+        /// The number of cells given.
+        cells: usize,
+    },
+    /// A periodic box too small for the minimum-image convention at this cut-off.
+    #[error(
+        "the periodic box is {length} long on axis {axis}, shorter than twice the cut-off plus skin ({needed}); use more unit cells or a shorter cut-off"
+    )]
+    BoxTooSmall {
+        /// The axis (0 = x).
+        axis: usize,
+        /// The box length on that axis.
+        length: Real,
+        /// The smallest length allowed, 2 (r_c + skin).
+        needed: Real,
+    },
+    /// Positions, velocities and masses of different lengths.
+    #[error("{what} has {got} entries, but there are {expected} particles")]
+    Length {
+        /// What has the wrong length.
+        what: &'static str,
+        /// Its length.
+        got: usize,
+        /// The number of particles.
+        expected: usize,
+    },
+    /// Fewer than two particles where a temperature is needed.
+    #[error("a temperature needs at least two particles (got {n})")]
+    TooFewParticles {
+        /// The number of particles.
+        n: usize,
+    },
+    /// The run produced a non-finite energy (too large a time step, overlapping particles).
+    #[error(
+        "the run diverged at step {step}: the total energy is {energy}; use a smaller time step or start from a lattice"
+    )]
+    Diverged {
+        /// The step at which it was noticed.
+        step: usize,
+        /// The energy found.
+        energy: Real,
+    },
+}

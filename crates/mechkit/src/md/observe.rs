@@ -1,0 +1,126 @@
+//! Observables: energies, temperature, virial pressure, radial distribution function and
+//! mean-square displacement.
+//!
+//! K = ½ m Σ v², T = 2K / (d (N − 1)) (k_B = 1: the degrees of freedom left with the total
+//! momentum fixed), P = (N T + W / d) / V with the virial W = Σ_pairs r_ij · F_ij.
+
+use crate::Real;
+
+use super::{Md, PairPotential};
+
+/// One row of the thermodynamic time series.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Thermo {
+    /// Steps taken.
+    pub step: usize,
+    /// Time.
+    pub t: Real,
+    /// Kinetic energy K.
+    pub kinetic: Real,
+    /// Potential energy U.
+    pub potential: Real,
+    /// Total energy E = K + U.
+    pub total: Real,
+    /// Temperature 2K / (d (N − 1)).
+    pub temperature: Real,
+    /// Virial pressure.
+    pub pressure: Real,
+}
+
+impl Thermo {
+    /// The CSV header matching [`Thermo::csv_row`].
+    pub const CSV_HEADER: &'static str = "step,t,kinetic,potential,total,temperature,pressure";
+
+    /// The row as CSV (full precision).
+    pub fn csv_row(&self) -> String {
+        format!(
+            "{},{},{},{},{},{},{}",
+            self.step,
+            self.t,
+            self.kinetic,
+            self.potential,
+            self.total,
+            self.temperature,
+            self.pressure
+        )
+    }
+}
+
+impl<P: PairPotential> Md<P> {
+    /// Kinetic energy ½ m Σ v².
+    pub fn kinetic_energy(&self) -> Real {
+        0.5 * self.config.mass
+            * self
+                .v
+                .iter()
+                .map(|v| v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+                .sum::<Real>()
+    }
+
+    /// Energies, temperature and pressure now.
+    pub fn thermo(&self) -> Thermo {
+        let d = self.sim_box.dim() as Real;
+        let n = self.len() as Real;
+        let kinetic = self.kinetic_energy();
+        let temperature = 2.0 * kinetic / (d * (n - 1.0).max(1.0));
+        let pressure = (n * temperature + self.sums.virial / d) / self.sim_box.volume();
+        Thermo {
+            step: self.steps,
+            t: self.steps as Real * self.config.dt,
+            kinetic,
+            potential: self.sums.potential,
+            total: kinetic + self.sums.potential,
+            temperature,
+            pressure,
+        }
+    }
+
+    /// Mean-square displacement ⟨|x(t) − x(0)|²⟩ of the unwrapped positions.
+    pub fn mean_square_displacement(&self) -> Real {
+        let sum: Real = self
+            .x
+            .iter()
+            .zip(&self.shift)
+            .zip(&self.x0)
+            .map(|((x, s), x0)| (0..3).map(|a| (x[a] + s[a] - x0[a]).powi(2)).sum::<Real>())
+            .sum();
+        sum / self.len().max(1) as Real
+    }
+
+    /// The radial distribution function g(r) on `bins` equal bins of [0, r_max], r_max at
+    /// most the neighbour-list range (`r_c + skin`): `(bin centre, g)` pairs, normalised by
+    /// the ideal-gas count N ρ V_shell (V_shell the shell's length, area or volume).
+    pub fn radial_distribution(&self, bins: usize, r_max: Real) -> Vec<(Real, Real)> {
+        let r_max = r_max.min(self.list.range());
+        let bins = bins.max(1);
+        let width = r_max / bins as Real;
+        let mut hist = vec![0usize; bins];
+        for i in 0..self.len() {
+            for &j in self.list.of(i) {
+                let d = self.sim_box.separation(&self.x[i], &self.x[j as usize]);
+                let r = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                if r < r_max {
+                    hist[((r / width) as usize).min(bins - 1)] += 1;
+                }
+            }
+        }
+        let n = self.len() as Real;
+        let rho = n / self.sim_box.volume();
+        let dim = self.sim_box.dim();
+        let ball = |r: Real| match dim {
+            1 => 2.0 * r,
+            2 => std::f64::consts::PI * r * r,
+            _ => 4.0 / 3.0 * std::f64::consts::PI * r * r * r,
+        };
+        hist.iter()
+            .enumerate()
+            .map(|(k, &c)| {
+                let (lo, hi) = (k as Real * width, (k + 1) as Real * width);
+                (
+                    0.5 * (lo + hi),
+                    c as Real / (n * rho * (ball(hi) - ball(lo))),
+                )
+            })
+            .collect()
+    }
+}

@@ -1,0 +1,253 @@
+//! `Md`: N equal particles with a pair potential in a box, advanced by velocity Verlet.
+//!
+//! One step (Swope et al. 1982): v ← v + (dt/2m) F; x ← x + dt v; F ← F(x); v ← v + (dt/2m) F.
+//! The neighbour list is rebuilt (positions wrapped into the periodic box first) whenever
+//! some particle has moved more than half the skin since the last build. Nothing is
+//! allocated per step except on a rebuild.
+
+use crate::Real;
+
+use super::forces::compute_forces;
+use super::{MdError, NeighbourList, PairPotential, PairSums, SimBox};
+
+/// Run settings of [`Md`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MdConfig {
+    /// Time step (reduced units: τ).
+    pub dt: Real,
+    /// Verlet skin added to the cut-off for the neighbour list.
+    pub skin: Real,
+    /// Mass of every particle.
+    pub mass: Real,
+    /// Threads for forces and list builds (1 = serial); the results do not depend on it.
+    pub threads: usize,
+}
+
+impl Default for MdConfig {
+    /// The LJ melt's settings: dt = 0.005 τ, skin 0.3 σ, m = 1, one thread.
+    fn default() -> Self {
+        Self {
+            dt: 0.005,
+            skin: 0.3,
+            mass: 1.0,
+            threads: 1,
+        }
+    }
+}
+
+/// A many-particle system: positions, velocities, forces, the neighbour list and the pair
+/// sums of the current state.
+pub struct Md<P: PairPotential> {
+    pub(crate) sim_box: SimBox,
+    pub(crate) potential: P,
+    pub(crate) config: MdConfig,
+    pub(crate) x: Vec<[Real; 3]>,
+    pub(crate) v: Vec<[Real; 3]>,
+    pub(crate) f: Vec<[Real; 3]>,
+    /// Positions at the last list build, to measure displacements.
+    x_built: Vec<[Real; 3]>,
+    /// What wrapping has subtracted from each position: unwrapped = x + shift.
+    pub(crate) shift: Vec<[Real; 3]>,
+    /// Unwrapped positions at the start, for the mean-square displacement.
+    pub(crate) x0: Vec<[Real; 3]>,
+    pub(crate) list: NeighbourList,
+    pub(crate) sums: PairSums,
+    pool: Option<rayon::ThreadPool>,
+    pub(crate) steps: usize,
+    rebuilds: usize,
+}
+
+impl<P: PairPotential> Md<P> {
+    /// A system of particles at `x` with velocities `v` (same length) in `sim_box`; forces
+    /// are evaluated at once.
+    pub fn new(
+        sim_box: SimBox,
+        potential: P,
+        x: Vec<[Real; 3]>,
+        v: Vec<[Real; 3]>,
+        config: MdConfig,
+    ) -> Result<Self, MdError> {
+        if v.len() != x.len() {
+            return Err(MdError::Length {
+                what: "the velocities",
+                got: v.len(),
+                expected: x.len(),
+            });
+        }
+        for (name, value) in [
+            ("the time step dt", config.dt),
+            ("the mass", config.mass),
+            ("the skin", config.skin),
+        ] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(MdError::NotPositive { name, value });
+            }
+        }
+        if config.threads == 0 {
+            return Err(MdError::NotPositive {
+                name: "the number of threads",
+                value: 0.0,
+            });
+        }
+        sim_box.check_range(potential.cutoff() + config.skin)?;
+        let pool = if config.threads > 1 {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(config.threads)
+                .build()
+                .ok()
+        } else {
+            None
+        };
+        let n = x.len();
+        let mut md = Self {
+            sim_box,
+            potential,
+            config,
+            x0: x.clone(),
+            x,
+            v,
+            f: vec![[0.0; 3]; n],
+            x_built: Vec::new(),
+            shift: vec![[0.0; 3]; n],
+            list: NeighbourList::default(),
+            sums: PairSums::default(),
+            pool,
+            steps: 0,
+            rebuilds: 0,
+        };
+        md.rebuild();
+        md.sums = compute_forces(
+            &md.potential,
+            &md.sim_box,
+            &md.list,
+            &md.x,
+            &mut md.f,
+            md.pool.as_ref(),
+        );
+        Ok(md)
+    }
+
+    /// Wraps the positions into the box and rebuilds the neighbour list.
+    fn rebuild(&mut self) {
+        for (x, s) in self.x.iter_mut().zip(&mut self.shift) {
+            let before = *x;
+            self.sim_box.wrap(x);
+            for a in 0..3 {
+                s[a] += before[a] - x[a];
+            }
+        }
+        let range = self.potential.cutoff() + self.config.skin;
+        self.list = NeighbourList::build(&self.sim_box, &self.x, range, self.pool.as_ref());
+        self.x_built.clone_from(&self.x);
+        self.rebuilds += 1;
+    }
+
+    /// One velocity-Verlet step.
+    pub fn step(&mut self) {
+        let h = 0.5 * self.config.dt / self.config.mass;
+        let dt = self.config.dt;
+        let limit = 0.25 * self.config.skin * self.config.skin;
+        let mut moved_far = false;
+        for ((x, v), (f, x_b)) in self
+            .x
+            .iter_mut()
+            .zip(&mut self.v)
+            .zip(self.f.iter().zip(&self.x_built))
+        {
+            let mut d2 = 0.0;
+            for a in 0..3 {
+                v[a] += h * f[a];
+                x[a] += dt * v[a];
+                let d = x[a] - x_b[a];
+                d2 += d * d;
+            }
+            moved_far |= d2 > limit;
+        }
+        if moved_far {
+            self.rebuild();
+        }
+        self.sums = compute_forces(
+            &self.potential,
+            &self.sim_box,
+            &self.list,
+            &self.x,
+            &mut self.f,
+            self.pool.as_ref(),
+        );
+        for (v, f) in self.v.iter_mut().zip(&self.f) {
+            for a in 0..3 {
+                v[a] += h * f[a];
+            }
+        }
+        self.steps += 1;
+    }
+
+    /// `steps` steps; fails if the energy stops being finite (checked after each step).
+    pub fn run(&mut self, steps: usize) -> Result<(), MdError> {
+        for _ in 0..steps {
+            self.step();
+            if !self.sums.potential.is_finite() {
+                return Err(MdError::Diverged {
+                    step: self.steps,
+                    energy: self.sums.potential,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Positions (wrapped into the box at the last list build).
+    pub fn positions(&self) -> &[[Real; 3]] {
+        &self.x
+    }
+
+    /// Velocities.
+    pub fn velocities(&self) -> &[[Real; 3]] {
+        &self.v
+    }
+
+    /// Forces at the current positions.
+    pub fn forces(&self) -> &[[Real; 3]] {
+        &self.f
+    }
+
+    /// The box.
+    pub fn sim_box(&self) -> &SimBox {
+        &self.sim_box
+    }
+
+    /// The settings.
+    pub fn config(&self) -> &MdConfig {
+        &self.config
+    }
+
+    /// The number of particles.
+    pub fn len(&self) -> usize {
+        self.x.len()
+    }
+
+    /// Whether there are no particles.
+    pub fn is_empty(&self) -> bool {
+        self.x.is_empty()
+    }
+
+    /// Steps taken.
+    pub fn steps(&self) -> usize {
+        self.steps
+    }
+
+    /// Neighbour-list builds so far (the first included).
+    pub fn rebuilds(&self) -> usize {
+        self.rebuilds
+    }
+
+    /// The neighbour list in use.
+    pub fn neighbour_list(&self) -> &NeighbourList {
+        &self.list
+    }
+
+    /// Potential energy and virial of the current positions.
+    pub fn pair_sums(&self) -> PairSums {
+        self.sums
+    }
+}
