@@ -42,6 +42,8 @@
 //! - [`energy`]: the energy ledger (work of each force, kinetic and potential energy);
 //!   potentials, energy diagrams, equilibria and turning points; line integrals of force
 //!   fields; constant-power motion.
+//! - [`elliptic`]: complete and incomplete elliptic integrals of the first kind and Jacobi's
+//!   elliptic functions (the AGM, Landen, Carlson): the exact pendulum and free-body periods.
 //! - [`figure`]: plot data (curves, markers, bands) for the command line to draw.
 //! - [`mass`]: point-mass systems (centre of mass, momentum, the centre-of-mass frame), and
 //!   rigid bodies: mass, centre of mass and inertia tensor of shapes, polygons, triangle
@@ -71,6 +73,7 @@ pub mod calculus;
 pub mod collisions;
 pub mod data;
 pub mod deriv;
+pub mod elliptic;
 pub mod energy;
 mod error;
 pub mod figure;

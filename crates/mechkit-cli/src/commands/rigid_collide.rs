@@ -5,6 +5,7 @@
 use std::fmt::Write as _;
 
 use anyhow::{Result, anyhow, bail};
+use mechkit::collisions::Restitution;
 use mechkit::expr::units::Dimension;
 use mechkit::rigid::impact::{
     Contact, HingedImpact, ImpactError, Particle, PivotedBody, hinged_impact, release_omega,
@@ -31,20 +32,11 @@ pub(super) fn planar(text: &str, flag: &str, dim: Dimension) -> Result<[f64; 2]>
     Ok(out)
 }
 
+/// `--restitution`: a number from 0 to 1 or a preset, read as `mechkit collide` reads it.
 pub(super) fn restitution(text: &str) -> Result<f64> {
-    let e = match text.trim().to_ascii_lowercase().as_str() {
-        "elastic" => 1.0,
-        "perfectly-inelastic" | "inelastic" | "plastic" => 0.0,
-        t => t.parse::<f64>().map_err(|_| {
-            anyhow!(
-                "--restitution `{text}` is not a number from 0 to 1, elastic or perfectly-inelastic"
-            )
-        })?,
-    };
-    if !(0.0..=1.0).contains(&e) {
-        bail!("--restitution is {e}; it must be between 0 (perfectly inelastic) and 1 (elastic)");
-    }
-    Ok(e)
+    Restitution::parse(text)
+        .map(Restitution::value)
+        .map_err(|e| anyhow!("--restitution: {e}"))
 }
 
 fn flag_of(e: &ImpactError) -> &'static str {

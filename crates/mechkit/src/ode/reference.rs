@@ -142,16 +142,8 @@ impl Pendulum {
 
     /// The exact period `2π / (ω₀ AGM(1, cos(θ₀/2)))`.
     pub fn period(&self) -> Real {
-        let (mut a, mut b) = (1.0, (0.5 * self.theta0).cos());
-        for _ in 0..60 {
-            let next = (0.5 * (a + b), (a * b).sqrt());
-            a = next.0;
-            b = next.1;
-            if (a - b).abs() <= 1e-16 * a {
-                break;
-            }
-        }
-        2.0 * std::f64::consts::PI / (self.omega0 * a)
+        let agm = crate::elliptic::agm(1.0, (0.5 * self.theta0).cos());
+        2.0 * std::f64::consts::PI / (self.omega0 * agm)
     }
 
     /// The initial state.

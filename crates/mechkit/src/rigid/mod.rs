@@ -3,14 +3,13 @@
 //! rotation about a fixed axis ([`fixed_axis`], the bodies of `[[rigid_body]]` scenarios),
 //! planar bodies rolling and slipping ([`rolling`]), rigid impacts ([`mod@impact`]), and free
 //! rigid bodies and tops in 3-D ([`free3d`]); [`elliptic`] holds the elliptic integrals and
-//! Jacobi functions their exact solutions are written in.
+//! Jacobi functions their exact solutions are written in (re-exported from the crate root).
 //!
 //! Each model is a value type with a checked constructor and its own error type, integrated
 //! by the steppers of [`crate::ode`]; regime switches (stick to slip, slipping to rolling,
 //! leaving a surface, a wheel stopping) are located inside a step, never detected a step late.
 
 pub mod constrained;
-pub mod elliptic;
 pub mod fixed_axis;
 pub mod free3d;
 pub mod friction;
@@ -19,6 +18,7 @@ pub mod kinematics;
 pub mod rolling;
 pub(crate) mod segment;
 
+pub use crate::elliptic;
 pub use constrained::{BeadOnCurve, Curve};
 pub use fixed_axis::HingedBody;
 pub use free3d::{FreeBody, SpinningBody};

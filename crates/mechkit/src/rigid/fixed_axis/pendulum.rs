@@ -6,11 +6,11 @@ use std::f64::consts::PI;
 
 use super::HingedBody;
 use crate::Real;
-use crate::rigid::elliptic::complete_k_complement;
+use crate::elliptic::complete_k_complement;
 
 /// The complete elliptic integral of the first kind `K(k) = ∫₀^{π/2} dφ/√(1 - k² sin²φ)` of
 /// modulus `k` (`|k| < 1`; the parameter is `m = k²`), by the arithmetic-geometric mean
-/// ([`crate::rigid::elliptic`]), with `1 - k²` formed as `(1 - k)(1 + k)` so that no digits
+/// ([`crate::elliptic`]), with `1 - k²` formed as `(1 - k)(1 + k)` so that no digits
 /// are lost near the top. `None` for `|k| ≥ 1`.
 pub fn elliptic_k(k: Real) -> Option<Real> {
     if k.is_nan() || k.abs() >= 1.0 {

@@ -34,7 +34,7 @@ mod run;
 mod splitting;
 mod top;
 
-pub use super::elliptic::{
+pub use crate::elliptic::{
     agm, carlson_rf, complete_k, complete_k_complement, incomplete_f, incomplete_f_complement,
     jacobi, jacobi_complement,
 };

@@ -21,8 +21,8 @@
 //! Euler's equations, which is undone by solving for `−ω`.
 
 use crate::Real;
+use crate::elliptic::{complete_k_complement, incomplete_f_complement, jacobi_complement};
 use crate::mass::Vec3;
-use crate::rigid::elliptic::{complete_k_complement, incomplete_f_complement, jacobi_complement};
 
 /// The exact torque-free ω(t) of a body with distinct extreme moments.
 #[derive(Debug, Clone, Copy, PartialEq)]

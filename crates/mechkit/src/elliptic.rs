@@ -19,7 +19,7 @@ use crate::Real;
 /// The arithmetic-geometric mean of `a` and `b` (both ≥ 0).
 ///
 /// ```
-/// use mechkit::rigid::elliptic::agm;
+/// use mechkit::elliptic::agm;
 /// // Gauss's constant: 1/AGM(1, √2) = 0.8346268416740731…
 /// assert!((1.0 / agm(1.0, 2f64.sqrt()) - 0.834_626_841_674_073_2).abs() < 1e-15);
 /// ```
@@ -36,7 +36,7 @@ pub fn agm(mut a: Real, mut b: Real) -> Real {
 /// `K(m)`, the complete elliptic integral of the first kind, for `0 ≤ m < 1` (infinite at 1).
 ///
 /// ```
-/// use mechkit::rigid::elliptic::complete_k;
+/// use mechkit::elliptic::complete_k;
 /// assert_eq!(complete_k(0.0), std::f64::consts::FRAC_PI_2);
 /// assert!((complete_k(0.5) - 1.854_074_677_301_372).abs() < 1e-15);
 /// ```
@@ -55,7 +55,7 @@ pub fn complete_k_complement(m1: Real) -> Real {
 /// Jacobi's `(sn, cn, dn)(u | m)` for `0 ≤ m ≤ 1`.
 ///
 /// ```
-/// use mechkit::rigid::elliptic::jacobi;
+/// use mechkit::elliptic::jacobi;
 /// let (sn, cn, dn) = jacobi(0.7, 0.8);
 /// assert!((sn - 0.612_365_484_117_245_3).abs() < 1e-15);
 /// assert!((sn * sn + cn * cn - 1.0).abs() < 1e-15);
@@ -136,7 +136,7 @@ pub fn incomplete_f_complement(phi: Real, m1: Real) -> Real {
 /// `F(φ | m)` ([`incomplete_f_complement`] with `m₁ = 1 − m`).
 ///
 /// ```
-/// use mechkit::rigid::elliptic::incomplete_f;
+/// use mechkit::elliptic::incomplete_f;
 /// assert!((incomplete_f(1.2, 0.6) - 1.381_322_687_881_858).abs() < 1e-14);
 /// ```
 pub fn incomplete_f(phi: Real, m: Real) -> Real {
