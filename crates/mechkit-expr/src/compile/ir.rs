@@ -35,7 +35,7 @@ pub(crate) enum Inst {
 
 /// Hashable identity of an instruction (floats by their bits).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-enum Key {
+pub(super) enum Key {
     Const(u64),
     Load(u32),
     Op(u8, u32, u32, u32, Option<Func>),
@@ -53,7 +53,7 @@ fn op_code(op: BinOp) -> u8 {
     }
 }
 
-fn key(i: Inst) -> Key {
+pub(super) fn key(i: Inst) -> Key {
     match i {
         Inst::Const(c) => Key::Const(c.to_bits()),
         Inst::Load(s) => Key::Load(s),
@@ -271,7 +271,7 @@ impl Ir {
     }
 }
 
-fn operands(i: Inst) -> Vec<u32> {
+pub(super) fn operands(i: Inst) -> Vec<u32> {
     match i {
         Inst::Const(_) | Inst::Load(_) => vec![],
         Inst::Neg(a) | Inst::Not(a) | Inst::Square(a) | Inst::Call1(_, a) => vec![a],
@@ -288,7 +288,7 @@ fn operands(i: Inst) -> Vec<u32> {
     }
 }
 
-fn remap(i: Inst, m: &[u32]) -> Inst {
+pub(super) fn remap(i: Inst, m: &[u32]) -> Inst {
     let r = |x: u32| m[x as usize];
     match i {
         Inst::Const(_) | Inst::Load(_) => i,

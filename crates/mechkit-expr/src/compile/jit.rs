@@ -10,8 +10,11 @@
 use std::sync::Mutex;
 
 use cranelift_codegen::ir::condcodes::FloatCC;
+use std::collections::HashMap;
+
+use cranelift_codegen::ir::condcodes::IntCC;
 use cranelift_codegen::ir::{
-    AbiParam, InstBuilder, MemFlagsData, Signature, UserFuncName, Value, types,
+    AbiParam, FuncRef, InstBuilder, MemFlagsData, Signature, UserFuncName, Value, types,
 };
 use cranelift_codegen::settings::{self, Configurable};
 use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
@@ -19,6 +22,7 @@ use cranelift_jit::{JITBuilder, JITModule};
 use cranelift_module::{Linkage, Module, default_libcall_names};
 
 use super::ir::{Inst, Ir};
+use super::kernel::Body;
 use crate::ast::{BinOp, Func};
 
 /// Whether native code is wanted: `MECHKIT_JIT=0` turns it off (to compare, or to debug).
@@ -108,9 +112,18 @@ fn float_cc(op: BinOp) -> FloatCC {
     }
 }
 
-impl Native {
-    pub(super) fn compile(ir: &Ir) -> Result<Native, String> {
-        let err = |e: &dyn std::fmt::Display| e.to_string();
+/// A JIT module with the Rust functions the instructions call, declared.
+struct Jit {
+    module: JITModule,
+    externals: HashMap<&'static str, cranelift_module::FuncId>,
+}
+
+fn err(e: &dyn std::fmt::Display) -> String {
+    e.to_string()
+}
+
+impl Jit {
+    fn new(insts: &[Inst]) -> Result<Jit, String> {
         let mut flags = settings::builder();
         flags
             .set("use_colocated_libcalls", "false")
@@ -123,7 +136,7 @@ impl Native {
             .map_err(|e| err(&e))?;
         let mut jb = JITBuilder::with_isa(isa, default_libcall_names());
         let mut symbols: Vec<(&'static str, *const u8)> = vec![("mk_pow", mk_pow as *const u8)];
-        for i in &ir.insts {
+        for i in insts {
             match i {
                 Inst::Call1(f, _)
                     if !matches!(f, Func::Abs | Func::Sqrt | Func::Floor | Func::Ceil) =>
@@ -140,13 +153,6 @@ impl Native {
             jb.symbol(*name, *ptr);
         }
         let mut module = JITModule::new(jb);
-        let ptr_type = module.target_config().pointer_type();
-        let mut sig = module.make_signature();
-        sig.params.push(AbiParam::new(ptr_type));
-        sig.returns.push(AbiParam::new(types::F64));
-        let id = module
-            .declare_function("formula", Linkage::Local, &sig)
-            .map_err(|e| err(&e))?;
         let f64_sig = |n: usize, module: &JITModule| {
             let mut s: Signature = module.make_signature();
             for _ in 0..n {
@@ -155,7 +161,7 @@ impl Native {
             s.returns.push(AbiParam::new(types::F64));
             s
         };
-        let mut externals = std::collections::HashMap::new();
+        let mut externals = HashMap::new();
         for (name, _) in &symbols {
             let sig = match *name {
                 "mk_pow" | "mk_atan2" | "mk_min" | "mk_max" => f64_sig(2, &module),
@@ -166,82 +172,30 @@ impl Native {
                 .map_err(|e| err(&e))?;
             externals.insert(*name, fid);
         }
+        Ok(Jit { module, externals })
+    }
 
+    /// Compiles the function built by `body` with signature `sig`; returns its address.
+    fn define(
+        &mut self,
+        sig: Signature,
+        body: impl FnOnce(&mut FunctionBuilder, &HashMap<&'static str, FuncRef>) -> Result<(), String>,
+    ) -> Result<*const u8, String> {
+        let module = &mut self.module;
+        let id = module
+            .declare_function("formula", Linkage::Local, &sig)
+            .map_err(|e| err(&e))?;
         let mut ctx = module.make_context();
         ctx.func.signature = sig;
         ctx.func.name = UserFuncName::user(0, id.as_u32());
         let mut fctx = FunctionBuilderContext::new();
         {
             let mut b = FunctionBuilder::new(&mut ctx.func, &mut fctx);
-            let block = b.create_block();
-            b.switch_to_block(block);
-            b.append_block_params_for_function_params(block);
-            let vars = b.block_params(block)[0];
-            let mut refs = std::collections::HashMap::new();
-            for (name, fid) in &externals {
+            let mut refs = HashMap::new();
+            for (name, fid) in &self.externals {
                 refs.insert(*name, module.declare_func_in_func(*fid, b.func));
             }
-            let one = b.ins().f64const(1.0);
-            let zero = b.ins().f64const(0.0);
-            let mut regs: Vec<Value> = Vec::with_capacity(ir.insts.len());
-            for inst in &ir.insts {
-                let r = |k: u32| regs[k as usize];
-                let v = match *inst {
-                    Inst::Const(c) => b.ins().f64const(c),
-                    Inst::Load(s) => {
-                        let offset = i32::try_from(8 * s).map_err(|e| err(&e))?;
-                        b.ins()
-                            .load(types::F64, MemFlagsData::trusted(), vars, offset)
-                    }
-                    Inst::Neg(a) => b.ins().fneg(r(a)),
-                    Inst::Not(a) => {
-                        let c = b.ins().fcmp(FloatCC::Equal, r(a), zero);
-                        b.ins().select(c, one, zero)
-                    }
-                    Inst::Add(x, y) => b.ins().fadd(r(x), r(y)),
-                    Inst::Sub(x, y) => b.ins().fsub(r(x), r(y)),
-                    Inst::Mul(x, y) => b.ins().fmul(r(x), r(y)),
-                    Inst::Div(x, y) => b.ins().fdiv(r(x), r(y)),
-                    Inst::Square(x) => b.ins().fmul(r(x), r(x)),
-                    Inst::Cmp(op, x, y) => {
-                        let c = b.ins().fcmp(float_cc(op), r(x), r(y));
-                        b.ins().select(c, one, zero)
-                    }
-                    Inst::And(x, y) | Inst::Or(x, y) => {
-                        let cx = b.ins().fcmp(FloatCC::NotEqual, r(x), zero);
-                        let cy = b.ins().fcmp(FloatCC::NotEqual, r(y), zero);
-                        let c = if matches!(inst, Inst::And(..)) {
-                            b.ins().band(cx, cy)
-                        } else {
-                            b.ins().bor(cx, cy)
-                        };
-                        b.ins().select(c, one, zero)
-                    }
-                    Inst::Select(c, x, y) => {
-                        let cond = b.ins().fcmp(FloatCC::NotEqual, r(c), zero);
-                        b.ins().select(cond, r(x), r(y))
-                    }
-                    Inst::Call1(Func::Abs, x) => b.ins().fabs(r(x)),
-                    Inst::Call1(Func::Sqrt, x) => b.ins().sqrt(r(x)),
-                    Inst::Call1(Func::Floor, x) => b.ins().floor(r(x)),
-                    Inst::Call1(Func::Ceil, x) => b.ins().ceil(r(x)),
-                    Inst::Call1(f, x) => {
-                        let call = b.ins().call(refs[call1_symbol(f).0], &[r(x)]);
-                        b.inst_results(call)[0]
-                    }
-                    Inst::Call2(f, x, y) => {
-                        let call = b.ins().call(refs[call2_symbol(f).0], &[r(x), r(y)]);
-                        b.inst_results(call)[0]
-                    }
-                    Inst::Pow(x, y) => {
-                        let call = b.ins().call(refs["mk_pow"], &[r(x), r(y)]);
-                        b.inst_results(call)[0]
-                    }
-                };
-                regs.push(v);
-            }
-            let result = regs[ir.result as usize];
-            b.ins().return_(&[result]);
+            body(&mut b, &refs)?;
             b.seal_all_blocks();
             b.finalize(module.target_config());
         }
@@ -257,14 +211,109 @@ impl Native {
         }
         module.clear_context(&mut ctx);
         module.finalize_definitions().map_err(|e| err(&e))?;
-        let code = module.get_finalized_function(id);
+        Ok(module.get_finalized_function(id))
+    }
+
+    fn pointer_type(&self) -> types::Type {
+        self.module.target_config().pointer_type()
+    }
+}
+
+/// Emits `insts` (SSA: operands are earlier instructions); `load` gives the value of a slot.
+fn emit_insts(
+    b: &mut FunctionBuilder,
+    insts: &[Inst],
+    refs: &HashMap<&'static str, FuncRef>,
+    load: &mut dyn FnMut(&mut FunctionBuilder, u32) -> Result<Value, String>,
+) -> Result<Vec<Value>, String> {
+    let one = b.ins().f64const(1.0);
+    let zero = b.ins().f64const(0.0);
+    let mut regs: Vec<Value> = Vec::with_capacity(insts.len());
+    for inst in insts {
+        let r = |k: u32| regs[k as usize];
+        let v = match *inst {
+            Inst::Const(c) => b.ins().f64const(c),
+            Inst::Load(s) => load(b, s)?,
+            Inst::Neg(a) => b.ins().fneg(r(a)),
+            Inst::Not(a) => {
+                let c = b.ins().fcmp(FloatCC::Equal, r(a), zero);
+                b.ins().select(c, one, zero)
+            }
+            Inst::Add(x, y) => b.ins().fadd(r(x), r(y)),
+            Inst::Sub(x, y) => b.ins().fsub(r(x), r(y)),
+            Inst::Mul(x, y) => b.ins().fmul(r(x), r(y)),
+            Inst::Div(x, y) => b.ins().fdiv(r(x), r(y)),
+            Inst::Square(x) => b.ins().fmul(r(x), r(x)),
+            Inst::Cmp(op, x, y) => {
+                let c = b.ins().fcmp(float_cc(op), r(x), r(y));
+                b.ins().select(c, one, zero)
+            }
+            Inst::And(x, y) | Inst::Or(x, y) => {
+                let cx = b.ins().fcmp(FloatCC::NotEqual, r(x), zero);
+                let cy = b.ins().fcmp(FloatCC::NotEqual, r(y), zero);
+                let c = if matches!(inst, Inst::And(..)) {
+                    b.ins().band(cx, cy)
+                } else {
+                    b.ins().bor(cx, cy)
+                };
+                b.ins().select(c, one, zero)
+            }
+            Inst::Select(c, x, y) => {
+                let cond = b.ins().fcmp(FloatCC::NotEqual, r(c), zero);
+                b.ins().select(cond, r(x), r(y))
+            }
+            Inst::Call1(Func::Abs, x) => b.ins().fabs(r(x)),
+            Inst::Call1(Func::Sqrt, x) => b.ins().sqrt(r(x)),
+            Inst::Call1(Func::Floor, x) => b.ins().floor(r(x)),
+            Inst::Call1(Func::Ceil, x) => b.ins().ceil(r(x)),
+            Inst::Call1(f, x) => {
+                let call = b.ins().call(refs[call1_symbol(f).0], &[r(x)]);
+                b.inst_results(call)[0]
+            }
+            Inst::Call2(f, x, y) => {
+                let call = b.ins().call(refs[call2_symbol(f).0], &[r(x), r(y)]);
+                b.inst_results(call)[0]
+            }
+            Inst::Pow(x, y) => {
+                let call = b.ins().call(refs["mk_pow"], &[r(x), r(y)]);
+                b.inst_results(call)[0]
+            }
+        };
+        regs.push(v);
+    }
+    Ok(regs)
+}
+
+fn slot_offset(s: u32) -> Result<i32, String> {
+    i32::try_from(8 * u64::from(s)).map_err(|e| err(&e))
+}
+
+impl Native {
+    pub(super) fn compile(ir: &Ir) -> Result<Native, String> {
+        let mut m = Jit::new(&ir.insts)?;
+        let mut sig = m.module.make_signature();
+        sig.params.push(AbiParam::new(m.pointer_type()));
+        sig.returns.push(AbiParam::new(types::F64));
+        let code = m.define(sig, |b, refs| {
+            let block = b.create_block();
+            b.switch_to_block(block);
+            b.append_block_params_for_function_params(block);
+            let vars = b.block_params(block)[0];
+            let regs = emit_insts(b, &ir.insts, refs, &mut |b, s| {
+                Ok(b.ins()
+                    .load(types::F64, MemFlagsData::trusted(), vars, slot_offset(s)?))
+            })?;
+            let result = regs[ir.result as usize];
+            b.ins().return_(&[result]);
+            Ok(())
+        })?;
         // SAFETY: the function was built above with the signature (pointer) -> f64 and the
         // C calling convention of the host, which is what this type says.
         let func =
             unsafe { std::mem::transmute::<*const u8, extern "C" fn(*const f64) -> f64>(code) };
         Ok(Native {
             func,
-            module: Mutex::new(Some(module)),
+            module: Mutex::new(Some(m.module)),
         })
     }
 
@@ -273,5 +322,99 @@ impl Native {
     #[inline]
     pub(super) fn call(&self, vars: &[f64]) -> f64 {
         (self.func)(vars.as_ptr())
+    }
+}
+
+/// A loop kernel in executable memory: `fn(slots, n)` runs the body `n` times with the slots
+/// in registers (loaded once before the loop, stored once after it).
+pub(super) struct NativeKernel {
+    func: extern "C" fn(*mut f64, u64),
+    module: Mutex<Option<JITModule>>,
+}
+
+impl std::fmt::Debug for NativeKernel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("NativeKernel")
+    }
+}
+
+impl Drop for NativeKernel {
+    fn drop(&mut self) {
+        if let Some(m) = self.module.get_mut().ok().and_then(Option::take) {
+            // SAFETY: as for `Native`: `func` is private to `self` and dies with it.
+            unsafe { m.free_memory() };
+        }
+    }
+}
+
+impl NativeKernel {
+    pub(super) fn compile(body: &Body) -> Result<NativeKernel, String> {
+        let mut m = Jit::new(&body.insts)?;
+        let ptr = m.pointer_type();
+        let mut sig = m.module.make_signature();
+        sig.params.push(AbiParam::new(ptr));
+        sig.params.push(AbiParam::new(types::I64));
+        let code = m.define(sig, |b, refs| {
+            let entry = b.create_block();
+            let header = b.create_block();
+            let looped = b.create_block();
+            let exit = b.create_block();
+            b.append_block_params_for_function_params(entry);
+            b.switch_to_block(entry);
+            let slots = b.block_params(entry)[0];
+            let n = b.block_params(entry)[1];
+            let vars: Vec<_> = (0..body.slots).map(|_| b.declare_var(types::F64)).collect();
+            for (s, var) in vars.iter().enumerate() {
+                let s = u32::try_from(s).map_err(|e| err(&e))?;
+                let v = b
+                    .ins()
+                    .load(types::F64, MemFlagsData::trusted(), slots, slot_offset(s)?);
+                b.def_var(*var, v);
+            }
+            let counter = b.declare_var(types::I64);
+            let zero = b.ins().iconst(types::I64, 0);
+            b.def_var(counter, zero);
+            b.ins().jump(header, &[]);
+
+            b.switch_to_block(header);
+            let i = b.use_var(counter);
+            let done = b.ins().icmp(IntCC::Equal, i, n);
+            b.ins().brif(done, exit, &[], looped, &[]);
+
+            b.switch_to_block(looped);
+            let regs = emit_insts(b, &body.insts, refs, &mut |b, s| {
+                Ok(b.use_var(vars[s as usize]))
+            })?;
+            for (var, r) in vars.iter().zip(&body.stores) {
+                b.def_var(*var, regs[*r as usize]);
+            }
+            let i = b.use_var(counter);
+            let i1 = b.ins().iadd_imm_u(i, 1);
+            b.def_var(counter, i1);
+            b.ins().jump(header, &[]);
+
+            b.switch_to_block(exit);
+            for (s, var) in vars.iter().enumerate() {
+                let s = u32::try_from(s).map_err(|e| err(&e))?;
+                let v = b.use_var(*var);
+                b.ins()
+                    .store(MemFlagsData::trusted(), v, slots, slot_offset(s)?);
+            }
+            b.ins().return_(&[]);
+            Ok(())
+        })?;
+        // SAFETY: the function was built above with the signature (pointer, i64) -> () and
+        // the C calling convention of the host, which is what this type says.
+        let func = unsafe { std::mem::transmute::<*const u8, extern "C" fn(*mut f64, u64)>(code) };
+        Ok(NativeKernel {
+            func,
+            module: Mutex::new(Some(m.module)),
+        })
+    }
+
+    /// Runs the body `n` times on `slots` (its length checked by the caller).
+    #[inline]
+    pub(super) fn call(&self, slots: &mut [f64], n: u64) {
+        (self.func)(slots.as_mut_ptr(), n);
     }
 }

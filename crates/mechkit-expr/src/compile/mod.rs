@@ -6,6 +6,9 @@
 mod ir;
 #[cfg(feature = "jit")]
 mod jit;
+mod kernel;
+
+pub use kernel::{Kernel, KernelBuilder, Val};
 
 use std::sync::Arc;
 
