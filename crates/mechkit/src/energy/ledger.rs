@@ -143,6 +143,26 @@ impl EnergyLedger {
         self.potential_each_end.clone_from(&eval.potential);
     }
 
+    /// The running sums of the trapezoids and their last values, for a fused kernel that
+    /// advances them itself; [`EnergyLedger::end_at`] then records the end state.
+    pub(crate) fn trapezoids(&mut self) -> Trapezoids<'_> {
+        Trapezoids {
+            work: &mut self.work,
+            power: &mut self.last_power,
+            impulse: &mut self.impulse,
+            net: &mut self.last_net,
+            last_t: &mut self.last_t,
+        }
+    }
+
+    /// Records the energies and momentum of the state a fused kernel reached.
+    pub(crate) fn end_at(&mut self, eval: &Evaluation) {
+        self.momentum_end.clone_from(&eval.momentum);
+        self.kinetic_end = eval.kinetic;
+        self.potential_end = eval.potential_total;
+        self.potential_each_end.clone_from(&eval.potential);
+    }
+
     /// The work each force would have done had the run reached time `t` with power `power`
     /// there (without recording it), into `out`.
     pub fn preview_into(&self, t: Real, power: &[Real], out: &mut Vec<Real>) {
@@ -270,4 +290,13 @@ impl EnergyLedger {
             .map(|i| self.work[i])
             .sum()
     }
+}
+
+/// The ledger's running trapezoids, lent to a fused step kernel.
+pub(crate) struct Trapezoids<'a> {
+    pub work: &'a mut [Real],
+    pub power: &'a mut [Real],
+    pub impulse: &'a mut [Real],
+    pub net: &'a mut [Real],
+    pub last_t: &'a mut Real,
 }

@@ -1,6 +1,7 @@
 //! A constant force, e.g. a thrust or a pull: a fixed vector `F` on each body it acts on;
 //! potential `-F·x`.
 
+use super::emit::ForceEmitter;
 use super::force::Force;
 use crate::Real;
 use crate::particles::Kinematics;
@@ -44,6 +45,17 @@ impl Force for ConstantForce {
                 *o += f;
             }
         }
+    }
+
+    fn emit(&self, e: &mut ForceEmitter<'_>) -> bool {
+        let d = e.dim();
+        for (b, force) in &self.per_body {
+            for (i, f) in force.iter().enumerate() {
+                let f = e.constant(*f);
+                e.add(b * d + i, f);
+            }
+        }
+        true
     }
 
     fn potential(&self, k: &Kinematics<'_>) -> Option<Real> {

@@ -1,6 +1,9 @@
 //! Air resistance relative to the wind `w`: linear (viscous, Stokes) `F = -b (v - w)` and
 //! quadratic `F = -D |v - w| (v - w)`.
 
+use mechkit_expr::Func;
+
+use super::emit::{ForceEmitter, sum_of_squares};
 use super::force::{Force, Target};
 use super::wind::Wind;
 use crate::Real;
@@ -38,10 +41,50 @@ impl Drag {
     fn bodies(&self) -> Vec<usize> {
         self.targets.iter().map(|t| t.body).collect()
     }
+
+    /// [`Drag::add`] into a kernel; `quadratic` scales by the speed, else by 1.
+    fn emit(&self, e: &mut ForceEmitter<'_>, quadratic: bool) -> bool {
+        let dim = e.dim();
+        for t in &self.targets {
+            let mut u = Vec::with_capacity(dim);
+            for i in 0..dim {
+                let v = e.v(t.body, i);
+                // v - 0.0 is v exactly: still air needs no subtraction
+                let ui = match &self.wind {
+                    Wind::Calm => v,
+                    Wind::Constant(w) => {
+                        let w = e.constant(w.get(i).copied().unwrap_or(0.0));
+                        e.b().sub(v, w)
+                    }
+                    Wind::Field(f) => {
+                        let Some(w) = f[i].emit(e, Some(t.body)) else {
+                            return false;
+                        };
+                        e.b().sub(v, w)
+                    }
+                };
+                u.push(ui);
+            }
+            let c = e.constant(t.coefficient);
+            let scale = if quadratic {
+                let s2 = sum_of_squares(e.b(), &u);
+                let speed = e.b().call(Func::Sqrt, s2);
+                e.b().mul(c, speed)
+            } else {
+                let one = e.constant(1.0);
+                e.b().mul(c, one)
+            };
+            for (i, ui) in u.into_iter().enumerate() {
+                let f = e.b().mul(scale, ui);
+                e.sub(t.body * dim + i, f);
+            }
+        }
+        true
+    }
 }
 
 macro_rules! drag_law {
-    ($(#[$doc:meta])* $name:ident, $law:expr) => {
+    ($(#[$doc:meta])* $name:ident, $law:expr, $quadratic:literal) => {
         $(#[$doc])*
         #[derive(Debug, Clone)]
         pub struct $name(Drag);
@@ -73,6 +116,10 @@ macro_rules! drag_law {
                 self.0.add(k, out, $law);
             }
 
+            fn emit(&self, e: &mut ForceEmitter<'_>) -> bool {
+                self.0.emit(e, $quadratic)
+            }
+
             fn velocity_dependent(&self) -> bool {
                 true
             }
@@ -87,11 +134,13 @@ macro_rules! drag_law {
 drag_law!(
     /// Linear (viscous) drag `F = -b (v - w)`; `b` in kg/s, per body.
     LinearDrag,
-    |_speed| 1.0
+    |_speed| 1.0,
+    false
 );
 
 drag_law!(
     /// Quadratic drag `F = -D |v - w| (v - w)`; `D` in kg/m, per body.
     QuadraticDrag,
-    |speed| speed
+    |speed| speed,
+    true
 );

@@ -1,6 +1,7 @@
 //! A force typed as a formula, one per component, evaluated for each body it acts on with bare
 //! names (`x`, `v`, `m`) meaning that body.
 
+use super::emit::ForceEmitter;
 use super::force::Force;
 use crate::Real;
 use crate::particles::{Kinematics, StateExpr};
@@ -44,6 +45,19 @@ impl Force for ExpressionForce {
                 out[b * k.dim + i] += c.eval_kinematic(k, Some(b));
             }
         }
+    }
+
+    fn emit(&self, e: &mut ForceEmitter<'_>) -> bool {
+        let d = e.dim();
+        for &b in &self.bodies {
+            for (i, c) in self.components.iter().enumerate() {
+                let Some(f) = c.emit(e, Some(b)) else {
+                    return false;
+                };
+                e.add(b * d + i, f);
+            }
+        }
+        true
     }
 
     fn velocity_dependent(&self) -> bool {

@@ -2,6 +2,7 @@
 
 use std::fmt::Debug;
 
+use super::emit::ForceEmitter;
 use crate::Real;
 use crate::particles::Kinematics;
 
@@ -21,6 +22,14 @@ pub trait Force: Debug + Send + Sync {
 
     /// Whether the force depends on velocities.
     fn velocity_dependent(&self) -> bool {
+        false
+    }
+
+    /// Writes this force into a fused step kernel: the same operations, in the same order, as
+    /// [`Force::add_forces`] (see [`ForceEmitter`]). Returns `false`, the default, when the
+    /// force cannot be written as straight-line arithmetic; fixed-step runs then take the
+    /// general loop.
+    fn emit(&self, _e: &mut ForceEmitter<'_>) -> bool {
         false
     }
 

@@ -1,5 +1,8 @@
 //! Gravity: uniform near a planet's surface, and Newton's inverse-square law.
 
+use super::emit::{ForceEmitter, sum_of_squares};
+use mechkit_expr::{Func, Val};
+
 use super::force::Force;
 use crate::Real;
 use crate::particles::Kinematics;
@@ -38,6 +41,15 @@ impl Force for UniformGravity {
         for &b in &self.bodies {
             out[b * k.dim + k.dim - 1] -= k.mass[b] * self.g;
         }
+    }
+
+    fn emit(&self, e: &mut ForceEmitter<'_>) -> bool {
+        let d = e.dim();
+        for &b in &self.bodies {
+            let w = e.constant(e.mass(b) * self.g);
+            e.sub(b * d + d - 1, w);
+        }
+        true
     }
 
     fn potential(&self, k: &Kinematics<'_>) -> Option<Real> {
@@ -149,6 +161,48 @@ impl Force for NewtonianGravity {
                 }
             }
         }
+    }
+
+    fn emit(&self, e: &mut ForceEmitter<'_>) -> bool {
+        let dim = e.dim();
+        // separation(a, b): d = a - b, r = sqrt(0 + Σ d²); s / (r r r), in add_forces' order
+        let pull = |e: &mut ForceEmitter<'_>, a: &[Val], b: &[Val], coefficient: Real| {
+            let d: Vec<Val> = a.iter().zip(b).map(|(p, q)| e.b().sub(*p, *q)).collect();
+            let r2 = sum_of_squares(e.b(), &d);
+            let r = e.b().call(Func::Sqrt, r2);
+            let rr = e.b().mul(r, r);
+            let r3 = e.b().mul(rr, r);
+            let c = e.constant(coefficient);
+            let s = e.b().div(c, r3);
+            let f: Vec<Val> = d.iter().map(|di| e.b().mul(s, *di)).collect();
+            f
+        };
+        match &self.attractor {
+            Attractor::FixedCentre { gm, center } => {
+                let centre: Vec<Val> = center.iter().map(|c| e.constant(*c)).collect();
+                for &b in &self.bodies {
+                    let x: Vec<Val> = (0..dim).map(|i| e.x(b, i)).collect();
+                    let f = pull(e, &x, &centre, -gm * e.mass(b));
+                    for (i, fi) in f.into_iter().enumerate() {
+                        e.add(b * dim + i, fi);
+                    }
+                }
+            }
+            Attractor::Mutual { g } => {
+                for (n, &a) in self.bodies.iter().enumerate() {
+                    for &b in &self.bodies[n + 1..] {
+                        let xa: Vec<Val> = (0..dim).map(|i| e.x(a, i)).collect();
+                        let xb: Vec<Val> = (0..dim).map(|i| e.x(b, i)).collect();
+                        let f = pull(e, &xa, &xb, -g * e.mass(a) * e.mass(b));
+                        for (i, fi) in f.into_iter().enumerate() {
+                            e.add(a * dim + i, fi);
+                            e.sub(b * dim + i, fi);
+                        }
+                    }
+                }
+            }
+        }
+        true
     }
 
     fn potential(&self, k: &Kinematics<'_>) -> Option<Real> {

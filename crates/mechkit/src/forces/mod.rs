@@ -22,6 +22,7 @@ mod contact_builder;
 mod contact_damper;
 mod contact_law;
 mod drag;
+mod emit;
 mod expression;
 mod force;
 mod gravity;
@@ -38,6 +39,7 @@ pub use contact_law::{
     linear_damping_ratio, linear_restitution, linear_restitution_clamped,
 };
 pub use drag::{LinearDrag, QuadraticDrag};
+pub use emit::ForceEmitter;
 pub use expression::ExpressionForce;
 pub use force::{Force, Target};
 pub use gravity::{Attractor, NewtonianGravity, UniformGravity};

@@ -1,6 +1,9 @@
 //! Linear springs with a rest length (Hooke's law), `F = -k (r - L) r̂`, potential
 //! `k (r - L)² / 2`, where `r` is the spring's length.
 
+use mechkit_expr::{BinOp, Func, Val};
+
+use super::emit::{ForceEmitter, sum_of_squares};
 use super::force::Force;
 use crate::Real;
 use crate::particles::Kinematics;
@@ -96,6 +99,48 @@ impl Force for Spring {
                 }
             }
         }
+    }
+
+    fn emit(&self, e: &mut ForceEmitter<'_>) -> bool {
+        let dim = e.dim();
+        // pull(a, b): f = a - b, r = sqrt(0 + Σ f²), s = r > 0 ? -k (r - L) / r : -k, f *= s
+        let pull = |e: &mut ForceEmitter<'_>, a: &[Val], b: &[Val]| {
+            let d: Vec<Val> = a.iter().zip(b).map(|(p, q)| e.b().sub(*p, *q)).collect();
+            let r2 = sum_of_squares(e.b(), &d);
+            let r = e.b().call(Func::Sqrt, r2);
+            let zero = e.constant(0.0);
+            let positive = e.b().compare(BinOp::Gt, r, zero);
+            let minus_k = e.constant(-self.k);
+            let rest = e.constant(self.rest_length);
+            let stretch = e.b().sub(r, rest);
+            let num = e.b().mul(minus_k, stretch);
+            let per_length = e.b().div(num, r);
+            let s = e.b().select(positive, per_length, minus_k);
+            let f: Vec<Val> = d.iter().map(|di| e.b().mul(*di, s)).collect();
+            f
+        };
+        match &self.ends {
+            SpringEnds::Anchor { bodies, anchor } => {
+                let anchor: Vec<Val> = anchor.iter().map(|c| e.constant(*c)).collect();
+                for &b in bodies {
+                    let x: Vec<Val> = (0..dim).map(|i| e.x(b, i)).collect();
+                    let f = pull(e, &x, &anchor);
+                    for (i, fi) in f.into_iter().enumerate() {
+                        e.add(b * dim + i, fi);
+                    }
+                }
+            }
+            SpringEnds::Pair(a, b) => {
+                let xa: Vec<Val> = (0..dim).map(|i| e.x(*a, i)).collect();
+                let xb: Vec<Val> = (0..dim).map(|i| e.x(*b, i)).collect();
+                let f = pull(e, &xa, &xb);
+                for (i, fi) in f.into_iter().enumerate() {
+                    e.add(a * dim + i, fi);
+                    e.sub(b * dim + i, fi);
+                }
+            }
+        }
+        true
     }
 
     fn potential(&self, k: &Kinematics<'_>) -> Option<Real> {

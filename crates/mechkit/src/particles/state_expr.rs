@@ -1,11 +1,12 @@
 //! Formulas compiled against the state names, evaluated on kinematics (inside forces) or on
 //! samples (conditions, observables).
 
-use mechkit_expr::Program;
+use mechkit_expr::{Program, Val};
 
 use super::kinematics::Kinematics;
 use super::sample::Sample;
-use super::vars::StateVar;
+use super::vars::{BodyRef, StateVar};
+use crate::forces::ForceEmitter;
 use crate::Real;
 
 /// Most distinct state names one formula may use before evaluation allocates.
@@ -69,6 +70,42 @@ impl StateExpr {
             let slots: Vec<Real> = self.vars.iter().map(|v| fill(*v)).collect();
             self.program.eval(&slots)
         }
+    }
+
+    /// The formula inlined into a fused step kernel, its names read from the emitter's
+    /// kinematics (`local` is the body bare names mean); `None` when it reads anything but
+    /// time, positions, velocities, speeds, distances and masses.
+    pub fn emit(&self, e: &mut ForceEmitter<'_>, local: Option<usize>) -> Option<Val> {
+        let mut args = Vec::with_capacity(self.vars.len());
+        for var in &self.vars {
+            let body = |r: BodyRef| match r {
+                BodyRef::Index(i) => Some(i),
+                BodyRef::Local => local,
+            };
+            let d = e.dim();
+            let value = match *var {
+                StateVar::Time => e.t(),
+                StateVar::Position(r, i) => e.x(body(r)?, i),
+                StateVar::Velocity(r, i) => e.v(body(r)?, i),
+                StateVar::Speed(r) => {
+                    let b = body(r)?;
+                    let v: Vec<Val> = (0..d).map(|i| e.v(b, i)).collect();
+                    e.norm(&v)
+                }
+                StateVar::Distance(r) => {
+                    let b = body(r)?;
+                    let x: Vec<Val> = (0..d).map(|i| e.x(b, i)).collect();
+                    e.norm(&x)
+                }
+                StateVar::Mass(r) => {
+                    let m = e.mass(body(r)?);
+                    e.constant(m)
+                }
+                _ => return None,
+            };
+            args.push(value);
+        }
+        Some(e.b().inline(&self.program, &args))
     }
 
     /// Evaluates on kinematics, bare names meaning body `local`.

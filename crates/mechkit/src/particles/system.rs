@@ -210,6 +210,11 @@ impl ParticleSystem {
         &self.mass
     }
 
+    /// `1/m` of each coordinate's body.
+    pub(crate) fn inverse_masses(&self) -> &[Real] {
+        &self.inv_mass
+    }
+
     /// Index of the body named `name`.
     pub fn body_index(&self, name: &str) -> Option<usize> {
         self.bodies.iter().position(|b| b.name == name)

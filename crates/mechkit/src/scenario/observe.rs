@@ -304,6 +304,15 @@ impl<'a> ObservableSet<'a> {
 }
 
 impl Observer for ObservableSet<'_> {
+    fn next_step(&self, step: u64) -> Option<u64> {
+        // a reduction (max, mean, ...) sees every step
+        if self.items.is_empty() {
+            None
+        } else {
+            Some(step + 1)
+        }
+    }
+
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
         for (o, rs) in self.items.iter().zip(&mut self.reducers) {
             for ((_, expr), r) in o.parts.iter().zip(rs.iter_mut()) {

@@ -89,6 +89,15 @@ impl Keep {
             SampleKind::Step => s.step.is_multiple_of(self.every.max(1)),
         }
     }
+
+    /// The first step after `step` that [`Keep::keeps`].
+    pub fn next_step(&self, step: u64) -> Option<u64> {
+        if self.grid {
+            return None;
+        }
+        let every = self.every.max(1);
+        Some((step / every + 1) * every)
+    }
 }
 
 /// Streams samples to a CSV file (the kept ones, see [`Keep`], and the last).
@@ -213,6 +222,10 @@ impl Observer for CsvWriter {
             self.write(s)?;
         }
         Ok(())
+    }
+
+    fn next_step(&self, step: u64) -> Option<u64> {
+        self.keep.next_step(step)
     }
 
     fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {

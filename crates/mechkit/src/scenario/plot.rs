@@ -421,6 +421,14 @@ impl Observer for PlotRecorder<'_> {
         Ok(())
     }
 
+    fn next_step(&self, step: u64) -> Option<u64> {
+        if self.specs.is_empty() {
+            None
+        } else {
+            self.keep.next_step(step)
+        }
+    }
+
     fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
         // Always end on the final state (an event, t_max), whatever the stride; a repeated
         // last point draws nothing extra.

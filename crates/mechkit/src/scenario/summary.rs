@@ -85,6 +85,9 @@ pub struct StepControl {
     pub rejected: u64,
     /// Right-hand-side evaluations of the integrator itself.
     pub evaluations: u64,
+    /// Steps run in the compiled step kernel (fixed steps no output looked at; the same
+    /// numbers as the general loop's).
+    pub fused_steps: u64,
     /// Smallest step taken (s).
     pub h_min: Option<Real>,
     /// Largest step taken (s).
@@ -233,6 +236,7 @@ fn step_control(report: &RunReport) -> StepControl {
             accepted: stats.accepted,
             rejected: stats.rejected,
             evaluations: stats.evaluations,
+            fused_steps: 0,
             h_min,
             h_max,
         },
@@ -243,6 +247,7 @@ fn step_control(report: &RunReport) -> StepControl {
             accepted: report.steps,
             rejected: 0,
             evaluations: report.evaluations,
+            fused_steps: report.fused_steps,
             h_min,
             h_max,
         },

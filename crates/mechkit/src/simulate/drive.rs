@@ -5,6 +5,7 @@
 use super::book::EventBook;
 use super::diagnose::{diagnose_evaluation, diagnose_state, step_failure};
 use super::event::{Event, Side};
+use super::fused::{FUSE_MIN_STEPS, Fused, MIN_CHUNK};
 use super::observe::Observer;
 use super::probe::{Grid, Probe, Step, emit, event_values};
 use super::report::{Divergence, RunReport, SimulateError, StopReason};
@@ -125,6 +126,10 @@ pub(super) fn drive(
     let mut sides_scan = Vec::with_capacity(m);
     let mut scan_buffers = ScanBuffers::default();
     let mut step_scale = Real::NAN;
+    let mut fused = fused_kernel(sim, &stepping, t0, planned.unwrap_or(limit), grid.is_some());
+    let mut fused_steps: u64 = 0;
+    // a chunk that went non-finite is rerun by the general loop up to this step
+    let mut fuse_resumes_at: u64 = 0;
 
     while stop_reason.is_none() {
         if let Some(tm) = sim.t_max
@@ -148,6 +153,53 @@ pub(super) fn drive(
             }
             break;
         }
+        // the steps no observer looks at, in the compiled kernel
+        if let Some(kernel) = &mut fused
+            && steps > 0
+            && steps >= fuse_resumes_at
+        {
+            let wanted = observers
+                .iter()
+                .filter_map(|o| o.next_step(steps))
+                .min()
+                .unwrap_or(u64::MAX);
+            // the wanted step, the last one before t_max and the last allowed stay general
+            let mut chunk = wanted.saturating_sub(steps + 1);
+            chunk = chunk.min(limit.saturating_sub(steps + 1));
+            if let Some(p) = planned {
+                chunk = chunk.min(p.saturating_sub(fixed_k + 1));
+            }
+            if chunk >= MIN_CHUNK {
+                let a = std::mem::take(&mut eval_a.a);
+                let finite = kernel.advance(
+                    &mut state,
+                    &mut fixed_k,
+                    &a,
+                    &mut ledger,
+                    &mut step_range,
+                    chunk,
+                );
+                eval_a.a = a;
+                if finite {
+                    steps += chunk;
+                    evaluations += chunk;
+                    fused_steps += chunk;
+                    {
+                        let (q, v) = state.qv();
+                        sys.evaluate(state.t, q, v, &mut eval_a, &mut scratch);
+                    }
+                    ledger.end_at(&eval_a);
+                    hand_over(&mut engine, state.t, &state.y, &eval_a.a, &mut dydt);
+                    if let Some(d) = diagnose_evaluation(sys, &state, &eval_a, steps) {
+                        failure = Some(d);
+                        stop_reason = Some(StopReason::Diverged);
+                    }
+                    continue;
+                }
+                fuse_resumes_at = steps + chunk + 1;
+            }
+        }
+
         let t_a = state.t;
         ends.t0 = t_a;
         ends.y0.clone_from(&state.y);
@@ -481,6 +533,7 @@ pub(super) fn drive(
         },
         steps,
         evaluations,
+        fused_steps,
         stop_reason: stop_reason.expect("the loop sets a reason"),
         initial,
         final_state: state,
@@ -490,4 +543,31 @@ pub(super) fn drive(
         ledger,
         warnings,
     })
+}
+
+/// The compiled kernel for this run's silent steps, when it can have one: fixed steps of
+/// Euler or Euler-Cromer, no events, no output times, every force compilable, and fusing
+/// wanted (by [`Simulation::fuse`], else for runs of at least [`FUSE_MIN_STEPS`] steps unless
+/// `MECHKIT_FUSE=0`).
+fn fused_kernel(
+    sim: &Simulation<'_>,
+    stepping: &Stepping,
+    t0: Real,
+    expected_steps: u64,
+    grid: bool,
+) -> Option<Fused> {
+    let Stepping::Fixed { method, dt } = stepping else {
+        return None;
+    };
+    let wanted = match sim.fuse {
+        Some(on) => on,
+        None => {
+            expected_steps >= FUSE_MIN_STEPS
+                && std::env::var("MECHKIT_FUSE").map_or(true, |v| v != "0")
+        }
+    };
+    if !wanted || !sim.events.is_empty() || grid {
+        return None;
+    }
+    Fused::build(sim.system, *method, *dt, t0)
 }

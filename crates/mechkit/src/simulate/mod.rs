@@ -14,6 +14,7 @@ mod condition;
 mod diagnose;
 mod drive;
 mod event;
+mod fused;
 mod observe;
 mod probe;
 mod reduce;

@@ -16,6 +16,15 @@ pub trait Observer {
     /// (which replaces the step that crossed it).
     fn observe(&mut self, sample: &Sample<'_>) -> Result<(), ObserverError>;
 
+    /// The first step after `step` whose [`SampleKind::Step`](crate::particles::SampleKind)
+    /// sample this observer needs, or `None` when it needs none before the end (it still gets
+    /// events, output times and [`Observer::finish`]). The default, every step, is always
+    /// right; an observer that keeps every n-th step says so, and a fixed-step run may then
+    /// run the steps in between in a compiled kernel without building their samples.
+    fn next_step(&self, step: u64) -> Option<u64> {
+        Some(step + 1)
+    }
+
     /// Called once at the end with the final sample (already passed to `observe`).
     fn finish(&mut self, _last: &Sample<'_>) -> Result<(), ObserverError> {
         Ok(())
@@ -58,6 +67,10 @@ impl Observer for Recorder {
             self.push(s);
         }
         Ok(())
+    }
+
+    fn next_step(&self, step: u64) -> Option<u64> {
+        Some((step / self.every + 1) * self.every)
     }
 
     fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {

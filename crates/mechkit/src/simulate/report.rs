@@ -133,6 +133,9 @@ pub struct RunReport {
     pub steps: u64,
     /// Force evaluations (by the stepper and for the ledger).
     pub evaluations: u64,
+    /// Steps run in the compiled kernel (see [`Simulation::fuse`](super::Simulation::fuse));
+    /// included in `steps`.
+    pub fused_steps: u64,
     /// Why it stopped.
     pub stop_reason: StopReason,
     /// The initial state.

@@ -46,6 +46,7 @@ pub struct Simulation<'a> {
     pub(crate) events: Vec<Event>,
     pub(crate) interval: Option<Real>,
     pub(crate) times: Option<Vec<Real>>,
+    pub(crate) fuse: Option<bool>,
 }
 
 impl<'a> Simulation<'a> {
@@ -70,6 +71,7 @@ impl<'a> Simulation<'a> {
             events: Vec::new(),
             interval: None,
             times: None,
+            fuse: None,
         }
     }
 
@@ -116,6 +118,17 @@ impl<'a> Simulation<'a> {
     #[must_use]
     pub fn output_times(mut self, times: Vec<Real>) -> Self {
         self.times = Some(times);
+        self
+    }
+
+    /// Whether the steps no observer looks at may run in a compiled kernel (Euler and
+    /// Euler-Cromer runs without events or output times, whose forces can all be compiled;
+    /// the numbers are the general loop's, bit for bit). `true` fuses whenever possible,
+    /// `false` never; by default runs of at least 20,000 steps are fused, unless the
+    /// environment variable `MECHKIT_FUSE` is `0`.
+    #[must_use]
+    pub fn fuse(mut self, on: bool) -> Self {
+        self.fuse = Some(on);
         self
     }
 
