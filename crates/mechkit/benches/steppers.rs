@@ -24,7 +24,7 @@ fn median_ns_per_step(mut f: impl FnMut() -> u64) -> f64 {
     samples[3]
 }
 
-fn feather_builtin(method: Method) -> u64 {
+fn feather_builtin(method: Method, fuse: bool) -> u64 {
     let (g, m) = (9.8, 1e-3);
     let sys = ParticleSystem::builder(1)
         .body("feather", m)
@@ -34,6 +34,7 @@ fn feather_builtin(method: Method) -> u64 {
         .unwrap();
     let r = Simulation::new(&sys, method, 1e-5)
         .t_max(10.0)
+        .fuse(fuse)
         .run(State::from_qv(0.0, &[2.4], &[0.0]), &mut [])
         .unwrap();
     black_box(r.final_state.y[0]);
@@ -55,6 +56,7 @@ fn kepler(method: Method) -> u64 {
     let vp = (gm * 3.0).sqrt();
     let r = Simulation::new(&sys, method, 1e-5)
         .t_max(10.0)
+        .fuse(false)
         .run(State::from_qv(0.0, &[0.5, 0.0], &[0.0, vp]), &mut [])
         .unwrap();
     black_box(r.final_state.y[0]);
@@ -112,7 +114,7 @@ fn main() {
         // for profiling one case: ONLY=euler perf record …
         let method = Method::from_name(&only).expect("a method name");
         for _ in 0..5 {
-            feather_builtin(method);
+            feather_builtin(method, false);
         }
         return;
     }
@@ -121,7 +123,7 @@ fn main() {
         .into_iter()
         .filter(|m| !m.needs_position_forces())
     {
-        let ns = median_ns_per_step(|| feather_builtin(method));
+        let ns = median_ns_per_step(|| feather_builtin(method, false));
         println!(
             "{:<40} {ns:>10.1}",
             format!("feather, built-in forces, {method}")
@@ -134,4 +136,20 @@ fn main() {
     let scenario = Scenario::from_str("feather.toml", FEATHER_FORMULA).unwrap();
     let ns = median_ns_per_step(|| scenario.run().unwrap().summary.steps);
     println!("{:<40} {ns:>10.1}", "feather, formula force, scenario run");
+    // the steps no output looks at, in the compiled kernel (simulate::fused)
+    for method in [Method::Euler, Method::EulerCromer] {
+        let ns = median_ns_per_step(|| feather_builtin(method, true));
+        println!(
+            "{:<40} {ns:>10.1}",
+            format!("feather, built-in forces, {method}, fused")
+        );
+    }
+    let decimated = FEATHER_FORMULA.replace("plots = []", "plots = []\nevery = 100000");
+    let scenario = Scenario::from_str("feather.toml", &decimated).unwrap();
+    let ns = median_ns_per_step(|| {
+        let s = scenario.run().unwrap().summary;
+        assert!(s.step_control.fused_steps * 10 >= s.steps * 9);
+        s.steps
+    });
+    println!("{:<40} {ns:>10.1}", "feather, formula, every 100000, fused");
 }

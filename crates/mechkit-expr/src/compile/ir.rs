@@ -31,6 +31,11 @@ pub(crate) enum Inst {
     Call2(Func, u32, u32),
     /// `if(c, a, b)`.
     Select(u32, u32, u32),
+    /// The operand whose bits, read as a signed integer, are smaller (`max`: larger): for
+    /// non-negative numbers the smaller (larger) one. Branch-free in native code.
+    MinBits(u32, u32),
+    /// See [`Inst::MinBits`].
+    MaxBits(u32, u32),
 }
 
 /// Hashable identity of an instruction (floats by their bits).
@@ -71,6 +76,8 @@ pub(super) fn key(i: Inst) -> Key {
         Inst::Call1(f, a) => Key::Op(13, a, 0, 0, Some(f)),
         Inst::Call2(f, a, b) => Key::Op(14, a, b, 0, Some(f)),
         Inst::Select(c, a, b) => Key::Op(15, c, a, b, None),
+        Inst::MinBits(a, b) => Key::Op(16, a, b, 0, None),
+        Inst::MaxBits(a, b) => Key::Op(17, a, b, 0, None),
     }
 }
 
@@ -283,7 +290,9 @@ pub(super) fn operands(i: Inst) -> Vec<u32> {
         | Inst::And(a, b)
         | Inst::Or(a, b)
         | Inst::Pow(a, b)
-        | Inst::Call2(_, a, b) => vec![a, b],
+        | Inst::Call2(_, a, b)
+        | Inst::MinBits(a, b)
+        | Inst::MaxBits(a, b) => vec![a, b],
         Inst::Select(c, a, b) => vec![c, a, b],
     }
 }
@@ -306,6 +315,8 @@ pub(super) fn remap(i: Inst, m: &[u32]) -> Inst {
         Inst::Call1(f, a) => Inst::Call1(f, r(a)),
         Inst::Call2(f, a, b) => Inst::Call2(f, r(a), r(b)),
         Inst::Select(c, a, b) => Inst::Select(r(c), r(a), r(b)),
+        Inst::MinBits(a, b) => Inst::MinBits(r(a), r(b)),
+        Inst::MaxBits(a, b) => Inst::MaxBits(r(a), r(b)),
     }
 }
 
@@ -333,6 +344,20 @@ pub(crate) fn execute(i: Inst, regs: &[f64], vars: &[f64]) -> f64 {
         Inst::Call1(f, a) => f.apply1(g(a)),
         Inst::Call2(f, a, b) => f.apply2(g(a), g(b)),
         Inst::Select(c, a, b) => crate::ast::select(g(c), g(a), g(b)),
+        Inst::MinBits(a, b) => {
+            if (g(a).to_bits() as i64) < (g(b).to_bits() as i64) {
+                g(a)
+            } else {
+                g(b)
+            }
+        }
+        Inst::MaxBits(a, b) => {
+            if (g(a).to_bits() as i64) > (g(b).to_bits() as i64) {
+                g(a)
+            } else {
+                g(b)
+            }
+        }
     }
 }
 

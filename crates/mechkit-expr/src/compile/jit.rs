@@ -258,9 +258,27 @@ fn emit_insts(
                 };
                 b.ins().select(c, one, zero)
             }
+            // a select on a comparison tests the comparison itself (it is 1 or 0, so
+            // `c != 0` is the comparison): one compare instead of two
             Inst::Select(c, x, y) => {
-                let cond = b.ins().fcmp(FloatCC::NotEqual, r(c), zero);
+                let cond = match insts[c as usize] {
+                    Inst::Cmp(op, p, q) => b.ins().fcmp(float_cc(op), r(p), r(q)),
+                    _ => b.ins().fcmp(FloatCC::NotEqual, r(c), zero),
+                };
                 b.ins().select(cond, r(x), r(y))
+            }
+            Inst::MinBits(x, y) | Inst::MaxBits(x, y) => {
+                let flags = MemFlagsData::new();
+                let ix = b.ins().bitcast(types::I64, flags, r(x));
+                let iy = b.ins().bitcast(types::I64, flags, r(y));
+                let cc = if matches!(inst, Inst::MinBits(..)) {
+                    IntCC::SignedLessThan
+                } else {
+                    IntCC::SignedGreaterThan
+                };
+                let c = b.ins().icmp(cc, ix, iy);
+                let pick = b.ins().select(c, ix, iy);
+                b.ins().bitcast(types::F64, flags, pick)
             }
             Inst::Call1(Func::Abs, x) => b.ins().fabs(r(x)),
             Inst::Call1(Func::Sqrt, x) => b.ins().sqrt(r(x)),

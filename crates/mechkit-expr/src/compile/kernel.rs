@@ -174,6 +174,18 @@ impl KernelBuilder {
         self.fold(Inst::Select(c.0, a.0, b.0))
     }
 
+    /// The smaller of two non-negative numbers, without a branch: in general the operand
+    /// whose bits, read as a signed integer, are smaller (so both evaluators agree on every
+    /// input, NaN and negative numbers included).
+    pub fn min_nonnegative(&mut self, a: Val, b: Val) -> Val {
+        self.fold(Inst::MinBits(a.0, b.0))
+    }
+
+    /// The larger of two non-negative numbers; see [`KernelBuilder::min_nonnegative`].
+    pub fn max_nonnegative(&mut self, a: Val, b: Val) -> Val {
+        self.fold(Inst::MaxBits(a.0, b.0))
+    }
+
     /// The value of a compiled formula whose slot `s` reads `args[s]`: its instructions are
     /// copied into the body (no call), so they share registers and sub-expressions with the
     /// rest of it.
@@ -407,6 +419,40 @@ mod tests {
         let mut s = [1.0];
         k.run(&mut s, 4);
         assert_eq!(s, [1296.0]);
+    }
+
+    #[test]
+    fn bitwise_extremes_agree_everywhere_and_are_min_and_max_of_non_negative_numbers() {
+        let mut b = KernelBuilder::new(4);
+        let (x, y) = (b.get(0), b.get(1));
+        let lo = b.min_nonnegative(x, y);
+        let hi = b.max_nonnegative(x, y);
+        b.set(2, lo);
+        b.set(3, hi);
+        let k = b.finish();
+        let native = k.clone().native();
+        let values = [
+            0.0,
+            -0.0,
+            1e-300,
+            0.5,
+            2.0,
+            1e300,
+            f64::INFINITY,
+            -1.0,
+            f64::NAN,
+        ];
+        for &x in &values {
+            for &y in &values {
+                let (mut a, mut n) = ([x, y, 0.0, 0.0], [x, y, 0.0, 0.0]);
+                k.run_interpreted(&mut a, 1);
+                native.run(&mut n, 1);
+                assert_eq!(a.map(f64::to_bits), n.map(f64::to_bits), "{x} {y}");
+                if x >= 0.0 && y >= 0.0 && x.is_sign_positive() && y.is_sign_positive() {
+                    assert_eq!((a[2], a[3]), (x.min(y), x.max(y)));
+                }
+            }
+        }
     }
 
     #[test]

@@ -6,8 +6,8 @@ use mechkit_expr::{Program, Val};
 use super::kinematics::Kinematics;
 use super::sample::Sample;
 use super::vars::{BodyRef, StateVar};
-use crate::forces::ForceEmitter;
 use crate::Real;
+use crate::forces::ForceEmitter;
 
 /// Most distinct state names one formula may use before evaluation allocates.
 const INLINE_VARS: usize = 16;

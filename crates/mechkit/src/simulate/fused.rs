@@ -15,7 +15,7 @@
 //! both on the same scenarios and compare the bits. A chunk that ends with a non-finite value
 //! is discarded and its steps rerun by the general loop, which diagnoses the failing step.
 
-use mechkit_expr::{BinOp, Kernel, KernelBuilder, Val};
+use mechkit_expr::{Kernel, KernelBuilder, Val};
 
 use crate::Real;
 use crate::energy::EnergyLedger;
@@ -106,7 +106,10 @@ impl Fused {
                 return None;
             }
             let scratch = e.into_forces();
-            power.push(sum(&mut b, scratch.iter().zip(&v1).map(|(s, v)| s.map(|s| (s, *v)))));
+            power.push(sum(
+                &mut b,
+                scratch.iter().zip(&v1).map(|(s, v)| s.map(|s| (s, *v))),
+            ));
             for (o, s) in total.iter_mut().zip(&scratch) {
                 *o = add(&mut b, *o, *s);
             }
@@ -145,13 +148,12 @@ impl Fused {
         for (i, f) in net.iter().enumerate() {
             trapezoid(&mut b, layout.impulse(i), layout.net(i), *f);
         }
+        // the step range, branch-free (steps are positive)
         let (h_min, h_max) = (b.get(H_MIN), b.get(H_MAX));
-        let shorter = b.compare(BinOp::Lt, h, h_min);
-        let longer = b.compare(BinOp::Gt, h, h_max);
-        let new_min = b.select(shorter, h, h_min);
-        let new_max = b.select(longer, h, h_max);
-        b.set(H_MIN, new_min);
-        b.set(H_MAX, new_max);
+        let h_min = b.min_nonnegative(h, h_min);
+        let h_max = b.max_nonnegative(h, h_max);
+        b.set(H_MIN, h_min);
+        b.set(H_MAX, h_max);
         b.set(T, t1);
         b.set(K, k1);
         for i in 0..n {
@@ -204,13 +206,19 @@ impl Fused {
         if !s.iter().all(|x| x.is_finite()) {
             return false;
         }
+        *step_range = (s[H_MIN], s[H_MAX]);
         state.t = s[T];
         *fixed_k = s[K] as u64;
-        *step_range = (s[H_MIN], s[H_MAX]);
         state.y.copy_from_slice(&s[X..X + 2 * n]);
-        parts.power.copy_from_slice(&s[layout.power(0)..layout.power(0) + self.nf]);
-        parts.work.copy_from_slice(&s[layout.work(0)..layout.work(0) + self.nf]);
-        parts.net.copy_from_slice(&s[layout.net(0)..layout.net(0) + nd]);
+        parts
+            .power
+            .copy_from_slice(&s[layout.power(0)..layout.power(0) + self.nf]);
+        parts
+            .work
+            .copy_from_slice(&s[layout.work(0)..layout.work(0) + self.nf]);
+        parts
+            .net
+            .copy_from_slice(&s[layout.net(0)..layout.net(0) + nd]);
         parts
             .impulse
             .copy_from_slice(&s[layout.impulse(0)..layout.impulse(0) + nd]);
@@ -228,6 +236,7 @@ struct Layout {
 
 impl Layout {
     fn x(&self, i: usize) -> usize {
+        debug_assert!(i < self.n);
         X + i
     }
     fn v(&self, i: usize) -> usize {

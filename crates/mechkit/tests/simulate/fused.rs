@@ -44,7 +44,10 @@ fn same_both_ways(sc: &Scenario, method: Method, dt: f64, t_max: f64) -> RunRepo
     assert_eq!(general.steps, fused.steps);
     assert_eq!(general.evaluations, fused.evaluations);
     assert_eq!(general.stop_reason, fused.stop_reason);
-    assert_eq!(general.final_state.t.to_bits(), fused.final_state.t.to_bits());
+    assert_eq!(
+        general.final_state.t.to_bits(),
+        fused.final_state.t.to_bits()
+    );
     assert_eq!(bits(&general.final_state.y), bits(&fused.final_state.y));
     assert_eq!(
         bits(&[general.step_range.0, general.step_range.1]),
@@ -252,7 +255,10 @@ F = "1e-6*sqrt(x)"
         fused.divergence.as_ref().unwrap().message
     );
     assert_eq!(bits(&rec_g.t), bits(&rec_f.t));
-    assert!(fused.fused_steps > 0, "the steps before the chunk were fused");
+    assert!(
+        fused.fused_steps > 0,
+        "the steps before the chunk were fused"
+    );
 }
 
 #[test]
