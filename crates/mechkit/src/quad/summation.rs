@@ -20,15 +20,25 @@ pub(super) const LANES: usize = 8;
 /// Terms per block: a block's columns stay in L1 while it is summed.
 const BLOCK: usize = 1024;
 
+/// Halves longer than this are summed on two threads (`rayon::join`); the tree of additions
+/// is the same, so the result is the same bits on any number of threads. Long sums are bound
+/// by memory bandwidth, which one core cannot use up.
+const PARALLEL_MIN: usize = 1 << 17;
+
 /// `Σ_{i < len} block(range)` over blocks of [`BLOCK`] indices, combined pairwise.
-pub(super) fn pairwise(len: usize, block: &impl Fn(Range<usize>) -> Real) -> Real {
-    fn split(r: Range<usize>, block: &impl Fn(Range<usize>) -> Real) -> Real {
+pub(super) fn pairwise(len: usize, block: &(impl Fn(Range<usize>) -> Real + Sync)) -> Real {
+    fn split(r: Range<usize>, block: &(impl Fn(Range<usize>) -> Real + Sync)) -> Real {
         let len = r.end - r.start;
         if len <= BLOCK {
             return block(r);
         }
         let mid = r.start + len.div_ceil(BLOCK) / 2 * BLOCK;
-        split(r.start..mid, block) + split(mid..r.end, block)
+        if len >= PARALLEL_MIN {
+            let (a, b) = rayon::join(|| split(r.start..mid, block), || split(mid..r.end, block));
+            a + b
+        } else {
+            split(r.start..mid, block) + split(mid..r.end, block)
+        }
     }
     split(0..len, block)
 }
@@ -71,7 +81,7 @@ fn lane_chunk(c: &[Real], i: usize) -> &[Real; LANES] {
 /// Blocked pairwise sum of `term` over columns of equal length.
 pub(super) fn sum_columns<const K: usize>(
     cols: [&[Real]; K],
-    term: impl Fn([Real; K]) -> Real + Copy,
+    term: impl Fn([Real; K]) -> Real + Copy + Sync,
 ) -> Real {
     pairwise(cols[0].len(), &|r: Range<usize>| {
         lanes(cols.map(|c| &c[r.clone()]), term)
