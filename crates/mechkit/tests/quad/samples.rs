@@ -134,7 +134,7 @@ fn edge_cases() {
 #[test]
 fn long_sums_are_the_same_bits_on_one_and_two_threads() {
     // 10^6 samples on a jittered grid: the halves are summed in parallel above 2^17 samples
-    let n = 1_000_003;
+    let n: usize = 1_000_003;
     let mut state = 0x9e37_79b9_7f4a_7c15_u64;
     let mut jitter = || {
         state ^= state << 13;
