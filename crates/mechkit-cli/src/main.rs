@@ -17,13 +17,41 @@ use clap::Parser;
 
 fn main() -> ExitCode {
     let cli = args::Cli::parse();
+    // the commands whose loops look at the interrupt flag; the others end at Ctrl-C as usual
+    if matches!(cli.command, args::Command::Run(_) | args::Command::Sweep(_)) {
+        catch_interrupts();
+    }
     match commands::dispatch(cli) {
         Ok(commands::Outcome::Success) => ExitCode::SUCCESS,
         Ok(commands::Outcome::ComputationFailed) => ExitCode::from(1),
+        Ok(commands::Outcome::Interrupted) => ExitCode::from(EXIT_INTERRUPTED),
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)
+        }
+    }
+}
+
+/// Exit status after Ctrl-C: 128 + SIGINT, as shells report a process killed by it.
+const EXIT_INTERRUPTED: u8 = 130;
+
+/// Ctrl-C (SIGINT) and SIGTERM ask the running simulation to stop after its current step
+/// (`mechkit::simulate::interrupt`): it then finishes its outputs and exits with 130. A second
+/// Ctrl-C exits at once.
+fn catch_interrupts() {
+    use signal_hook::consts::{SIGINT, SIGTERM};
+    let flag = mechkit::simulate::interrupt::flag();
+    for signal in [SIGINT, SIGTERM] {
+        // the conditional exit first: it sees the flag as the previous signal left it
+        let registered = signal_hook::flag::register_conditional_shutdown(
+            signal,
+            i32::from(EXIT_INTERRUPTED),
+            std::sync::Arc::clone(&flag),
+        )
+        .and_then(|_| signal_hook::flag::register(signal, std::sync::Arc::clone(&flag)));
+        if let Err(e) = registered {
+            eprintln!("warning: Ctrl-C will end mechkit without finishing its outputs ({e})");
         }
     }
 }

@@ -35,6 +35,8 @@ pub enum Outcome {
     Success,
     /// Exit 1: the computation failed; its diagnosis was already printed.
     ComputationFailed,
+    /// Exit 130: stopped by Ctrl-C after writing what was computed.
+    Interrupted,
 }
 
 /// Runs the chosen subcommand.

@@ -44,6 +44,14 @@ pub fn run(args: &RunArgs) -> Result<Outcome> {
             dir.display()
         ))?;
     }
+    if out.summary.stop_reason == "interrupted" {
+        eprintln!(
+            "interrupted at t = {} s: the outputs in {} hold the run up to there",
+            out.summary.t_end,
+            dir.display()
+        );
+        return Ok(Outcome::Interrupted);
+    }
     if out.failed() {
         if let Some(d) = &out.summary.divergence {
             let what = match out.summary.stop_reason.as_str() {

@@ -141,6 +141,13 @@ pub fn sweep(args: &SweepArgs) -> Result<Outcome> {
         }
         print(&text)?;
     }
+    if mechkit::simulate::interrupt::requested() {
+        eprintln!(
+            "interrupted: runs cut short have stop_reason `interrupted` in {}",
+            csv.display()
+        );
+        return Ok(Outcome::Interrupted);
+    }
     Ok(Outcome::Success)
 }
 

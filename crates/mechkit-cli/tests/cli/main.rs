@@ -34,6 +34,7 @@ mod diverge;
 mod energy;
 mod errors;
 mod friction;
+mod interrupt;
 mod mass;
 mod md;
 mod rigid_collide;

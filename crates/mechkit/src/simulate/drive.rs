@@ -5,7 +5,7 @@
 use super::book::EventBook;
 use super::diagnose::{diagnose_evaluation, diagnose_state, step_failure};
 use super::event::{Event, Side};
-use super::fused::{FUSE_MIN_STEPS, Fused, MIN_CHUNK};
+use super::fused::{FUSE_MIN_STEPS, Fused, MAX_CHUNK, MIN_CHUNK};
 use super::observe::Observer;
 use super::probe::{Grid, Probe, Step, emit, event_values};
 use super::report::{Divergence, RunReport, SimulateError, StopReason};
@@ -132,6 +132,14 @@ pub(super) fn drive(
     let mut fuse_resumes_at: u64 = 0;
 
     while stop_reason.is_none() {
+        if super::interrupt::requested() {
+            stop_reason = Some(StopReason::Interrupted);
+            warnings.push(format!(
+                "interrupted at t = {} s after {steps} steps; the outputs hold everything up to there",
+                state.t
+            ));
+            break;
+        }
         if let Some(tm) = sim.t_max
             && state.t >= tm
         {
@@ -164,7 +172,7 @@ pub(super) fn drive(
                 .min()
                 .unwrap_or(u64::MAX);
             // the wanted step, the last one before t_max and the last allowed stay general
-            let mut chunk = wanted.saturating_sub(steps + 1);
+            let mut chunk = wanted.saturating_sub(steps + 1).min(MAX_CHUNK);
             chunk = chunk.min(limit.saturating_sub(steps + 1));
             if let Some(p) = planned {
                 chunk = chunk.min(p.saturating_sub(fixed_k + 1));

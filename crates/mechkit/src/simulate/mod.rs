@@ -15,6 +15,7 @@ mod diagnose;
 mod drive;
 mod event;
 mod fused;
+pub mod interrupt;
 mod observe;
 mod probe;
 mod reduce;

@@ -26,11 +26,13 @@ pub enum StopReason {
     StepTooSmall,
     /// An event fired again and again at practically the same time (Zeno behaviour).
     Zeno,
+    /// A stop was asked for from outside ([`interrupt`](super::interrupt): Ctrl-C).
+    Interrupted,
 }
 
 impl StopReason {
     /// Name as in summaries: `t_max`, `event`, `max_steps`, `diverged`, `step_too_small`,
-    /// `zeno`.
+    /// `zeno`, `interrupted`.
     pub fn name(self) -> &'static str {
         match self {
             StopReason::TMax => "t_max",
@@ -39,6 +41,7 @@ impl StopReason {
             StopReason::Diverged => "diverged",
             StopReason::StepTooSmall => "step_too_small",
             StopReason::Zeno => "zeno",
+            StopReason::Interrupted => "interrupted",
         }
     }
 
