@@ -48,7 +48,7 @@ pub mod sym;
 pub mod units;
 
 pub use ast::{BinOp, Expr, Func};
-pub use compile::{Kernel, KernelBuilder, Program, Val};
+pub use compile::{Kernel, KernelBuilder, Program, Val, native_code};
 pub use dims::Dim;
 pub use error::{ExprError, ExprErrorKind};
 pub use formula::Formula;

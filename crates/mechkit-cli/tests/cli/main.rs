@@ -37,6 +37,7 @@ mod friction;
 mod interrupt;
 mod mass;
 mod md;
+mod reproducible;
 mod rigid_collide;
 mod rocket;
 mod roll;

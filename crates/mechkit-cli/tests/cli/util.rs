@@ -102,8 +102,14 @@ impl Dir {
     /// Runs `mechkit` with `args`, with this directory as the working directory (so relative
     /// file names in arguments and messages are the names given to `create`).
     pub fn run(&self, args: &[&str]) -> Output {
+        self.run_with_env(args, &[])
+    }
+
+    /// [`Dir::run`] with environment variables set.
+    pub fn run_with_env(&self, args: &[&str], env: &[(&str, &str)]) -> Output {
         let out = Command::new(env!("CARGO_BIN_EXE_mechkit"))
             .args(args)
+            .envs(env.iter().copied())
             .current_dir(self.path())
             .output()
             .expect("the mechkit binary runs");

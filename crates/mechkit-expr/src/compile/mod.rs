@@ -10,6 +10,20 @@ mod kernel;
 
 pub use kernel::{Kernel, KernelBuilder, Val};
 
+/// Whether compiled formulas get native code ([`Program::native`]): the `jit` feature is on
+/// and `MECHKIT_JIT` is not `0`. (A host Cranelift cannot target still falls back to the
+/// interpreter, with the same results.)
+pub fn native_code() -> bool {
+    #[cfg(feature = "jit")]
+    {
+        jit::enabled()
+    }
+    #[cfg(not(feature = "jit"))]
+    {
+        false
+    }
+}
+
 use std::sync::Arc;
 
 use ir::Ir;

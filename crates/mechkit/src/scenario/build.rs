@@ -283,6 +283,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         output_times,
         plots,
         warnings,
+        source_hash: super::provenance::fnv1a(root.src.text.as_bytes()),
     })
 }
 

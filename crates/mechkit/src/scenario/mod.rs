@@ -49,6 +49,7 @@ mod integrator;
 mod observe;
 mod output;
 mod plot;
+mod provenance;
 mod rigid;
 mod run;
 mod stop;
@@ -66,6 +67,7 @@ pub use error::{ErrorKind, Location, ScenarioError};
 pub use observe::Observable;
 pub use output::{csv_header, push_number, write_atomic};
 pub use plot::{OutputTimes, PlotSpec, SeriesSpec};
+pub use provenance::Provenance;
 pub use run::RunOutput;
 pub use summary::{
     BodyState, BodySummary, CentreOfMass, DivergenceSummary, EnergySummary, EventSummary, Files,
@@ -112,6 +114,8 @@ pub struct Scenario {
     pub plots: Vec<PlotSpec>,
     /// Warnings about the setup.
     pub warnings: Vec<String>,
+    /// FNV-1a of the scenario text (the summary's provenance).
+    pub source_hash: u64,
 }
 
 impl Scenario {

@@ -8,6 +8,7 @@ use super::error::{ErrorKind, ScenarioError};
 use super::observe::ObservableSet;
 use super::output::{CsvWriter, Keep, write_atomic};
 use super::plot::PlotRecorder;
+use super::provenance::Provenance;
 use super::summary::Summary;
 use super::{OutputTimes, Scenario};
 use crate::figure::PlotData;
@@ -103,6 +104,7 @@ impl Scenario {
             &report,
             observables.values(),
             warnings,
+            Provenance::of(&report, self.source_hash),
         );
         Ok(RunOutput {
             summary,

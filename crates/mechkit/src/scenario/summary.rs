@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use crate::mass::PointMasses;
 
+use super::provenance::Provenance;
 use crate::Real;
 use crate::ode::Tolerance;
 use crate::particles::ParticleSystem;
@@ -164,7 +165,7 @@ pub struct Summary {
     pub steps: u64,
     /// Force evaluations.
     pub evaluations: u64,
-    /// `t_max`, `event`, `max_steps`, `diverged`, `step_too_small` or `zeno`.
+    /// `t_max`, `event`, `max_steps`, `diverged`, `step_too_small`, `zeno` or `interrupted`.
     pub stop_reason: String,
     /// Every body's final state.
     pub bodies: BTreeMap<String, BodySummary>,
@@ -200,6 +201,9 @@ pub struct Summary {
     pub warnings: Vec<String>,
     /// Files written.
     pub files: Files,
+    /// Where the result came from: version, scenario hash, method and step control,
+    /// seed, threads.
+    pub provenance: Provenance,
 }
 
 fn states(sys: &ParticleSystem, q: &[Real], v: &[Real]) -> BTreeMap<String, BodyState> {
@@ -322,6 +326,7 @@ impl Summary {
         report: &RunReport,
         observables: Vec<(String, Real, Option<String>)>,
         warnings: Vec<String>,
+        provenance: Provenance,
     ) -> Self {
         let (q, v) = report.final_state.qv();
         let d = sys.dim();
@@ -346,6 +351,7 @@ impl Summary {
         let l = &report.ledger;
         let (e0, e1) = l.energy();
         Summary {
+            provenance,
             title: title.to_string(),
             coordinates: (sys.coordinates() == crate::particles::Coordinates::Angle)
                 .then_some("angle"),

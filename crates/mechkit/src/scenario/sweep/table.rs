@@ -50,12 +50,7 @@ pub(crate) fn manifest(name: &str, text: &str, grid: &SweepGrid) -> String {
     )
 }
 
-/// FNV-1a, 64 bits: tells sweeps of different scenario texts apart (not a security hash).
-fn fnv1a(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    })
-}
+use crate::scenario::provenance::fnv1a;
 
 fn field(out: &mut String, s: &str) {
     if s.contains([',', '"', '\n']) {
