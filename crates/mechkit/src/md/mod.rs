@@ -26,6 +26,7 @@
 //! assert!((md.thermo().total - e0).abs() < 1e-2 * e0.abs());
 //! ```
 
+mod cell_list;
 mod error;
 mod forces;
 mod lattice;
@@ -39,7 +40,7 @@ mod velocities;
 mod xyz;
 
 pub use error::MdError;
-pub use forces::{PairSums, all_pairs_forces, compute_forces};
+pub use forces::{ForceScratch, PairSums, all_pairs_forces, compute_forces, compute_forces_with};
 pub use lattice::Lattice;
 pub use neighbour::NeighbourList;
 pub use observe::Thermo;

@@ -50,6 +50,10 @@ fn periodic_lattices_with_jitter_match_all_pairs_to_1e_12() {
     for seed in 0..4 {
         let cases = [
             jittered(Lattice::Fcc, 4, 0.8442, 0.15, seed),
+            // 3 and 4 slabs: the smallest periodic split, where the last slab's next is
+            // the first.
+            jittered(Lattice::Fcc, 6, 0.8442, 0.15, seed),
+            jittered(Lattice::Fcc, 8, 0.8442, 0.15, seed),
             jittered(Lattice::SimpleCubic, 7, 0.6, 0.2, seed),
             jittered(Lattice::Hexagonal, 8, 0.8, 0.15, seed),
             jittered(Lattice::Square, 9, 0.7, 0.2, seed),
@@ -117,4 +121,41 @@ fn forces_during_a_run_equal_all_pairs() {
         }
     }
     assert!((md.pair_sums().potential - sums.potential).abs() < 1e-12 * sums.potential.abs());
+}
+
+/// The half list holds every pair closer than the range exactly once (as all-pairs
+/// minimum-image distances say), whatever the number of slabs, periodic or open.
+#[test]
+fn half_list_holds_each_pair_within_range_once() {
+    let open = SimBox::new(3, [20.0; 3], [false; 3]).unwrap();
+    let mut rng = Xoshiro256::seed(11);
+    let scattered: Vec<[f64; 3]> = (0..300)
+        .map(|_| std::array::from_fn(|_| 9.0 * rng.uniform()))
+        .collect();
+    let cases = [
+        (jittered(Lattice::Fcc, 4, 0.8442, 0.15, 1), 1),
+        (jittered(Lattice::Fcc, 6, 0.8442, 0.15, 2), 3),
+        (jittered(Lattice::Fcc, 8, 0.8442, 0.15, 3), 4),
+        (jittered(Lattice::Chain, 40, 1.0, 0.2, 4), 14),
+        ((open, scattered), 3),
+    ];
+    for ((b, x), slabs) in &cases {
+        let range = 2.8;
+        let list = NeighbourList::build(b, x, range, None);
+        assert_eq!(list.slab_count(), *slabs, "dim {}", b.dim());
+        let mut listed: Vec<(usize, usize)> =
+            list.pairs().map(|(i, j)| (i.min(j), i.max(j))).collect();
+        listed.sort_unstable();
+        let mut expected = Vec::new();
+        for i in 0..x.len() {
+            for j in i + 1..x.len() {
+                let d = b.separation(&x[i], &x[j]);
+                if d.iter().map(|c| c * c).sum::<f64>() < range * range {
+                    expected.push((i, j));
+                }
+            }
+        }
+        assert_eq!(list.pair_count(), expected.len());
+        assert!(listed == expected, "dim {} with {slabs} slabs", b.dim());
+    }
 }
