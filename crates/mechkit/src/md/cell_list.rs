@@ -18,11 +18,15 @@ use super::SimBox;
 /// radius `range` than 3^d cells of width `range`.
 pub(crate) const REACH: usize = 2;
 
-/// Cell indices within REACH of one cell index along an axis, without repeats.
+/// Cell indices within REACH of one cell index along an axis, without repeats, and the
+/// same cells as runs of consecutive indices (at most two: a periodic wrap splits one).
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Adjacent {
     pub(crate) cells: [u32; 2 * REACH + 1],
     pub(crate) len: usize,
+    /// `(first, last)` cell index of each run, inclusive.
+    pub(crate) runs: [(u32, u32); 2 * REACH + 1],
+    pub(crate) run_count: usize,
 }
 
 impl Adjacent {
@@ -30,6 +34,27 @@ impl Adjacent {
     #[inline]
     pub(crate) fn as_slice(&self) -> &[u32] {
         &self.cells[..self.len]
+    }
+
+    /// The adjacent cells as runs of consecutive indices.
+    #[inline]
+    pub(crate) fn runs(&self) -> &[(u32, u32)] {
+        &self.runs[..self.run_count]
+    }
+
+    /// Groups the (distinct) cells into runs of consecutive indices.
+    fn find_runs(&mut self) {
+        let mut sorted = self.cells;
+        sorted[..self.len].sort_unstable();
+        self.run_count = 0;
+        for &c in &sorted[..self.len] {
+            if self.run_count > 0 && self.runs[self.run_count - 1].1 + 1 == c {
+                self.runs[self.run_count - 1].1 = c;
+            } else {
+                self.runs[self.run_count] = (c, c);
+                self.run_count += 1;
+            }
+        }
     }
 }
 
@@ -102,6 +127,7 @@ impl CellList {
                         adj.len += 1;
                     }
                 }
+                adj.find_runs();
                 self.adjacent[a].push(adj);
             }
         }

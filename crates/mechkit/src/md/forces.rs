@@ -138,7 +138,7 @@ pub fn compute_forces_with<P: PairPotential>(
 /// One slab's pairs: forces into `fl` (indexed like `xl`: own particles, then the next
 /// slab's), returning the slab's energy and virial.
 #[allow(clippy::too_many_arguments)]
-#[inline]
+#[inline(never)]
 fn pair_kernel<P: PairPotential>(
     potential: &P,
     lengths: [Real; 3],

@@ -111,10 +111,13 @@ impl NeighbourList {
                         continue;
                     }
                     for &cy in cells.adjacent[1][c[1]].as_slice() {
-                        for &cz in cells.adjacent[2][c[2]].as_slice() {
-                            let cell = (cx as usize * cells.n[1] + cy as usize) * cells.n[2]
-                                + cz as usize;
-                            let (mut a, b) = (cells.first[cell], cells.first[cell + 1]);
+                        // The z-adjacent cells in runs: each run is one range of atoms.
+                        for &(z0, z1) in cells.adjacent[2][c[2]].runs() {
+                            let row = (cx as usize * cells.n[1] + cy as usize) * cells.n[2];
+                            let (mut a, b) = (
+                                cells.first[row + z0 as usize],
+                                cells.first[row + z1 as usize + 1],
+                            );
                             // Inside the slab the lower sorted index owns the pair.
                             let base = if same {
                                 a = a.max(i + 1);
@@ -123,14 +126,21 @@ impl NeighbourList {
                                 lo_next
                             };
                             let offset = if same { 0 } else { own };
-                            for (j, xj) in cells.sorted.iter().enumerate().take(b).skip(a) {
+                            if a >= b {
+                                continue;
+                            }
+                            // Branch-free compaction: write every candidate, keep those
+                            // in range (a branch on them would mispredict often).
+                            let mut k = list.neighbours.len();
+                            list.neighbours.resize(k + (b - a), 0);
+                            for (j, xj) in cells.sorted[a..b].iter().enumerate() {
                                 let dx = near_image(xi[0] - xj[0], lengths[0], half[0]);
                                 let dy = near_image(xi[1] - xj[1], lengths[1], half[1]);
                                 let dz = near_image(xi[2] - xj[2], lengths[2], half[2]);
-                                if dx * dx + dy * dy + dz * dz < r2 {
-                                    list.neighbours.push((j - base + offset) as u32);
-                                }
+                                list.neighbours[k] = (a + j - base + offset) as u32;
+                                k += usize::from(dx * dx + dy * dy + dz * dz < r2);
                             }
+                            list.neighbours.truncate(k);
                         }
                     }
                 }
