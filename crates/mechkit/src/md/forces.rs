@@ -160,11 +160,12 @@ fn pair_kernel<P: PairPotential>(
             let dy = near_image(xi[1] - xj[1], lengths[1], half[1]);
             let dz = near_image(xi[2] - xj[2], lengths[2], half[2]);
             let r2 = dx * dx + dy * dy + dz * dz;
-            // Branch-free: pairs beyond the cut-off are evaluated at r = r_c and masked
-            // (about 30 % of a list with a 0.3σ skin; a branch on them mispredicts).
-            let inside = r2 < rc2;
-            let (u, f_over_r) = potential.energy_force(if inside { r2 } else { rc2 });
-            let (u, f_over_r) = if inside { (u, f_over_r) } else { (0.0, 0.0) };
+            // Branch-free: pairs beyond the cut-off are evaluated at r = r_c and multiplied
+            // by 0 (about 30 % of a list with a 0.3σ skin; a branch on them mispredicts,
+            // and LLVM turns a select of the results back into one).
+            let mask = Real::from(u8::from(r2 < rc2));
+            let (u, f_over_r) = potential.energy_force(r2.min(rc2));
+            let (u, f_over_r) = (mask * u, mask * f_over_r);
             let (fx, fy, fz) = (f_over_r * dx, f_over_r * dy, f_over_r * dz);
             acc[0] += fx;
             acc[1] += fy;
