@@ -21,6 +21,7 @@
 //!
 //! - `mechkit com IMAGE` measures the pixels of a body (`com_image.rs`).
 //! - `mechkit sweep` and `sweep-merge`: 1,000 runs, threads, shards (`sweep.rs`).
+//! - `mechkit md` on the gallery inputs `examples/md/` (`md_gallery.rs`).
 //!
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
@@ -36,6 +37,7 @@ mod errors;
 mod friction;
 mod mass;
 mod md;
+mod md_gallery;
 mod rigid_collide;
 mod rocket;
 mod roll;

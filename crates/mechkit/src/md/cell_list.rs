@@ -142,7 +142,9 @@ impl CellList {
             c as u32
         };
         match pool {
-            Some(pool) => pool.install(|| x.par_iter().map(cell_of).collect_into_vec(&mut self.which)),
+            Some(pool) => {
+                pool.install(|| x.par_iter().map(cell_of).collect_into_vec(&mut self.which))
+            }
             None => {
                 self.which.clear();
                 self.which.extend(x.iter().map(cell_of));
@@ -175,7 +177,8 @@ impl CellList {
         }
         self.first[0] = 0;
         self.sorted.clear();
-        self.sorted.extend(self.order.iter().map(|&i| x[i as usize]));
+        self.sorted
+            .extend(self.order.iter().map(|&i| x[i as usize]));
     }
 
     /// The cell coordinates of cell `c`.

@@ -84,7 +84,11 @@ pub fn compute_forces_with<P: PairPotential>(
         xl.extend(order[lo..lo + own].iter().map(|&i| x[i as usize]));
         if let Some(t) = list.next[s] {
             let lo_next = list.bounds[t];
-            xl.extend(order[lo_next..lo_next + next].iter().map(|&i| x[i as usize]));
+            xl.extend(
+                order[lo_next..lo_next + next]
+                    .iter()
+                    .map(|&i| x[i as usize]),
+            );
         }
         fl.clear();
         fl.resize(own + next, [0.0; 3]);

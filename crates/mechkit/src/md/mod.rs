@@ -26,6 +26,7 @@
 //! assert!((md.thermo().total - e0).abs() < 1e-2 * e0.abs());
 //! ```
 
+mod atoms_file;
 mod cell_list;
 mod error;
 mod forces;
@@ -39,6 +40,7 @@ mod system;
 mod velocities;
 mod xyz;
 
+pub use atoms_file::AtomsFile;
 pub use error::MdError;
 pub use forces::{ForceScratch, PairSums, all_pairs_forces, compute_forces, compute_forces_with};
 pub use lattice::Lattice;

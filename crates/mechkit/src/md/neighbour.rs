@@ -149,10 +149,7 @@ impl NeighbourList {
         };
         match pool {
             Some(pool) => pool.install(|| {
-                self.slabs
-                    .par_iter_mut()
-                    .enumerate()
-                    .for_each(build_slab);
+                self.slabs.par_iter_mut().enumerate().for_each(build_slab);
             }),
             None => self.slabs.iter_mut().enumerate().for_each(build_slab),
         }
@@ -167,7 +164,8 @@ impl NeighbourList {
             count = 1;
         }
         self.layer_slab.clear();
-        self.layer_slab.extend((0..layers).map(|l| l * count / layers));
+        self.layer_slab
+            .extend((0..layers).map(|l| l * count / layers));
         let per_layer = self.cells.n[1] * self.cells.n[2];
         self.bounds.clear();
         self.bounds.push(0);
