@@ -84,15 +84,16 @@ pub fn compute_forces_with<P: PairPotential>(
         xl.extend(order[lo..lo + own].iter().map(|&i| x[i as usize]));
         if let Some(t) = list.next[s] {
             let lo_next = list.bounds[t];
-            xl.extend(
-                order[lo_next..lo_next + next]
-                    .iter()
-                    .map(|&i| x[i as usize]),
-            );
+            // Across the periodic x edge: shifted so no pair needs the x minimum image.
+            let shift = if slab.shift_next { lengths[0] } else { 0.0 };
+            xl.extend(order[lo_next..lo_next + next].iter().map(|&i| {
+                let p = x[i as usize];
+                [p[0] + shift, p[1], p[2]]
+            }));
         }
         fl.clear();
         fl.resize(own + next, [0.0; 3]);
-        pair_kernel(potential, lengths, half, rc2, slab, own, xl, fl)
+        pair_kernel(potential, (lengths, half), rc2, slab, own, xl, fl)
     };
     let partial: Vec<(Real, Real)> = match pool {
         Some(pool) => pool.install(|| {
@@ -141,12 +142,10 @@ pub fn compute_forces_with<P: PairPotential>(
 
 /// One slab's pairs: forces into `fl` (indexed like `xl`: own particles, then the next
 /// slab's), returning the slab's energy and virial.
-#[allow(clippy::too_many_arguments)]
 #[inline(never)]
 fn pair_kernel<P: PairPotential>(
     potential: &P,
-    lengths: [Real; 3],
-    half: [Real; 3],
+    box_: ([Real; 3], [Real; 3]),
     rc2: Real,
     slab: &SlabList,
     own: usize,
@@ -155,38 +154,64 @@ fn pair_kernel<P: PairPotential>(
 ) -> (Real, Real) {
     let (mut u_sum, mut w_sum) = (0.0, 0.0);
     for i in 0..own {
-        let xi = xl[i];
-        let mut acc = [0.0; 3];
-        for &w in &slab.neighbours[slab.start[i]..slab.start[i + 1]] {
-            let w = w as usize;
-            let xj = xl[w];
-            let dx = near_image(xi[0] - xj[0], lengths[0], half[0]);
-            let dy = near_image(xi[1] - xj[1], lengths[1], half[1]);
-            let dz = near_image(xi[2] - xj[2], lengths[2], half[2]);
-            let r2 = dx * dx + dy * dy + dz * dz;
-            // Branch-free: pairs beyond the cut-off are evaluated at r = r_c and multiplied
-            // by 0 (about 30 % of a list with a 0.3σ skin; a branch on them mispredicts,
-            // and LLVM turns a select of the results back into one).
-            let mask = Real::from(u8::from(r2 < rc2));
-            let (u, f_over_r) = potential.energy_force(r2.min(rc2));
-            let (u, f_over_r) = (mask * u, mask * f_over_r);
-            let (fx, fy, fz) = (f_over_r * dx, f_over_r * dy, f_over_r * dz);
-            acc[0] += fx;
-            acc[1] += fy;
-            acc[2] += fz;
-            let fj = &mut fl[w];
-            fj[0] -= fx;
-            fj[1] -= fy;
-            fj[2] -= fz;
-            u_sum += u;
-            w_sum += f_over_r * r2;
-        }
+        let nb = &slab.neighbours[slab.start[i]..slab.start[i + 1]];
+        let (acc, u, w) = if slab.wraps[i] {
+            row::<P, true>(potential, box_, rc2, xl[i], nb, xl, fl)
+        } else {
+            row::<P, false>(potential, box_, rc2, xl[i], nb, xl, fl)
+        };
+        u_sum += u;
+        w_sum += w;
         let fi = &mut fl[i];
         fi[0] += acc[0];
         fi[1] += acc[1];
         fi[2] += acc[2];
     }
     (u_sum, w_sum)
+}
+
+/// The pairs of one particle at `xi` with its listed partners `nb`: their reactions go into
+/// `fl`, the particle's own force, the energy and the virial are returned. `WRAP`: apply
+/// the minimum image (`box_` = lengths and half-lengths), else the plain difference.
+#[inline(always)]
+fn row<P: PairPotential, const WRAP: bool>(
+    potential: &P,
+    (lengths, half): ([Real; 3], [Real; 3]),
+    rc2: Real,
+    xi: [Real; 3],
+    nb: &[u32],
+    xl: &[[Real; 3]],
+    fl: &mut [[Real; 3]],
+) -> ([Real; 3], Real, Real) {
+    let (mut acc, mut u_sum, mut w_sum) = ([0.0; 3], 0.0, 0.0);
+    for &w in nb {
+        let w = w as usize;
+        let xj = xl[w];
+        let (mut dx, mut dy, mut dz) = (xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
+        if WRAP {
+            dx = near_image(dx, lengths[0], half[0]);
+            dy = near_image(dy, lengths[1], half[1]);
+            dz = near_image(dz, lengths[2], half[2]);
+        }
+        let r2 = dx * dx + dy * dy + dz * dz;
+        // Branch-free: pairs beyond the cut-off are evaluated at r = r_c and multiplied
+        // by 0 (about 30 % of a list with a 0.3σ skin; a branch on them mispredicts,
+        // and LLVM turns a select of the results back into one).
+        let mask = Real::from(u8::from(r2 < rc2));
+        let (u, f_over_r) = potential.energy_force(r2.min(rc2));
+        let (u, f_over_r) = (mask * u, mask * f_over_r);
+        let (fx, fy, fz) = (f_over_r * dx, f_over_r * dy, f_over_r * dz);
+        acc[0] += fx;
+        acc[1] += fy;
+        acc[2] += fz;
+        let fj = &mut fl[w];
+        fj[0] -= fx;
+        fj[1] -= fy;
+        fj[2] -= fz;
+        u_sum += u;
+        w_sum += f_over_r * r2;
+    }
+    (acc, u_sum, w_sum)
 }
 
 /// The same sums over all pairs (minimum image, no list): the O(N²) reference the

@@ -43,6 +43,13 @@ pub(crate) fn near_image(d: Real, l: Real, half: Real) -> Real {
 pub(crate) struct SlabList {
     pub(crate) start: Vec<usize>,
     pub(crate) neighbours: Vec<u32>,
+    /// Whether a particle may have partners across a periodic edge (its cell is within
+    /// REACH cells of one, the x edge excepted when the next slab is copied shifted by
+    /// L_x): only those need the minimum-image test per pair.
+    pub(crate) wraps: Vec<bool>,
+    /// Whether the next slab's positions are copied shifted by +L_x (the last slab's next
+    /// is the first, across the periodic x edge).
+    pub(crate) shift_next: bool,
 }
 
 /// A half neighbour list over slabs of particles sorted by cell.
@@ -91,6 +98,8 @@ impl NeighbourList {
         self.split_slabs(sim_box.is_periodic()[0]);
         let lengths = sim_box.lengths();
         let half = half_lengths(sim_box);
+        let periodic = sim_box.is_periodic();
+        let single = self.slabs.len() == 1;
         let r2 = range * range;
         let (cells, bounds, next, layer_slab) =
             (&self.cells, &self.bounds, &self.next, &self.layer_slab);
@@ -100,10 +109,16 @@ impl NeighbourList {
             let own = hi - lo;
             list.start.clear();
             list.neighbours.clear();
+            list.wraps.clear();
+            list.shift_next = next[s].is_some_and(|t| t < s);
             list.start.push(0);
             for i in lo..hi {
                 let xi = cells.sorted[i];
                 let c = cells.coords(cells.cell[i]);
+                let edge = |a: usize| {
+                    periodic[a] && (c[a] < REACH || c[a] + REACH >= cells.n[a])
+                };
+                list.wraps.push((single && edge(0)) || edge(1) || edge(2));
                 for &cx in cells.adjacent[0][c[0]].as_slice() {
                     let t = layer_slab[cx as usize];
                     let same = t == s;
