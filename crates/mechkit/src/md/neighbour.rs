@@ -70,6 +70,33 @@ pub struct NeighbourList {
     layer_slab: Vec<usize>,
 }
 
+/// Appends `first + k` for each candidate k closer to `xi` than √r2 (minimum image if
+/// `WRAP`), by branch-free compaction: every candidate is written and those in range kept
+/// (a branch on them would mispredict often).
+#[inline(always)]
+fn scan<const WRAP: bool>(
+    xi: [Real; 3],
+    candidates: &[[Real; 3]],
+    first: u32,
+    r2: Real,
+    (lengths, half): ([Real; 3], [Real; 3]),
+    out: &mut Vec<u32>,
+) {
+    let mut k = out.len();
+    out.resize(k + candidates.len(), 0);
+    for (j, xj) in (first..).zip(candidates) {
+        let (mut dx, mut dy, mut dz) = (xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
+        if WRAP {
+            dx = near_image(dx, lengths[0], half[0]);
+            dy = near_image(dy, lengths[1], half[1]);
+            dz = near_image(dz, lengths[2], half[2]);
+        }
+        out[k] = j;
+        k += usize::from(dx * dx + dy * dy + dz * dz < r2);
+    }
+    out.truncate(k);
+}
+
 impl NeighbourList {
     /// The half list of pairs closer than `range` (minimum image on periodic axes), built
     /// through a cell list, on `pool` when given (same result either way). Positions must
@@ -97,7 +124,7 @@ impl NeighbourList {
         self.cells.rebuild(sim_box, x, range, pool);
         self.split_slabs(sim_box.is_periodic()[0]);
         let lengths = sim_box.lengths();
-        let half = half_lengths(sim_box);
+        let box_ = (lengths, half_lengths(sim_box));
         let periodic = sim_box.is_periodic();
         let single = self.slabs.len() == 1;
         let r2 = range * range;
@@ -118,7 +145,8 @@ impl NeighbourList {
                 let edge = |a: usize| {
                     periodic[a] && (c[a] < REACH || c[a] + REACH >= cells.n[a])
                 };
-                list.wraps.push((single && edge(0)) || edge(1) || edge(2));
+                let wraps = (single && edge(0)) || edge(1) || edge(2);
+                list.wraps.push(wraps);
                 for &cx in cells.adjacent[0][c[0]].as_slice() {
                     let t = layer_slab[cx as usize];
                     let same = t == s;
@@ -144,18 +172,15 @@ impl NeighbourList {
                             if a >= b {
                                 continue;
                             }
-                            // Branch-free compaction: write every candidate, keep those
-                            // in range (a branch on them would mispredict often).
-                            let mut k = list.neighbours.len();
-                            list.neighbours.resize(k + (b - a), 0);
-                            for (j, xj) in cells.sorted[a..b].iter().enumerate() {
-                                let dx = near_image(xi[0] - xj[0], lengths[0], half[0]);
-                                let dy = near_image(xi[1] - xj[1], lengths[1], half[1]);
-                                let dz = near_image(xi[2] - xj[2], lengths[2], half[2]);
-                                list.neighbours[k] = (a + j - base + offset) as u32;
-                                k += usize::from(dx * dx + dy * dy + dz * dz < r2);
+                            let first = (a - base + offset) as u32;
+                            let shift = if !same && list.shift_next { lengths[0] } else { 0.0 };
+                            let xi = [xi[0] - shift, xi[1], xi[2]];
+                            let candidates = &cells.sorted[a..b];
+                            if wraps {
+                                scan::<true>(xi, candidates, first, r2, box_, &mut list.neighbours);
+                            } else {
+                                scan::<false>(xi, candidates, first, r2, box_, &mut list.neighbours);
                             }
-                            list.neighbours.truncate(k);
                         }
                     }
                 }
