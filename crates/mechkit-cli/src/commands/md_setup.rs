@@ -67,6 +67,8 @@ pub fn flag(e: &MdError) -> &'static str {
     }
 }
 
+/// The library error with the flag behind it.
+#[allow(clippy::needless_pass_by_value)] // the shape `map_err` wants
 fn with_flag(e: MdError) -> anyhow::Error {
     anyhow!("{}: {e}", flag(&e))
 }

@@ -141,14 +141,11 @@ impl CellList {
             }
             c as u32
         };
-        match pool {
-            Some(pool) => {
-                pool.install(|| x.par_iter().map(cell_of).collect_into_vec(&mut self.which))
-            }
-            None => {
-                self.which.clear();
-                self.which.extend(x.iter().map(cell_of));
-            }
+        if let Some(pool) = pool {
+            pool.install(|| x.par_iter().map(cell_of).collect_into_vec(&mut self.which));
+        } else {
+            self.which.clear();
+            self.which.extend(x.iter().map(cell_of));
         }
         self.first.clear();
         self.first.resize(cells + 1, 0);
@@ -222,8 +219,8 @@ mod tests {
             for k in cells.first[c]..cells.first[c + 1] {
                 assert_eq!(cells.cell[k] as usize, c);
                 let cc = cells.coords(c as u32);
-                for a in 0..3 {
-                    let lo = cc[a] as Real * cells.width[a];
+                for (a, &ca) in cc.iter().enumerate() {
+                    let lo = ca as Real * cells.width[a];
                     let p = cells.sorted[k][a];
                     assert!(p >= lo - 1e-12 && p < lo + cells.width[a] + 1e-12);
                 }

@@ -24,11 +24,14 @@ pub struct PairSums {
     pub virial: Real,
 }
 
+/// One slab's local positions and forces: its own particles, then the next slab's.
+type SlabBuffers = (Vec<[Real; 3]>, Vec<[Real; 3]>);
+
 /// Per-slab position and force buffers of [`compute_forces_with`], kept between calls so a
 /// step allocates nothing.
 #[derive(Debug, Clone, Default)]
 pub struct ForceScratch {
-    slabs: Vec<(Vec<[Real; 3]>, Vec<[Real; 3]>)>,
+    slabs: Vec<SlabBuffers>,
 }
 
 /// Particles per work unit of the per-particle loops (gathers, integrator).
@@ -73,28 +76,25 @@ pub fn compute_forces_with<P: PairPotential>(
     scratch
         .slabs
         .resize_with(list.slab_count(), Default::default);
-    let slab_task = |(s, (slab, (xl, fl))): (
-        usize,
-        (&SlabList, &mut (Vec<[Real; 3]>, Vec<[Real; 3]>)),
-    )|
-     -> (Real, Real) {
-        let (own, next) = list.slab_sizes(s);
-        let lo = list.bounds[s];
-        xl.clear();
-        xl.extend(order[lo..lo + own].iter().map(|&i| x[i as usize]));
-        if let Some(t) = list.next[s] {
-            let lo_next = list.bounds[t];
-            // Across the periodic x edge: shifted so no pair needs the x minimum image.
-            let shift = if slab.shift_next { lengths[0] } else { 0.0 };
-            xl.extend(order[lo_next..lo_next + next].iter().map(|&i| {
-                let p = x[i as usize];
-                [p[0] + shift, p[1], p[2]]
-            }));
-        }
-        fl.clear();
-        fl.resize(own + next, [0.0; 3]);
-        pair_kernel(potential, (lengths, half), rc2, slab, own, xl, fl)
-    };
+    let slab_task =
+        |(s, (slab, (xl, fl))): (usize, (&SlabList, &mut SlabBuffers))| -> (Real, Real) {
+            let (own, next) = list.slab_sizes(s);
+            let lo = list.bounds[s];
+            xl.clear();
+            xl.extend(order[lo..lo + own].iter().map(|&i| x[i as usize]));
+            if let Some(t) = list.next[s] {
+                let lo_next = list.bounds[t];
+                // Across the periodic x edge: shifted so no pair needs the x minimum image.
+                let shift = if slab.shift_next { lengths[0] } else { 0.0 };
+                xl.extend(order[lo_next..lo_next + next].iter().map(|&i| {
+                    let p = x[i as usize];
+                    [p[0] + shift, p[1], p[2]]
+                }));
+            }
+            fl.clear();
+            fl.resize(own + next, [0.0; 3]);
+            pair_kernel(potential, (lengths, half), rc2, slab, own, xl, fl)
+        };
     let partial: Vec<(Real, Real)> = match pool {
         Some(pool) => pool.install(|| {
             list.slabs
@@ -173,7 +173,7 @@ fn pair_kernel<P: PairPotential>(
 /// The pairs of one particle at `xi` with its listed partners `nb`: their reactions go into
 /// `fl`, the particle's own force, the energy and the virial are returned. `WRAP`: apply
 /// the minimum image (`box_` = lengths and half-lengths), else the plain difference.
-#[inline(always)]
+#[inline]
 fn row<P: PairPotential, const WRAP: bool>(
     potential: &P,
     (lengths, half): ([Real; 3], [Real; 3]),

@@ -73,7 +73,7 @@ pub struct NeighbourList {
 /// Appends `first + k` for each candidate k closer to `xi` than √r2 (minimum image if
 /// `WRAP`), by branch-free compaction: every candidate is written and those in range kept
 /// (a branch on them would mispredict often).
-#[inline(always)]
+#[inline]
 fn scan<const WRAP: bool>(
     xi: [Real; 3],
     candidates: &[[Real; 3]],
@@ -142,9 +142,7 @@ impl NeighbourList {
             for i in lo..hi {
                 let xi = cells.sorted[i];
                 let c = cells.coords(cells.cell[i]);
-                let edge = |a: usize| {
-                    periodic[a] && (c[a] < REACH || c[a] + REACH >= cells.n[a])
-                };
+                let edge = |a: usize| periodic[a] && (c[a] < REACH || c[a] + REACH >= cells.n[a]);
                 let wraps = (single && edge(0)) || edge(1) || edge(2);
                 list.wraps.push(wraps);
                 for &cx in cells.adjacent[0][c[0]].as_slice() {
@@ -173,13 +171,24 @@ impl NeighbourList {
                                 continue;
                             }
                             let first = (a - base + offset) as u32;
-                            let shift = if !same && list.shift_next { lengths[0] } else { 0.0 };
+                            let shift = if !same && list.shift_next {
+                                lengths[0]
+                            } else {
+                                0.0
+                            };
                             let xi = [xi[0] - shift, xi[1], xi[2]];
                             let candidates = &cells.sorted[a..b];
                             if wraps {
                                 scan::<true>(xi, candidates, first, r2, box_, &mut list.neighbours);
                             } else {
-                                scan::<false>(xi, candidates, first, r2, box_, &mut list.neighbours);
+                                scan::<false>(
+                                    xi,
+                                    candidates,
+                                    first,
+                                    r2,
+                                    box_,
+                                    &mut list.neighbours,
+                                );
                             }
                         }
                     }

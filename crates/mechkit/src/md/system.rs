@@ -14,6 +14,13 @@ use crate::Real;
 use super::forces::{CHUNK, compute_forces_with};
 use super::{ForceScratch, MdError, NeighbourList, PairPotential, PairSums, SimBox};
 
+/// One particle's position and velocity (updated) with its force and its position at the
+/// last list build.
+type DriftItem<'a> = (
+    (&'a mut [Real; 3], &'a mut [Real; 3]),
+    (&'a [Real; 3], &'a [Real; 3]),
+);
+
 /// Run settings of [`Md`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MdConfig {
@@ -172,11 +179,7 @@ impl<P: PairPotential> Md<P> {
         let dt = self.config.dt;
         let limit = 0.25 * self.config.skin * self.config.skin;
         // Half kick and drift; reports whether the particle left its skin/2 sphere.
-        let drift = |((x, v), (f, x_b)): (
-            (&mut [Real; 3], &mut [Real; 3]),
-            (&[Real; 3], &[Real; 3]),
-        )|
-         -> bool {
+        let drift = |((x, v), (f, x_b)): DriftItem<'_>| -> bool {
             let mut d2 = 0.0;
             for a in 0..3 {
                 v[a] += h * f[a];

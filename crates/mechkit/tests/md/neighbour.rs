@@ -61,7 +61,12 @@ fn periodic_lattices_with_jitter_match_all_pairs_to_1e_12() {
         ];
         for (b, x) in &cases {
             let worst = compare(&lj, b, x);
-            assert!(worst < 1e-12, "dim {} n {} seed {seed}: {worst:e}", b.dim(), x.len());
+            assert!(
+                worst < 1e-12,
+                "dim {} n {} seed {seed}: {worst:e}",
+                b.dim(),
+                x.len()
+            );
         }
     }
 }
