@@ -74,7 +74,7 @@ fn lj_melt_500_atoms_10_000_steps_energy_drift() {
     md.run(100).unwrap();
     let worst = drift(&mut md, 10_000);
     eprintln!("500 atoms, steps 100 to 10100: max |dE|/N = {worst:e}");
-    assert!(worst < 1e-2, "max |dE|/N = {worst:e}"); // measured 6.96e-3
+    assert!(worst < 1e-2, "max |dE|/N = {worst:e}"); // measured 7.27e-3 (6.96e-3 with the full list)
 }
 
 #[test]
