@@ -79,7 +79,7 @@ fn lj_melt_500_atoms_10_000_steps_energy_drift() {
 
 #[test]
 fn serial_and_parallel_runs_are_bit_identical() {
-    // 8 fcc cells = 2048 atoms = 4 chunks of 512: real work for every thread.
+    // 8 fcc cells = 2048 atoms = 4 slabs of the half list: real work for every thread.
     let mut runs: Vec<Md<LennardJones>> = [1, 2, 3].iter().map(|&t| melt(8, t)).collect();
     for md in &mut runs {
         md.run(60).unwrap();
