@@ -1,7 +1,8 @@
 //! Neighbour-list forces, energy and virial equal the all-pairs sums (minimum image) to
 //! 1e-12 relative, on seeded random configurations: periodic and open boxes, 1-D, 2-D, 3-D,
-//! each pair law; and they still do after the particles have moved (a list kept valid by the
-//! skin rule).
+//! each pair law, one slab or many; and they still do after the particles have moved (a list
+//! kept valid by the skin rule). The half list holds each pair within range exactly once,
+//! and the per-slab reduction gives the same bits on 1, 2 and 3 threads.
 
 use mechkit::md::{
     Lattice, LennardJones, LinearSpring, Md, MdConfig, NeighbourList, PairPotential, SimBox,
@@ -162,5 +163,57 @@ fn half_list_holds_each_pair_within_range_once() {
         }
         assert_eq!(list.pair_count(), expected.len());
         assert!(listed == expected, "dim {} with {slabs} slabs", b.dim());
+    }
+}
+
+/// The slab count and the bits of the forces, energy and virial on `pool`.
+fn force_bits<P: PairPotential>(
+    law: &P,
+    b: &SimBox,
+    x: &[[f64; 3]],
+    pool: Option<&rayon::ThreadPool>,
+) -> (usize, Vec<u64>) {
+    let list = NeighbourList::build(b, x, law.cutoff() + 0.3, pool);
+    let mut f = vec![[0.0; 3]; x.len()];
+    let s = compute_forces(law, b, &list, x, &mut f, pool);
+    let bits = f
+        .iter()
+        .flatten()
+        .chain([&s.potential, &s.virial])
+        .map(|c| c.to_bits())
+        .collect();
+    (list.slab_count(), bits)
+}
+
+/// The list and the per-slab reduction give the same bits on 1, 2 and 3 threads, with many
+/// slabs (periodic fcc, 7 slabs; open box of soft spheres, 3 slabs).
+#[test]
+fn forces_are_bit_identical_on_1_2_3_threads_for_many_slabs() {
+    let pools: Vec<rayon::ThreadPool> = [2, 3]
+        .iter()
+        .map(|&t| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(t)
+                .build()
+                .unwrap()
+        })
+        .collect();
+    let lj = LennardJones::reduced(2.5).unwrap();
+    let (fcc_box, fcc) = jittered(Lattice::Fcc, 12, 0.8442, 0.15, 7);
+    let serial = force_bits(&lj, &fcc_box, &fcc, None);
+    assert_eq!(serial.0, 7);
+    for pool in &pools {
+        assert!(force_bits(&lj, &fcc_box, &fcc, Some(pool)) == serial);
+    }
+    let soft = SoftSphere::new(5.0, 1.0).unwrap();
+    let open = SimBox::new(3, [20.0; 3], [false; 3]).unwrap();
+    let mut rng = Xoshiro256::seed(8);
+    let cloud: Vec<[f64; 3]> = (0..400)
+        .map(|_| std::array::from_fn(|_| 5.0 * rng.uniform()))
+        .collect();
+    let serial = force_bits(&soft, &open, &cloud, None);
+    assert_eq!(serial.0, 3);
+    for pool in &pools {
+        assert!(force_bits(&soft, &open, &cloud, Some(pool)) == serial);
     }
 }
