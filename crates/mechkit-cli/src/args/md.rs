@@ -1,4 +1,5 @@
-//! `mechkit md`: many particles with a Lennard-Jones pair potential (reduced units).
+//! `mechkit md`: many particles with a pair potential (Lennard-Jones, soft spheres or
+//! springs), from a lattice or from a file of positions.
 
 use std::path::PathBuf;
 
@@ -14,9 +15,48 @@ pub struct MdArgs {
     /// Number density ρ in σ^-d.
     #[arg(long, default_value_t = 0.8442)]
     pub density: f64,
-    /// Initial temperature in ε/k_B (Maxwell-Boltzmann, zero total momentum).
-    #[arg(long, default_value_t = 1.44)]
-    pub temperature: f64,
+    /// Initial temperature in ε/k_B (Maxwell-Boltzmann, zero total momentum); default 1.44
+    /// on a lattice; with --positions the particles start at rest unless it is given.
+    #[arg(long, conflicts_with = "velocities")]
+    pub temperature: Option<f64>,
+    /// Initial positions instead of a lattice: CSV (x[,y[,z]] per line, the column count is
+    /// the dimension) or XYZ (by the .xyz extension).
+    #[arg(long, value_name = "FILE")]
+    pub positions: Option<PathBuf>,
+    /// Initial velocities, one per particle of --positions, in the same format.
+    #[arg(long, value_name = "FILE", requires = "positions")]
+    pub velocities: Option<PathBuf>,
+    /// Box edge lengths with --positions: one value for every axis or one per axis (needed
+    /// when periodic; an open box defaults to the particles' extent plus the cut-off).
+    #[arg(
+        long,
+        value_name = "L[,L,L]",
+        requires = "positions",
+        value_delimiter = ','
+    )]
+    pub r#box: Vec<f64>,
+    /// Boundaries of a --positions box: periodic (minimum image) or open.
+    #[arg(long, default_value = "periodic", requires = "positions")]
+    pub boundary: String,
+    /// Pair potential: lj (4ε[(σ/r)^12 − (σ/r)^6] cut at --cutoff), soft-sphere
+    /// (ε/2 (1 − r/σ)^2 for r < σ) or spring (k/2 (r − r0)^2 for r < --cutoff).
+    #[arg(long, default_value = "lj")]
+    pub potential: String,
+    /// ε of lj and soft-sphere.
+    #[arg(long, default_value_t = 1.0)]
+    pub epsilon: f64,
+    /// σ of lj and soft-sphere (the soft spheres' diameter and cut-off).
+    #[arg(long, default_value_t = 1.0)]
+    pub sigma: f64,
+    /// Stiffness k of spring.
+    #[arg(long, default_value_t = 1.0)]
+    pub k: f64,
+    /// Rest length r0 of spring.
+    #[arg(long, default_value_t = 1.0)]
+    pub rest_length: f64,
+    /// Mass of every particle.
+    #[arg(long, default_value_t = 1.0)]
+    pub mass: f64,
     /// Seed of the initial velocities.
     #[arg(long, default_value_t = 87287)]
     pub seed: u64,
@@ -26,7 +66,8 @@ pub struct MdArgs {
     /// Time step in τ.
     #[arg(long, default_value_t = 0.005)]
     pub dt: f64,
-    /// Lennard-Jones cut-off in σ.
+    /// Cut-off of lj and spring (spring: between the first and second neighbour distances
+    /// to bond nearest neighbours only).
     #[arg(long, default_value_t = 2.5)]
     pub cutoff: f64,
     /// Shift the potential so U(r_c) = 0 (LAMMPS: pair_modify shift yes).

@@ -1,33 +1,17 @@
-//! `mechkit md`: the Lennard-Jones melt and its relatives, through `mechkit::md`.
+//! `mechkit md`: the Lennard-Jones melt and its relatives (a pair, a spring chain, soft
+//! spheres), through `mechkit::md`.
 
 use std::fmt::Write as _;
 use std::time::Instant;
 
-use anyhow::{Context, Result, anyhow, bail};
-use mechkit::md::{Lattice, LennardJones, Md, MdConfig, MdError, Thermo, maxwell_boltzmann};
+use anyhow::{Context, Result, bail};
+use mechkit::md::{Md, MdConfig, PairPotential, Thermo};
 use mechkit::scenario::write_atomic;
 use serde_json::json;
 
 use super::Outcome;
+use super::md_setup::{Potential, Setup, flag, setup};
 use crate::args::MdArgs;
-
-/// The flag behind a library error, to say where the input went wrong.
-fn flag(e: &MdError) -> &'static str {
-    match e {
-        MdError::NotPositive { name, .. } => match *name {
-            "the density" => "--density",
-            "the temperature" => "--temperature",
-            "the time step dt" => "--dt",
-            "the skin" => "--skin",
-            "the number of threads" => "--threads",
-            "the cut-off" => "--cutoff",
-            _ => "input",
-        },
-        MdError::NoCells { .. } | MdError::TooFewParticles { .. } => "--cells",
-        MdError::BoxTooSmall { .. } => "--cells (or --cutoff, --skin)",
-        _ => "input",
-    }
-}
 
 fn thermo_json(t: &Thermo, n: f64) -> serde_json::Value {
     json!({
@@ -39,27 +23,27 @@ fn thermo_json(t: &Thermo, n: f64) -> serde_json::Value {
 
 /// Runs `mechkit md`.
 pub fn md(args: &MdArgs) -> Result<Outcome> {
-    let lattice = Lattice::from_name(&args.lattice).ok_or_else(|| {
-        anyhow!(
-            "--lattice: unknown lattice '{}'; use fcc, sc, hexagonal, square or chain",
-            args.lattice
-        )
-    })?;
     if args.thermo_every == 0 || args.xyz_every == Some(0) {
         bail!("--thermo-every and --xyz-every must be at least 1 (a step count)");
     }
-    let with_flag = |e: MdError| anyhow!("{}: {e}", flag(&e));
-    let (sim_box, x) = lattice.build(args.cells, args.density).map_err(with_flag)?;
+    let (s, potential) = setup(args)?;
+    match potential {
+        Potential::Lj(p) => run(args, s, p),
+        Potential::Soft(p) => run(args, s, p),
+        Potential::Spring(p) => run(args, s, p),
+    }
+}
+
+fn run<P: PairPotential>(args: &MdArgs, s: Setup, potential: P) -> Result<Outcome> {
     let config = MdConfig {
         dt: args.dt,
         skin: args.skin,
-        mass: 1.0,
+        mass: args.mass,
         threads: args.threads,
     };
-    let v = maxwell_boltzmann(args.temperature, 1.0, lattice.dim(), x.len(), args.seed)
-        .map_err(with_flag)?;
-    let lj = LennardJones::new(1.0, 1.0, args.cutoff, args.shift).map_err(with_flag)?;
-    let mut md = Md::new(sim_box, lj, x, v, config).map_err(with_flag)?;
+    let cutoff = potential.cutoff();
+    let mut md = Md::new(s.sim_box, potential, s.x, s.v, config)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", flag(&e)))?;
     let n = md.len() as f64;
     if let Some(dir) = &args.out {
         std::fs::create_dir_all(dir)
@@ -67,7 +51,7 @@ pub fn md(args: &MdArgs) -> Result<Outcome> {
     }
     let mut rows = vec![md.thermo()];
     let mut xyz = String::new();
-    let frame = |md: &Md<LennardJones>, xyz: &mut String| {
+    let frame = |md: &Md<P>, xyz: &mut String| {
         let mut buf = Vec::new();
         md.write_xyz_frame(&mut buf, "Ar")
             .expect("writing to memory");
@@ -101,7 +85,7 @@ pub fn md(args: &MdArgs) -> Result<Outcome> {
         write_atomic(&path, csv.as_bytes())
             .with_context(|| format!("cannot write {}", path.display()))?;
         let mut rdf = String::from("r,g\n");
-        for (r, g) in md.radial_distribution(100, args.cutoff + args.skin) {
+        for (r, g) in md.radial_distribution(100, cutoff + args.skin) {
             let _ = writeln!(rdf, "{r},{g}");
         }
         let path = dir.join("rdf.csv");
@@ -116,7 +100,8 @@ pub fn md(args: &MdArgs) -> Result<Outcome> {
     let last = md.thermo();
     if args.json {
         let body = json!({
-            "atoms": md.len(), "lattice": lattice.name(), "steps": md.steps(),
+            "atoms": md.len(), "start": s.origin, "potential": args.potential,
+            "steps": md.steps(),
             "threads": args.threads, "seconds": seconds, "atom_steps_per_second": rate,
             "list_builds": md.rebuilds(),
             "energy_change_per_atom": (last.total - rows[0].total) / n,
@@ -126,9 +111,10 @@ pub fn md(args: &MdArgs) -> Result<Outcome> {
         println!("{}", serde_json::to_string_pretty(&body)?);
     } else {
         println!(
-            "{} atoms ({} lattice), reduced LJ units; per-atom energies",
+            "{} atoms ({}), {} potential; per-atom energies",
             md.len(),
-            lattice.name()
+            s.origin,
+            args.potential
         );
         println!("  Step         Temp       E_pair       TotEng        Press");
         for t in &rows {

@@ -12,6 +12,7 @@ mod friction;
 mod inertia;
 mod input;
 mod md;
+mod md_setup;
 mod potential;
 mod power;
 mod rigid_collide;

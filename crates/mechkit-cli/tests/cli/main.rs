@@ -21,6 +21,7 @@
 //!
 //! - `mechkit com IMAGE` measures the pixels of a body (`com_image.rs`).
 //! - `mechkit sweep` and `sweep-merge`: 1,000 runs, threads, shards (`sweep.rs`).
+//! - `mechkit md` on the gallery inputs `examples/md/` (`md_gallery.rs`).
 //!
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
@@ -37,6 +38,7 @@ mod friction;
 mod interrupt;
 mod mass;
 mod md;
+mod md_gallery;
 mod reproducible;
 mod rigid_collide;
 mod rocket;

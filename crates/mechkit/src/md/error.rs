@@ -76,4 +76,12 @@ pub enum MdError {
         /// The energy found.
         energy: Real,
     },
+    /// A particle file that cannot be read.
+    #[error("line {line}: {message}")]
+    Parse {
+        /// The 1-based line number.
+        line: usize,
+        /// What is wrong there.
+        message: String,
+    },
 }

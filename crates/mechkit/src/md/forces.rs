@@ -1,15 +1,18 @@
-//! Forces, potential energy and virial in one pass over a full neighbour list.
+//! Forces, potential energy and virial in one pass over a half neighbour list.
 //!
-//! Particle i's force is Σⱼ (F/r)(r_ij) (xᵢ − xⱼ) over its listed neighbours in list order; it
-//! books half of each pair's energy U(r_ij) and virial (F/r) r_ij². Work is split into fixed
-//! chunks of particles whose partial sums are added in chunk order, so the result does not
-//! depend on how many threads ran the chunks: serial and parallel runs are bit-identical.
+//! Each listed pair is evaluated once and, by Newton's third law, adds (F/r)(r_ij) (xᵢ − xⱼ)
+//! to particle i and its opposite to j, its energy U(r_ij) and its virial (F/r) r_ij² to
+//! the sums. The slabs of the list ([`NeighbourList`]) run independently, each into its
+//! own buffer `[own particles | next slab's particles]`; then particle k's force is its own
+//! slab's entry plus the previous slab's entry for it, in that fixed order, and the
+//! energies are added in slab order. Neither the slabs nor any order depends on the number
+//! of threads: serial and parallel runs are bit-identical.
 
 use rayon::prelude::*;
 
 use crate::Real;
 
-use super::neighbour::{CHUNK, half_lengths, near_image};
+use super::neighbour::{SlabList, half_lengths, near_image};
 use super::{NeighbourList, PairPotential, SimBox};
 
 /// The potential energy and the virial W = Σ_pairs r_ij · F_ij of a force evaluation.
@@ -21,8 +24,22 @@ pub struct PairSums {
     pub virial: Real,
 }
 
+/// One slab's local positions and forces: its own particles, then the next slab's.
+type SlabBuffers = (Vec<[Real; 3]>, Vec<[Real; 3]>);
+
+/// Per-slab position and force buffers of [`compute_forces_with`], kept between calls so a
+/// step allocates nothing.
+#[derive(Debug, Clone, Default)]
+pub struct ForceScratch {
+    slabs: Vec<SlabBuffers>,
+}
+
+/// Particles per work unit of the per-particle loops (gathers, integrator).
+pub(crate) const CHUNK: usize = 1024;
+
 /// Forces into `f` from the pairs of `list` closer than the potential's cut-off; on `pool`
-/// when given, with the same result bit for bit.
+/// when given, with the same result bit for bit. Allocates its buffers: a run uses
+/// [`compute_forces_with`].
 pub fn compute_forces<P: PairPotential>(
     potential: &P,
     sim_box: &SimBox,
@@ -31,46 +48,170 @@ pub fn compute_forces<P: PairPotential>(
     f: &mut [[Real; 3]],
     pool: Option<&rayon::ThreadPool>,
 ) -> PairSums {
+    let mut scratch = ForceScratch::default();
+    compute_forces_with(potential, sim_box, list, x, f, pool, &mut scratch)
+}
+
+/// [`compute_forces`] with buffers kept in `scratch`.
+pub fn compute_forces_with<P: PairPotential>(
+    potential: &P,
+    sim_box: &SimBox,
+    list: &NeighbourList,
+    x: &[[Real; 3]],
+    f: &mut [[Real; 3]],
+    pool: Option<&rayon::ThreadPool>,
+    scratch: &mut ForceScratch,
+) -> PairSums {
+    assert!(
+        x.len() == list.len() && f.len() == list.len(),
+        "compute_forces: {} positions and {} forces for a list of {} particles",
+        x.len(),
+        f.len(),
+        list.len()
+    );
     let lengths = sim_box.lengths();
     let half = half_lengths(sim_box);
     let rc2 = potential.cutoff() * potential.cutoff();
-    let kernel = |(chunk, out): (usize, &mut [[Real; 3]])| -> (Real, Real) {
-        let (mut u_sum, mut w_sum) = (0.0, 0.0);
-        for (k, fi) in out.iter_mut().enumerate() {
-            let i = chunk * CHUNK + k;
-            let xi = x[i];
-            let mut acc = [0.0; 3];
-            for &j in list.of(i) {
-                let xj = x[j as usize];
-                let dx = near_image(xi[0] - xj[0], lengths[0], half[0]);
-                let dy = near_image(xi[1] - xj[1], lengths[1], half[1]);
-                let dz = near_image(xi[2] - xj[2], lengths[2], half[2]);
-                let r2 = dx * dx + dy * dy + dz * dz;
-                // Branch-free: pairs beyond the cut-off are evaluated at r = r_c and masked
-                // (about 30 % of a list with a 0.3σ skin; a branch on them mispredicts).
-                let inside = r2 < rc2;
-                let (u, f_over_r) = potential.energy_force(if inside { r2 } else { rc2 });
-                let (u, f_over_r) = if inside { (u, f_over_r) } else { (0.0, 0.0) };
-                acc[0] += f_over_r * dx;
-                acc[1] += f_over_r * dy;
-                acc[2] += f_over_r * dz;
-                u_sum += u;
-                w_sum += f_over_r * r2;
+    let order = list.order();
+    scratch
+        .slabs
+        .resize_with(list.slab_count(), Default::default);
+    let slab_task =
+        |(s, (slab, (xl, fl))): (usize, (&SlabList, &mut SlabBuffers))| -> (Real, Real) {
+            let (own, next) = list.slab_sizes(s);
+            let lo = list.bounds[s];
+            xl.clear();
+            xl.extend(order[lo..lo + own].iter().map(|&i| x[i as usize]));
+            if let Some(t) = list.next[s] {
+                let lo_next = list.bounds[t];
+                // Across the periodic x edge: shifted so no pair needs the x minimum image.
+                let shift = if slab.shift_next { lengths[0] } else { 0.0 };
+                xl.extend(order[lo_next..lo_next + next].iter().map(|&i| {
+                    let p = x[i as usize];
+                    [p[0] + shift, p[1], p[2]]
+                }));
             }
-            *fi = acc;
-        }
-        (0.5 * u_sum, 0.5 * w_sum)
-    };
+            fl.clear();
+            fl.resize(own + next, [0.0; 3]);
+            pair_kernel(potential, (lengths, half), rc2, slab, own, xl, fl)
+        };
     let partial: Vec<(Real, Real)> = match pool {
-        Some(pool) => pool.install(|| f.par_chunks_mut(CHUNK).enumerate().map(kernel).collect()),
-        None => f.chunks_mut(CHUNK).enumerate().map(kernel).collect(),
+        Some(pool) => pool.install(|| {
+            list.slabs
+                .par_iter()
+                .zip(scratch.slabs.par_iter_mut())
+                .enumerate()
+                .map(slab_task)
+                .collect()
+        }),
+        None => list
+            .slabs
+            .iter()
+            .zip(scratch.slabs.iter_mut())
+            .enumerate()
+            .map(slab_task)
+            .collect(),
     };
+    let slabs = &scratch.slabs;
+    let gather = |(c, out): (usize, &mut [[Real; 3]])| {
+        for (k, fi) in out.iter_mut().enumerate() {
+            let r = list.cells.rank[c * CHUNK + k] as usize;
+            let s = list.slab_of[r] as usize;
+            let local = r - list.bounds[s];
+            let mut sum = slabs[s].1[local];
+            if let Some(p) = list.prev[s] {
+                let other = slabs[p].1[list.slab_sizes(p).0 + local];
+                for a in 0..3 {
+                    sum[a] += other[a];
+                }
+            }
+            *fi = sum;
+        }
+    };
+    match pool {
+        Some(pool) => pool.install(|| f.par_chunks_mut(CHUNK).enumerate().for_each(gather)),
+        None => f.chunks_mut(CHUNK).enumerate().for_each(gather),
+    }
     let mut sums = PairSums::default();
     for (u, w) in partial {
         sums.potential += u;
         sums.virial += w;
     }
     sums
+}
+
+/// One slab's pairs: forces into `fl` (indexed like `xl`: own particles, then the next
+/// slab's), returning the slab's energy and virial.
+#[inline(never)]
+fn pair_kernel<P: PairPotential>(
+    potential: &P,
+    box_: ([Real; 3], [Real; 3]),
+    rc2: Real,
+    slab: &SlabList,
+    own: usize,
+    xl: &[[Real; 3]],
+    fl: &mut [[Real; 3]],
+) -> (Real, Real) {
+    let (mut u_sum, mut w_sum) = (0.0, 0.0);
+    for i in 0..own {
+        let nb = &slab.neighbours[slab.start[i]..slab.start[i + 1]];
+        let (acc, u, w) = if slab.wraps[i] {
+            row::<P, true>(potential, box_, rc2, xl[i], nb, xl, fl)
+        } else {
+            row::<P, false>(potential, box_, rc2, xl[i], nb, xl, fl)
+        };
+        u_sum += u;
+        w_sum += w;
+        let fi = &mut fl[i];
+        fi[0] += acc[0];
+        fi[1] += acc[1];
+        fi[2] += acc[2];
+    }
+    (u_sum, w_sum)
+}
+
+/// The pairs of one particle at `xi` with its listed partners `nb`: their reactions go into
+/// `fl`, the particle's own force, the energy and the virial are returned. `WRAP`: apply
+/// the minimum image (`box_` = lengths and half-lengths), else the plain difference.
+#[inline]
+fn row<P: PairPotential, const WRAP: bool>(
+    potential: &P,
+    (lengths, half): ([Real; 3], [Real; 3]),
+    rc2: Real,
+    xi: [Real; 3],
+    nb: &[u32],
+    xl: &[[Real; 3]],
+    fl: &mut [[Real; 3]],
+) -> ([Real; 3], Real, Real) {
+    let (mut acc, mut u_sum, mut w_sum) = ([0.0; 3], 0.0, 0.0);
+    for &w in nb {
+        let w = w as usize;
+        let xj = xl[w];
+        let (mut dx, mut dy, mut dz) = (xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
+        if WRAP {
+            dx = near_image(dx, lengths[0], half[0]);
+            dy = near_image(dy, lengths[1], half[1]);
+            dz = near_image(dz, lengths[2], half[2]);
+        }
+        let r2 = dx * dx + dy * dy + dz * dz;
+        // Branch-free: pairs beyond the cut-off are evaluated at r = r_c and multiplied
+        // by 0 (about 30 % of a list with a 0.3σ skin; a branch on them mispredicts,
+        // and LLVM turns a select of the results back into one).
+        let mask = Real::from(u8::from(r2 < rc2));
+        let (u, f_over_r) = potential.energy_force(r2.min(rc2));
+        let (u, f_over_r) = (mask * u, mask * f_over_r);
+        let (fx, fy, fz) = (f_over_r * dx, f_over_r * dy, f_over_r * dz);
+        acc[0] += fx;
+        acc[1] += fy;
+        acc[2] += fz;
+        let fj = &mut fl[w];
+        fj[0] -= fx;
+        fj[1] -= fy;
+        fj[2] -= fz;
+        u_sum += u;
+        w_sum += f_over_r * r2;
+    }
+    (acc, u_sum, w_sum)
 }
 
 /// The same sums over all pairs (minimum image, no list): the O(N²) reference the

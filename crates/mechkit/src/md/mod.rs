@@ -1,14 +1,16 @@
 //! Many-particle molecular dynamics: pair potentials with a cut-off in a periodic box.
 //!
 //! N equal particles interact through a central pair potential cut at r_c
-//! ([`LennardJones`], [`SoftSphere`], [`LinearSpring`]). Pairs are found through cell lists
-//! and a full Verlet [`NeighbourList`] with a skin, rebuilt automatically when a particle has
-//! moved more than half the skin; periodic axes use the minimum image ([`SimBox`], 1-D to
-//! 3-D). [`Md`] advances the system by velocity Verlet, starting from a [`Lattice`] (chain,
+//! ([`LennardJones`], [`SoftSphere`], [`LinearSpring`]). Pairs are found through a cell list
+//! (particles sorted by cell) and a half Verlet [`NeighbourList`] with a skin, each pair once,
+//! rebuilt automatically when a particle has moved more than half the skin; periodic axes use
+//! the minimum image ([`SimBox`], 1-D to 3-D). [`Md`] advances the system by velocity Verlet, starting from a [`Lattice`] (chain,
 //! square, hexagonal, simple cubic, fcc) and [`maxwell_boltzmann`] velocities with zero
 //! momentum from a seeded generator ([`Xoshiro256`]). Observables: energies, temperature,
 //! virial pressure ([`Thermo`]), g(r) and the mean-square displacement; frames as extended
-//! XYZ. Forces run on `threads` threads with a result bit-identical to the serial one.
+//! XYZ; initial particles may be read from a small CSV or XYZ file ([`AtomsFile`]). Forces
+//! run on `threads` threads over a fixed split of the box into slabs, with a result
+//! bit-identical to the serial one.
 //!
 //! Units: whatever consistent set the caller uses, with k_B = 1 (temperatures are k_B T).
 //! The LJ presets use reduced units: σ = ε = m = 1, time in τ = σ √(m/ε), temperature in
@@ -26,6 +28,8 @@
 //! assert!((md.thermo().total - e0).abs() < 1e-2 * e0.abs());
 //! ```
 
+mod atoms_file;
+mod cell_list;
 mod error;
 mod forces;
 mod lattice;
@@ -38,8 +42,9 @@ mod system;
 mod velocities;
 mod xyz;
 
+pub use atoms_file::AtomsFile;
 pub use error::MdError;
-pub use forces::{PairSums, all_pairs_forces, compute_forces};
+pub use forces::{ForceScratch, PairSums, all_pairs_forces, compute_forces, compute_forces_with};
 pub use lattice::Lattice;
 pub use neighbour::NeighbourList;
 pub use observe::Thermo;

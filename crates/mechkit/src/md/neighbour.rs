@@ -1,19 +1,26 @@
-//! Cell lists and Verlet neighbour lists with a skin.
+//! Half Verlet neighbour lists with a skin, over slabs of a sorted cell list.
 //!
-//! Particles are binned into cells at least `r_c + skin` wide (the `CellList`); each
-//! particle's neighbours within `r_c + skin` are then found in the cells at most two away
-//! (cells half as wide: 5^d of them), instead of among all N. The list is FULL (every pair appears for both
-//! partners, in a fixed order) so that each particle's force is a sum it owns, computed in the
-//! same order whatever the number of threads: the price is twice the pair evaluations of a
-//! half list, the gain is bit-identical serial and parallel runs without per-thread force
-//! buffers. The list stays valid until some particle has moved more than skin/2 since it was
-//! built (then no pair can have come from beyond `r_c + skin` to within `r_c`).
+//! The particles are sorted by cell ([`CellList`](super::cell_list)) and the x-layers of
+//! cells are grouped into `S` slabs, each at least `REACH` layers (so at least `range`)
+//! thick; `S` depends on the box and the range only, never on the threads. Every pair closer
+//! than `range` is listed ONCE, by the slab of one partner, and its other partner lies in the
+//! same slab or in the NEXT one (x + 1, periodically): a pair inside a slab belongs to the
+//! partner with the lower sorted index, a pair across two slabs to the particle in the
+//! earlier one. Each slab's list indexes a local array `[own particles | next slab's
+//! particles]`, so a slab's forces accumulate into its own buffer and the slabs run in
+//! parallel; particle k's force is then its own slab's entry plus the previous slab's, in
+//! that order (see [`compute_forces`](super::compute_forces)). Same slabs and order on one
+//! thread or many: bit-identical results.
+//!
+//! The list stays valid until some particle has moved more than skin/2 since it was built
+//! (then no pair can have come from beyond `r_c + skin` to within `r_c`).
 
 use rayon::prelude::*;
 
 use crate::Real;
 
 use super::SimBox;
+use super::cell_list::{CellList, REACH};
 
 /// Half the box length on periodic axes, ∞ on open ones.
 pub(crate) fn half_lengths(sim_box: &SimBox) -> [Real; 3] {
@@ -30,131 +37,68 @@ pub(crate) fn near_image(d: Real, l: Real, half: Real) -> Real {
     d + up - down
 }
 
-/// Particles per work unit; fixed, so the order of every sum is independent of the threads.
-pub(crate) const CHUNK: usize = 512;
+/// The half list of one slab: the partners of its particle `i` (local index) are
+/// `neighbours[start[i]..start[i + 1]]`, local indices into `[own | next slab]`.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct SlabList {
+    pub(crate) start: Vec<usize>,
+    pub(crate) neighbours: Vec<u32>,
+    /// Whether a particle may have partners across a periodic edge (its cell is within
+    /// REACH cells of one, the x edge excepted when the next slab is copied shifted by
+    /// L_x): only those need the minimum-image test per pair.
+    pub(crate) wraps: Vec<bool>,
+    /// Whether the next slab's positions are copied shifted by +L_x (the last slab's next
+    /// is the first, across the periodic x edge).
+    pub(crate) shift_next: bool,
+}
 
-/// Cells are at least range / REACH wide and a particle's neighbours are searched REACH
-/// cells away: (2·REACH + 1)^d cells of volume (range/REACH)^d, closer to the sphere of
-/// radius `range` than 3^d cells of width `range` (≈ 290 candidates instead of ≈ 500 at the
-/// LJ melt's density).
-const REACH: usize = 2;
-
-/// A compressed full neighbour list: the neighbours of particle `i` are
-/// `neighbours[start[i]..start[i + 1]]`.
+/// A half neighbour list over slabs of particles sorted by cell.
 #[derive(Debug, Clone, Default)]
 pub struct NeighbourList {
-    start: Vec<usize>,
-    neighbours: Vec<u32>,
     range: Real,
+    pub(crate) cells: CellList,
+    /// Slab s holds the sorted particles `bounds[s]..bounds[s + 1]`.
+    pub(crate) bounds: Vec<usize>,
+    /// The slab after each slab, if any.
+    pub(crate) next: Vec<Option<usize>>,
+    /// The slab before each slab, if any.
+    pub(crate) prev: Vec<Option<usize>>,
+    /// The slab of each sorted particle.
+    pub(crate) slab_of: Vec<u32>,
+    pub(crate) slabs: Vec<SlabList>,
+    /// Scratch: the slab of each x-layer of cells.
+    layer_slab: Vec<usize>,
 }
 
-/// Particles binned into cells of at least `range / REACH` along each axis.
-struct CellList {
-    n: [usize; 3],
-    origin: [Real; 3],
-    width: [Real; 3],
-    /// Particles sorted by cell; those of cell c are `atoms[first[c]..first[c + 1]]`.
-    first: Vec<usize>,
-    atoms: Vec<u32>,
-    /// Their positions in the same order, so a cell's atoms are read contiguously.
-    sorted: Vec<[Real; 3]>,
-    /// For each axis and each cell index along it, the distinct adjacent cell indices.
-    adjacent: [Vec<Vec<usize>>; 3],
-}
-
-impl CellList {
-    fn build(sim_box: &SimBox, x: &[[Real; 3]], range: Real) -> Self {
-        let lengths = sim_box.lengths();
-        let periodic = sim_box.is_periodic();
-        let mut n = [1usize; 3];
-        let mut origin = [0.0; 3];
-        let mut width = [1.0; 3];
-        for a in 0..3 {
-            let (lo, extent) = if periodic[a] {
-                (0.0, lengths[a])
-            } else {
-                let lo = x.iter().map(|p| p[a]).fold(Real::INFINITY, Real::min);
-                let hi = x.iter().map(|p| p[a]).fold(Real::NEG_INFINITY, Real::max);
-                if x.is_empty() {
-                    (0.0, 0.0)
-                } else {
-                    (lo, hi - lo)
-                }
-            };
-            n[a] = ((REACH as Real * extent / range).floor() as usize).clamp(1, 1 << 10);
-            origin[a] = lo;
-            width[a] = if extent > 0.0 {
-                extent / n[a] as Real
-            } else {
-                1.0
-            };
+/// Appends `first + k` for each candidate k closer to `xi` than √r2 (minimum image if
+/// `WRAP`), by branch-free compaction: every candidate is written and those in range kept
+/// (a branch on them would mispredict often).
+#[inline]
+fn scan<const WRAP: bool>(
+    xi: [Real; 3],
+    candidates: &[[Real; 3]],
+    first: u32,
+    r2: Real,
+    (lengths, half): ([Real; 3], [Real; 3]),
+    out: &mut Vec<u32>,
+) {
+    let mut k = out.len();
+    out.resize(k + candidates.len(), 0);
+    for (j, xj) in (first..).zip(candidates) {
+        let (mut dx, mut dy, mut dz) = (xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
+        if WRAP {
+            dx = near_image(dx, lengths[0], half[0]);
+            dy = near_image(dy, lengths[1], half[1]);
+            dz = near_image(dz, lengths[2], half[2]);
         }
-        let adjacent = std::array::from_fn(|a| {
-            (0..n[a])
-                .map(|c| {
-                    let mut v: Vec<usize> = Vec::with_capacity(2 * REACH + 1);
-                    for d in -(REACH as i64)..=REACH as i64 {
-                        let k = c as i64 + d;
-                        let k = if periodic[a] {
-                            k.rem_euclid(n[a] as i64)
-                        } else if (0..n[a] as i64).contains(&k) {
-                            k
-                        } else {
-                            continue;
-                        };
-                        if !v.contains(&(k as usize)) {
-                            v.push(k as usize);
-                        }
-                    }
-                    v
-                })
-                .collect()
-        });
-        let cell_of = |p: &[Real; 3]| {
-            let mut c = 0;
-            for a in 0..3 {
-                let k = (((p[a] - origin[a]) / width[a]).floor() as i64).clamp(0, n[a] as i64 - 1);
-                c = c * n[a] + k as usize;
-            }
-            c
-        };
-        let cells = n[0] * n[1] * n[2];
-        let mut first = vec![0usize; cells + 1];
-        let which: Vec<usize> = x.iter().map(cell_of).collect();
-        for &c in &which {
-            first[c + 1] += 1;
-        }
-        for c in 0..cells {
-            first[c + 1] += first[c];
-        }
-        let mut fill = first.clone();
-        let mut atoms = vec![0u32; x.len()];
-        for (i, &c) in which.iter().enumerate() {
-            atoms[fill[c]] = i as u32;
-            fill[c] += 1;
-        }
-        let sorted = atoms.iter().map(|&i| x[i as usize]).collect();
-        Self {
-            n,
-            origin,
-            width,
-            first,
-            atoms,
-            sorted,
-            adjacent,
-        }
+        out[k] = j;
+        k += usize::from(dx * dx + dy * dy + dz * dz < r2);
     }
-
-    fn coords(&self, p: &[Real; 3]) -> [usize; 3] {
-        std::array::from_fn(|a| {
-            (((p[a] - self.origin[a]) / self.width[a]).floor() as i64)
-                .clamp(0, self.n[a] as i64 - 1) as usize
-        })
-    }
+    out.truncate(k);
 }
 
 impl NeighbourList {
-    /// The full list of pairs closer than `range` (minimum image on periodic axes), built
+    /// The half list of pairs closer than `range` (minimum image on periodic axes), built
     /// through a cell list, on `pool` when given (same result either way). Positions must
     /// lie in the box on periodic axes ([`SimBox::wrap`]).
     pub fn build(
@@ -163,69 +107,182 @@ impl NeighbourList {
         range: Real,
         pool: Option<&rayon::ThreadPool>,
     ) -> Self {
-        let cells = CellList::build(sim_box, x, range);
-        let r2 = range * range;
+        let mut list = Self::default();
+        list.rebuild(sim_box, x, range, pool);
+        list
+    }
+
+    /// Rebuilds the list in place for new positions, reusing its buffers.
+    pub fn rebuild(
+        &mut self,
+        sim_box: &SimBox,
+        x: &[[Real; 3]],
+        range: Real,
+        pool: Option<&rayon::ThreadPool>,
+    ) {
+        self.range = range;
+        self.cells.rebuild(sim_box, x, range, pool);
+        self.split_slabs(sim_box.is_periodic()[0]);
         let lengths = sim_box.lengths();
-        let half = half_lengths(sim_box);
-        let chunk_lists = |chunk: usize| -> (Vec<usize>, Vec<u32>) {
-            let lo = chunk * CHUNK;
-            let hi = (lo + CHUNK).min(x.len());
-            let mut counts = Vec::with_capacity(hi - lo);
-            let mut list = Vec::with_capacity((hi - lo) * 80);
-            for (i, &xi) in x.iter().enumerate().take(hi).skip(lo) {
-                let before = list.len();
-                let c = cells.coords(&xi);
-                for &cx in &cells.adjacent[0][c[0]] {
-                    for &cy in &cells.adjacent[1][c[1]] {
-                        for &cz in &cells.adjacent[2][c[2]] {
-                            let cell = (cx * cells.n[1] + cy) * cells.n[2] + cz;
-                            let (lo, hi) = (cells.first[cell], cells.first[cell + 1]);
-                            for (xj, &j) in cells.sorted[lo..hi].iter().zip(&cells.atoms[lo..hi]) {
-                                let dx = near_image(xi[0] - xj[0], lengths[0], half[0]);
-                                let dy = near_image(xi[1] - xj[1], lengths[1], half[1]);
-                                let dz = near_image(xi[2] - xj[2], lengths[2], half[2]);
-                                if dx * dx + dy * dy + dz * dz < r2 && j as usize != i {
-                                    list.push(j);
-                                }
+        let box_ = (lengths, half_lengths(sim_box));
+        let periodic = sim_box.is_periodic();
+        let single = self.slabs.len() == 1;
+        let r2 = range * range;
+        let (cells, bounds, next, layer_slab) =
+            (&self.cells, &self.bounds, &self.next, &self.layer_slab);
+        let build_slab = |(s, list): (usize, &mut SlabList)| {
+            let (lo, hi) = (bounds[s], bounds[s + 1]);
+            let lo_next = next[s].map_or(0, |t| bounds[t]);
+            let own = hi - lo;
+            list.start.clear();
+            list.neighbours.clear();
+            list.wraps.clear();
+            list.shift_next = next[s].is_some_and(|t| t < s);
+            list.start.push(0);
+            for i in lo..hi {
+                let xi = cells.sorted[i];
+                let c = cells.coords(cells.cell[i]);
+                let edge = |a: usize| periodic[a] && (c[a] < REACH || c[a] + REACH >= cells.n[a]);
+                let wraps = (single && edge(0)) || edge(1) || edge(2);
+                list.wraps.push(wraps);
+                for &cx in cells.adjacent[0][c[0]].as_slice() {
+                    let t = layer_slab[cx as usize];
+                    let same = t == s;
+                    if !same && next[s] != Some(t) {
+                        continue;
+                    }
+                    for &cy in cells.adjacent[1][c[1]].as_slice() {
+                        // The z-adjacent cells in runs: each run is one range of atoms.
+                        for &(z0, z1) in cells.adjacent[2][c[2]].runs() {
+                            let row = (cx as usize * cells.n[1] + cy as usize) * cells.n[2];
+                            let (mut a, b) = (
+                                cells.first[row + z0 as usize],
+                                cells.first[row + z1 as usize + 1],
+                            );
+                            // Inside the slab the lower sorted index owns the pair.
+                            let base = if same {
+                                a = a.max(i + 1);
+                                lo
+                            } else {
+                                lo_next
+                            };
+                            let offset = if same { 0 } else { own };
+                            if a >= b {
+                                continue;
+                            }
+                            let first = (a - base + offset) as u32;
+                            let shift = if !same && list.shift_next {
+                                lengths[0]
+                            } else {
+                                0.0
+                            };
+                            let xi = [xi[0] - shift, xi[1], xi[2]];
+                            let candidates = &cells.sorted[a..b];
+                            if wraps {
+                                scan::<true>(xi, candidates, first, r2, box_, &mut list.neighbours);
+                            } else {
+                                scan::<false>(
+                                    xi,
+                                    candidates,
+                                    first,
+                                    r2,
+                                    box_,
+                                    &mut list.neighbours,
+                                );
                             }
                         }
                     }
                 }
-                counts.push(list.len() - before);
+                list.start.push(list.neighbours.len());
             }
-            (counts, list)
         };
-        let chunks = x.len().div_ceil(CHUNK);
-        let parts: Vec<(Vec<usize>, Vec<u32>)> = match pool {
-            Some(pool) => pool.install(|| (0..chunks).into_par_iter().map(chunk_lists).collect()),
-            None => (0..chunks).map(chunk_lists).collect(),
-        };
-        let total = parts.iter().map(|p| p.1.len()).sum();
-        let mut start = Vec::with_capacity(x.len() + 1);
-        let mut neighbours = Vec::with_capacity(total);
-        start.push(0);
-        for (counts, list) in parts {
-            for c in counts {
-                start.push(start.last().copied().unwrap_or(0) + c);
-            }
-            neighbours.extend_from_slice(&list);
-        }
-        Self {
-            start,
-            neighbours,
-            range,
+        match pool {
+            Some(pool) => pool.install(|| {
+                self.slabs.par_iter_mut().enumerate().for_each(build_slab);
+            }),
+            None => self.slabs.iter_mut().enumerate().for_each(build_slab),
         }
     }
 
-    /// The neighbours of particle `i`.
+    /// Groups the x-layers of cells into slabs at least REACH layers thick.
+    fn split_slabs(&mut self, periodic_x: bool) {
+        let layers = self.cells.n[0];
+        let mut count = (layers / REACH).max(1);
+        // Periodic: with two slabs each would be the other's next; use one.
+        if periodic_x && count < 3 {
+            count = 1;
+        }
+        self.layer_slab.clear();
+        self.layer_slab
+            .extend((0..layers).map(|l| l * count / layers));
+        let per_layer = self.cells.n[1] * self.cells.n[2];
+        self.bounds.clear();
+        self.bounds.push(0);
+        for l in 1..layers {
+            if self.layer_slab[l] != self.layer_slab[l - 1] {
+                self.bounds.push(self.cells.first[l * per_layer]);
+            }
+        }
+        self.bounds.push(self.cells.order.len());
+        self.next.clear();
+        self.prev.clear();
+        for s in 0..count {
+            let next = if s + 1 < count {
+                Some(s + 1)
+            } else if periodic_x && count >= 3 {
+                Some(0)
+            } else {
+                None
+            };
+            self.next.push(next);
+            let prev = if s > 0 {
+                Some(s - 1)
+            } else if periodic_x && count >= 3 {
+                Some(count - 1)
+            } else {
+                None
+            };
+            self.prev.push(prev);
+        }
+        self.slab_of.clear();
+        for s in 0..count {
+            let n = self.bounds[s + 1] - self.bounds[s];
+            self.slab_of.extend(std::iter::repeat_n(s as u32, n));
+        }
+        self.slabs.resize_with(count, SlabList::default);
+    }
+
+    /// The number of particles of slab `s` and of its next slab.
     #[inline]
-    pub fn of(&self, i: usize) -> &[u32] {
-        &self.neighbours[self.start[i]..self.start[i + 1]]
+    pub(crate) fn slab_sizes(&self, s: usize) -> (usize, usize) {
+        let own = self.bounds[s + 1] - self.bounds[s];
+        let next = self.next[s].map_or(0, |t| self.bounds[t + 1] - self.bounds[t]);
+        (own, next)
+    }
+
+    /// Every listed pair once, as original particle indices `(i, j)`.
+    pub fn pairs(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.slabs.iter().enumerate().flat_map(move |(s, list)| {
+            let (lo, own) = (self.bounds[s], self.bounds[s + 1] - self.bounds[s]);
+            let lo_next = self.next[s].map_or(0, |t| self.bounds[t]);
+            (0..own).flat_map(move |i| {
+                list.neighbours[list.start[i]..list.start[i + 1]]
+                    .iter()
+                    .map(move |&w| {
+                        let w = w as usize;
+                        let j = if w < own { lo + w } else { lo_next + w - own };
+                        (
+                            self.cells.order[lo + i] as usize,
+                            self.cells.order[j] as usize,
+                        )
+                    })
+            })
+        })
     }
 
     /// The number of particles listed.
     pub fn len(&self) -> usize {
-        self.start.len().saturating_sub(1)
+        self.cells.order.len()
     }
 
     /// Whether no particle is listed.
@@ -233,13 +290,23 @@ impl NeighbourList {
         self.len() == 0
     }
 
-    /// The number of (ordered) pairs: twice the number of distinct pairs.
-    pub fn pairs(&self) -> usize {
-        self.neighbours.len()
+    /// The number of distinct pairs listed.
+    pub fn pair_count(&self) -> usize {
+        self.slabs.iter().map(|s| s.neighbours.len()).sum()
+    }
+
+    /// The number of slabs the work is split into (set by the box and the range only).
+    pub fn slab_count(&self) -> usize {
+        self.slabs.len()
     }
 
     /// The range it was built for, `r_c + skin`.
     pub fn range(&self) -> Real {
         self.range
+    }
+
+    /// The sorted order: `order()[k]` is the original index of the k-th particle by cell.
+    pub fn order(&self) -> &[u32] {
+        &self.cells.order
     }
 }

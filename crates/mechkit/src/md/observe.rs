@@ -95,13 +95,12 @@ impl<P: PairPotential> Md<P> {
         let bins = bins.max(1);
         let width = r_max / bins as Real;
         let mut hist = vec![0usize; bins];
-        for i in 0..self.len() {
-            for &j in self.list.of(i) {
-                let d = self.sim_box.separation(&self.x[i], &self.x[j as usize]);
-                let r = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-                if r < r_max {
-                    hist[((r / width) as usize).min(bins - 1)] += 1;
-                }
+        // Each pair once: it counts for both partners.
+        for (i, j) in self.list.pairs() {
+            let d = self.sim_box.separation(&self.x[i], &self.x[j]);
+            let r = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            if r < r_max {
+                hist[((r / width) as usize).min(bins - 1)] += 2;
             }
         }
         let n = self.len() as Real;

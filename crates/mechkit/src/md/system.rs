@@ -2,13 +2,24 @@
 //!
 //! One step (Swope et al. 1982): v ← v + (dt/2m) F; x ← x + dt v; F ← F(x); v ← v + (dt/2m) F.
 //! The neighbour list is rebuilt (positions wrapped into the periodic box first) whenever
-//! some particle has moved more than half the skin since the last build. Nothing is
-//! allocated per step except on a rebuild.
+//! some particle has moved more than half the skin since the last build. The particles keep
+//! their original order here (the list sorts its own copies by cell), the per-particle
+//! loops run in fixed chunks on the thread pool when there is one, and buffers are reused:
+//! nothing is allocated per step or per rebuild once they have grown.
+
+use rayon::prelude::*;
 
 use crate::Real;
 
-use super::forces::compute_forces;
-use super::{MdError, NeighbourList, PairPotential, PairSums, SimBox};
+use super::forces::{CHUNK, compute_forces_with};
+use super::{ForceScratch, MdError, NeighbourList, PairPotential, PairSums, SimBox};
+
+/// One particle's position and velocity (updated) with its force and its position at the
+/// last list build.
+type DriftItem<'a> = (
+    (&'a mut [Real; 3], &'a mut [Real; 3]),
+    (&'a [Real; 3], &'a [Real; 3]),
+);
 
 /// Run settings of [`Md`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,6 +63,7 @@ pub struct Md<P: PairPotential> {
     pub(crate) x0: Vec<[Real; 3]>,
     pub(crate) list: NeighbourList,
     pub(crate) sums: PairSums,
+    scratch: ForceScratch,
     pool: Option<rayon::ThreadPool>,
     pub(crate) steps: usize,
     rebuilds: usize,
@@ -111,35 +123,54 @@ impl<P: PairPotential> Md<P> {
             shift: vec![[0.0; 3]; n],
             list: NeighbourList::default(),
             sums: PairSums::default(),
+            scratch: ForceScratch::default(),
             pool,
             steps: 0,
             rebuilds: 0,
         };
         md.rebuild();
-        md.sums = compute_forces(
-            &md.potential,
-            &md.sim_box,
-            &md.list,
-            &md.x,
-            &mut md.f,
-            md.pool.as_ref(),
-        );
+        md.update_forces();
         Ok(md)
     }
 
     /// Wraps the positions into the box and rebuilds the neighbour list.
     fn rebuild(&mut self) {
-        for (x, s) in self.x.iter_mut().zip(&mut self.shift) {
+        let sim_box = self.sim_box;
+        let wrap = |(x, s): (&mut [Real; 3], &mut [Real; 3])| {
             let before = *x;
-            self.sim_box.wrap(x);
+            sim_box.wrap(x);
             for a in 0..3 {
                 s[a] += before[a] - x[a];
             }
+        };
+        match &self.pool {
+            Some(pool) => pool.install(|| {
+                self.x
+                    .par_iter_mut()
+                    .zip(&mut self.shift)
+                    .with_min_len(CHUNK)
+                    .for_each(wrap);
+            }),
+            None => self.x.iter_mut().zip(&mut self.shift).for_each(wrap),
         }
         let range = self.potential.cutoff() + self.config.skin;
-        self.list = NeighbourList::build(&self.sim_box, &self.x, range, self.pool.as_ref());
+        self.list
+            .rebuild(&self.sim_box, &self.x, range, self.pool.as_ref());
         self.x_built.clone_from(&self.x);
         self.rebuilds += 1;
+    }
+
+    /// Forces, energy and virial at the current positions.
+    fn update_forces(&mut self) {
+        self.sums = compute_forces_with(
+            &self.potential,
+            &self.sim_box,
+            &self.list,
+            &self.x,
+            &mut self.f,
+            self.pool.as_ref(),
+            &mut self.scratch,
+        );
     }
 
     /// One velocity-Verlet step.
@@ -147,13 +178,8 @@ impl<P: PairPotential> Md<P> {
         let h = 0.5 * self.config.dt / self.config.mass;
         let dt = self.config.dt;
         let limit = 0.25 * self.config.skin * self.config.skin;
-        let mut moved_far = false;
-        for ((x, v), (f, x_b)) in self
-            .x
-            .iter_mut()
-            .zip(&mut self.v)
-            .zip(self.f.iter().zip(&self.x_built))
-        {
+        // Half kick and drift; reports whether the particle left its skin/2 sphere.
+        let drift = |((x, v), (f, x_b)): DriftItem<'_>| -> bool {
             let mut d2 = 0.0;
             for a in 0..3 {
                 v[a] += h * f[a];
@@ -161,23 +187,44 @@ impl<P: PairPotential> Md<P> {
                 let d = x[a] - x_b[a];
                 d2 += d * d;
             }
-            moved_far |= d2 > limit;
-        }
+            d2 > limit
+        };
+        let moved_far = match &self.pool {
+            Some(pool) => pool.install(|| {
+                self.x
+                    .par_iter_mut()
+                    .zip(&mut self.v)
+                    .zip(self.f.par_iter().zip(&self.x_built))
+                    .with_min_len(CHUNK)
+                    .map(drift)
+                    .reduce(|| false, |a, b| a | b)
+            }),
+            None => self
+                .x
+                .iter_mut()
+                .zip(&mut self.v)
+                .zip(self.f.iter().zip(&self.x_built))
+                .map(drift)
+                .fold(false, |a, b| a | b),
+        };
         if moved_far {
             self.rebuild();
         }
-        self.sums = compute_forces(
-            &self.potential,
-            &self.sim_box,
-            &self.list,
-            &self.x,
-            &mut self.f,
-            self.pool.as_ref(),
-        );
-        for (v, f) in self.v.iter_mut().zip(&self.f) {
+        self.update_forces();
+        let kick = |(v, f): (&mut [Real; 3], &[Real; 3])| {
             for a in 0..3 {
                 v[a] += h * f[a];
             }
+        };
+        match &self.pool {
+            Some(pool) => pool.install(|| {
+                self.v
+                    .par_iter_mut()
+                    .zip(&self.f)
+                    .with_min_len(CHUNK)
+                    .for_each(kick);
+            }),
+            None => self.v.iter_mut().zip(&self.f).for_each(kick),
         }
         self.steps += 1;
     }

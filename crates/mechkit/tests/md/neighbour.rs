@@ -1,7 +1,8 @@
 //! Neighbour-list forces, energy and virial equal the all-pairs sums (minimum image) to
 //! 1e-12 relative, on seeded random configurations: periodic and open boxes, 1-D, 2-D, 3-D,
-//! each pair law; and they still do after the particles have moved (a list kept valid by the
-//! skin rule).
+//! each pair law, one slab or many; and they still do after the particles have moved (a list
+//! kept valid by the skin rule). The half list holds each pair within range exactly once,
+//! and the per-slab reduction gives the same bits on 1, 2 and 3 threads.
 
 use mechkit::md::{
     Lattice, LennardJones, LinearSpring, Md, MdConfig, NeighbourList, PairPotential, SimBox,
@@ -50,6 +51,10 @@ fn periodic_lattices_with_jitter_match_all_pairs_to_1e_12() {
     for seed in 0..4 {
         let cases = [
             jittered(Lattice::Fcc, 4, 0.8442, 0.15, seed),
+            // 3 and 4 slabs: the smallest periodic split, where the last slab's next is
+            // the first.
+            jittered(Lattice::Fcc, 6, 0.8442, 0.15, seed),
+            jittered(Lattice::Fcc, 8, 0.8442, 0.15, seed),
             jittered(Lattice::SimpleCubic, 7, 0.6, 0.2, seed),
             jittered(Lattice::Hexagonal, 8, 0.8, 0.15, seed),
             jittered(Lattice::Square, 9, 0.7, 0.2, seed),
@@ -57,7 +62,12 @@ fn periodic_lattices_with_jitter_match_all_pairs_to_1e_12() {
         ];
         for (b, x) in &cases {
             let worst = compare(&lj, b, x);
-            assert!(worst < 1e-12, "dim {} seed {seed}: {worst:e}", b.dim());
+            assert!(
+                worst < 1e-12,
+                "dim {} n {} seed {seed}: {worst:e}",
+                b.dim(),
+                x.len()
+            );
         }
     }
 }
@@ -117,4 +127,93 @@ fn forces_during_a_run_equal_all_pairs() {
         }
     }
     assert!((md.pair_sums().potential - sums.potential).abs() < 1e-12 * sums.potential.abs());
+}
+
+/// The half list holds every pair closer than the range exactly once (as all-pairs
+/// minimum-image distances say), whatever the number of slabs, periodic or open.
+#[test]
+fn half_list_holds_each_pair_within_range_once() {
+    let open = SimBox::new(3, [20.0; 3], [false; 3]).unwrap();
+    let mut rng = Xoshiro256::seed(11);
+    let scattered: Vec<[f64; 3]> = (0..300)
+        .map(|_| std::array::from_fn(|_| 9.0 * rng.uniform()))
+        .collect();
+    let cases = [
+        (jittered(Lattice::Fcc, 4, 0.8442, 0.15, 1), 1),
+        (jittered(Lattice::Fcc, 6, 0.8442, 0.15, 2), 3),
+        (jittered(Lattice::Fcc, 8, 0.8442, 0.15, 3), 4),
+        (jittered(Lattice::Chain, 40, 1.0, 0.2, 4), 14),
+        ((open, scattered), 3),
+    ];
+    for ((b, x), slabs) in &cases {
+        let range = 2.8;
+        let list = NeighbourList::build(b, x, range, None);
+        assert_eq!(list.slab_count(), *slabs, "dim {}", b.dim());
+        let mut listed: Vec<(usize, usize)> =
+            list.pairs().map(|(i, j)| (i.min(j), i.max(j))).collect();
+        listed.sort_unstable();
+        let mut expected = Vec::new();
+        for i in 0..x.len() {
+            for j in i + 1..x.len() {
+                let d = b.separation(&x[i], &x[j]);
+                if d.iter().map(|c| c * c).sum::<f64>() < range * range {
+                    expected.push((i, j));
+                }
+            }
+        }
+        assert_eq!(list.pair_count(), expected.len());
+        assert!(listed == expected, "dim {} with {slabs} slabs", b.dim());
+    }
+}
+
+/// The slab count and the bits of the forces, energy and virial on `pool`.
+fn force_bits<P: PairPotential>(
+    law: &P,
+    b: &SimBox,
+    x: &[[f64; 3]],
+    pool: Option<&rayon::ThreadPool>,
+) -> (usize, Vec<u64>) {
+    let list = NeighbourList::build(b, x, law.cutoff() + 0.3, pool);
+    let mut f = vec![[0.0; 3]; x.len()];
+    let s = compute_forces(law, b, &list, x, &mut f, pool);
+    let bits = f
+        .iter()
+        .flatten()
+        .chain([&s.potential, &s.virial])
+        .map(|c| c.to_bits())
+        .collect();
+    (list.slab_count(), bits)
+}
+
+/// The list and the per-slab reduction give the same bits on 1, 2 and 3 threads, with many
+/// slabs (periodic fcc, 7 slabs; open box of soft spheres, 3 slabs).
+#[test]
+fn forces_are_bit_identical_on_1_2_3_threads_for_many_slabs() {
+    let pools: Vec<rayon::ThreadPool> = [2, 3]
+        .iter()
+        .map(|&t| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(t)
+                .build()
+                .unwrap()
+        })
+        .collect();
+    let lj = LennardJones::reduced(2.5).unwrap();
+    let (fcc_box, fcc) = jittered(Lattice::Fcc, 12, 0.8442, 0.15, 7);
+    let serial = force_bits(&lj, &fcc_box, &fcc, None);
+    assert_eq!(serial.0, 7);
+    for pool in &pools {
+        assert!(force_bits(&lj, &fcc_box, &fcc, Some(pool)) == serial);
+    }
+    let soft = SoftSphere::new(5.0, 1.0).unwrap();
+    let open = SimBox::new(3, [20.0; 3], [false; 3]).unwrap();
+    let mut rng = Xoshiro256::seed(8);
+    let cloud: Vec<[f64; 3]> = (0..400)
+        .map(|_| std::array::from_fn(|_| 5.0 * rng.uniform()))
+        .collect();
+    let serial = force_bits(&soft, &open, &cloud, None);
+    assert_eq!(serial.0, 3);
+    for pool in &pools {
+        assert!(force_bits(&soft, &open, &cloud, Some(pool)) == serial);
+    }
 }
