@@ -18,7 +18,10 @@ use clap::Parser;
 fn main() -> ExitCode {
     let cli = args::Cli::parse();
     // the commands whose loops look at the interrupt flag; the others end at Ctrl-C as usual
-    if matches!(cli.command, args::Command::Run(_) | args::Command::Sweep(_)) {
+    if matches!(
+        cli.command,
+        args::Command::Run(_) | args::Command::Sweep(_) | args::Command::Md(_)
+    ) {
         catch_interrupts();
     }
     match commands::dispatch(cli) {

@@ -62,7 +62,16 @@ fn run<P: PairPotential>(args: &MdArgs, s: Setup, potential: P) -> Result<Outcom
     }
     let start = Instant::now();
     let mut failure = None;
+    let mut interrupted = false;
     for step in 1..=args.steps {
+        if mechkit::simulate::interrupt::requested() {
+            // Ctrl-C: the thermo row of the state reached, then the outputs as usual
+            interrupted = true;
+            if rows.last().is_none_or(|r| r.step != md.steps()) {
+                rows.push(md.thermo());
+            }
+            break;
+        }
         if let Err(e) = md.run(1) {
             failure = Some(e);
             break;
@@ -138,6 +147,13 @@ fn run<P: PairPotential>(args: &MdArgs, s: Setup, potential: P) -> Result<Outcom
     if let Some(e) = failure {
         eprintln!("error: {e}");
         return Ok(Outcome::ComputationFailed);
+    }
+    if interrupted {
+        eprintln!(
+            "interrupted after {} steps: the outputs hold the run up to there",
+            md.steps()
+        );
+        return Ok(Outcome::Interrupted);
     }
     Ok(Outcome::Success)
 }

@@ -80,9 +80,10 @@ fn check_outputs(dir: &Dir) {
     assert!(t_end > 0.0 && t_end < 1e7, "t_end = {t_end}");
     let csv = Csv::parse(&dir.read("out/trajectory.csv"));
     assert!(csv.rows.len() >= 2);
-    // the last row is the state the run stopped in
+    // the last row is the state the run stopped in (the CSV writes 15 significant digits)
     let t = csv.column("t");
-    assert_eq!(csv.rows.last().unwrap()[t], t_end);
+    let last = csv.rows.last().unwrap()[t];
+    assert!((last - t_end).abs() <= 1e-14 * t_end, "{last} vs {t_end}");
 }
 
 #[test]
@@ -113,4 +114,37 @@ fn ctrl_c_in_the_fused_kernel_keeps_the_outputs() {
     check_outputs(&dir);
     let s = dir.read_json("out/summary.json");
     assert!(num(&s, "/step_control/fused_steps") > 0.0);
+}
+
+#[test]
+fn ctrl_c_during_md_writes_the_thermo_so_far() {
+    let dir = Dir::new();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_mechkit"))
+        .args([
+            "md",
+            "--cells",
+            "4",
+            "--steps",
+            "100000000",
+            "--thermo-every",
+            "10",
+        ])
+        .args(["--out", "out"])
+        .current_dir(dir.path())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("mechkit starts");
+    std::thread::sleep(Duration::from_millis(500));
+    let kill = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .expect("kill runs");
+    assert!(kill.success());
+    let out = child.wait_with_output().expect("mechkit ends");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("interrupted after"), "{stderr}");
+    let thermo = dir.read("out/thermo.csv");
+    assert!(thermo.lines().count() >= 2, "{thermo}");
 }
