@@ -14,7 +14,7 @@
 use super::control::{
     AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller, Tolerance,
 };
-use super::explicit_rk::{Sparse, Stages, sparse};
+use super::stages::{Sparse, Stages, sparse};
 use super::state::State;
 use super::system::OdeSystem;
 use super::tableau::{DenseKind, Tableau};
@@ -250,13 +250,11 @@ impl AdaptiveRk {
                     non_finite: (0..=s).any(|l| self.stages.k(l).iter().any(|v| !v.is_finite())),
                 });
             }
-            let evals =
-                self.stages
-                    .compute(&self.tableau, sys, t, &state.y, h, &mut self.y_new, true);
+            let evals = self
+                .stages
+                .compute(&self.tableau, sys, t, &state.y, h, true);
             self.stats.evaluations += evals as u64;
-            for (yn, y) in self.y_new.iter_mut().zip(&state.y) {
-                *yn = y + h * *yn;
-            }
+            self.stages.solution_into(h, &mut self.y_new);
             let t_new = if last { t_bound } else { t + h };
             // f at the new point starts the next step; first-same-as-last pairs need it for
             // the error estimate too, the others only once the step is accepted
@@ -317,28 +315,30 @@ impl AdaptiveRk {
     fn error_norm(&mut self, h: Real, y: &[Real]) -> Real {
         let n = self.controlled(y.len());
         self.stages.combine_into(&self.err_w, &mut self.err_buf);
-        let v = if matches!(self.tableau.dense, DenseKind::Dop853) {
+        let combined = matches!(self.tableau.dense, DenseKind::Dop853);
+        if combined {
             self.stages.combine_into(&self.err_w3, &mut self.err_buf3);
-            let (mut e5, mut e3) = (0.0, 0.0);
-            for i in 0..n {
-                let sc = self.scale(i, y[i], self.y_new[i]);
-                let a = self.err_buf[i] / sc;
-                let b = self.err_buf3[i] / sc;
-                e5 += a * a;
-                e3 += b * b;
+        }
+        let (err, err3) = (&self.err_buf, combined.then_some(&self.err_buf3[..]));
+        let (e5, e3) = match (&self.config.atol, &self.config.rtol) {
+            (Tolerance::Scalar(atol), Tolerance::Scalar(rtol)) => {
+                let (atol, rtol) = (*atol, *rtol);
+                squared_sums(n, err, err3, y, &self.y_new, |_, a, b| {
+                    atol + rtol * a.abs().max(b.abs())
+                })
             }
+            (atol, rtol) => squared_sums(n, err, err3, y, &self.y_new, |i, a, b| {
+                atol.at(i) + rtol.at(i) * a.abs().max(b.abs())
+            }),
+        };
+        let v = if combined {
             let den = e5 + 0.01 * e3;
             if den == 0.0 {
                 return 0.0;
             }
             h.abs() * e5 / (den * n as Real).sqrt()
         } else {
-            let mut sum = 0.0;
-            for i in 0..n {
-                let e = self.err_buf[i] / self.scale(i, y[i], self.y_new[i]);
-                sum += e * e;
-            }
-            h.abs() * (sum / n as Real).sqrt()
+            h.abs() * (e5 / n as Real).sqrt()
         };
         if v.is_nan() { Real::INFINITY } else { v }
     }
@@ -358,6 +358,37 @@ impl AdaptiveRk {
     pub fn last_step(&self) -> (Real, Real) {
         (self.last_t0, self.last_t0 + self.last_h)
     }
+}
+
+/// `(Σ (e_i / sc_i)², Σ (e3_i / sc_i)²)` over the first `n` components, with `sc_i =
+/// scale(i, y_i, y_new,i)` (the second sum zero without `e3`).
+#[inline]
+fn squared_sums(
+    n: usize,
+    e: &[Real],
+    e3: Option<&[Real]>,
+    y: &[Real],
+    y_new: &[Real],
+    scale: impl Fn(usize, Real, Real) -> Real,
+) -> (Real, Real) {
+    let (e, y, y_new) = (&e[..n], &y[..n], &y_new[..n]);
+    let (mut s5, mut s3) = (0.0, 0.0);
+    if let Some(e3) = e3 {
+        let e3 = &e3[..n];
+        for i in 0..n {
+            let sc = scale(i, y[i], y_new[i]);
+            let a = e[i] / sc;
+            let b = e3[i] / sc;
+            s5 += a * a;
+            s3 += b * b;
+        }
+    } else {
+        for i in 0..n {
+            let v = e[i] / scale(i, y[i], y_new[i]);
+            s5 += v * v;
+        }
+    }
+    (s5, s3)
 }
 
 /// ln 1e-2 and ln 1e-4: the floors of the remembered errors.

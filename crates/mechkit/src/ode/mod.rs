@@ -26,6 +26,7 @@ mod hermite;
 mod method;
 pub mod reference;
 mod rk4;
+mod stages;
 mod state;
 mod stepper;
 mod symplectic;
