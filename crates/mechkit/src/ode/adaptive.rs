@@ -14,6 +14,7 @@
 use super::control::{
     AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller, Tolerance,
 };
+use super::fixed::{Dop853, Dopri5, FixedTableau, Kernel};
 use super::stages::{Sparse, Stages, sparse};
 use super::state::State;
 use super::system::OdeSystem;
@@ -26,6 +27,8 @@ pub struct AdaptiveRk {
     pub(super) tableau: Tableau,
     config: AdaptiveConfig,
     pub(super) stages: Stages,
+    /// The stage loops: unrolled with constant coefficients for DP5 and DOP853.
+    kernel: Kernel,
     /// Non-zero error weights (and DOP853's third-order ones).
     err_w: Sparse,
     err_w3: Sparse,
@@ -67,6 +70,7 @@ impl AdaptiveRk {
         let err_w = sparse(&tableau.e);
         Ok(Self {
             stages: Stages::new(&tableau),
+            kernel: Kernel::for_tableau(&tableau),
             fsal_in_error: err_w.iter().any(|(l, _)| *l == s),
             err_w,
             err_w3: sparse(&tableau.e3),
@@ -250,11 +254,26 @@ impl AdaptiveRk {
                     non_finite: (0..=s).any(|l| self.stages.k(l).iter().any(|v| !v.is_finite())),
                 });
             }
-            let evals = self
-                .stages
-                .compute(&self.tableau, sys, t, &state.y, h, true);
+            let evals = match self.kernel {
+                Kernel::Dopri5 => {
+                    let evals = self.stages.compute_fixed::<Dopri5, S>(sys, t, &state.y, h);
+                    self.stages.advance_fixed(Dopri5::B, h, &mut self.y_new);
+                    evals
+                }
+                Kernel::Dop853 => {
+                    let evals = self.stages.compute_fixed::<Dop853, S>(sys, t, &state.y, h);
+                    self.stages.advance_fixed(Dop853::B, h, &mut self.y_new);
+                    evals
+                }
+                Kernel::General => {
+                    let evals = self
+                        .stages
+                        .compute(&self.tableau, sys, t, &state.y, h, true);
+                    self.stages.solution_into(h, &mut self.y_new);
+                    evals
+                }
+            };
             self.stats.evaluations += evals as u64;
-            self.stages.solution_into(h, &mut self.y_new);
             let t_new = if last { t_bound } else { t + h };
             // f at the new point starts the next step; first-same-as-last pairs need it for
             // the error estimate too, the others only once the step is accepted
@@ -314,10 +333,19 @@ impl AdaptiveRk {
 
     fn error_norm(&mut self, h: Real, y: &[Real]) -> Real {
         let n = self.controlled(y.len());
-        self.stages.combine_into(&self.err_w, &mut self.err_buf);
         let combined = matches!(self.tableau.dense, DenseKind::Dop853);
-        if combined {
-            self.stages.combine_into(&self.err_w3, &mut self.err_buf3);
+        match self.kernel {
+            Kernel::Dopri5 => self.stages.combine_fixed(Dopri5::E, &mut self.err_buf),
+            Kernel::Dop853 => {
+                self.stages.combine_fixed(Dop853::E, &mut self.err_buf);
+                self.stages.combine_fixed(Dop853::E3, &mut self.err_buf3);
+            }
+            Kernel::General => {
+                self.stages.combine_into(&self.err_w, &mut self.err_buf);
+                if combined {
+                    self.stages.combine_into(&self.err_w3, &mut self.err_buf3);
+                }
+            }
         }
         let (err, err3) = (&self.err_buf, combined.then_some(&self.err_buf3[..]));
         let (e5, e3) = match (&self.config.atol, &self.config.rtol) {

@@ -22,6 +22,7 @@ mod dop853;
 mod euler;
 mod euler_cromer;
 mod explicit_rk;
+mod fixed;
 mod hermite;
 mod method;
 pub mod reference;

@@ -8,6 +8,7 @@
 //! the plain loops (`c₀ k₀ + c₁ k₁ + …` from the left, then `y + h ·`), so the results are the
 //! same bit for bit.
 
+use super::fixed::FixedTableau;
 use super::stepper::Provided;
 use super::system::OdeSystem;
 use super::tableau::Tableau;
@@ -53,17 +54,23 @@ fn block_sum(k: &[Block], nb: usize, row: &[(usize, Real)], b: usize) -> Block {
     acc
 }
 
-/// Writes the first `out.len()` components of `blocks` into `out`.
-#[inline]
-fn unpack(blocks: impl Iterator<Item = Block>, out: &mut [Real]) {
+/// The number of blocks: `NB` when it is fixed at compile time (not 0), else `nb`.
+#[allow(clippy::inline_always)] // as `block_sum`
+#[inline(always)]
+fn blocks<const NB: usize>(nb: usize) -> usize {
+    if NB == 0 { nb } else { NB }
+}
+
+/// Writes the first `out.len()` (at most [`LANES`]) components of `b` into `out`.
+#[allow(clippy::inline_always)] // as `block_sum`
+#[inline(always)]
+fn store(b: Block, out: &mut [Real]) {
     // element by element: a copy of unknown length would be a call to `memcpy`
-    for (o, b) in out.chunks_mut(LANES).zip(blocks) {
-        if let Ok(o) = <&mut Block>::try_from(&mut *o) {
+    if let Ok(o) = <&mut Block>::try_from(&mut *out) {
+        *o = b;
+    } else {
+        for (o, b) in out.iter_mut().zip(b) {
             *o = b;
-        } else {
-            for (o, b) in o.iter_mut().zip(b) {
-                *o = b;
-            }
         }
     }
 }
@@ -148,27 +155,45 @@ impl Stages {
     /// `out = Σ_{(l, c) in row} c k_l` for the stages held.
     #[inline]
     pub fn combine_into(&self, row: &[(usize, Real)], out: &mut [Real]) {
-        let (k, nb) = (&self.k, self.nb);
-        unpack((0..nb).map(|b| block_sum(k, nb, row, b)), out);
+        if self.nb == 1 {
+            self.combine_nb::<1>(row, out);
+        } else {
+            self.combine_nb::<0>(row, out);
+        }
+    }
+
+    #[allow(clippy::inline_always)] // as `block_sum`
+    #[inline(always)]
+    fn combine_nb<const NB: usize>(&self, row: &[(usize, Real)], out: &mut [Real]) {
+        let (k, nb) = (&self.k, blocks::<NB>(self.nb));
+        for (b, o) in out.chunks_mut(LANES).enumerate().take(nb) {
+            store(block_sum(k, nb, row, b), o);
+        }
     }
 
     /// `out = y + h Σ_{(l, c) in row} c k_l`, with `y` the state loaded by the last
     /// [`Stages::compute`] or [`Stages::stage_from`].
     #[inline]
     pub fn advance_into(&self, row: &[(usize, Real)], h: Real, out: &mut [Real]) {
-        let (k, nb, y) = (&self.k, self.nb, &self.y);
-        unpack(
-            (0..nb).map(|b| {
-                let acc = block_sum(k, nb, row, b);
-                let yb = &y[b];
-                let mut o = [0.0; LANES];
-                for j in 0..LANES {
-                    o[j] = yb[j] + h * acc[j];
-                }
-                o
-            }),
-            out,
-        );
+        if self.nb == 1 {
+            self.advance_nb::<1>(row, h, out);
+        } else {
+            self.advance_nb::<0>(row, h, out);
+        }
+    }
+
+    #[allow(clippy::inline_always)] // as `block_sum`
+    #[inline(always)]
+    fn advance_nb<const NB: usize>(&self, row: &[(usize, Real)], h: Real, out: &mut [Real]) {
+        let (k, nb, y) = (&self.k, blocks::<NB>(self.nb), &self.y);
+        for (b, (o, yb)) in out.chunks_mut(LANES).zip(&y[..nb]).enumerate() {
+            let acc = block_sum(k, nb, row, b);
+            let mut v = [0.0; LANES];
+            for j in 0..LANES {
+                v[j] = yb[j] + h * acc[j];
+            }
+            store(v, o);
+        }
     }
 
     /// `y + h Σ b_i k_i`, the solution at the end of the step computed by
@@ -195,8 +220,9 @@ impl Stages {
     /// Evaluates stage `into` at `t` from `y + h Σ_{(l, c) in row} c k_l`, `y` loaded. The
     /// small terms are summed before they are added to `y`, which keeps round-off at the level
     /// of `y`'s last bit.
-    #[inline]
-    fn stage<S: OdeSystem + ?Sized>(
+    #[allow(clippy::inline_always)] // as `block_sum`
+    #[inline(always)]
+    fn stage<const NB: usize, S: OdeSystem + ?Sized>(
         &mut self,
         sys: &S,
         row: &[(usize, Real)],
@@ -204,13 +230,14 @@ impl Stages {
         h: Real,
         into: usize,
     ) {
-        let (n, nb) = (self.n, self.nb);
-        for b in 0..nb {
+        let (n, nb) = (self.n, blocks::<NB>(self.nb));
+        for (b, (yb, tb)) in self.y[..nb].iter().zip(&mut self.tmp[..nb]).enumerate() {
             let acc = block_sum(&self.k, nb, row, b);
-            let (yb, tb) = (&self.y[b], &mut self.tmp[b]);
+            let mut o = [0.0; LANES];
             for j in 0..LANES {
-                tb[j] = yb[j] + h * acc[j];
+                o[j] = yb[j] + h * acc[j];
             }
+            *tb = o;
         }
         let arg = &self.tmp.as_flattened()[..n];
         let out = &mut self.k[into * nb..(into + 1) * nb].as_flattened_mut()[..n];
@@ -228,7 +255,7 @@ impl Stages {
         into: usize,
     ) {
         self.load(y);
-        self.stage(sys, row, t, h, into);
+        self.stage::<0, S>(sys, row, t, h, into);
     }
 
     /// Evaluates `f(t, y)` into stage `l`.
@@ -258,12 +285,91 @@ impl Stages {
         }
         self.load(y);
         let rows = std::mem::take(&mut self.rows);
-        for (i, row) in rows[1..s].iter().enumerate() {
-            self.stage(sys, row, t + tab.c[i + 1] * h, h, i + 1);
-            evaluations += 1;
+        // states of up to LANES components (one block) get their own copy of the loops
+        if self.nb == 1 {
+            self.stages_nb::<1, S>(&rows[1..s], &tab.c[1..s], sys, t, h);
+        } else {
+            self.stages_nb::<0, S>(&rows[1..s], &tab.c[1..s], sys, t, h);
         }
         self.rows = rows;
-        evaluations
+        evaluations + s - 1
+    }
+
+    /// Stages `1, 2, …` from `rows` and `c` (the tableau's rows and nodes from 1).
+    #[inline]
+    fn stages_nb<const NB: usize, S: OdeSystem + ?Sized>(
+        &mut self,
+        rows: &[Sparse],
+        c: &[Real],
+        sys: &S,
+        t: Real,
+        h: Real,
+    ) {
+        for (i, (row, c)) in rows.iter().zip(c).enumerate() {
+            self.stage::<NB, S>(sys, row, t + c * h, h, i + 1);
+        }
+    }
+
+    /// [`Stages::compute`] for a tableau whose coefficients are constants: every stage is
+    /// written out with its row, so that the loops over the rows are unrolled with the
+    /// coefficients in the code. Stage 0 must hold `f(t, y)`.
+    #[allow(clippy::inline_always)] // one copy per tableau, each with its constants
+    #[inline(always)]
+    pub fn compute_fixed<T: FixedTableau, S: OdeSystem + ?Sized>(
+        &mut self,
+        sys: &S,
+        t: Real,
+        y: &[Real],
+        h: Real,
+    ) -> usize {
+        self.load(y);
+        if self.nb == 1 {
+            self.fixed_stages::<T, 1, S>(sys, t, h);
+        } else {
+            self.fixed_stages::<T, 0, S>(sys, t, h);
+        }
+        T::A.len() - 1
+    }
+
+    #[allow(clippy::inline_always)] // as `compute_fixed`
+    #[inline(always)]
+    fn fixed_stages<T: FixedTableau, const NB: usize, S: OdeSystem + ?Sized>(
+        &mut self,
+        sys: &S,
+        t: Real,
+        h: Real,
+    ) {
+        macro_rules! stages {
+            ($($i:literal)*) => {$(
+                if $i < T::A.len() {
+                    self.stage::<NB, S>(sys, T::A[$i], t + T::C[$i] * h, h, $i);
+                }
+            )*};
+        }
+        stages!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15);
+        debug_assert!(T::A.len() <= 16, "more stages than written out");
+    }
+
+    /// [`Stages::combine_into`] for a row of constants (inlined, its loop unrolled).
+    #[allow(clippy::inline_always)] // as `compute_fixed`
+    #[inline(always)]
+    pub fn combine_fixed(&self, row: &'static [(usize, Real)], out: &mut [Real]) {
+        if self.nb == 1 {
+            self.combine_nb::<1>(row, out);
+        } else {
+            self.combine_nb::<0>(row, out);
+        }
+    }
+
+    /// [`Stages::advance_into`] for a row of constants (inlined, its loop unrolled).
+    #[allow(clippy::inline_always)] // as `compute_fixed`
+    #[inline(always)]
+    pub fn advance_fixed(&self, row: &'static [(usize, Real)], h: Real, out: &mut [Real]) {
+        if self.nb == 1 {
+            self.advance_nb::<1>(row, h, out);
+        } else {
+            self.advance_nb::<0>(row, h, out);
+        }
     }
 
     /// Puts the derivative handed in for time `t` (if any) into stage 0; whether there was one.
