@@ -54,6 +54,44 @@ fn block_sum(k: &[Block], nb: usize, row: &[(usize, Real)], b: usize) -> Block {
     acc
 }
 
+/// `acc = Σ_{(l, c) in row} c k_l` over the first `acc.len()` components, one coefficient
+/// at a time: for states of several blocks with the rows given as data, each pass is a plain
+/// loop over the components that the compiler vectorises (the same sums in the same order as
+/// [`block_sum`]).
+fn sum_by_rows(k: &[Block], nb: usize, row: &[(usize, Real)], acc: &mut [Real]) {
+    let (k, np) = (k.as_flattened(), nb * LANES);
+    let Some((&(l0, c0), rest)) = row.split_first() else {
+        acc.fill(0.0);
+        return;
+    };
+    // indexed loops over slices of one length: the form the vectoriser handles best
+    let m = acc.len();
+    let kl = &k[l0 * np..l0 * np + m];
+    for i in 0..m {
+        acc[i] = c0 * kl[i];
+    }
+    for &(l, c) in rest {
+        let kl = &k[l * np..l * np + m];
+        for i in 0..m {
+            acc[i] += c * kl[i];
+        }
+    }
+}
+
+/// Writes `y` (at most [`LANES`] components) into the block `b`.
+#[allow(clippy::inline_always)] // as `block_sum`
+#[inline(always)]
+fn store_block(y: &[Real], b: &mut Block) {
+    // element by element: a copy of unknown length would be a call to `memcpy`
+    if let Ok(y) = <&Block>::try_from(y) {
+        *b = *y;
+    } else {
+        for (b, y) in b.iter_mut().zip(y) {
+            *b = *y;
+        }
+    }
+}
+
 /// The number of blocks: `NB` when it is fixed at compile time (not 0), else `nb`.
 #[allow(clippy::inline_always)] // as `block_sum`
 #[inline(always)]
@@ -88,6 +126,8 @@ pub(crate) struct Stages {
     y: Vec<Block>,
     /// The argument of the stage being evaluated.
     tmp: Vec<Block>,
+    /// Sums of stages ([`sum_by_rows`]).
+    acc: Vec<Block>,
     rows: Vec<Sparse>,
     weights: Sparse,
     pub provided: Provided,
@@ -102,6 +142,7 @@ impl Stages {
             k: Vec::new(),
             y: Vec::new(),
             tmp: Vec::new(),
+            acc: Vec::new(),
             rows: tab.a.iter().map(|r| sparse(r)).collect(),
             weights: sparse(&tab.b),
             provided: Provided::default(),
@@ -118,8 +159,10 @@ impl Stages {
             self.k.clear();
             self.y.clear();
             self.tmp.clear();
+            self.acc.clear();
             self.y.resize(self.nb, [0.0; LANES]);
             self.tmp.resize(self.nb, [0.0; LANES]);
+            self.acc.resize(self.nb, [0.0; LANES]);
         }
         if self.k.len() < count * self.nb {
             self.k.resize(count * self.nb, [0.0; LANES]);
@@ -158,7 +201,7 @@ impl Stages {
         if self.nb == 1 {
             self.combine_nb::<1>(row, out);
         } else {
-            self.combine_nb::<0>(row, out);
+            sum_by_rows(&self.k, self.nb, row, out);
         }
     }
 
@@ -174,11 +217,16 @@ impl Stages {
     /// `out = y + h Σ_{(l, c) in row} c k_l`, with `y` the state loaded by the last
     /// [`Stages::compute`] or [`Stages::stage_from`].
     #[inline]
-    pub fn advance_into(&self, row: &[(usize, Real)], h: Real, out: &mut [Real]) {
+    pub fn advance_into(&mut self, row: &[(usize, Real)], h: Real, out: &mut [Real]) {
         if self.nb == 1 {
             self.advance_nb::<1>(row, h, out);
         } else {
-            self.advance_nb::<0>(row, h, out);
+            sum_by_rows(&self.k, self.nb, row, self.acc.as_flattened_mut());
+            let m = out.len();
+            let (acc, y) = (&self.acc.as_flattened()[..m], &self.y.as_flattened()[..m]);
+            for i in 0..m {
+                out[i] = y[i] + h * acc[i];
+            }
         }
     }
 
@@ -199,21 +247,19 @@ impl Stages {
     /// `y + h Σ b_i k_i`, the solution at the end of the step computed by
     /// [`Stages::compute`].
     #[inline]
-    pub fn solution_into(&self, h: Real, out: &mut [Real]) {
-        self.advance_into(&self.weights, h, out);
+    pub fn solution_into(&mut self, h: Real, out: &mut [Real]) {
+        let weights = std::mem::take(&mut self.weights);
+        self.advance_into(&weights, h, out);
+        self.weights = weights;
     }
 
     /// Copies `y` into the blocks the stages start from.
     #[inline]
     fn load(&mut self, y: &[Real]) {
-        for (b, c) in self.y.iter_mut().zip(y.chunks(LANES)) {
-            if let Ok(c) = <&Block>::try_from(c) {
-                *b = *c;
-            } else {
-                for (b, c) in b.iter_mut().zip(c) {
-                    *b = *c;
-                }
-            }
+        if self.nb == 1 {
+            store_block(y, &mut self.y[0]);
+        } else {
+            self.y.as_flattened_mut()[..y.len()].copy_from_slice(y);
         }
     }
 
@@ -244,6 +290,37 @@ impl Stages {
         sys.rhs_into(t, arg, out);
     }
 
+    /// [`Stages::stage`] for a row given as data.
+    #[inline]
+    fn stage_general<S: OdeSystem + ?Sized>(
+        &mut self,
+        sys: &S,
+        row: &[(usize, Real)],
+        t: Real,
+        h: Real,
+        into: usize,
+    ) {
+        if self.nb == 1 {
+            self.stage::<1, S>(sys, row, t, h, into);
+            return;
+        }
+        let (n, nb) = (self.n, self.nb);
+        sum_by_rows(&self.k, nb, row, self.acc.as_flattened_mut());
+        let (tmp, acc, y) = (
+            self.tmp.as_flattened_mut(),
+            self.acc.as_flattened(),
+            self.y.as_flattened(),
+        );
+        let m = tmp.len();
+        let (acc, y) = (&acc[..m], &y[..m]);
+        for i in 0..m {
+            tmp[i] = y[i] + h * acc[i];
+        }
+        let arg = &self.tmp.as_flattened()[..n];
+        let out = &mut self.k[into * nb..(into + 1) * nb].as_flattened_mut()[..n];
+        sys.rhs_into(t, arg, out);
+    }
+
     /// Evaluates stage `into` at `t` from `y + h Σ_{(l, c) in row} c k_l`.
     pub fn stage_from<S: OdeSystem + ?Sized>(
         &mut self,
@@ -255,7 +332,7 @@ impl Stages {
         into: usize,
     ) {
         self.load(y);
-        self.stage::<0, S>(sys, row, t, h, into);
+        self.stage_general(sys, row, t, h, into);
     }
 
     /// Evaluates `f(t, y)` into stage `l`.
@@ -285,29 +362,11 @@ impl Stages {
         }
         self.load(y);
         let rows = std::mem::take(&mut self.rows);
-        // states of up to LANES components (one block) get their own copy of the loops
-        if self.nb == 1 {
-            self.stages_nb::<1, S>(&rows[1..s], &tab.c[1..s], sys, t, h);
-        } else {
-            self.stages_nb::<0, S>(&rows[1..s], &tab.c[1..s], sys, t, h);
+        for (i, (row, c)) in rows[1..s].iter().zip(&tab.c[1..s]).enumerate() {
+            self.stage_general(sys, row, t + c * h, h, i + 1);
         }
         self.rows = rows;
         evaluations + s - 1
-    }
-
-    /// Stages `1, 2, …` from `rows` and `c` (the tableau's rows and nodes from 1).
-    #[inline]
-    fn stages_nb<const NB: usize, S: OdeSystem + ?Sized>(
-        &mut self,
-        rows: &[Sparse],
-        c: &[Real],
-        sys: &S,
-        t: Real,
-        h: Real,
-    ) {
-        for (i, (row, c)) in rows.iter().zip(c).enumerate() {
-            self.stage::<NB, S>(sys, row, t + c * h, h, i + 1);
-        }
     }
 
     /// [`Stages::compute`] for a tableau whose coefficients are constants: every stage is
@@ -420,7 +479,10 @@ mod tests {
             st.solution_into(0.5, &mut out);
             for i in 0..n {
                 let want = y[i] + 0.5 * (i + 1) as Real;
-                assert!((out[i] - want).abs() <= 1e-12 * want.max(1.0), "n = {n}, i = {i}");
+                assert!(
+                    (out[i] - want).abs() <= 1e-12 * want.max(1.0),
+                    "n = {n}, i = {i}"
+                );
                 assert_eq!(st.at(3, i), (i + 1) as Real);
             }
             assert_eq!(st.k(2).len(), n);
