@@ -15,7 +15,7 @@ use super::control::{
     AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller, Tolerance,
 };
 use super::fixed::{Dop853, Dopri5, FixedTableau, Kernel};
-use super::stages::{Sparse, Stages, sparse};
+use super::stages::{Sparse, Stages, copy_small, sparse};
 use super::state::State;
 use super::system::OdeSystem;
 use super::tableau::{DenseKind, Tableau};
@@ -309,8 +309,9 @@ impl AdaptiveRk {
                 self.h = Some(h_next.min(self.config.h_max));
                 self.last_t0 = t;
                 self.last_h = t_new - t;
-                self.last_y0.clone_from(&state.y);
-                state.y.copy_from_slice(&self.y_new);
+                self.last_y0.resize(n, 0.0);
+                copy_small(&mut self.last_y0, &state.y);
+                copy_small(&mut state.y, &self.y_new);
                 // y_new is recomputed by the next step: its buffer can hold the step's end
                 std::mem::swap(&mut self.last_y1, &mut self.y_new);
                 if self.y_new.len() != n {

@@ -92,6 +92,15 @@ fn store_block(y: &[Real], b: &mut Block) {
     }
 }
 
+/// `dst = src` (same lengths), without a call to `memcpy` for one block.
+#[inline]
+pub(crate) fn copy_small(dst: &mut [Real], src: &[Real]) {
+    match (<&mut Block>::try_from(&mut *dst), <&Block>::try_from(src)) {
+        (Ok(d), Ok(s)) => *d = *s,
+        _ => dst.copy_from_slice(src),
+    }
+}
+
 /// The number of blocks: `NB` when it is fixed at compile time (not 0), else `nb`.
 #[allow(clippy::inline_always)] // as `block_sum`
 #[inline(always)]
