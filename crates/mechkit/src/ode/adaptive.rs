@@ -11,11 +11,12 @@
 
 #![allow(clippy::needless_range_loop)] // component loops over several parallel arrays
 
+use super::blocks::copy_small;
 use super::control::{
     AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller, Tolerance,
 };
 use super::fixed::{Dop853, Dopri5, FixedTableau, Kernel};
-use super::stages::{Sparse, Stages, copy_small, sparse};
+use super::stages::{Sparse, Stages, sparse};
 use super::state::State;
 use super::system::OdeSystem;
 use super::tableau::{DenseKind, Tableau};

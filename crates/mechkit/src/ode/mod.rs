@@ -16,6 +16,7 @@
 //! | [`Rk4`] | classical fourth-order Runge-Kutta | 4 |
 
 mod adaptive;
+mod blocks;
 mod control;
 mod dense;
 mod dop853;
