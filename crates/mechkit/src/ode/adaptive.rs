@@ -29,7 +29,7 @@ pub struct AdaptiveRk {
     config: AdaptiveConfig,
     pub(super) stages: Stages,
     /// The stage loops: unrolled with constant coefficients for DP5 and DOP853.
-    kernel: Kernel,
+    pub(super) kernel: Kernel,
     /// Non-zero error weights (and DOP853's third-order ones).
     err_w: Sparse,
     err_w3: Sparse,

@@ -200,6 +200,76 @@ impl Kernel {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ode::{AdaptiveConfig, AdaptiveRk, OdeSystem, State, Tolerance};
+
+    /// A damped, driven chain of `n` cubic oscillators, `y = [q, v]`.
+    struct Chain(usize);
+
+    impl OdeSystem for Chain {
+        fn dim(&self) -> usize {
+            2 * self.0
+        }
+
+        fn rhs_into(&self, t: Real, y: &[Real], dydt: &mut [Real]) {
+            let n = self.0;
+            let (q, v) = y.split_at(n);
+            dydt[..n].copy_from_slice(v);
+            for i in 0..n {
+                let l = if i > 0 { q[i - 1] } else { 0.0 };
+                let r = q.get(i + 1).copied().unwrap_or(0.0);
+                dydt[n + i] = l - 2.0 * q[i] + r - 0.1 * v[i] - q[i].powi(3) + 0.01 * t.sin();
+            }
+        }
+    }
+
+    /// Steps, statistics, states and dense output of `tab` along 30 s of the chain.
+    fn run(tab: &Tableau, kernel: Kernel, n: usize) -> (Vec<Real>, crate::ode::AdaptiveStats) {
+        let config = AdaptiveConfig {
+            rtol: Tolerance::Scalar(1e-9),
+            atol: Tolerance::Scalar(1e-12),
+            ..AdaptiveConfig::default()
+        };
+        let mut rk = AdaptiveRk::new(tab.clone(), config).expect("valid settings");
+        rk.kernel = kernel;
+        let sys = Chain(n);
+        let mut s = State::new(
+            0.0,
+            (0..2 * n).map(|i| 0.3 * (i as Real + 1.0).sin()).collect(),
+        );
+        let mut seen = Vec::new();
+        let mut out = vec![0.0; 2 * n];
+        while s.t < 30.0 {
+            rk.step(&sys, &mut s, 30.0).expect("a step");
+            let (a, b) = rk.last_step();
+            rk.dense_into(&sys, 0.3 * a + 0.7 * b, &mut out);
+            seen.extend_from_slice(&out);
+            seen.extend_from_slice(&s.y);
+        }
+        (seen, rk.stats())
+    }
+
+    #[test]
+    fn the_unrolled_loops_give_the_general_paths_results_bit_for_bit() {
+        // 2 components (one block, padded), 6 and 18 (several blocks, the last padded), 8
+        for (tab, kernel) in [
+            (Tableau::dopri5(), Kernel::Dopri5),
+            (Tableau::dop853(), Kernel::Dop853),
+        ] {
+            for n in [1, 3, 4, 9] {
+                let (fast, fast_stats) = run(&tab, kernel, n);
+                let (general, general_stats) = run(&tab, Kernel::General, n);
+                assert_eq!(fast_stats, general_stats, "{} n = {n}", tab.name);
+                assert!(fast_stats.accepted > 20, "{} n = {n}", tab.name);
+                assert!(
+                    fast.iter()
+                        .zip(&general)
+                        .all(|(a, b)| a.to_bits() == b.to_bits()),
+                    "{} n = {n}",
+                    tab.name
+                );
+            }
+        }
+    }
 
     #[test]
     fn the_constants_are_the_tableaus() {
