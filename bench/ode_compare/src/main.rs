@@ -196,11 +196,23 @@ fn bare_rhs_ns() -> (f64, f64) {
 }
 
 fn main() {
-    if std::env::var("PROFILE_MECHKIT").is_ok() {
-        // for `perf record`: only mechkit's dopri5, many times
-        for _ in 0..200 {
-            std::hint::black_box(mechkit_run(&Tableau::dopri5(), None));
+    if let Ok(which) = std::env::var("PROFILE") {
+        // for `perf record` / `valgrind`: one integrator, PROFILE_RUNS (200) runs
+        let run: fn() -> Run = match which.as_str() {
+            "mechkit-dopri5" => || mechkit_run(&Tableau::dopri5(), None),
+            "mechkit-dop853" => || mechkit_run(&Tableau::dop853(), None),
+            "ode_solvers-dopri5" => || ode_solvers_run(false),
+            "ode_solvers-dop853" => || ode_solvers_run(true),
+            _ => panic!(
+                "PROFILE is one of mechkit-dopri5, mechkit-dop853, ode_solvers-dopri5, ode_solvers-dop853"
+            ),
+        };
+        let runs: u64 = std::env::var("PROFILE_RUNS").map_or(200, |r| r.parse().expect("a count"));
+        let mut evaluations = 0;
+        for _ in 0..runs {
+            evaluations += black_box(run()).counted;
         }
+        println!("{which}: {evaluations} RHS evaluations in {runs} runs");
         return;
     }
     let k = Kepler { e: ECC };

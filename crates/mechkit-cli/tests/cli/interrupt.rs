@@ -119,7 +119,7 @@ fn ctrl_c_in_the_fused_kernel_keeps_the_outputs() {
 #[test]
 fn ctrl_c_during_md_writes_the_thermo_so_far() {
     let dir = Dir::new();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_mechkit"))
+    let child = Command::new(env!("CARGO_BIN_EXE_mechkit"))
         .args([
             "md",
             "--cells",

@@ -11,10 +11,12 @@
 
 #![allow(clippy::needless_range_loop)] // component loops over several parallel arrays
 
+use super::blocks::copy_small;
 use super::control::{
     AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller, Tolerance,
 };
-use super::explicit_rk::{Sparse, Stages, sparse};
+use super::fixed::{Dop853, Dopri5, FixedTableau, Kernel};
+use super::stages::{Sparse, Stages, sparse};
 use super::state::State;
 use super::system::OdeSystem;
 use super::tableau::{DenseKind, Tableau};
@@ -26,6 +28,8 @@ pub struct AdaptiveRk {
     pub(super) tableau: Tableau,
     config: AdaptiveConfig,
     pub(super) stages: Stages,
+    /// The stage loops: unrolled with constant coefficients for DP5 and DOP853.
+    pub(super) kernel: Kernel,
     /// Non-zero error weights (and DOP853's third-order ones).
     err_w: Sparse,
     err_w3: Sparse,
@@ -67,6 +71,7 @@ impl AdaptiveRk {
         let err_w = sparse(&tableau.e);
         Ok(Self {
             stages: Stages::new(&tableau),
+            kernel: Kernel::for_tableau(&tableau),
             fsal_in_error: err_w.iter().any(|(l, _)| *l == s),
             err_w,
             err_w3: sparse(&tableau.e3),
@@ -250,13 +255,26 @@ impl AdaptiveRk {
                     non_finite: (0..=s).any(|l| self.stages.k(l).iter().any(|v| !v.is_finite())),
                 });
             }
-            let evals =
-                self.stages
-                    .compute(&self.tableau, sys, t, &state.y, h, &mut self.y_new, true);
+            let evals = match self.kernel {
+                Kernel::Dopri5 => {
+                    let evals = self.stages.compute_fixed::<Dopri5, S>(sys, t, &state.y, h);
+                    self.stages.advance_fixed(Dopri5::B, h, &mut self.y_new);
+                    evals
+                }
+                Kernel::Dop853 => {
+                    let evals = self.stages.compute_fixed::<Dop853, S>(sys, t, &state.y, h);
+                    self.stages.advance_fixed(Dop853::B, h, &mut self.y_new);
+                    evals
+                }
+                Kernel::General => {
+                    let evals = self
+                        .stages
+                        .compute(&self.tableau, sys, t, &state.y, h, true);
+                    self.stages.solution_into(h, &mut self.y_new);
+                    evals
+                }
+            };
             self.stats.evaluations += evals as u64;
-            for (yn, y) in self.y_new.iter_mut().zip(&state.y) {
-                *yn = y + h * *yn;
-            }
             let t_new = if last { t_bound } else { t + h };
             // f at the new point starts the next step; first-same-as-last pairs need it for
             // the error estimate too, the others only once the step is accepted
@@ -292,8 +310,9 @@ impl AdaptiveRk {
                 self.h = Some(h_next.min(self.config.h_max));
                 self.last_t0 = t;
                 self.last_h = t_new - t;
-                self.last_y0.clone_from(&state.y);
-                state.y.copy_from_slice(&self.y_new);
+                self.last_y0.resize(n, 0.0);
+                copy_small(&mut self.last_y0, &state.y);
+                copy_small(&mut state.y, &self.y_new);
                 // y_new is recomputed by the next step: its buffer can hold the step's end
                 std::mem::swap(&mut self.last_y1, &mut self.y_new);
                 if self.y_new.len() != n {
@@ -316,29 +335,40 @@ impl AdaptiveRk {
 
     fn error_norm(&mut self, h: Real, y: &[Real]) -> Real {
         let n = self.controlled(y.len());
-        self.stages.combine_into(&self.err_w, &mut self.err_buf);
-        let v = if matches!(self.tableau.dense, DenseKind::Dop853) {
-            self.stages.combine_into(&self.err_w3, &mut self.err_buf3);
-            let (mut e5, mut e3) = (0.0, 0.0);
-            for i in 0..n {
-                let sc = self.scale(i, y[i], self.y_new[i]);
-                let a = self.err_buf[i] / sc;
-                let b = self.err_buf3[i] / sc;
-                e5 += a * a;
-                e3 += b * b;
+        let combined = matches!(self.tableau.dense, DenseKind::Dop853);
+        match self.kernel {
+            Kernel::Dopri5 => self.stages.combine_fixed(Dopri5::E, &mut self.err_buf),
+            Kernel::Dop853 => {
+                self.stages.combine_fixed(Dop853::E, &mut self.err_buf);
+                self.stages.combine_fixed(Dop853::E3, &mut self.err_buf3);
             }
+            Kernel::General => {
+                self.stages.combine_into(&self.err_w, &mut self.err_buf);
+                if combined {
+                    self.stages.combine_into(&self.err_w3, &mut self.err_buf3);
+                }
+            }
+        }
+        let (err, err3) = (&self.err_buf, combined.then_some(&self.err_buf3[..]));
+        let (e5, e3) = match (&self.config.atol, &self.config.rtol) {
+            (Tolerance::Scalar(atol), Tolerance::Scalar(rtol)) => {
+                let (atol, rtol) = (*atol, *rtol);
+                squared_sums(n, err, err3, y, &self.y_new, |_, a, b| {
+                    atol + rtol * a.abs().max(b.abs())
+                })
+            }
+            (atol, rtol) => squared_sums(n, err, err3, y, &self.y_new, |i, a, b| {
+                atol.at(i) + rtol.at(i) * a.abs().max(b.abs())
+            }),
+        };
+        let v = if combined {
             let den = e5 + 0.01 * e3;
             if den == 0.0 {
                 return 0.0;
             }
             h.abs() * e5 / (den * n as Real).sqrt()
         } else {
-            let mut sum = 0.0;
-            for i in 0..n {
-                let e = self.err_buf[i] / self.scale(i, y[i], self.y_new[i]);
-                sum += e * e;
-            }
-            h.abs() * (sum / n as Real).sqrt()
+            h.abs() * (e5 / n as Real).sqrt()
         };
         if v.is_nan() { Real::INFINITY } else { v }
     }
@@ -358,6 +388,37 @@ impl AdaptiveRk {
     pub fn last_step(&self) -> (Real, Real) {
         (self.last_t0, self.last_t0 + self.last_h)
     }
+}
+
+/// `(Σ (e_i / sc_i)², Σ (e3_i / sc_i)²)` over the first `n` components, with `sc_i =
+/// scale(i, y_i, y_new,i)` (the second sum zero without `e3`).
+#[inline]
+fn squared_sums(
+    n: usize,
+    e: &[Real],
+    e3: Option<&[Real]>,
+    y: &[Real],
+    y_new: &[Real],
+    scale: impl Fn(usize, Real, Real) -> Real,
+) -> (Real, Real) {
+    let (e, y, y_new) = (&e[..n], &y[..n], &y_new[..n]);
+    let (mut s5, mut s3) = (0.0, 0.0);
+    if let Some(e3) = e3 {
+        let e3 = &e3[..n];
+        for i in 0..n {
+            let sc = scale(i, y[i], y_new[i]);
+            let a = e[i] / sc;
+            let b = e3[i] / sc;
+            s5 += a * a;
+            s3 += b * b;
+        }
+    } else {
+        for i in 0..n {
+            let v = e[i] / scale(i, y[i], y_new[i]);
+            s5 += v * v;
+        }
+    }
+    (s5, s3)
 }
 
 /// ln 1e-2 and ln 1e-4: the floors of the remembered errors.

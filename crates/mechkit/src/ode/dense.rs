@@ -11,7 +11,7 @@
 #![allow(clippy::needless_range_loop)] // component loops over several parallel arrays
 
 use super::adaptive::AdaptiveRk;
-use super::explicit_rk::sparse;
+use super::stages::sparse;
 use super::system::OdeSystem;
 use super::tableau::DenseKind;
 use crate::Real;

@@ -16,16 +16,19 @@
 //! | [`Rk4`] | classical fourth-order Runge-Kutta | 4 |
 
 mod adaptive;
+mod blocks;
 mod control;
 mod dense;
 mod dop853;
 mod euler;
 mod euler_cromer;
 mod explicit_rk;
+mod fixed;
 mod hermite;
 mod method;
 pub mod reference;
 mod rk4;
+mod stages;
 mod state;
 mod stepper;
 mod symplectic;
