@@ -5,7 +5,7 @@
 use super::book::EventBook;
 use super::diagnose::{diagnose_evaluation, diagnose_state, step_failure};
 use super::event::{Event, Side};
-use super::fused::{FUSE_MIN_STEPS, Fused, MAX_CHUNK, MIN_CHUNK};
+use super::fused::{Fused, MIN_CHUNK, chunk_len};
 use super::observe::Observer;
 use super::probe::{Grid, Probe, Step, emit, event_values};
 use super::report::{Divergence, RunReport, SimulateError, StopReason};
@@ -126,7 +126,7 @@ pub(super) fn drive(
     let mut sides_scan = Vec::with_capacity(m);
     let mut scan_buffers = ScanBuffers::default();
     let mut step_scale = Real::NAN;
-    let mut fused = fused_kernel(sim, &stepping, t0, planned.unwrap_or(limit), grid.is_some());
+    let mut fused = Fused::for_run(sim, &stepping, t0, planned.unwrap_or(limit), grid.is_some());
     let mut fused_steps: u64 = 0;
     // a chunk that went non-finite is rerun by the general loop up to this step
     let mut fuse_resumes_at: u64 = 0;
@@ -166,17 +166,7 @@ pub(super) fn drive(
             && steps > 0
             && steps >= fuse_resumes_at
         {
-            let wanted = observers
-                .iter()
-                .filter_map(|o| o.next_step(steps))
-                .min()
-                .unwrap_or(u64::MAX);
-            // the wanted step, the last one before t_max and the last allowed stay general
-            let mut chunk = wanted.saturating_sub(steps + 1).min(MAX_CHUNK);
-            chunk = chunk.min(limit.saturating_sub(steps + 1));
-            if let Some(p) = planned {
-                chunk = chunk.min(p.saturating_sub(fixed_k + 1));
-            }
+            let chunk = chunk_len(observers, steps, limit, planned, fixed_k);
             if chunk >= MIN_CHUNK {
                 let a = std::mem::take(&mut eval_a.a);
                 let finite = kernel.advance(
@@ -553,29 +543,3 @@ pub(super) fn drive(
     })
 }
 
-/// The compiled kernel for this run's silent steps, when it can have one: fixed steps of
-/// Euler or Euler-Cromer, no events, no output times, every force compilable, and fusing
-/// wanted (by [`Simulation::fuse`], else for runs of at least [`FUSE_MIN_STEPS`] steps unless
-/// `MECHKIT_FUSE=0`).
-fn fused_kernel(
-    sim: &Simulation<'_>,
-    stepping: &Stepping,
-    t0: Real,
-    expected_steps: u64,
-    grid: bool,
-) -> Option<Fused> {
-    let Stepping::Fixed { method, dt } = stepping else {
-        return None;
-    };
-    let wanted = match sim.fuse {
-        Some(on) => on,
-        None => {
-            expected_steps >= FUSE_MIN_STEPS
-                && std::env::var("MECHKIT_FUSE").map_or(true, |v| v != "0")
-        }
-    };
-    if !wanted || !sim.events.is_empty() || grid {
-        return None;
-    }
-    Fused::build(sim.system, *method, *dt, t0)
-}

@@ -23,6 +23,10 @@ use crate::forces::ForceEmitter;
 use crate::ode::{Method, State};
 use crate::particles::{Coordinates, ParticleSystem};
 
+use super::observe::Observer;
+use super::run::Simulation;
+use super::stepping::Stepping;
+
 /// Below this many planned steps a run does not compile a kernel (compiling costs about a
 /// millisecond; a run this short takes about as long in the general loop).
 pub(super) const FUSE_MIN_STEPS: u64 = 20_000;
@@ -52,6 +56,33 @@ pub(super) struct Fused {
 }
 
 impl Fused {
+    /// The kernel for a run's silent steps, when it can have one: fixed steps of Euler or
+    /// Euler-Cromer, no events, no output times (`grid`), every force compilable, and fusing
+    /// wanted (by [`Simulation::fuse`], else for runs of at least [`FUSE_MIN_STEPS`] steps
+    /// unless `MECHKIT_FUSE=0`).
+    pub(super) fn for_run(
+        sim: &Simulation<'_>,
+        stepping: &Stepping,
+        t0: Real,
+        expected_steps: u64,
+        grid: bool,
+    ) -> Option<Fused> {
+        let Stepping::Fixed { method, dt } = stepping else {
+            return None;
+        };
+        let wanted = match sim.fuse {
+            Some(on) => on,
+            None => {
+                expected_steps >= FUSE_MIN_STEPS
+                    && std::env::var("MECHKIT_FUSE").map_or(true, |v| v != "0")
+            }
+        };
+        if !wanted || !sim.events.is_empty() || grid {
+            return None;
+        }
+        Fused::build(sim.system, *method, *dt, t0)
+    }
+
     /// The kernel of `method` with steps `dt` counted from `origin`, or `None` when the method
     /// or a force cannot be fused.
     pub(super) fn build(
@@ -229,6 +260,29 @@ impl Fused {
         *parts.last_t = state.t;
         true
     }
+}
+
+/// How many steps after `steps` can run fused: up to the step before the first one an
+/// observer wants, the last step before `t_max` (`planned` steps from the origin, `fixed_k`
+/// taken) and the last allowed (`limit`) stay with the general loop; at most [`MAX_CHUNK`].
+pub(super) fn chunk_len(
+    observers: &[&mut dyn Observer],
+    steps: u64,
+    limit: u64,
+    planned: Option<u64>,
+    fixed_k: u64,
+) -> u64 {
+    let wanted = observers
+        .iter()
+        .filter_map(|o| o.next_step(steps))
+        .min()
+        .unwrap_or(u64::MAX);
+    let mut chunk = wanted.saturating_sub(steps + 1).min(MAX_CHUNK);
+    chunk = chunk.min(limit.saturating_sub(steps + 1));
+    if let Some(p) = planned {
+        chunk = chunk.min(p.saturating_sub(fixed_k + 1));
+    }
+    chunk
 }
 
 /// Slot indices of a kernel over `n` coordinates, `nf` forces in `dim` dimensions.
