@@ -40,7 +40,7 @@ pub(crate) enum Inst {
 
 /// Hashable identity of an instruction (floats by their bits).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub(super) enum Key {
+enum Key {
     Const(u64),
     Load(u32),
     Op(u8, u32, u32, u32, Option<Func>),
@@ -58,7 +58,7 @@ fn op_code(op: BinOp) -> u8 {
     }
 }
 
-pub(super) fn key(i: Inst) -> Key {
+fn key(i: Inst) -> Key {
     match i {
         Inst::Const(c) => Key::Const(c.to_bits()),
         Inst::Load(s) => Key::Load(s),
@@ -89,15 +89,18 @@ pub(crate) struct Ir {
     pub slots: usize,
 }
 
-struct Builder<'a> {
-    scope: &'a dyn Scope,
-    insts: Vec<Inst>,
+/// Instructions under construction: each distinct instruction once (common sub-expressions
+/// shared), operations on constants folded. The formula builder below and the loop kernels'
+/// builder both grow one.
+#[derive(Debug, Clone, Default)]
+pub(super) struct Dag {
+    pub insts: Vec<Inst>,
     seen: HashMap<Key, u32>,
-    slots: usize,
 }
 
-impl Builder<'_> {
-    fn push(&mut self, i: Inst) -> u32 {
+impl Dag {
+    /// The index of `i`, pushed if it is new.
+    pub fn push(&mut self, i: Inst) -> u32 {
         let k = key(i);
         if let Some(&r) = self.seen.get(&k) {
             return r;
@@ -108,7 +111,8 @@ impl Builder<'_> {
         r
     }
 
-    fn constant(&self, r: u32) -> Option<f64> {
+    /// The value of instruction `r` when it is a constant.
+    pub fn constant(&self, r: u32) -> Option<f64> {
         match self.insts[r as usize] {
             Inst::Const(c) => Some(c),
             _ => None,
@@ -116,20 +120,36 @@ impl Builder<'_> {
     }
 
     /// Pushes `i`, or its value when all its operands are constants.
-    fn fold(&mut self, i: Inst) -> u32 {
-        if matches!(i, Inst::Const(_) | Inst::Load(_)) {
-            return self.push(i);
-        }
-        let operands = operands(i);
-        if operands.iter().all(|r| self.constant(*r).is_some()) {
-            let mut regs: Vec<f64> = self.insts.iter().map(|_| 0.0).collect();
-            for r in &operands {
+    pub fn fold(&mut self, i: Inst) -> u32 {
+        let ops = operands(i);
+        if !ops.is_empty() && ops.iter().all(|r| self.constant(*r).is_some()) {
+            let mut regs = vec![0.0; self.insts.len()];
+            for r in &ops {
                 regs[*r as usize] = self.constant(*r).expect("checked");
             }
-            let v = execute(i, &regs, &[]);
-            return self.push(Inst::Const(v));
+            return self.push(Inst::Const(execute(i, &regs, &[])));
         }
         self.push(i)
+    }
+}
+
+struct Builder<'a> {
+    scope: &'a dyn Scope,
+    dag: Dag,
+    slots: usize,
+}
+
+impl Builder<'_> {
+    fn push(&mut self, i: Inst) -> u32 {
+        self.dag.push(i)
+    }
+
+    fn constant(&self, r: u32) -> Option<f64> {
+        self.dag.constant(r)
+    }
+
+    fn fold(&mut self, i: Inst) -> u32 {
+        self.dag.fold(i)
     }
 
     /// `a^n` (n ≥ 1) by repeated squaring, in plain multiplications: `x^12` is
@@ -231,13 +251,12 @@ impl Ir {
     pub fn build(e: &Expr, scope: &dyn Scope) -> Result<Ir, String> {
         let mut b = Builder {
             scope,
-            insts: Vec::new(),
-            seen: HashMap::new(),
+            dag: Dag::default(),
             slots: 0,
         };
         let result = b.emit(e)?;
         let mut ir = Ir {
-            insts: b.insts,
+            insts: b.dag.insts,
             result,
             slots: b.slots,
         };

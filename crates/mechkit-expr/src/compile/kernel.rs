@@ -32,11 +32,10 @@
 //! assert!((slots[0] - 1.0).abs() < 0.01 && slots[1].abs() < 0.01);
 //! ```
 
-use std::collections::HashMap;
 use std::sync::Arc;
 
 use super::Program;
-use super::ir::{Inst, Key, execute, key, operands};
+use super::ir::{Dag, Inst, execute, operands};
 use crate::ast::{BinOp, Func};
 
 /// A value inside a [`KernelBuilder`]'s body.
@@ -47,8 +46,7 @@ pub struct Val(u32);
 /// given (nothing is reassociated; constants are folded, repeated operations shared).
 #[derive(Debug, Clone)]
 pub struct KernelBuilder {
-    insts: Vec<Inst>,
-    seen: HashMap<Key, u32>,
+    dag: Dag,
     /// The value each slot takes at the end of an iteration.
     stores: Vec<u32>,
 }
@@ -56,47 +54,15 @@ pub struct KernelBuilder {
 impl KernelBuilder {
     /// A body over `slots` slots; each starts as its value at the start of the iteration.
     pub fn new(slots: usize) -> Self {
-        let mut b = Self {
-            insts: Vec::new(),
-            seen: HashMap::new(),
-            stores: Vec::with_capacity(slots),
-        };
-        for s in 0..slots {
-            let v = b.push(Inst::Load(u32::try_from(s).expect("slot index fits u32")));
-            b.stores.push(v);
-        }
-        b
+        let mut dag = Dag::default();
+        let stores = (0..slots)
+            .map(|s| dag.push(Inst::Load(u32::try_from(s).expect("slot index fits u32"))))
+            .collect();
+        Self { dag, stores }
     }
 
-    fn push(&mut self, i: Inst) -> u32 {
-        let k = key(i);
-        if let Some(&r) = self.seen.get(&k) {
-            return r;
-        }
-        let r = u32::try_from(self.insts.len()).expect("fewer than 2^32 instructions");
-        self.insts.push(i);
-        self.seen.insert(k, r);
-        r
-    }
-
-    fn constant_of(&self, r: u32) -> Option<f64> {
-        match self.insts[r as usize] {
-            Inst::Const(c) => Some(c),
-            _ => None,
-        }
-    }
-
-    /// Pushes `i`, or its value when all its operands are constants.
     fn fold(&mut self, i: Inst) -> Val {
-        let ops = operands(i);
-        if !ops.is_empty() && ops.iter().all(|r| self.constant_of(*r).is_some()) {
-            let mut regs = vec![0.0; self.insts.len()];
-            for r in &ops {
-                regs[*r as usize] = self.constant_of(*r).expect("checked");
-            }
-            return Val(self.push(Inst::Const(execute(i, &regs, &[]))));
-        }
-        Val(self.push(i))
+        Val(self.dag.fold(i))
     }
 
     /// The slot's current value: its value at the start of the iteration, or the last value
@@ -113,12 +79,12 @@ impl KernelBuilder {
 
     /// A constant.
     pub fn constant(&mut self, c: f64) -> Val {
-        Val(self.push(Inst::Const(c)))
+        Val(self.dag.push(Inst::Const(c)))
     }
 
     /// The value, when it is a constant.
     pub fn as_constant(&self, v: Val) -> Option<f64> {
-        self.constant_of(v.0)
+        self.dag.constant(v.0)
     }
 
     /// `a + b`.
@@ -201,7 +167,7 @@ impl KernelBuilder {
         for inst in &ir.insts {
             let v = match *inst {
                 Inst::Load(s) => args[s as usize].0,
-                Inst::Const(c) => self.push(Inst::Const(c)),
+                Inst::Const(c) => self.dag.push(Inst::Const(c)),
                 other => self.fold(super::ir::remap(other, &map)).0,
             };
             map.push(v);
@@ -212,7 +178,8 @@ impl KernelBuilder {
     /// The kernel (interpreted; [`Kernel::native`] attaches native code).
     pub fn finish(self) -> Kernel {
         let slots = self.stores.len();
-        let n = self.insts.len();
+        let insts = self.dag.insts;
+        let n = insts.len();
         let mut live = vec![false; n];
         for (s, r) in self.stores.iter().enumerate() {
             live[*r as usize] = true;
@@ -220,23 +187,23 @@ impl KernelBuilder {
         }
         for i in (0..n).rev() {
             if live[i] {
-                for r in operands(self.insts[i]) {
+                for r in operands(insts[i]) {
                     live[r as usize] = true;
                 }
             }
         }
         let mut new_index = vec![0u32; n];
-        let mut insts = Vec::new();
+        let mut kept = Vec::new();
         for i in 0..n {
             if live[i] {
-                new_index[i] = u32::try_from(insts.len()).expect("fits");
-                insts.push(super::ir::remap(self.insts[i], &new_index));
+                new_index[i] = u32::try_from(kept.len()).expect("fits");
+                kept.push(super::ir::remap(insts[i], &new_index));
             }
         }
         let stores = self.stores.iter().map(|r| new_index[*r as usize]).collect();
         Kernel {
             body: Body {
-                insts,
+                insts: kept,
                 stores,
                 slots,
             },

@@ -542,4 +542,3 @@ pub(super) fn drive(
         warnings,
     })
 }
-
