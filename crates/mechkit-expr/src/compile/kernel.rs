@@ -1,36 +1,4 @@
-//! Loop kernels: a body of assignments to a fixed set of slots, built once from formulas and
-//! plain arithmetic, then run many times with the slots held in registers.
-//!
-//! This is what a fixed-step simulation needs to run at the speed of a hand-written loop: one
-//! step (the update, every force, the sums for the energy ledger) becomes one straight-line
-//! body, and [`Kernel::run`] repeats it `n` times without returning to the caller. The body
-//! reads the slots' values at the start of an iteration and assigns their new values at its
-//! end, all at once.
-//!
-//! Like [`crate::Program`], a kernel has two evaluators that agree bit for bit: an interpreter
-//! and native code (Cranelift, feature `jit`, attached by [`Kernel::native`]).
-//!
-//! # Example
-//! ```
-//! use mechkit_expr::{KernelBuilder, Formula, MapScope};
-//! // x' = v, v' = -x with Euler-Cromer steps of 0.01: slots [x, v]
-//! let force = Formula::parse("-k*x").unwrap()
-//!     .compile(&MapScope::new().constant("k", 1.0).slot("x", 0)).unwrap();
-//! let mut b = KernelBuilder::new(2);
-//! let (x, v) = (b.get(0), b.get(1));
-//! let a = b.inline(&force, &[x]);
-//! let h = b.constant(0.01);
-//! let dv = b.mul(h, a);
-//! let v1 = b.add(v, dv);
-//! let dx = b.mul(h, v1);
-//! let x1 = b.add(x, dx);
-//! b.set(0, x1);
-//! b.set(1, v1);
-//! let kernel = b.finish().native();
-//! let mut slots = [1.0, 0.0];
-//! kernel.run(&mut slots, 628);
-//! assert!((slots[0] - 1.0).abs() < 0.01 && slots[1].abs() < 0.01);
-//! ```
+//! Loop kernels: see [`Kernel`].
 
 use std::sync::Arc;
 
@@ -220,7 +188,39 @@ pub(crate) struct Body {
     pub slots: usize,
 }
 
-/// A compiled loop body over a slice of slots; see the [module documentation](self).
+/// A loop kernel: a body of assignments to a fixed set of slots, built once from formulas and
+/// plain arithmetic, then run many times with the slots held in registers.
+///
+/// This is what a fixed-step simulation needs to run at the speed of a hand-written loop: one
+/// step (the update, every force, the sums for the energy ledger) becomes one straight-line
+/// body, and [`Kernel::run`] repeats it `n` times without returning to the caller. The body
+/// reads the slots' values at the start of an iteration and assigns their new values at its
+/// end, all at once.
+///
+/// Like [`crate::Program`], a kernel has two evaluators that agree bit for bit: an interpreter
+/// and native code (Cranelift, feature `jit`, attached by [`Kernel::native`]).
+///
+/// # Example
+/// ```
+/// use mechkit_expr::{KernelBuilder, Formula, MapScope};
+/// // x' = v, v' = -x with Euler-Cromer steps of 0.01: slots [x, v]
+/// let force = Formula::parse("-k*x").unwrap()
+///     .compile(&MapScope::new().constant("k", 1.0).slot("x", 0)).unwrap();
+/// let mut b = KernelBuilder::new(2);
+/// let (x, v) = (b.get(0), b.get(1));
+/// let a = b.inline(&force, &[x]);
+/// let h = b.constant(0.01);
+/// let dv = b.mul(h, a);
+/// let v1 = b.add(v, dv);
+/// let dx = b.mul(h, v1);
+/// let x1 = b.add(x, dx);
+/// b.set(0, x1);
+/// b.set(1, v1);
+/// let kernel = b.finish().native();
+/// let mut slots = [1.0, 0.0];
+/// kernel.run(&mut slots, 628);
+/// assert!((slots[0] - 1.0).abs() < 0.01 && slots[1].abs() < 0.01);
+/// ```
 #[derive(Debug, Clone)]
 pub struct Kernel {
     body: Body,
