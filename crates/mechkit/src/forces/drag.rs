@@ -1,9 +1,7 @@
 //! Air resistance relative to the wind `w`: linear (viscous, Stokes) `F = -b (v - w)` and
 //! quadratic `F = -D |v - w| (v - w)`.
 
-use mechkit_expr::Func;
-
-use super::emit::{ForceEmitter, sum_of_squares};
+use super::emit::ForceEmitter;
 use super::force::{Force, Target};
 use super::wind::Wind;
 use crate::Real;
@@ -67,8 +65,7 @@ impl Drag {
             }
             let c = e.constant(t.coefficient);
             let scale = if quadratic {
-                let s2 = sum_of_squares(e.b(), &u);
-                let speed = e.b().call(Func::Sqrt, s2);
+                let speed = e.norm(&u);
                 e.b().mul(c, speed)
             } else {
                 let one = e.constant(1.0);

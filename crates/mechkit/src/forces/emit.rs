@@ -96,19 +96,23 @@ impl<'a> ForceEmitter<'a> {
         self.out[index] = Some(self.builder.sub(o, f));
     }
 
-    /// `Σ a_i²` summed as `Iterator::sum` does (from `-0.0`, which adds nothing), then its
-    /// square root: the norm of `crate::particles::norm`.
+    /// `sqrt(Σ a_i²)`, the norm of `crate::particles::norm` and of the force laws' own
+    /// loops (`Iterator::sum` starts from `-0.0` and the laws' loops from `0.0`; both add
+    /// nothing to the first square).
     pub fn norm(&mut self, a: &[Val]) -> Val {
-        let mut sum: Option<Val> = None;
-        for &c in a {
-            let sq = self.builder.mul(c, c);
-            sum = Some(match sum {
-                None => sq,
-                Some(s) => self.builder.add(s, sq),
-            });
-        }
-        let s = sum.unwrap_or_else(|| self.builder.constant(-0.0));
+        let s = sum_of_squares(self.builder, a);
         self.builder.call(Func::Sqrt, s)
+    }
+
+    /// `d = a - b` component by component and `|d|`: the force laws' `separation`.
+    pub fn separation(&mut self, a: &[Val], b: &[Val]) -> (Vec<Val>, Val) {
+        let d: Vec<Val> = a
+            .iter()
+            .zip(b)
+            .map(|(p, q)| self.builder.sub(*p, *q))
+            .collect();
+        let r = self.norm(&d);
+        (d, r)
     }
 
     /// The force buffer: `None` where nothing was added (exactly zero).
@@ -119,7 +123,7 @@ impl<'a> ForceEmitter<'a> {
 
 /// `r2 = 0.0; r2 += d_i²` as the force laws write it: the first `0.0 + d²` is exact (a
 /// square is never `-0.0`), so it starts at the first square.
-pub(crate) fn sum_of_squares(b: &mut KernelBuilder, d: &[Val]) -> Val {
+fn sum_of_squares(b: &mut KernelBuilder, d: &[Val]) -> Val {
     let mut r2: Option<Val> = None;
     for &c in d {
         let sq = b.mul(c, c);

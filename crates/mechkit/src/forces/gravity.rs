@@ -1,8 +1,8 @@
 //! Gravity: uniform near a planet's surface, and Newton's inverse-square law.
 
-use super::emit::{ForceEmitter, sum_of_squares};
-use mechkit_expr::{Func, Val};
+use mechkit_expr::Val;
 
+use super::emit::ForceEmitter;
 use super::force::Force;
 use crate::Real;
 use crate::particles::Kinematics;
@@ -167,9 +167,7 @@ impl Force for NewtonianGravity {
         let dim = e.dim();
         // separation(a, b): d = a - b, r = sqrt(0 + Σ d²); s / (r r r), in add_forces' order
         let pull = |e: &mut ForceEmitter<'_>, a: &[Val], b: &[Val], coefficient: Real| {
-            let d: Vec<Val> = a.iter().zip(b).map(|(p, q)| e.b().sub(*p, *q)).collect();
-            let r2 = sum_of_squares(e.b(), &d);
-            let r = e.b().call(Func::Sqrt, r2);
+            let (d, r) = e.separation(a, b);
             let rr = e.b().mul(r, r);
             let r3 = e.b().mul(rr, r);
             let c = e.constant(coefficient);

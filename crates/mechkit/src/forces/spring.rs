@@ -1,9 +1,9 @@
 //! Linear springs with a rest length (Hooke's law), `F = -k (r - L) r̂`, potential
 //! `k (r - L)² / 2`, where `r` is the spring's length.
 
-use mechkit_expr::{BinOp, Func, Val};
+use mechkit_expr::{BinOp, Val};
 
-use super::emit::{ForceEmitter, sum_of_squares};
+use super::emit::ForceEmitter;
 use super::force::Force;
 use crate::Real;
 use crate::particles::Kinematics;
@@ -105,9 +105,7 @@ impl Force for Spring {
         let dim = e.dim();
         // pull(a, b): f = a - b, r = sqrt(0 + Σ f²), s = r > 0 ? -k (r - L) / r : -k, f *= s
         let pull = |e: &mut ForceEmitter<'_>, a: &[Val], b: &[Val]| {
-            let d: Vec<Val> = a.iter().zip(b).map(|(p, q)| e.b().sub(*p, *q)).collect();
-            let r2 = sum_of_squares(e.b(), &d);
-            let r = e.b().call(Func::Sqrt, r2);
+            let (d, r) = e.separation(a, b);
             let zero = e.constant(0.0);
             let positive = e.b().compare(BinOp::Gt, r, zero);
             let minus_k = e.constant(-self.k);
