@@ -1,0 +1,254 @@
+//! The bodies of mechkit's fuzz targets, one function per kind of user input.
+//!
+//! Each function takes arbitrary bytes, feeds them through the same library calls the CLI
+//! makes for that input, and renders every error the way the CLI would. Whatever the bytes,
+//! it must return: a panic, a hang or unbounded memory is a finding. The functions hold no
+//! fuzzing machinery, so the libFuzzer binaries under `fuzz/` and the ordinary test that
+//! replays the seed and regression inputs (`tests/replay.rs`) run exactly the same code.
+//!
+//! See `docs/reliability.md` for how the targets are run and what they found.
+
+use mechkit::Real;
+use mechkit::calculus;
+use mechkit::data::{ColumnRef, Order, Table};
+use mechkit::deriv::{Derivation, Difference, SavitzkyGolay, kinematics, uniform_step};
+use mechkit::energy::SampledIntegral;
+use mechkit::expr::{Formula, MapScope, simplify};
+use mechkit::mass::image::{Channel, Density, PixelBody, PixelFrame, Raster, Selection};
+use mechkit::quad::SampleRule;
+use mechkit::scenario::Scenario;
+use mechkit::units::{Quantity, Unit};
+
+/// The names a fuzzed formula may use: what a force formula sees in a 2-D scenario, plus a
+/// parameter.
+fn formula_scope() -> MapScope {
+    ["t", "x", "y", "vx", "vy", "v", "r", "m"]
+        .iter()
+        .enumerate()
+        .fold(MapScope::new(), |s, (i, n)| s.slot(n, i))
+        .constant("k", 2.5)
+}
+
+/// The values of [`formula_scope`]'s slots.
+const SLOT_VALUES: [Real; 8] = [0.5, 1.25, -0.75, 3.0, -2.0, 3.6, 1.46, 0.2];
+
+/// Parameters the calculus calls get for names other than the variable.
+fn params() -> Vec<(String, Real)> {
+    [("a", 2.0), ("b", -0.5), ("k", 3.0), ("m", 0.25)]
+        .iter()
+        .map(|&(n, v)| (n.to_string(), v))
+        .collect()
+}
+
+fn text(data: &[u8]) -> Option<&str> {
+    std::str::from_utf8(data).ok()
+}
+
+/// A formula as typed into a scenario or `mechkit calculus`: parsed, its errors rendered,
+/// compiled and evaluated (interpreter and native code must agree bit for bit), simplified,
+/// differentiated, integrated (indefinite and on `[0, 1]`) and, when it is an equation,
+/// solved.
+pub fn expression(data: &[u8]) {
+    let Some(src) = text(data) else { return };
+    let formula = match Formula::parse(src) {
+        Ok(f) => f,
+        Err(e) => {
+            let _ = e.to_string();
+            // equations (`=`) are not formulas; `solve` reads them
+            if src.contains('=') {
+                equation(src);
+            }
+            return;
+        }
+    };
+    let scope = formula_scope();
+    match formula.compile(&scope) {
+        Ok(program) => {
+            let interpreted = program.eval(&SLOT_VALUES);
+            let native = program.native().eval(&SLOT_VALUES);
+            assert!(
+                interpreted.to_bits() == native.to_bits()
+                    || (interpreted.is_nan() && native.is_nan()),
+                "interpreter {interpreted:e} and native code {native:e} disagree on {src:?}"
+            );
+        }
+        Err(e) => {
+            let _ = e.to_string();
+        }
+    }
+    let _ = simplify(formula.expr()).to_string();
+    match calculus::derivative(src, "x") {
+        Ok(d) => {
+            let _ = d.result.to_string();
+        }
+        Err(e) => {
+            let _ = e.to_string();
+        }
+    }
+    let _ = calculus::derivative_at(src, "x", 0.7, &params(), 0.1).map_err(|e| e.to_string());
+    match calculus::integral(src, "x", Some((0.0, 1.0)), &params()) {
+        Ok(i) => {
+            let _ = i.antiderivative.map(|a| a.to_string());
+        }
+        Err(e) => {
+            let _ = e.to_string();
+        }
+    }
+}
+
+fn equation(src: &str) {
+    let _ = calculus::solve(src, "x", Some((-10.0, 10.0)), &params()).map_err(|e| e.to_string());
+}
+
+/// A quantity with a unit, as in a scenario value or `mechkit convert`: the first line is
+/// the quantity, the second (if any) the unit to convert to.
+pub fn units(data: &[u8]) {
+    let Some(src) = text(data) else { return };
+    let (quantity, to) = match src.split_once('\n') {
+        Some((q, u)) => (q, Some(u)),
+        None => (src, None),
+    };
+    let _ = Quantity::parse(quantity).map_err(|e| (e.to_string(), e.snippet()));
+    if let Some(u) = to {
+        let _ = Unit::parse(u).map_err(|e| (e.to_string(), e.snippet()));
+    }
+    let _ = calculus::convert(quantity, to).map_err(|e| e.to_string());
+}
+
+/// Steps a fuzzed scenario may run: enough to reach events, plots and the ledger, few enough
+/// that every input finishes in milliseconds.
+pub const SCENARIO_STEPS: u64 = 200;
+
+/// A scenario file: loaded and built into a model (every error rendered with its location),
+/// then, when it loads, run in memory for at most [`SCENARIO_STEPS`] steps and summarised.
+pub fn scenario(data: &[u8]) {
+    let Some(src) = text(data) else { return };
+    match Scenario::from_str("fuzz.toml", src) {
+        Ok(mut s) => {
+            s.max_steps = Some(
+                s.max_steps
+                    .map_or(SCENARIO_STEPS, |n| n.min(SCENARIO_STEPS)),
+            );
+            match s.run() {
+                Ok(out) => {
+                    let _ = out.summary.stop_reason.len();
+                }
+                Err(e) => {
+                    let _ = e.to_string();
+                }
+            }
+        }
+        Err(e) => {
+            let _ = e.to_string();
+        }
+    }
+}
+
+/// A measured data file (CSV or whitespace-separated), as `mechkit derive` and `mechkit
+/// work` read it: the table, the first column as abscissa, then velocities and
+/// accelerations of the second column by every scheme, and its integral by every rule.
+pub fn data_file(data: &[u8]) {
+    let Some(src) = text(data) else { return };
+    let table = match Table::parse(src, "fuzz.csv") {
+        Ok(t) => t,
+        Err(e) => {
+            let _ = e.to_string();
+            return;
+        }
+    };
+    for i in 0..table.width() {
+        let _ = table.label(i);
+        let _ = table
+            .column(&ColumnRef::Index(i))
+            .map_err(|e| e.to_string());
+    }
+    if let Some(names) = table.names() {
+        for n in names {
+            let _ = table.column_index(&ColumnRef::Name(n.clone()));
+        }
+    }
+    if table.width() < 2 {
+        return;
+    }
+    let t_ref = ColumnRef::Index(0);
+    let Ok((t, order)) = table.abscissa(&t_ref, "fuzzing").map_err(|e| e.to_string()) else {
+        return;
+    };
+    let Ok(x) = table.column(&ColumnRef::Index(1)) else {
+        return;
+    };
+    for rule in [
+        SampleRule::Left,
+        SampleRule::Right,
+        SampleRule::Midpoint,
+        SampleRule::Trapezoid,
+        SampleRule::Simpson,
+    ] {
+        let _ = SampledIntegral::new(t, x, rule).map_err(|e| e.to_string());
+    }
+    if order != Order::Increasing {
+        return;
+    }
+    for scheme in [
+        Difference::Forward,
+        Difference::Backward,
+        Difference::Central,
+    ] {
+        let _ = kinematics(t, x, Derivation::Differences(scheme)).map_err(|e| e.to_string());
+    }
+    if uniform_step(t).is_some()
+        && let Ok(sg) = SavitzkyGolay::new(5, 2)
+    {
+        let _ = kinematics(t, x, Derivation::SavitzkyGolay(sg)).map_err(|e| e.to_string());
+    }
+}
+
+/// An image for `mechkit com --image`: decoded (PNG or JPEG, anything else refused by what
+/// it is), the body selected by the default threshold of each channel, its pixels measured
+/// and its mass properties computed.
+pub fn image(data: &[u8]) {
+    let raster = match Raster::decode(data, "fuzz.png") {
+        Ok(r) => r,
+        Err(e) => {
+            let _ = e.to_string();
+            return;
+        }
+    };
+    let Ok(frame) = PixelFrame::new(0.01, [0.0, raster.height() as Real]) else {
+        return;
+    };
+    for (name, invert, density) in [
+        ("sum", false, Density::Uniform),
+        ("r", true, Density::Darkness),
+    ] {
+        let Ok(channel) = Channel::parse(name) else {
+            continue;
+        };
+        let selection = Selection::new(channel)
+            .threshold(channel.default_threshold())
+            .inverted(invert)
+            .density(density);
+        match PixelBody::measure(&raster, &selection) {
+            Ok(body) => {
+                let _ = body
+                    .mass_properties(&frame, Some(2.0))
+                    .map_err(|e| e.to_string());
+            }
+            Err(e) => {
+                let _ = e.to_string();
+            }
+        }
+    }
+}
+
+/// A fuzz target's body.
+pub type Target = fn(&[u8]);
+
+/// The targets by name, as the fuzz binaries and the replay test know them.
+pub const TARGETS: &[(&str, Target)] = &[
+    ("expression", expression),
+    ("units", units),
+    ("scenario", scenario),
+    ("data_file", data_file),
+    ("image", image),
+];
