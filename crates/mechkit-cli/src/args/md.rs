@@ -88,6 +88,10 @@ pub struct MdArgs {
     /// Extended-XYZ frame every this many steps (needs --out).
     #[arg(long, requires = "out")]
     pub xyz_every: Option<usize>,
+    /// Largest file to write, e.g. `10GB` (default 1 GB); the run stops cleanly with a
+    /// message when thermo.csv or trajectory.xyz would pass it.
+    #[arg(long, value_name = "SIZE")]
+    pub max_output: Option<String>,
     /// Print the result as JSON.
     #[arg(long)]
     pub json: bool,

@@ -260,6 +260,11 @@ pub struct RunArgs {
     /// Do not draw plots.
     #[arg(long)]
     pub no_plots: bool,
+    /// Largest trajectory file to write, e.g. `10GB` or `500MB` (default: `[output] max_size`
+    /// of the scenario, else 1 GB); the run stops cleanly with `output_limit` when it is
+    /// reached.
+    #[arg(long, value_name = "SIZE")]
+    pub max_output: Option<String>,
     /// Instead of one run: run with each of these methods (comma-separated, e.g.
     /// "euler,euler-cromer,rk4,dopri5") and compare them with a reference solution (DOP853 at
     /// rtol 1e-12): errors, energy drift, cost; writes compare.json and plots.

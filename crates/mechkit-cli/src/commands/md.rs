@@ -2,11 +2,14 @@
 //! spheres), through `mechkit::md`.
 
 use std::fmt::Write as _;
+use std::path::Path;
 use std::time::Instant;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result, anyhow, bail};
 use mechkit::md::{Md, MdConfig, PairPotential, Thermo};
-use mechkit::scenario::write_atomic;
+use mechkit::scenario::{
+    DEFAULT_MAX_OUTPUT, StreamFile, output_limit_message, parse_size, write_atomic,
+};
 use serde_json::json;
 
 use super::Outcome;
@@ -19,6 +22,76 @@ fn thermo_json(t: &Thermo, n: f64) -> serde_json::Value {
         "potential_per_atom": t.potential / n, "total_per_atom": t.total / n,
         "kinetic_per_atom": t.kinetic / n, "pressure": t.pressure,
     })
+}
+
+const LIMIT_HINT: &str =
+    "raise the limit with --max-output 10GB, or write fewer frames with a larger --xyz-every";
+
+/// The files written during the run: `thermo.csv` and, with `--xyz-every`,
+/// `trajectory.xyz`, streamed (see [`StreamFile`]).
+struct Streams {
+    thermo: StreamFile,
+    xyz: Option<StreamFile>,
+}
+
+impl Streams {
+    fn create(dir: &Path, xyz: bool, limit: u64) -> Result<Self> {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("--out: cannot create {}", dir.display()))?;
+        let open = |name: &str| {
+            let path = dir.join(name);
+            StreamFile::create(&path, limit)
+                .with_context(|| format!("cannot write {}", path.display()))
+        };
+        let mut thermo = open("thermo.csv")?;
+        let header = format!("{}\n", Thermo::CSV_HEADER);
+        append(&mut thermo, header.as_bytes())?;
+        Ok(Self {
+            thermo,
+            xyz: if xyz {
+                Some(open("trajectory.xyz")?)
+            } else {
+                None
+            },
+        })
+    }
+
+    fn thermo(&mut self, row: &Thermo) -> Result<()> {
+        append(&mut self.thermo, format!("{}\n", row.csv_row()).as_bytes())
+    }
+
+    fn frame<P: PairPotential>(&mut self, md: &Md<P>) -> Result<()> {
+        if let Some(xyz) = &mut self.xyz {
+            let mut buf = Vec::new();
+            md.write_xyz_frame(&mut buf, "Ar")
+                .context("cannot format an XYZ frame")?;
+            append(xyz, &buf)?;
+        }
+        Ok(())
+    }
+
+    /// The file that reached its limit, if one did.
+    fn full(&self) -> Option<&Path> {
+        std::iter::once(&self.thermo)
+            .chain(&self.xyz)
+            .find(|f| f.is_full())
+            .map(StreamFile::path)
+    }
+
+    fn finish(self) -> Result<()> {
+        for f in std::iter::once(self.thermo).chain(self.xyz) {
+            let path = f.path().to_path_buf();
+            f.finish()
+                .with_context(|| format!("cannot write {}", path.display()))?;
+        }
+        Ok(())
+    }
+}
+
+fn append(file: &mut StreamFile, bytes: &[u8]) -> Result<()> {
+    file.append(bytes)
+        .map(|_| ())
+        .with_context(|| format!("cannot write {}", file.partial_path().display()))
 }
 
 /// Runs `mechkit md`.
@@ -45,31 +118,38 @@ fn run<P: PairPotential>(args: &MdArgs, s: Setup, potential: P) -> Result<Outcom
     let mut md = Md::new(s.sim_box, potential, s.x, s.v, config)
         .map_err(|e| anyhow::anyhow!("{}: {e}", flag(&e)))?;
     let n = md.len() as f64;
-    if let Some(dir) = &args.out {
-        std::fs::create_dir_all(dir)
-            .with_context(|| format!("--out: cannot create {}", dir.display()))?;
-    }
-    let mut rows = vec![md.thermo()];
-    let mut xyz = String::new();
-    let frame = |md: &Md<P>, xyz: &mut String| {
-        let mut buf = Vec::new();
-        md.write_xyz_frame(&mut buf, "Ar")
-            .expect("writing to memory");
-        xyz.push_str(&String::from_utf8_lossy(&buf));
+    let limit = match &args.max_output {
+        Some(size) => parse_size(size).map_err(|e| anyhow!("--max-output: {e}"))?,
+        None => DEFAULT_MAX_OUTPUT,
     };
-    if args.xyz_every.is_some() {
-        frame(&md, &mut xyz);
+    let mut files = match &args.out {
+        Some(dir) => Some(Streams::create(dir, args.xyz_every.is_some(), limit)?),
+        None => None,
+    };
+    let mut rows = vec![md.thermo()];
+    if let Some(f) = &mut files {
+        f.thermo(&rows[0])?;
+        f.frame(&md)?;
     }
     let start = Instant::now();
     let mut failure = None;
     let mut interrupted = false;
+    let mut full = None;
     for step in 1..=args.steps {
         if mechkit::simulate::interrupt::requested() {
             // Ctrl-C: the thermo row of the state reached, then the outputs as usual
             interrupted = true;
-            if rows.last().is_none_or(|r| r.step != md.steps()) {
-                rows.push(md.thermo());
-            }
+            break;
+        }
+        if let Some(f) = &files
+            && let Some(path) = f.full()
+        {
+            full = Some(output_limit_message(
+                path,
+                limit,
+                &format!("step {}", md.steps()),
+                LIMIT_HINT,
+            ));
             break;
         }
         if let Err(e) = md.run(1) {
@@ -78,21 +158,38 @@ fn run<P: PairPotential>(args: &MdArgs, s: Setup, potential: P) -> Result<Outcom
         }
         if step % args.thermo_every == 0 || step == args.steps {
             rows.push(md.thermo());
+            if let Some(f) = &mut files {
+                f.thermo(rows.last().expect("a row was pushed"))?;
+            }
         }
-        if args.xyz_every.is_some_and(|k| step % k == 0) {
-            frame(&md, &mut xyz);
+        if let Some(f) = &mut files
+            && args.xyz_every.is_some_and(|k| step % k == 0)
+        {
+            f.frame(&md)?;
+        }
+    }
+    if full.is_none()
+        && let Some(path) = files.as_ref().and_then(Streams::full)
+    {
+        full = Some(output_limit_message(
+            path,
+            limit,
+            &format!("step {}", md.steps()),
+            LIMIT_HINT,
+        ));
+    }
+    if (interrupted || full.is_some() || failure.is_some())
+        && rows.last().is_none_or(|r| r.step != md.steps())
+    {
+        rows.push(md.thermo());
+        if let Some(f) = &mut files {
+            f.thermo(rows.last().expect("a row was pushed"))?;
         }
     }
     let seconds = start.elapsed().as_secs_f64();
     let rate = n * md.steps() as f64 / seconds.max(1e-12);
-    if let Some(dir) = &args.out {
-        let mut csv = format!("{}\n", Thermo::CSV_HEADER);
-        for r in &rows {
-            let _ = writeln!(csv, "{}", r.csv_row());
-        }
-        let path = dir.join("thermo.csv");
-        write_atomic(&path, csv.as_bytes())
-            .with_context(|| format!("cannot write {}", path.display()))?;
+    if let (Some(f), Some(dir)) = (files, &args.out) {
+        f.finish()?;
         let mut rdf = String::from("r,g\n");
         for (r, g) in md.radial_distribution(100, cutoff + args.skin) {
             let _ = writeln!(rdf, "{r},{g}");
@@ -100,11 +197,6 @@ fn run<P: PairPotential>(args: &MdArgs, s: Setup, potential: P) -> Result<Outcom
         let path = dir.join("rdf.csv");
         write_atomic(&path, rdf.as_bytes())
             .with_context(|| format!("cannot write {}", path.display()))?;
-        if !xyz.is_empty() {
-            let path = dir.join("trajectory.xyz");
-            write_atomic(&path, xyz.as_bytes())
-                .with_context(|| format!("cannot write {}", path.display()))?;
-        }
     }
     let last = md.thermo();
     if args.json {
@@ -146,6 +238,10 @@ fn run<P: PairPotential>(args: &MdArgs, s: Setup, potential: P) -> Result<Outcom
     }
     if let Some(e) = failure {
         eprintln!("error: {e}");
+        return Ok(Outcome::ComputationFailed);
+    }
+    if let Some(message) = full {
+        eprintln!("error: {message}");
         return Ok(Outcome::ComputationFailed);
     }
     if interrupted {

@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context as _, Result, anyhow, bail};
 use mechkit::ode::Method;
-use mechkit::scenario::{CompareSettings, Scenario, write_atomic};
+use mechkit::scenario::{CompareSettings, Scenario, parse_size, write_atomic};
 use mechkit::units::{Dimension, Quantity};
 
 use super::{Outcome, print};
@@ -12,7 +12,10 @@ use crate::args::RunArgs;
 use crate::plot;
 
 pub fn run(args: &RunArgs) -> Result<Outcome> {
-    let scenario = Scenario::load(&args.file)?;
+    let mut scenario = Scenario::load(&args.file)?;
+    if let Some(size) = &args.max_output {
+        scenario.max_output = parse_size(size).map_err(|e| anyhow!("--max-output: {e}"))?;
+    }
     let dir = args.out.clone().unwrap_or_else(|| {
         let stem = args
             .file
@@ -51,6 +54,15 @@ pub fn run(args: &RunArgs) -> Result<Outcome> {
             dir.display()
         );
         return Ok(Outcome::Interrupted);
+    }
+    if out.summary.stop_reason == "output_limit" {
+        // the message, with how to raise the limit, is among the warnings printed above
+        eprintln!(
+            "error: the run stopped at t = {} s because its output reached the limit; {} holds the run up to there",
+            out.summary.t_end,
+            dir.display()
+        );
+        return Ok(Outcome::ComputationFailed);
     }
     if out.failed() {
         if let Some(d) = &out.summary.divergence {

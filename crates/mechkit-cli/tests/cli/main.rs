@@ -36,6 +36,7 @@ mod energy;
 mod errors;
 mod friction;
 mod interrupt;
+mod limits;
 mod mass;
 mod md;
 mod md_gallery;

@@ -260,6 +260,8 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
     events.extend(model_events);
     let observables = read_observe(root, &names)?;
     let (every, output_times, plots) = read_output(root, &names, dim, env)?;
+    let max_output = super::limits::read_max_size(root.table("output")?.as_ref())?
+        .unwrap_or(super::limits::DEFAULT_MAX_OUTPUT);
     if t_max.is_none() && max_steps.is_none() {
         warnings.push(format!(
             "[stop] has no t_max: the run is bounded by {} steps; set t_max",
@@ -276,6 +278,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         stepping,
         t_max,
         max_steps,
+        max_output,
         stop,
         events,
         observables,

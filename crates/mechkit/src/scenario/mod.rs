@@ -46,6 +46,7 @@ mod error;
 mod events;
 mod forces;
 mod integrator;
+mod limits;
 mod observe;
 mod output;
 mod plot;
@@ -64,8 +65,11 @@ pub use crate::figure::{PlotData, Series};
 pub use bodyfile::BodyFile;
 pub use compare::{CompareSettings, Comparison, MethodResult};
 pub use error::{ErrorKind, Location, ScenarioError};
+pub use limits::{DEFAULT_MAX_OUTPUT, MAX_SCENARIO_BYTES, format_size, parse_size};
 pub use observe::Observable;
-pub use output::{csv_header, push_number, write_atomic};
+pub use output::{
+    FLUSH_INTERVAL, StreamFile, csv_header, output_limit_message, push_number, write_atomic,
+};
 pub use plot::{OutputTimes, PlotSpec, SeriesSpec};
 pub use provenance::Provenance;
 pub use run::RunOutput;
@@ -100,6 +104,10 @@ pub struct Scenario {
     pub t_max: Option<Real>,
     /// Step budget.
     pub max_steps: Option<u64>,
+    /// The most bytes the run's output files may hold (`[output] max_size`, else
+    /// [`DEFAULT_MAX_OUTPUT`]); the run stops with `output_limit` when the trajectory would
+    /// pass it.
+    pub max_output: u64,
     /// Stop condition.
     pub stop: Option<Condition>,
     /// `[[event]]` entries.
@@ -139,6 +147,20 @@ impl Scenario {
 
 /// The text of a scenario or body file, or an error that names it.
 fn read_source(path: &Path) -> Result<String, ScenarioError> {
+    if let Ok(meta) = std::fs::metadata(path)
+        && meta.len() > limits::MAX_SCENARIO_BYTES
+    {
+        return Err(ScenarioError::new(
+            ErrorKind::Io,
+            format!(
+                "{} is {}, more than a scenario file can be ({})",
+                path.display(),
+                limits::format_size(meta.len()),
+                limits::format_size(limits::MAX_SCENARIO_BYTES)
+            ),
+        )
+        .with_hint("give the scenario's .toml file; data files are named inside it"));
+    }
     std::fs::read_to_string(path).map_err(|e| {
         ScenarioError::new(
             ErrorKind::Io,

@@ -22,7 +22,7 @@ use crate::simulate::{Observer, ObserverError};
 /// doubles).
 const MAX_POINTS: usize = 20_000;
 
-const OUTPUT_KEYS: &[&str] = &["every", "interval", "times", "plots"];
+const OUTPUT_KEYS: &[&str] = &["every", "interval", "times", "plots", "max_size"];
 
 /// Output times: every `interval`, or a list.
 #[derive(Debug, Clone, PartialEq)]

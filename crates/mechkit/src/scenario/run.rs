@@ -127,8 +127,14 @@ impl Scenario {
             let (q, v) = self.initial.qv();
             self.system.has_potential(q, v)
         };
-        let mut csv = CsvWriter::create(&csv_path, &self.system, has_potential, self.keep())
-            .map_err(|e| io_error("write", &csv_path, &e))?;
+        let mut csv = CsvWriter::create(
+            &csv_path,
+            &self.system,
+            has_potential,
+            self.keep(),
+            self.max_output,
+        )
+        .map_err(|e| io_error("write", &csv_path, &e))?;
         let result = self.run_with(Some(&mut csv));
         let rows = csv.close().map_err(|e| io_error("write", &csv_path, &e))?;
         let mut out = result?;

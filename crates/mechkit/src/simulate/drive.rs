@@ -9,9 +9,11 @@ use super::fused::{Fused, MIN_CHUNK, chunk_len};
 use super::observe::Observer;
 use super::probe::{Grid, Probe, Step, emit, event_values};
 use super::report::{Divergence, RunReport, SimulateError, StopReason};
-use super::run::{DEFAULT_MAX_STEPS, Simulation, sample_of};
+use super::run::{Simulation, sample_of};
 use super::scan::{Fired, ScanBuffers, scan};
-use super::stepping::{Engine, StepEnds, Stepping, WorkSystem, fixed_next, step_budget};
+use super::stepping::{
+    Engine, StepEnds, Stepping, WorkSystem, fixed_next, step_budget, step_limit_warning,
+};
 use crate::Real;
 use crate::energy::EnergyLedger;
 use crate::ode::{AdaptiveError, State, steps_to_cover};
@@ -140,6 +142,11 @@ pub(super) fn drive(
             ));
             break;
         }
+        if let Some(why) = observers.iter().find_map(|o| o.halt()) {
+            stop_reason = Some(StopReason::OutputLimit);
+            warnings.push(why);
+            break;
+        }
         if let Some(tm) = sim.t_max
             && state.t >= tm
         {
@@ -148,17 +155,8 @@ pub(super) fn drive(
         }
         if steps >= limit {
             stop_reason = Some(StopReason::MaxSteps);
-            if sim.max_steps.is_none() {
-                let why = if events.iter().any(Event::is_stop_condition) {
-                    "the stop condition never became true"
-                } else {
-                    "nothing else ends this run"
-                };
-                warnings.push(format!(
-                    "stopped after the default budget of {DEFAULT_MAX_STEPS} steps at t = {} s: {why}; set [stop] t_max",
-                    state.t
-                ));
-            }
+            let has_condition = events.iter().any(Event::is_stop_condition);
+            warnings.extend(step_limit_warning(sim, has_condition, state.t));
             break;
         }
         // the steps no observer looks at, in the compiled kernel

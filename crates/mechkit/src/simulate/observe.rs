@@ -25,6 +25,14 @@ pub trait Observer {
         Some(step + 1)
     }
 
+    /// Why the run must stop now, if it must: typically an output file reached its size
+    /// limit. Checked before every step; the run then ends with
+    /// [`StopReason::OutputLimit`](super::StopReason::OutputLimit) and this message among its
+    /// warnings.
+    fn halt(&self) -> Option<String> {
+        None
+    }
+
     /// Called once at the end with the final sample (already passed to `observe`).
     fn finish(&mut self, _last: &Sample<'_>) -> Result<(), ObserverError> {
         Ok(())

@@ -28,11 +28,14 @@ pub enum StopReason {
     Zeno,
     /// A stop was asked for from outside ([`interrupt`](super::interrupt): Ctrl-C).
     Interrupted,
+    /// An observer could take no more: an output file reached its size limit
+    /// ([`Observer::halt`](super::Observer::halt)).
+    OutputLimit,
 }
 
 impl StopReason {
     /// Name as in summaries: `t_max`, `event`, `max_steps`, `diverged`, `step_too_small`,
-    /// `zeno`, `interrupted`.
+    /// `zeno`, `interrupted`, `output_limit`.
     pub fn name(self) -> &'static str {
         match self {
             StopReason::TMax => "t_max",
@@ -42,6 +45,7 @@ impl StopReason {
             StopReason::StepTooSmall => "step_too_small",
             StopReason::Zeno => "zeno",
             StopReason::Interrupted => "interrupted",
+            StopReason::OutputLimit => "output_limit",
         }
     }
 
