@@ -383,9 +383,14 @@ mod tests {
         assert_eq!(on_disk(), 6 + 63 * 4, "flushed once the interval passed");
         assert!(!path.exists(), "the final name appears only at the end");
         // 258 bytes so far; 185 rows of 4 bytes would pass 1000
-        let accepted = (0..200).take_while(|_| f.append(b"row\n").expect("ok")).count();
+        let accepted = (0..200)
+            .take_while(|_| f.append(b"row\n").expect("ok"))
+            .count();
         assert_eq!(accepted, (1000 - 258) / 4);
-        assert!(f.is_full() && !f.append(b"\n").expect("ok"), "nothing more once full");
+        assert!(
+            f.is_full() && !f.append(b"\n").expect("ok"),
+            "nothing more once full"
+        );
         assert_eq!(f.len(), 258 + 185 * 4);
         f.finish().expect("renamed");
         assert_eq!(std::fs::metadata(&path).expect("final").len(), 998);
