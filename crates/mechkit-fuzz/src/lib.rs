@@ -14,9 +14,11 @@ use mechkit::data::{ColumnRef, Order, Table};
 use mechkit::deriv::{Derivation, Difference, SavitzkyGolay, kinematics, uniform_step};
 use mechkit::energy::SampledIntegral;
 use mechkit::expr::{Formula, MapScope, simplify};
+use mechkit::mass::TriangleMesh;
 use mechkit::mass::image::{Channel, Density, PixelBody, PixelFrame, Raster, Selection};
+use mechkit::md::AtomsFile;
 use mechkit::quad::SampleRule;
-use mechkit::scenario::Scenario;
+use mechkit::scenario::{BodyFile, Scenario};
 use mechkit::units::{Quantity, Unit};
 
 /// The names a fuzzed formula may use: what a force formula sees in a 2-D scenario, plus a
@@ -121,8 +123,12 @@ pub const SCENARIO_STEPS: u64 = 200;
 
 /// A scenario file: loaded and built into a model (every error rendered with its location),
 /// then, when it loads, run in memory for at most [`SCENARIO_STEPS`] steps and summarised.
+/// The same text is also read as a body file of `mechkit body`.
 pub fn scenario(data: &[u8]) {
     let Some(src) = text(data) else { return };
+    if let Ok(body) = BodyFile::from_str("fuzz.toml", src, None).map_err(|e| e.to_string()) {
+        let _ = body.body.properties().map_err(|e| e.to_string());
+    }
     match Scenario::from_str("fuzz.toml", src) {
         Ok(mut s) => {
             s.max_steps = Some(
@@ -144,11 +150,17 @@ pub fn scenario(data: &[u8]) {
     }
 }
 
-/// A measured data file (CSV or whitespace-separated), as `mechkit derive` and `mechkit
-/// work` read it: the table, the first column as abscissa, then velocities and
-/// accelerations of the second column by every scheme, and its integral by every rule.
+/// A data file: as a measured table (CSV or whitespace-separated) the way `mechkit derive`
+/// and `mechkit work` read it (the first column as abscissa, then velocities and
+/// accelerations of the second column by every scheme, and its integral by every rule), as
+/// an atoms file of `mechkit md --positions` (CSV and XYZ), and as an OBJ mesh of a body.
 pub fn data_file(data: &[u8]) {
     let Some(src) = text(data) else { return };
+    let _ = AtomsFile::parse_csv(src).map_err(|e| e.to_string());
+    let _ = AtomsFile::parse_xyz(src).map_err(|e| e.to_string());
+    if let Ok(mesh) = TriangleMesh::from_obj(src).map_err(|e| e.to_string()) {
+        let _ = mesh.unit_properties();
+    }
     let table = match Table::parse(src, "fuzz.csv") {
         Ok(t) => t,
         Err(e) => {

@@ -100,8 +100,9 @@ fn scenario_examples_and_regressions() {
 #[test]
 fn data_file_examples_and_regressions() {
     let mut inputs = read_all(files(&repo().join("examples"), &[".csv", ".txt", ".d"]));
+    inputs.extend(read_all(files(&repo().join("fuzz/seeds/data_file"), &[])));
     inputs.extend(regressions("data_file"));
-    replay("data_file", &inputs, 5);
+    replay("data_file", &inputs, 8);
 }
 
 #[test]
