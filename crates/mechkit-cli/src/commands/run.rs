@@ -55,10 +55,14 @@ pub fn run(args: &RunArgs) -> Result<Outcome> {
         );
         return Ok(Outcome::Interrupted);
     }
-    if out.summary.stop_reason == "output_limit" {
-        // the message, with how to raise the limit, is among the warnings printed above
+    if let Some(why) = match out.summary.stop_reason.as_str() {
+        "output_limit" => Some("its output reached the limit"),
+        "output_error" => Some("its output could not be written"),
+        _ => None,
+    } {
+        // the message, with what to do, is among the warnings printed above
         eprintln!(
-            "error: the run stopped at t = {} s because its output reached the limit; {} holds the run up to there",
+            "error: the run stopped at t = {} s because {why}; {} holds the run up to there",
             out.summary.t_end,
             dir.display()
         );

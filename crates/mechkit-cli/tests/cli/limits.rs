@@ -164,3 +164,26 @@ fn a_huge_file_is_not_read_as_a_scenario() {
             < 10_000
     );
 }
+
+/// A disk that fills up mid-run (here `/dev/full` in place of the trajectory): the run stops
+/// cleanly where the write failed, says so, and still writes its summary.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_full_disk_mid_run_stops_cleanly_with_a_summary() {
+    let dir = Dir::new();
+    dir.create("fall.toml", FALL);
+    std::fs::create_dir(dir.path().join("out")).expect("out");
+    std::os::unix::fs::symlink("/dev/full", dir.path().join("out/trajectory.csv.partial"))
+        .expect("a link to /dev/full");
+    let out = dir.run(&["run", "fall.toml", "--out", "out", "--no-plots"]);
+    out.assert_code(1)
+        .assert_stderr_contains("cannot write")
+        .assert_stderr_contains("No space left on device")
+        .assert_stderr_contains("could not be written");
+    assert!(!out.stderr.contains("panicked"));
+    let summary = dir.read_json("out/summary.json");
+    assert_eq!(at(&summary, "/stop_reason"), "output_error");
+    // the trajectory buffer (64 KiB) failed long before t_max
+    let t_end = at(&summary, "/t_end").as_f64().expect("t_end");
+    assert!(t_end > 0.1 && t_end < 3.0, "{t_end}");
+}

@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 
 use crate::Real;
 use crate::particles::{ParticleSystem, Sample, SampleKind};
-use crate::simulate::{Observer, ObserverError};
+use crate::simulate::{Observer, ObserverError, StopReason};
 
 /// Writes `bytes` to `path` atomically: to a temporary file beside it, then renamed.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
@@ -120,6 +120,13 @@ impl StreamFile {
         self.out.get_ref().sync_all()?;
         fs::rename(&self.tmp, &self.path)
     }
+
+    /// After a failed write: renames what reached the disk into place, without insisting on
+    /// the rest of the buffer.
+    pub fn keep_what_was_written(mut self) -> io::Result<()> {
+        let _ = self.out.flush();
+        fs::rename(&self.tmp, &self.path)
+    }
 }
 
 /// The message of a run stopped by an output file reaching its limit: which file, the limit,
@@ -217,8 +224,10 @@ pub(crate) struct CsvWriter {
     last_t: Option<Real>,
     line: String,
     rows: u64,
-    /// Why the run must stop: the file reached its limit.
-    halt: Option<String>,
+    /// Why the run must stop: the file reached its limit, or could not be written.
+    halt: Option<(StopReason, String)>,
+    /// Whether a write failed (then closing keeps what reached the disk).
+    failed: bool,
 }
 
 impl CsvWriter {
@@ -247,6 +256,7 @@ impl CsvWriter {
             line: String::with_capacity(256),
             rows: 0,
             halt: None,
+            failed: false,
         })
     }
 
@@ -281,22 +291,36 @@ impl CsvWriter {
             push_number(&mut self.line, w);
         }
         self.line.push('\n');
-        let written = self.out.append(self.line.as_bytes()).map_err(|e| {
-            ObserverError(format!(
-                "writing {}: {e}",
-                self.out.partial_path().display()
-            ))
-        })?;
-        if !written {
-            if self.halt.is_none() {
-                self.halt = Some(output_limit_message(
-                    self.out.path(),
-                    self.out.limit(),
-                    &format!("t = {} s", s.t),
-                    SCENARIO_LIMIT_HINT,
-                ));
-            }
+        if self.halt.is_some() {
             return Ok(());
+        }
+        match self.out.append(self.line.as_bytes()) {
+            Ok(true) => {}
+            Ok(false) => {
+                self.halt = Some((
+                    StopReason::OutputLimit,
+                    output_limit_message(
+                        self.out.path(),
+                        self.out.limit(),
+                        &format!("t = {} s", s.t),
+                        SCENARIO_LIMIT_HINT,
+                    ),
+                ));
+                return Ok(());
+            }
+            Err(e) => {
+                // a full disk, a quota: stop cleanly, keep the rows already on disk
+                self.failed = true;
+                self.halt = Some((
+                    StopReason::OutputError,
+                    format!(
+                        "cannot write {} at t = {} s ({e}), so the run stopped there; the rows written before are kept; free space or choose another --out",
+                        self.out.partial_path().display(),
+                        s.t
+                    ),
+                ));
+                return Ok(());
+            }
         }
         self.last_t = Some(s.t);
         self.rows += 1;
@@ -333,8 +357,13 @@ impl CsvWriter {
     }
 
     /// Flushes and renames the file into place; returns the number of rows written.
+    /// After a failed write, what reached the disk is renamed into place.
     pub fn close(self) -> std::io::Result<u64> {
-        self.out.finish()?;
+        if self.failed {
+            self.out.keep_what_was_written()?;
+        } else {
+            self.out.finish()?;
+        }
         Ok(self.rows)
     }
 }
@@ -351,7 +380,7 @@ impl Observer for CsvWriter {
         self.keep.next_step(step)
     }
 
-    fn halt(&self) -> Option<String> {
+    fn halt(&self) -> Option<(StopReason, String)> {
         self.halt.clone()
     }
 

@@ -165,8 +165,8 @@ pub struct Summary {
     pub steps: u64,
     /// Force evaluations.
     pub evaluations: u64,
-    /// `t_max`, `event`, `max_steps`, `diverged`, `step_too_small`, `zeno`, `interrupted` or
-    /// `output_limit`.
+    /// `t_max`, `event`, `max_steps`, `diverged`, `step_too_small`, `zeno`, `interrupted`,
+    /// `output_limit` or `output_error`.
     pub stop_reason: String,
     /// Every body's final state.
     pub bodies: BTreeMap<String, BodySummary>,

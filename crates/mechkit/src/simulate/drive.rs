@@ -142,8 +142,8 @@ pub(super) fn drive(
             ));
             break;
         }
-        if let Some(why) = observers.iter().find_map(|o| o.halt()) {
-            stop_reason = Some(StopReason::OutputLimit);
+        if let Some((reason, why)) = observers.iter().find_map(|o| o.halt()) {
+            stop_reason = Some(reason);
             warnings.push(why);
             break;
         }

@@ -4,6 +4,7 @@ use thiserror::Error;
 
 use crate::Real;
 use crate::particles::Sample;
+use crate::simulate::StopReason;
 
 /// An observer could not take a sample (typically an output file could not be written).
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -25,11 +26,11 @@ pub trait Observer {
         Some(step + 1)
     }
 
-    /// Why the run must stop now, if it must: typically an output file reached its size
-    /// limit. Checked before every step; the run then ends with
-    /// [`StopReason::OutputLimit`](super::StopReason::OutputLimit) and this message among its
-    /// warnings.
-    fn halt(&self) -> Option<String> {
+    /// Why the run must stop now, if it must: an output file reached its size limit
+    /// ([`StopReason::OutputLimit`]) or could not be written ([`StopReason::OutputError`]).
+    /// Checked before every step; the run then ends with that reason and this message among
+    /// its warnings.
+    fn halt(&self) -> Option<(StopReason, String)> {
         None
     }
 

@@ -31,11 +31,13 @@ pub enum StopReason {
     /// An observer could take no more: an output file reached its size limit
     /// ([`Observer::halt`](super::Observer::halt)).
     OutputLimit,
+    /// An observer could not write its output (a full disk): the run stopped there.
+    OutputError,
 }
 
 impl StopReason {
     /// Name as in summaries: `t_max`, `event`, `max_steps`, `diverged`, `step_too_small`,
-    /// `zeno`, `interrupted`, `output_limit`.
+    /// `zeno`, `interrupted`, `output_limit`, `output_error`.
     pub fn name(self) -> &'static str {
         match self {
             StopReason::TMax => "t_max",
@@ -46,6 +48,7 @@ impl StopReason {
             StopReason::Zeno => "zeno",
             StopReason::Interrupted => "interrupted",
             StopReason::OutputLimit => "output_limit",
+            StopReason::OutputError => "output_error",
         }
     }
 
