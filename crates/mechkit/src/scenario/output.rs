@@ -260,7 +260,7 @@ impl CsvWriter {
         })
     }
 
-    fn write(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+    fn write(&mut self, s: &Sample<'_>) {
         self.line.clear();
         push_number(&mut self.line, s.t);
         let n = s.q.len() / self.dim;
@@ -292,7 +292,7 @@ impl CsvWriter {
         }
         self.line.push('\n');
         if self.halt.is_some() {
-            return Ok(());
+            return;
         }
         match self.out.append(self.line.as_bytes()) {
             Ok(true) => {}
@@ -306,7 +306,7 @@ impl CsvWriter {
                         SCENARIO_LIMIT_HINT,
                     ),
                 ));
-                return Ok(());
+                return;
             }
             Err(e) => {
                 // a full disk, a quota: stop cleanly, keep the rows already on disk
@@ -319,12 +319,11 @@ impl CsvWriter {
                         s.t
                     ),
                 ));
-                return Ok(());
+                return;
             }
         }
         self.last_t = Some(s.t);
         self.rows += 1;
-        Ok(())
     }
 
     /// `cm.x…, cm.vx…, cm.ax…, K_cm, K_internal`: mass-weighted means of the bodies'
@@ -371,7 +370,7 @@ impl CsvWriter {
 impl Observer for CsvWriter {
     fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
         if self.keep.keeps(s) {
-            self.write(s)?;
+            self.write(s);
         }
         Ok(())
     }
@@ -386,7 +385,7 @@ impl Observer for CsvWriter {
 
     fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
         if self.last_t != Some(s.t) {
-            self.write(s)?;
+            self.write(s);
         }
         Ok(())
     }
