@@ -30,7 +30,7 @@ fn main() -> ExitCode {
         Ok(commands::Outcome::Interrupted) => ExitCode::from(EXIT_INTERRUPTED),
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            eprintln!("error: {}", message(&e));
             ExitCode::from(2)
         }
     }
@@ -57,6 +57,20 @@ fn catch_interrupts() {
             eprintln!("warning: Ctrl-C will end mechkit without finishing its outputs ({e})");
         }
     }
+}
+
+/// The error's message followed by its causes (`cannot read p.csv: No such file or
+/// directory`), each cause once: a cause whose text the message already contains is skipped.
+fn message(e: &anyhow::Error) -> String {
+    let mut text = e.to_string();
+    for cause in e.chain().skip(1) {
+        let cause = cause.to_string();
+        if !text.contains(&cause) {
+            text.push_str(": ");
+            text.push_str(&cause);
+        }
+    }
+    text
 }
 
 /// Whether the error is stdout closed by the reader (`mechkit … | head`): not a failure.

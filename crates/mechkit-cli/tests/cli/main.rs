@@ -34,6 +34,7 @@ mod data;
 mod diverge;
 mod energy;
 mod errors;
+mod messages;
 mod friction;
 mod interrupt;
 mod mass;

@@ -84,11 +84,13 @@ pub(crate) fn build_with(
         None => 1,
         Some((d @ 1..=3, _)) => d as usize,
         Some((d, span)) => {
-            return Err(src.error(
-                ErrorKind::Invalid,
-                format!("`dimensions` must be 1, 2 or 3, not {d}"),
-                span,
-            ));
+            return Err(src
+                .error(
+                    ErrorKind::Invalid,
+                    format!("`dimensions` must be 1, 2 or 3, not {d}"),
+                    span,
+                )
+                .with_hint("1 for motion on a line, 2 in a plane, 3 in space"));
         }
     };
 
@@ -319,7 +321,10 @@ pub(crate) fn body_name(
     } else {
         return Ok(n.to_string());
     };
-    Err(t.src.error(ErrorKind::Invalid, message, span))
+    Err(t
+        .src
+        .error(ErrorKind::Invalid, message, span)
+        .with_hint("every body needs its own name: formulas and output columns use it"))
 }
 
 type Bodies = (

@@ -209,6 +209,8 @@ fn with_set(
                     )
                     .with_hint(if names.bodies.len() > 1 {
                         "with several bodies, write `body.vy`"
+                    } else if dim == 1 {
+                        "in 1-D the components are `x` and `v`, e.g. set = { v = \"-0.9*v\" }"
                     } else {
                         "e.g. set = { vy = \"-0.9*vy\" }"
                     }));
