@@ -112,7 +112,7 @@ impl Formula {
                         want.describe()
                     ),
                     hint: Some(format!(
-                        "multiply by a constant with units to convert: {what} is in {}",
+                        "check the units of the names the formula uses: {what} is in {}",
                         want.describe()
                     )),
                 },

@@ -85,7 +85,7 @@ fn potential(args: &MdArgs) -> Result<Potential> {
         "spring" => Potential::Spring(
             LinearSpring::new(args.k, args.rest_length, args.cutoff).map_err(with_flag)?,
         ),
-        other => bail!("--potential: unknown potential '{other}'; use lj, soft-sphere or spring"),
+        other => bail!("--potential: unknown potential `{other}`; use lj, soft-sphere or spring"),
     })
 }
 
@@ -108,7 +108,7 @@ pub fn setup(args: &MdArgs) -> Result<(Setup, Potential)> {
     let Some(path) = &args.positions else {
         let lattice = Lattice::from_name(&args.lattice).ok_or_else(|| {
             anyhow!(
-                "--lattice: unknown lattice '{}'; use fcc, sc, hexagonal, square or chain",
+                "--lattice: unknown lattice `{}`; use fcc, sc, hexagonal, square or chain",
                 args.lattice
             )
         })?;
@@ -132,7 +132,7 @@ pub fn setup(args: &MdArgs) -> Result<(Setup, Potential)> {
     let periodic = match args.boundary.as_str() {
         "periodic" => true,
         "open" => false,
-        other => bail!("--boundary: unknown boundary '{other}'; use periodic or open"),
+        other => bail!("--boundary: unknown boundary `{other}`; use periodic or open"),
     };
     let lengths: [f64; 3] = match args.r#box.as_slice() {
         [] if periodic => bail!(

@@ -35,7 +35,9 @@ fn number(field: &str, line: usize) -> Result<Real, MdError> {
         Ok(v) if v.is_finite() => Ok(v),
         _ => Err(error(
             line,
-            format!("`{field}` is not a finite number; a coordinate is a number such as 1.5 or -2e-3"),
+            format!(
+                "`{field}` is not a finite number; a coordinate is a number such as 1.5 or -2e-3"
+            ),
         )),
     }
 }
@@ -125,16 +127,17 @@ impl AtomsFile {
                 )
             })?;
         if n == 0 {
-            return Err(error(1, "the particle count is 0; an XYZ file needs at least one particle"));
+            return Err(error(
+                1,
+                "the particle count is 0; an XYZ file needs at least one particle",
+            ));
         }
-        lines
-            .next()
-            .ok_or_else(|| {
-                error(
-                    2,
-                    "the comment line is missing; line 2 of an XYZ file is a comment (it may be empty)",
-                )
-            })?;
+        lines.next().ok_or_else(|| {
+            error(
+                2,
+                "the comment line is missing; line 2 of an XYZ file is a comment (it may be empty)",
+            )
+        })?;
         let mut vectors = Vec::with_capacity(n);
         for k in 0..n {
             let line = k + 3;

@@ -126,12 +126,11 @@ pub(crate) fn diagnose_evaluation(
 
 /// A position or velocity for a message: `0.5 m` in 1-D, `(0.5, 2) m` otherwise.
 fn vector(v: &[Real], unit: &str) -> String {
-    match v {
-        [x] => format!("{x} {unit}"),
-        _ => {
-            let parts: Vec<String> = v.iter().map(ToString::to_string).collect();
-            format!("({}) {unit}", parts.join(", "))
-        }
+    if let [x] = v {
+        format!("{x} {unit}")
+    } else {
+        let parts: Vec<String> = v.iter().map(ToString::to_string).collect();
+        format!("({}) {unit}", parts.join(", "))
     }
 }
 

@@ -62,7 +62,10 @@ pub static CASES: &[Case] = &[
         area: "body file",
         kind: "bad_obj_line",
         files: &[
-            ("tet.obj", Text("v 0 0 0\nv 1 0 0\nv 0 one 0\nv 0 0 1\nf 1 3 2\n")),
+            (
+                "tet.obj",
+                Text("v 0 0 0\nv 1 0 0\nv 0 one 0\nv 0 0 1\nf 1 3 2\n"),
+            ),
             (
                 "b.toml",
                 Text("[[part]]\nshape = \"mesh\"\nfile = \"tet.obj\"\nmass = 1\n"),

@@ -71,8 +71,7 @@ impl Case {
         let canonical = dir
             .path()
             .canonicalize()
-            .map(|p| p.display().to_string())
-            .unwrap_or_else(|_| tmp.clone());
+            .map_or_else(|_| tmp.clone(), |p| p.display().to_string());
         stderr = stderr.replace(&canonical, "[TMP]").replace(&tmp, "[TMP]");
         Ran {
             case: self,
@@ -150,7 +149,9 @@ pub fn all_runs() -> &'static [Ran] {
                 });
             }
         });
-        runs.into_iter().map(|r| r.expect("every case ran")).collect()
+        runs.into_iter()
+            .map(|r| r.expect("every case ran"))
+            .collect()
     })
 }
 

@@ -52,7 +52,14 @@ pub static CASES: &[Case] = &[
         code: 2,
     },
     flags!("point_masses_without_positions", "com", "--mass", "1 kg"),
-    flags!("point_masses_mixed_dimensions", "com", "--mass", "1 kg@0,0", "--mass", "2 kg@1"),
+    flags!(
+        "point_masses_mixed_dimensions",
+        "com",
+        "--mass",
+        "1 kg@0,0",
+        "--mass",
+        "2 kg@1"
+    ),
     flags!("point_mass_not_a_mass", "com", "--mass", "1 m@0"),
     flags!("no_bodies", "com"),
 ];

@@ -35,12 +35,27 @@ pub static CASES: &[Case] = &[
     work!("not_finite", "x F\n0 1\n1 inf\n2 3\n"),
     work!("too_few_rows", "x F\n0 1\n"),
     work!("unknown_column", "x F\n0 1\n1 2\n2 3\n", "--f", "G"),
-    work!("unknown_column_without_header", "0 1\n1 2\n2 3\n", "--f", "F"),
-    work!("ambiguous_column", "x Fx fx\n0 1 1\n1 2 2\n2 3 3\n", "--f", "FX"),
+    work!(
+        "unknown_column_without_header",
+        "0 1\n1 2\n2 3\n",
+        "--f",
+        "F"
+    ),
+    work!(
+        "ambiguous_column",
+        "x Fx fx\n0 1 1\n1 2 2\n2 3 3\n",
+        "--f",
+        "FX"
+    ),
     work!("column_out_of_range", "x F\n0 1\n1 2\n2 3\n", "--f", "7"),
     work!("column_zero", "x F\n0 1\n1 2\n2 3\n", "--f", "0"),
     work!("not_monotone", "x F\n0 1\n1 2\n0.5 3\n"),
-    work!("unknown_rule", "x F\n0 1\n1 2\n2 3\n", "--method", "simpsons"),
+    work!(
+        "unknown_rule",
+        "x F\n0 1\n1 2\n2 3\n",
+        "--method",
+        "simpsons"
+    ),
     Case {
         area: "data file",
         kind: "duplicate_abscissa",
@@ -52,7 +67,15 @@ pub static CASES: &[Case] = &[
         area: "data file",
         kind: "smoothing_window",
         files: &[("f.dat", Text("t x\n0 1\n1 2\n2 3\n3 5\n"))],
-        args: &["derive", "f.dat", "--no-plots", "--out", "out", "--smooth", "2"],
+        args: &[
+            "derive",
+            "f.dat",
+            "--no-plots",
+            "--out",
+            "out",
+            "--smooth",
+            "2",
+        ],
         code: 2,
     },
 ];

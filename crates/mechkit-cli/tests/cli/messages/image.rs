@@ -40,6 +40,11 @@ fn half() -> Vec<u8> {
         .expect("the raster encodes")
 }
 
+/// The start of a GIF file: enough to be recognised.
+fn gif() -> Vec<u8> {
+    b"GIF89a\x01\x00\x01\x00\x00\x00\x00".to_vec()
+}
+
 fn truncated() -> Vec<u8> {
     let mut bytes = png(0);
     bytes.truncate(40);
@@ -68,13 +73,19 @@ pub static CASES: &[Case] = &[
         code: 2,
     },
     com!("not_an_image", "photo.png", Text("not an image\n")),
-    com!("unsupported_format", "photo.gif", Text("GIF89a\u{1}\u{0}\u{1}\u{0}")),
+    com!("unsupported_format", "photo.gif", Bytes(gif)),
     com!("cannot_decode", "photo.png", Bytes(truncated)),
     com!("selects_nothing", "white.png", Bytes(white)),
     com!("selects_everything", "black.png", Bytes(black)),
     com!("bad_channel", "black.png", Bytes(black), "--channel", "q"),
     com!("bad_scale", "black.png", Bytes(black), "--scale", "240 px"),
-    com!("pixel_size_dimension", "black.png", Bytes(black), "--pixel-size", "3 kg"),
+    com!(
+        "pixel_size_dimension",
+        "black.png",
+        Bytes(black),
+        "--pixel-size",
+        "3 kg"
+    ),
     com!("bad_origin", "black.png", Bytes(black), "--origin", "1"),
     Case {
         area: "output",

@@ -42,21 +42,80 @@ pub static CASES: &[Case] = &[
     md!("unknown_potential", "--potential", "morse"),
     md!("too_few_particles", "--lattice", "chain", "--cells", "1"),
     md!("positions_file_not_found", "--positions", "nofile.csv"),
-    positions!("positions_not_a_number", "p.csv", "0,0,0\n1,a,1\n", "--box", "10"),
-    positions!("positions_column_count", "p.csv", "0,0,0\n1,1\n", "--box", "10"),
-    positions!("positions_too_many_columns", "p.csv", "0,0,0,0\n", "--box", "10"),
+    positions!(
+        "positions_not_a_number",
+        "p.csv",
+        "0,0,0\n1,a,1\n",
+        "--box",
+        "10"
+    ),
+    positions!(
+        "positions_column_count",
+        "p.csv",
+        "0,0,0\n1,1\n",
+        "--box",
+        "10"
+    ),
+    positions!(
+        "positions_too_many_columns",
+        "p.csv",
+        "0,0,0,0\n",
+        "--box",
+        "10"
+    ),
     positions!("positions_empty", "p.csv", "# nothing\n", "--box", "10"),
-    positions!("xyz_count", "p.xyz", "two\ncomment\nAr 0 0 0\n", "--box", "10"),
-    positions!("xyz_truncated", "p.xyz", "2\ncomment\nAr 0 0 0\n", "--box", "10"),
-    positions!("xyz_short_line", "p.xyz", "1\ncomment\nAr 0 0\n", "--box", "10"),
+    positions!(
+        "xyz_count",
+        "p.xyz",
+        "two\ncomment\nAr 0 0 0\n",
+        "--box",
+        "10"
+    ),
+    positions!(
+        "xyz_truncated",
+        "p.xyz",
+        "2\ncomment\nAr 0 0 0\n",
+        "--box",
+        "10"
+    ),
+    positions!(
+        "xyz_short_line",
+        "p.xyz",
+        "1\ncomment\nAr 0 0\n",
+        "--box",
+        "10"
+    ),
     positions!("periodic_box_needs_lengths", "p.csv", "0,0,0\n1,1,1\n"),
-    positions!("box_length_count", "p.csv", "0,0,0\n1,1,1\n", "--box", "1,2"),
-    positions!("unknown_boundary", "p.csv", "0,0,0\n1,1,1\n", "--boundary", "wall"),
+    positions!(
+        "box_length_count",
+        "p.csv",
+        "0,0,0\n1,1,1\n",
+        "--box",
+        "1,2"
+    ),
+    positions!(
+        "unknown_boundary",
+        "p.csv",
+        "0,0,0\n1,1,1\n",
+        "--boundary",
+        "wall"
+    ),
     Case {
         area: "md",
         kind: "velocities_count",
-        files: &[("p.csv", Text("0,0,0\n1,1,1\n")), ("v.csv", Text("0,0,0\n"))],
-        args: &["md", "--positions", "p.csv", "--velocities", "v.csv", "--box", "10"],
+        files: &[
+            ("p.csv", Text("0,0,0\n1,1,1\n")),
+            ("v.csv", Text("0,0,0\n")),
+        ],
+        args: &[
+            "md",
+            "--positions",
+            "p.csv",
+            "--velocities",
+            "v.csv",
+            "--box",
+            "10",
+        ],
         code: 2,
     },
 ];

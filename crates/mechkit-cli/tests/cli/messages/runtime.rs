@@ -51,7 +51,7 @@ pub static CASES: &[Case] = &[
         files: &[(
             "s.toml",
             Text(
-                "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nwhen = \"x < -1\"\n",
+                "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[[force]]\nname = \"gravity\"\nkind = \"uniform-gravity\"\ng = \"9.81 m/s^2\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nwhen = \"x < -1\"\n",
             ),
         )],
         args: &["check", "s.toml"],
@@ -76,7 +76,17 @@ pub static CASES: &[Case] = &[
         area: "output",
         kind: "unwritable_md_out",
         files: &[("afile", Text("a regular file, not a directory\n"))],
-        args: &["md", "--cells", "2", "--lattice", "sc", "--density", "0.1", "--out", "afile/sub"],
+        args: &[
+            "md",
+            "--cells",
+            "4",
+            "--lattice",
+            "sc",
+            "--density",
+            "0.1",
+            "--out",
+            "afile/sub",
+        ],
         code: 2,
     },
 ];

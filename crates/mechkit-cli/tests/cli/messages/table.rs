@@ -99,12 +99,7 @@ fn table(runs: &[Ran]) -> String {
         if let Some(input) = input_excerpt(r) {
             let _ = write!(s, "{input}");
         }
-        let _ = write!(
-            s,
-            "```console\n$ {}\n{}```\n",
-            r.case.command(),
-            r.stderr
-        );
+        let _ = write!(s, "```console\n$ {}\n{}```\n", r.case.command(), r.stderr);
     }
     s
 }
@@ -140,7 +135,7 @@ fn input_excerpt(r: &Ran) -> Option<String> {
     let mut s = String::new();
     for (name, contents) in r.case.files {
         let Contents::Text(text) = contents else {
-            let _ = writeln!(s, "`{name}`: a generated image.\n");
+            let _ = writeln!(s, "`{name}`: a generated binary file (an image).\n");
             continue;
         };
         let text = text.strip_prefix('\n').unwrap_or(text);
