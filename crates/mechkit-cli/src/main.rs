@@ -59,18 +59,26 @@ fn catch_interrupts() {
     }
 }
 
-/// The error's message followed by its causes (`cannot read p.csv: No such file or
-/// directory`), each cause once: a cause whose text the message already contains is skipped.
+/// The error's message with its causes after its first line (`cannot read p.csv: No such
+/// file or directory`, then the hint lines if any), each cause once: a cause whose text the
+/// message already contains is skipped.
 fn message(e: &anyhow::Error) -> String {
-    let mut text = e.to_string();
+    let text = e.to_string();
+    let (mut first, rest) = match text.split_once('\n') {
+        Some((first, rest)) => (first.to_string(), Some(rest)),
+        None => (text.clone(), None),
+    };
     for cause in e.chain().skip(1) {
         let cause = cause.to_string();
-        if !text.contains(&cause) {
-            text.push_str(": ");
-            text.push_str(&cause);
+        if !text.contains(&cause) && !first.contains(&cause) {
+            first.push_str(": ");
+            first.push_str(&cause);
         }
     }
-    text
+    match rest {
+        Some(rest) => format!("{first}\n{rest}"),
+        None => first,
+    }
 }
 
 /// Whether the error is stdout closed by the reader (`mechkit … | head`): not a failure.

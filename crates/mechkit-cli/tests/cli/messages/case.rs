@@ -128,6 +128,7 @@ pub fn all_cases() -> impl Iterator<Item = &'static Case> {
         super::image::CASES,
         super::md::CASES,
         super::cli_flags::CASES,
+        super::commands::CASES,
         super::runtime::CASES,
     ]
     .into_iter()

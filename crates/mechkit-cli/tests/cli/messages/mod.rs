@@ -18,6 +18,7 @@ mod body;
 mod calculus;
 mod case;
 mod cli_flags;
+mod commands;
 mod data;
 mod image;
 mod md;
