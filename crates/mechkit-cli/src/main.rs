@@ -3,12 +3,14 @@
 //! Exit codes:
 //! - 0: success;
 //! - 1: the computation failed (the simulation diverged; the output so far is kept);
-//! - 2: bad input (usage, unreadable or invalid file, units, unwritable output directory).
+//! - 2: bad input (usage, unreadable or invalid file, units, unwritable output directory);
+//! - 101: an internal error (a bug), reported as `error: internal error, …`.
 //!
-//! Errors go to stderr with their location and a hint.
+//! Errors go to stderr with their location and a hint (`failure.rs`).
 
 mod args;
 mod commands;
+mod failure;
 mod plot;
 
 use std::process::ExitCode;
@@ -16,6 +18,7 @@ use std::process::ExitCode;
 use clap::Parser;
 
 fn main() -> ExitCode {
+    failure::install_panic_hook();
     let cli = args::Cli::parse();
     // the commands whose loops look at the interrupt flag; the others end at Ctrl-C as usual
     if matches!(
@@ -30,7 +33,7 @@ fn main() -> ExitCode {
         Ok(commands::Outcome::Interrupted) => ExitCode::from(EXIT_INTERRUPTED),
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {}", message(&e));
+            eprintln!("error: {}", failure::message(&e));
             ExitCode::from(2)
         }
     }
@@ -56,28 +59,6 @@ fn catch_interrupts() {
         if let Err(e) = registered {
             eprintln!("warning: Ctrl-C will end mechkit without finishing its outputs ({e})");
         }
-    }
-}
-
-/// The error's message with its causes after its first line (`cannot read p.csv: No such
-/// file or directory`, then the hint lines if any), each cause once: a cause whose text the
-/// message already contains is skipped.
-fn message(e: &anyhow::Error) -> String {
-    let text = e.to_string();
-    let (mut first, rest) = match text.split_once('\n') {
-        Some((first, rest)) => (first.to_string(), Some(rest)),
-        None => (text.clone(), None),
-    };
-    for cause in e.chain().skip(1) {
-        let cause = cause.to_string();
-        if !text.contains(&cause) && !first.contains(&cause) {
-            first.push_str(": ");
-            first.push_str(&cause);
-        }
-    }
-    match rest {
-        Some(rest) => format!("{first}\n{rest}"),
-        None => first,
     }
 }
 

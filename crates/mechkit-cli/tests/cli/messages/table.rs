@@ -152,8 +152,8 @@ fn input_excerpt(r: &Ran) -> Option<String> {
                     s.push_str("…\n");
                 }
             }
-            _ if lines.len() > 12 => {
-                for l in &lines[..12] {
+            _ if lines.len() > 30 => {
+                for l in &lines[..30] {
                     let _ = writeln!(s, "{l}");
                 }
                 s.push_str("…\n");
