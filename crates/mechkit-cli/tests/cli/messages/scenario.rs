@@ -7,7 +7,57 @@ fn scenario_structure_messages() {
     assert_cases(CASES);
 }
 
+/// A `mechkit check s.toml` case of the area `scenario`.
+macro_rules! check {
+    ($kind:literal, $text:expr) => {
+        Case {
+            area: "scenario",
+            kind: $kind,
+            files: &[("s.toml", Text($text))],
+            args: &["check", "s.toml"],
+            code: 2,
+        }
+    };
+}
+
+/// One body, a step and a stop time, followed by `$rest`.
+macro_rules! ball_and {
+    ($rest:literal) => {
+        concat!(
+            "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n",
+            "[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n",
+            $rest
+        )
+    };
+}
+
 pub static CASES: &[Case] = &[
+    check!("toml_duplicate_key", "dimensions = 1\ndimensions = 2\n"),
+    check!(
+        "unknown_key_listing_the_keys",
+        "[[rigid_body]]\nname = \"rod\"\nshape = \"rod\"\n"
+    ),
+    check!(
+        "missing_force_parameter",
+        "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[[force]]\nname = \"s\"\nkind = \"spring\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n"
+    ),
+    check!(
+        "reserved_constant_name",
+        "dimensions = 1\n[constants]\nz = \"0 m\"\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n"
+    ),
+    check!(
+        "unknown_event_action",
+        ball_and!("[[event]]\nname = \"e\"\nfunction = \"x\"\naction = \"halt\"\n")
+    ),
+    check!(
+        "count_on_a_recording_event",
+        ball_and!("[[event]]\nname = \"e\"\nfunction = \"x\"\ncount = 3\n")
+    ),
+    check!("output_every_zero", ball_and!("[output]\nevery = 0\n")),
+    check!(
+        "restitution_out_of_range",
+        "dimensions = 2\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\nradius = \"1 cm\"\n[contact]\nrestitution = 1.5\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n"
+    ),
     Case {
         area: "scenario",
         kind: "toml_syntax",
