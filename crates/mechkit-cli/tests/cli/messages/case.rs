@@ -53,6 +53,11 @@ impl Case {
         s
     }
 
+    /// The snapshot's name, also its file name without `.snap`: `area__kind`.
+    pub fn snapshot_name(&self) -> String {
+        format!("{}__{}", self.area.replace(' ', "_"), self.kind)
+    }
+
     fn run(&'static self) -> Ran {
         let dir = Dir::new();
         for (name, contents) in self.files {
@@ -109,10 +114,7 @@ impl Ran {
         settings.set_omit_expression(true);
         settings.set_description(self.case.command());
         settings.bind(|| {
-            insta::assert_snapshot!(
-                format!("{}__{}", self.case.area.replace(' ', "_"), self.case.kind),
-                self.snapshot()
-            );
+            insta::assert_snapshot!(self.case.snapshot_name(), self.snapshot());
         });
     }
 }

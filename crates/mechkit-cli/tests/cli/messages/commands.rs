@@ -118,6 +118,55 @@ pub static CASES: &[Case] = &[
         "3 s"
     ),
     command!(
+        "work_path_and_field_dimensions",
+        "work",
+        "--field",
+        "y, -x",
+        "--path",
+        "cos(s)",
+        "--param",
+        "s=0:1"
+    ),
+    command!(
+        "work_path_without_parameter",
+        "work",
+        "--field",
+        "y, -x",
+        "--path",
+        "cos(s), sin(s)"
+    ),
+    command!(
+        "potential_range_uses_an_unknown_name",
+        "potential",
+        "x^2",
+        "--range",
+        "0:a"
+    ),
+    command!(
+        "integrate_unknown_rule",
+        "integrate",
+        "x",
+        "--from",
+        "0",
+        "--to",
+        "1",
+        "--method",
+        "trapezoidal"
+    ),
+    command!(
+        "integrate_zero_intervals",
+        "integrate",
+        "x",
+        "--from",
+        "0",
+        "--to",
+        "1",
+        "--method",
+        "left",
+        "--n",
+        "0"
+    ),
+    command!(
         "power_negative_mass",
         "power",
         "--power",

@@ -4,7 +4,7 @@
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use super::case::{Contents, Ran, all_runs};
+use super::case::{Contents, Ran, all_cases, all_runs};
 
 const BEGIN: &str = "<!-- errors:begin -->";
 const END: &str = "<!-- errors:end -->";
@@ -46,6 +46,30 @@ fn no_message_shows_a_panic_or_a_debug_format() {
             r.case.kind,
             r.stderr
         );
+    }
+}
+
+#[test]
+fn every_snapshot_belongs_to_a_case_and_every_kind_is_unique() {
+    let names: Vec<String> = all_cases().map(super::case::Case::snapshot_name).collect();
+    let mut sorted = names.clone();
+    sorted.sort();
+    sorted.dedup();
+    assert_eq!(
+        sorted.len(),
+        names.len(),
+        "two cases share an area and kind"
+    );
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/cli/messages/snapshots");
+    for entry in std::fs::read_dir(&dir).expect("the snapshots directory exists") {
+        let file = entry.expect("a directory entry").file_name();
+        let file = file.to_string_lossy();
+        if let Some(name) = file.strip_suffix(".snap") {
+            assert!(
+                names.iter().any(|n| n == name),
+                "{file} belongs to no case: remove it, or restore its case"
+            );
+        }
     }
 }
 
