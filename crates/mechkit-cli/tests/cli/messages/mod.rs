@@ -9,6 +9,7 @@
 //!   it);
 //! - no stderr shows a Rust panic, a backtrace hint or a `Debug` rendering (`Some(`,
 //!   `Error {`, `Os {`, escaped quotes);
+//! - every file in `snapshots/` belongs to a case (no orphan left when a case is removed);
 //! - the table of every kind in `docs/reliability.md` (between `<!-- errors:begin -->` and
 //!   `<!-- errors:end -->`) is the one these cases produce; `MECHKIT_BLESS=1` rewrites it.
 //!
