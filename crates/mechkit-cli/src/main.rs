@@ -3,12 +3,14 @@
 //! Exit codes:
 //! - 0: success;
 //! - 1: the computation failed (the simulation diverged; the output so far is kept);
-//! - 2: bad input (usage, unreadable or invalid file, units, unwritable output directory).
+//! - 2: bad input (usage, unreadable or invalid file, units, unwritable output directory);
+//! - 101: an internal error (a bug), reported as `error: internal error, …`.
 //!
-//! Errors go to stderr with their location and a hint.
+//! Errors go to stderr with their location and a hint (`failure.rs`).
 
 mod args;
 mod commands;
+mod failure;
 mod plot;
 
 use std::process::ExitCode;
@@ -16,7 +18,7 @@ use std::process::ExitCode;
 use clap::Parser;
 
 fn main() -> ExitCode {
-    report_bugs_plainly();
+    failure::install_panic_hook();
     let cli = args::Cli::parse();
     // the commands whose loops look at the interrupt flag; the others end at Ctrl-C as usual
     if matches!(
@@ -31,36 +33,10 @@ fn main() -> ExitCode {
         Ok(commands::Outcome::Interrupted) => ExitCode::from(EXIT_INTERRUPTED),
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            eprintln!("error: {}", failure::message(&e));
             ExitCode::from(2)
         }
     }
-}
-
-/// A panic is a bug in mechkit, never a fault of the input: it is reported as such in
-/// mechkit's own error format, without Rust's panic message (the exit status stays 101).
-fn report_bugs_plainly() {
-    std::panic::set_hook(Box::new(|info| {
-        let payload = info.payload();
-        let what = payload
-            .downcast_ref::<&str>()
-            .map(|s| (*s).to_string())
-            .or_else(|| payload.downcast_ref::<String>().cloned());
-        let at = info
-            .location()
-            .map(|l| format!("{}:{}", l.file(), l.line()));
-        eprintln!("{}", bug_report(what.as_deref(), at.as_deref()));
-    }));
-}
-
-/// The text of [`report_bugs_plainly`].
-fn bug_report(what: Option<&str>, at: Option<&str>) -> String {
-    format!(
-        "error: internal error in mechkit {}: {}{}\n  = hint: this is a bug in mechkit, not a problem with your input; please report it with the command and the input files",
-        env!("CARGO_PKG_VERSION"),
-        what.unwrap_or("an unexpected failure"),
-        at.map(|a| format!(" (at {a})")).unwrap_or_default()
-    )
 }
 
 /// Exit status after Ctrl-C: 128 + SIGINT, as shells report a process killed by it.
@@ -90,17 +66,4 @@ fn catch_interrupts() {
 fn is_broken_pipe(e: &anyhow::Error) -> bool {
     e.downcast_ref::<std::io::Error>()
         .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn a_bug_is_reported_as_mechkits_error_not_as_a_rust_panic() {
-        let text = super::bug_report(Some("index out of bounds"), Some("src/x.rs:3"));
-        assert!(text.starts_with("error: internal error in mechkit 0."));
-        assert!(text.contains("index out of bounds (at src/x.rs:3)"));
-        assert!(text.contains("hint: this is a bug"));
-        assert!(!text.contains("panicked"));
-        assert!(super::bug_report(None, None).contains("an unexpected failure\n"));
-    }
 }

@@ -111,7 +111,10 @@ impl Formula {
                         "{what} must have dimension {}, but this formula has {got}",
                         want.describe()
                     ),
-                    hint: None,
+                    hint: Some(format!(
+                        "check the units of the names the formula uses: {what} is in {}",
+                        want.describe()
+                    )),
                 },
                 self.full_span(),
             ))
@@ -136,12 +139,17 @@ impl From<String> for Failure {
 
 fn same(op: &str, a: Dim, b: Dim, ea: &Expr, eb: &Expr) -> Result<Dim, Failure> {
     match (a, b) {
-        (Dim::Known(x), Dim::Known(y)) if x != y => Err(format!(
-            "cannot {op} `{ea}` ({}) and `{eb}` ({})",
-            x.describe(),
-            y.describe()
-        )
-        .into()),
+        (Dim::Known(x), Dim::Known(y)) if x != y => Err(Failure {
+            message: format!(
+                "cannot {op} `{ea}` ({}) and `{eb}` ({})",
+                x.describe(),
+                y.describe()
+            ),
+            hint: Some(format!(
+                "both sides must have the same dimension: check `{eb}`, or multiply it by a \
+                 constant with units (defined in [constants])"
+            )),
+        }),
         (Dim::Known(x), _) | (_, Dim::Known(x)) => Ok(Dim::Known(x)),
         (Dim::Unknown, _) | (_, Dim::Unknown) => Ok(Dim::Unknown),
         (Dim::Literal, Dim::Literal) => Ok(Dim::Literal),

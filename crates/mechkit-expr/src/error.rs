@@ -135,9 +135,29 @@ impl ExprError {
     /// What would fix it, when something useful can be said.
     pub fn hint(&self) -> Option<String> {
         match &self.kind {
+            ExprErrorKind::Empty => Some("write a formula, e.g. `-k*x` or `2*t + 1`".into()),
+            ExprErrorKind::UnexpectedChar(_) => Some(
+                "formulas use numbers, names, `+ - * / ^`, comparisons (`<`, `==`, …), \
+                 `and`, `or`, `not`, parentheses and function calls such as `sin(x)`"
+                    .into(),
+            ),
+            ExprErrorKind::UnexpectedToken { .. } => {
+                Some("check for a missing or doubled operator, or a stray `)` or `,`".into())
+            }
             ExprErrorKind::SingleEquals => Some("write `==` to compare".into()),
-            ExprErrorKind::MissingOperator { .. } => {
-                Some("write `*` to multiply, e.g. `2*x` rather than `2 x`".into())
+            ExprErrorKind::MissingOperator { found } => {
+                let unit = found
+                    .strip_prefix("name `")
+                    .and_then(|s| s.strip_suffix('`'))
+                    .filter(|name| crate::units::Unit::parse(name).is_ok());
+                Some(match unit {
+                    Some(u) => format!(
+                        "write `*` to multiply; if `{u}` is meant as a unit: formulas have no \
+                         units, so give the value a name with its unit (in a scenario, \
+                         `c = \"1 {u}\"` in [constants]) and use the name"
+                    ),
+                    None => "write `*` to multiply, e.g. `2*x` rather than `2 x`".into(),
+                })
             }
             ExprErrorKind::UnknownFunction { suggestions, .. } => did_you_mean(suggestions)
                 .or_else(|| {

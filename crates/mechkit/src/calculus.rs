@@ -422,10 +422,12 @@ pub fn convert(quantity: &str, to: Option<&str>) -> Result<Conversion, CalculusE
             let unit = Unit::parse(u)?;
             let v = q.value_in(&unit).ok_or_else(|| {
                 CalculusError::Invalid(format!(
-                    "cannot convert {} to {u}: the dimensions differ ({} vs {})",
+                    "cannot convert {} to {u}: the dimensions differ ({} vs {}); give --to a unit \
+                     of {}, or leave it out to see the value in SI units",
                     quantity,
                     q.dim.describe(),
-                    unit.dim.describe()
+                    unit.dim.describe(),
+                    q.dim.describe()
                 ))
             })?;
             Some((v, u.to_string()))

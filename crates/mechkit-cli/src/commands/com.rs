@@ -122,9 +122,9 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
     let (mass_texts, at_texts): (Vec<&str>, Vec<&str>) = if inline == 0 {
         if args.at.len() != args.mass.len() {
             bail!(
-                "{} masses but {} positions: give one --at after each --mass, or write --mass \"2 kg@1 m, 0\"",
-                args.mass.len(),
-                args.at.len()
+                "--mass is given {} but --at {}: give one --at after each --mass, or write --mass \"2 kg@1 m, 0\"",
+                times(args.mass.len()),
+                times(args.at.len())
             );
         }
         (
@@ -144,9 +144,9 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
     };
     if !args.velocity.is_empty() && args.velocity.len() != args.mass.len() {
         bail!(
-            "{} masses but {} velocities: give a --velocity for every body, or none",
-            args.mass.len(),
-            args.velocity.len()
+            "--mass is given {} but --velocity {}: give a --velocity for every body, or none",
+            times(args.mass.len()),
+            times(args.velocity.len())
         );
     }
     let masses = mass_texts
@@ -227,4 +227,14 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
         print(&out)?;
     }
     Ok(Outcome::Success)
+}
+
+/// How often a flag is given, for messages: `once`, `twice`, `3 times`, `not at all`.
+fn times(n: usize) -> String {
+    match n {
+        0 => "not at all".into(),
+        1 => "once".into(),
+        2 => "twice".into(),
+        n => format!("{n} times"),
+    }
 }

@@ -85,7 +85,7 @@ fn potential(args: &MdArgs) -> Result<Potential> {
         "spring" => Potential::Spring(
             LinearSpring::new(args.k, args.rest_length, args.cutoff).map_err(with_flag)?,
         ),
-        other => bail!("--potential: unknown potential '{other}'; use lj, soft-sphere or spring"),
+        other => bail!("--potential: unknown potential `{other}`; use lj, soft-sphere or spring"),
     })
 }
 
@@ -93,8 +93,13 @@ fn potential(args: &MdArgs) -> Result<Potential> {
 fn read_atoms(flag: &str, path: &std::path::Path) -> Result<AtomsFile> {
     let text = std::fs::read_to_string(path)
         .with_context(|| format!("{flag}: cannot read {}", path.display()))?;
-    AtomsFile::parse(&path.to_string_lossy(), &text)
-        .map_err(|e| anyhow!("{flag}: {}: {e}", path.display()))
+    AtomsFile::parse(&path.to_string_lossy(), &text).map_err(|e| match e {
+        // `file:line:` as compilers and the data files print it
+        MdError::Parse { line, message } => {
+            anyhow!("{flag}: {}:{line}: {message}", path.display())
+        }
+        e => anyhow!("{flag}: {}: {e}", path.display()),
+    })
 }
 
 /// The starting state and the potential from the flags.
@@ -103,7 +108,7 @@ pub fn setup(args: &MdArgs) -> Result<(Setup, Potential)> {
     let Some(path) = &args.positions else {
         let lattice = Lattice::from_name(&args.lattice).ok_or_else(|| {
             anyhow!(
-                "--lattice: unknown lattice '{}'; use fcc, sc, hexagonal, square or chain",
+                "--lattice: unknown lattice `{}`; use fcc, sc, hexagonal, square or chain",
                 args.lattice
             )
         })?;
@@ -127,10 +132,13 @@ pub fn setup(args: &MdArgs) -> Result<(Setup, Potential)> {
     let periodic = match args.boundary.as_str() {
         "periodic" => true,
         "open" => false,
-        other => bail!("--boundary: unknown boundary '{other}'; use periodic or open"),
+        other => bail!("--boundary: unknown boundary `{other}`; use periodic or open"),
     };
     let lengths: [f64; 3] = match args.r#box.as_slice() {
-        [] if periodic => bail!("--box: a periodic box needs its edge lengths"),
+        [] if periodic => bail!(
+            "--box: a periodic box needs its edge lengths: give --box L (every axis) or one \
+             length per axis, e.g. --box 10,10,10; or --boundary open"
+        ),
         [] => std::array::from_fn(|a| {
             let (lo, hi) = atoms
                 .vectors
@@ -153,7 +161,8 @@ pub fn setup(args: &MdArgs) -> Result<(Setup, Potential)> {
         let v = read_atoms("--velocities", vpath)?;
         if v.vectors.len() != n || v.dim != dim {
             bail!(
-                "--velocities: {} has {} {}-D velocities for {n} {dim}-D positions",
+                "--velocities: {} has {} {}-D velocities for {n} {dim}-D positions; give one \
+                 velocity per particle, in the order of --positions and with as many components",
                 vpath.display(),
                 v.vectors.len(),
                 v.dim

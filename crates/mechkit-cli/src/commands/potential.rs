@@ -206,7 +206,7 @@ fn gradient(args: &PotentialArgs, p: &[(String, f64)]) -> Result<Outcome> {
     } else {
         let mut out = format!("U = {u}\nF = -∇U = ({})\n", components.join(", "));
         for (r, f) in points.iter().zip(&forces) {
-            let _ = writeln!(out, "at {r:?}: F = {f:?}");
+            let _ = writeln!(out, "at ({}): F = ({})", join(r), join(f));
         }
         print(&out)?;
     }
@@ -442,4 +442,10 @@ fn speed_figure(m: &Motion, x: &str) -> PlotData {
             .zip(m.speed.iter().copied())
             .collect(),
     ))
+}
+
+/// Coordinates for the terminal: `1, 2.5` (not the `Debug` form `[1.0, 2.5]`).
+fn join(v: &[f64]) -> String {
+    let parts: Vec<String> = v.iter().map(ToString::to_string).collect();
+    parts.join(", ")
 }

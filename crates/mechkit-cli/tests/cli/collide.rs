@@ -186,7 +186,7 @@ fn centre_of_mass_of_point_masses() {
     let k = num(&j, "/kinetic");
     assert!((k - num(&j, "/kinetic_cm") - num(&j, "/kinetic_internal")).abs() < 1e-14 * k);
     dir.run(&["com", "--mass", "1", "--at", "0", "--mass", "2"])
-        .assert_bad_input(&["2 masses but 1 positions"]);
+        .assert_bad_input(&["--mass is given twice but --at once"]);
     dir.run(&["com", "--mass", "-1", "--at", "0"])
         .assert_bad_input(&["--mass", "positive"]);
     dir.run(&[

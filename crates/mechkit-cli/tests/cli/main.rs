@@ -22,6 +22,8 @@
 //! - `mechkit com IMAGE` measures the pixels of a body (`com_image.rs`).
 //! - `mechkit sweep` and `sweep-merge`: 1,000 runs, threads, shards (`sweep.rs`).
 //! - `mechkit md` on the gallery inputs `examples/md/` (`md_gallery.rs`).
+//! - every kind of error message, snapshotted, with the table in `docs/reliability.md`
+//!   (`messages/`).
 //!
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
@@ -40,6 +42,7 @@ mod limits;
 mod mass;
 mod md;
 mod md_gallery;
+mod messages;
 mod reproducible;
 mod rigid_collide;
 mod rocket;

@@ -150,7 +150,7 @@ fn bad_particle_files_name_the_flag_and_line() {
     let dir = Dir::new();
     dir.create("bad.csv", "x,y\n0,0\n1,oops\n");
     dir.run(&["md", "--positions", "bad.csv", "--boundary", "open"])
-        .assert_bad_input(&["--positions", "bad.csv", "line 3", "oops"]);
+        .assert_bad_input(&["--positions", "bad.csv:3:", "oops"]);
     dir.create("two.csv", "0,0\n1.2,0\n");
     dir.run(&["md", "--positions", "two.csv"])
         .assert_bad_input(&["--box", "periodic"]);

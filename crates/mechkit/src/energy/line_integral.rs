@@ -197,7 +197,8 @@ impl ForceField {
             } => {
                 if components.len() != n {
                     return Err(CalculusError::Invalid(format!(
-                        "the path has {} components but the field has {n}",
+                        "the path has {} components but the field has {n}: give the path one \
+                         component per coordinate of the field, e.g. `cos(s), sin(s)` in 2-D",
                         components.len()
                     )));
                 }

@@ -108,7 +108,11 @@ impl TriangleMesh {
                         .take(3)
                         .map(|w| {
                             w.parse::<Real>()
-                                .map_err(|_| at(&format!("`{w}` is not a number")))
+                                .map_err(|_| {
+                                    at(&format!(
+                                        "`{w}` is not a number; a vertex line is `v x y z`, e.g. `v 0 1.5 0`"
+                                    ))
+                                })
                         })
                         .collect::<Result<_, _>>()?;
                     if xyz.len() != 3 {

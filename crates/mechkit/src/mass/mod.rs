@@ -31,7 +31,7 @@ pub use shapes::{Extent, Shape};
 pub enum MassError {
     /// The parts add up to no mass (holes as large as the body), or there are no parts.
     #[error(
-        "the total mass is {total} kg (the parts' masses add up to {gross} kg in size): the holes cancel the body, or there is nothing"
+        "the total mass is {total} kg, though the parts without their signs add up to {gross} kg: the holes cancel the body, or there is nothing; check which parts have `hole = true` and that each hole is smaller than the body it is cut from"
     )]
     ZeroMass {
         /// `Σ m` with holes negative.
@@ -48,7 +48,10 @@ pub enum MassError {
         reason: String,
     },
     /// A polygon whose edges cross.
-    #[error("the polygon crosses itself: edge {first} (vertices {first}-{}) meets edge {second}", first + 1)]
+    #[error(
+        "the polygon crosses itself: edge {first} (vertices {first}-{}) meets edge {second}; list the vertices in order around the boundary",
+        first + 1
+    )]
     SelfIntersecting {
         /// 1-based edge from vertex `first` to `first + 1`.
         first: usize,
@@ -56,7 +59,9 @@ pub enum MassError {
         second: usize,
     },
     /// A triangle mesh that does not enclose a volume.
-    #[error("the mesh is not closed: {0}")]
+    #[error(
+        "the mesh is not closed: {0}; a mesh must enclose a volume: every edge shared by exactly two faces"
+    )]
     OpenMesh(String),
     /// Any other invalid value.
     #[error("{0}")]

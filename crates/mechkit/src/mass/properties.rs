@@ -135,7 +135,7 @@ impl MassProperties {
         let n = direction.norm();
         if !(n.is_finite() && n > 0.0) {
             return Err(MassError::Invalid(format!(
-                "the axis direction ({}, {}, {}) has no length",
+                "the axis direction ({}, {}, {}) has no length; give a non-zero direction, e.g. 0, 0, 1 for the z axis",
                 direction.x, direction.y, direction.z
             )));
         }

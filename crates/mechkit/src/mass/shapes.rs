@@ -358,7 +358,7 @@ fn triangle(v: &[Vec3; 3]) -> Result<MassProperties, MassError> {
     if area.is_nan() || area <= 1e-12 * size * size {
         return Err(MassError::Degenerate {
             shape: "triangle",
-            reason: "its vertices lie on a line (zero area)".into(),
+            reason: "its vertices lie on a line (zero area); give three vertices that are not on one line".into(),
         });
     }
     let second = simplex_second_moment(&local, area, 12.0);
@@ -376,7 +376,7 @@ fn tetrahedron(v: &[Vec3; 4]) -> Result<MassProperties, MassError> {
     if volume.is_nan() || volume <= 1e-12 * size.powi(3) {
         return Err(MassError::Degenerate {
             shape: "tetrahedron",
-            reason: "its vertices lie in a plane (zero volume)".into(),
+            reason: "its vertices lie in a plane (zero volume); give four vertices that are not in one plane".into(),
         });
     }
     let second = simplex_second_moment(&local, volume, 20.0);

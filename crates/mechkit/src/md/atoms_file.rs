@@ -33,7 +33,12 @@ fn number(field: &str, line: usize) -> Result<Real, MdError> {
     let field = field.trim();
     match field.parse::<Real>() {
         Ok(v) if v.is_finite() => Ok(v),
-        _ => Err(error(line, format!("'{field}' is not a finite number"))),
+        _ => Err(error(
+            line,
+            format!(
+                "`{field}` is not a finite number; a coordinate is a number such as 1.5 or -2e-3"
+            ),
+        )),
     }
 }
 
@@ -68,7 +73,10 @@ impl AtomsFile {
             if !(1..=3).contains(&fields.len()) {
                 return Err(error(
                     line,
-                    format!("{} columns; use 1 to 3 (x[,y[,z]])", fields.len()),
+                    format!(
+                        "{} columns, but a line holds 1 to 3 coordinates, comma-separated: x[,y[,z]]",
+                        fields.len()
+                    ),
                 ));
             }
             if dim == 0 {
@@ -76,7 +84,10 @@ impl AtomsFile {
             } else if fields.len() != dim {
                 return Err(error(
                     line,
-                    format!("{} columns, but the first row has {dim}", fields.len()),
+                    format!(
+                        "{} columns, but the first row has {dim}; every particle needs the same number of coordinates",
+                        fields.len()
+                    ),
                 ));
             }
             let mut v = [0.0; 3];
@@ -88,7 +99,7 @@ impl AtomsFile {
         if vectors.is_empty() {
             return Err(error(
                 text.lines().count().max(1),
-                "no particles in the file",
+                "no particles in the file; write one particle per line as x[,y[,z]]",
             ));
         }
         Ok(Self { dim, vectors })
@@ -107,22 +118,48 @@ impl AtomsFile {
         let count = lines.next().unwrap_or("").trim();
         let n: usize = count
             .parse()
-            .map_err(|_| error(1, format!("'{count}' is not a particle count")))?;
+            .map_err(|_| {
+                error(
+                    1,
+                    format!(
+                        "`{count}` is not a particle count; an XYZ file starts with the number of particles, then a comment line, then `species x y z` per particle"
+                    ),
+                )
+            })?;
         if n == 0 {
-            return Err(error(1, "no particles in the file"));
+            return Err(error(
+                1,
+                "the particle count is 0; an XYZ file needs at least one particle",
+            ));
         }
-        lines
-            .next()
-            .ok_or_else(|| error(2, "missing comment line"))?;
+        lines.next().ok_or_else(|| {
+            error(
+                2,
+                "the comment line is missing; line 2 of an XYZ file is a comment (it may be empty)",
+            )
+        })?;
         let mut vectors = Vec::with_capacity(n);
         for k in 0..n {
             let line = k + 3;
             let row = lines
                 .next()
-                .ok_or_else(|| error(line, format!("the file ends after {k} of {n} particles")))?;
+                .ok_or_else(|| {
+                    error(
+                        line,
+                        format!(
+                            "the file ends after {k} of {n} particles; fix the count on line 1 or add the missing lines"
+                        ),
+                    )
+                })?;
             let fields: Vec<&str> = row.split_whitespace().collect();
             if fields.len() < 4 {
-                return Err(error(line, "expected 'species x y z'"));
+                return Err(error(
+                    line,
+                    format!(
+                        "{} fields, but a particle line is `species x y z`, e.g. `Ar 0.0 1.5 0.0`",
+                        fields.len()
+                    ),
+                ));
             }
             vectors.push([
                 number(fields[1], line)?,

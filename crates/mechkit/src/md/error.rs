@@ -40,7 +40,10 @@ pub enum MdError {
     },
     /// A periodic box too small for the minimum-image convention at this cut-off.
     #[error(
-        "the periodic box is {length} long on axis {axis}, shorter than twice the cut-off plus skin ({needed}); use more unit cells or a shorter cut-off"
+        "the periodic box is {} long on the {} axis, shorter than twice the cut-off plus skin ({}); use more unit cells or a shorter cut-off",
+        round6(*.length),
+        ["x", "y", "z"].get(*.axis).copied().unwrap_or("last"),
+        round6(*.needed)
     )]
     BoxTooSmall {
         /// The axis (0 = x).
@@ -84,4 +87,13 @@ pub enum MdError {
         /// What is wrong there.
         message: String,
     },
+}
+
+/// A length for a message: 6 significant digits (`2.17674`, not `2.176743828161131`).
+fn round6(x: Real) -> Real {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let scale = 10f64.powi(5 - x.abs().log10().floor() as i32);
+    (x * scale).round() / scale
 }

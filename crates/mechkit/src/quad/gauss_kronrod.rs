@@ -80,7 +80,11 @@ pub struct QuadResult {
 #[non_exhaustive]
 pub enum QuadError {
     /// The integrand is not finite somewhere the rule samples it.
-    #[error("the integrand is {value} at x = {x}")]
+    #[error(
+        "the integrand is {value} at x = {}: the integral may not exist there (a singularity); \
+         check the interval, or integrate up to a point near it",
+        super::short(*.x)
+    )]
     NotFinite {
         /// Where.
         x: Real,

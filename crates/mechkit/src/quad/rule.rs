@@ -144,7 +144,11 @@ pub enum RuleError {
         b: Real,
     },
     /// The integrand is not finite at a node.
-    #[error("the integrand is {value} at x = {x}")]
+    #[error(
+        "the integrand is {value} at x = {}: the integral may not exist there (a singularity); \
+         check the interval, or integrate up to a point near it",
+        super::short(*.x)
+    )]
     NotFinite {
         /// Where.
         x: Real,

@@ -61,12 +61,18 @@ pub(crate) fn build_with(
     let src = Source { name, text };
     let doc = DeTable::parse(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
-        src.error(
-            ErrorKind::Syntax,
-            format!("invalid TOML: {}", e.message().trim()),
-            span,
-        )
-        .with_hint("see docs/scenario.md for the file format")
+        let message = e.message().trim();
+        let hint = if message.contains("duplicate key") {
+            let key = text.get(span.clone()).unwrap_or("").trim();
+            format!(
+                "`{key}` is already set above in the same table: keep one of them (each key \
+                 appears once per table; a second body is a new [[body]])"
+            )
+        } else {
+            "see docs/scenario.md for the file format".to_string()
+        };
+        src.error(ErrorKind::Syntax, format!("invalid TOML: {message}"), span)
+            .with_hint(hint)
     })?;
     let root = Table::new(src, doc.get_ref(), 0..0, "the scenario");
     root.check_keys(TOP_KEYS)?;
@@ -84,11 +90,13 @@ pub(crate) fn build_with(
         None => 1,
         Some((d @ 1..=3, _)) => d as usize,
         Some((d, span)) => {
-            return Err(src.error(
-                ErrorKind::Invalid,
-                format!("`dimensions` must be 1, 2 or 3, not {d}"),
-                span,
-            ));
+            return Err(src
+                .error(
+                    ErrorKind::Invalid,
+                    format!("`dimensions` must be 1, 2 or 3, not {d}"),
+                    span,
+                )
+                .with_hint("1 for motion on a line, 2 in a plane, 3 in space"));
         }
     };
 
@@ -322,7 +330,10 @@ pub(crate) fn body_name(
     } else {
         return Ok(n.to_string());
     };
-    Err(t.src.error(ErrorKind::Invalid, message, span))
+    Err(t
+        .src
+        .error(ErrorKind::Invalid, message, span)
+        .with_hint("every body needs its own name: formulas and output columns use it"))
 }
 
 type Bodies = (

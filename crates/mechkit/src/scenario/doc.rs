@@ -174,7 +174,10 @@ impl<'s, 'a> Table<'s, 'a> {
     ) -> ScenarioError {
         self.src.error(
             ErrorKind::Invalid,
-            format!("`{key}` has {found} components, but the scenario has {dim} dimensions"),
+            format!(
+                "`{key}` has {found} components, but the scenario has {dim} dimension{}",
+                if dim == 1 { "" } else { "s" }
+            ),
             span,
         )
     }

@@ -103,7 +103,7 @@ impl fmt::Display for ScenarioError {
             let indent = self
                 .location
                 .as_ref()
-                .map_or(0, |l| l.line.to_string().len());
+                .map_or(1, |l| l.line.to_string().len());
             write!(f, "\n{} = hint: {h}", " ".repeat(indent))?;
         }
         Ok(())

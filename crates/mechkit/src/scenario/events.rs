@@ -131,7 +131,8 @@ pub(crate) fn read_events(
             Some((0, span)) => {
                 return Err(t
                     .src
-                    .error(ErrorKind::Invalid, "`count` must be at least 1", span));
+                    .error(ErrorKind::Invalid, "`count` must be at least 1", span)
+                    .with_hint("`count = 3` ends the run at the third occurrence"));
             }
             Some((n, span)) => {
                 if !stops {
@@ -147,11 +148,10 @@ pub(crate) fn read_events(
         }
         match t.count("max_count")? {
             Some((0, span)) => {
-                return Err(t.src.error(
-                    ErrorKind::Invalid,
-                    "`max_count` must be at least 1",
-                    span,
-                ));
+                return Err(t
+                    .src
+                    .error(ErrorKind::Invalid, "`max_count` must be at least 1", span)
+                    .with_hint("`max_count = 3` records the first three occurrences; to ignore the event, remove it"));
             }
             Some((n, _)) => event = event.max_count(u32::try_from(n).unwrap_or(u32::MAX)),
             None => {}
@@ -209,6 +209,8 @@ fn with_set(
                     )
                     .with_hint(if names.bodies.len() > 1 {
                         "with several bodies, write `body.vy`"
+                    } else if dim == 1 {
+                        "in 1-D the components are `x` and `v`, e.g. set = { v = \"-0.9*v\" }"
                     } else {
                         "e.g. set = { vy = \"-0.9*vy\" }"
                     }));

@@ -114,11 +114,10 @@ pub(crate) fn read_output(
             t.check_keys(OUTPUT_KEYS)?;
             match t.count("every")? {
                 Some((0, span)) => {
-                    return Err(t.src.error(
-                        ErrorKind::Invalid,
-                        "`every` must be at least 1",
-                        span,
-                    ));
+                    return Err(t
+                        .src
+                        .error(ErrorKind::Invalid, "`every` must be at least 1", span)
+                        .with_hint("`every = 10` writes every tenth step (and the last); 1 writes every step"));
                 }
                 Some((n, _)) => n,
                 None => 1,

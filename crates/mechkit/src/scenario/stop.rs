@@ -37,7 +37,8 @@ pub(crate) fn read_stop(
         Some((0, span)) => {
             return Err(t
                 .src
-                .error(ErrorKind::Invalid, "`max_steps` must be at least 1", span));
+                .error(ErrorKind::Invalid, "`max_steps` must be at least 1", span)
+                .with_hint("`max_steps = 50000` ends the run after 50,000 steps"));
         }
         other => other.map(|(n, _)| n),
     };

@@ -92,6 +92,10 @@ pub(crate) fn resolve(
                 ),
                 v.span(),
             )
+            .with_hint(format!(
+                "write `{key} = \"{}\"` (a plain number is in SI units)",
+                example(want)
+            ))
         } else {
             e
         }
@@ -243,6 +247,10 @@ fn resolve_formula(
             let context = if env.later.contains(&name) {
                 format!(
                     "`{name}` is defined further down; a constant may only use the constants above it"
+                )
+            } else if mechkit_expr::units::Unit::parse(name).is_ok() {
+                format!(
+                    "`{name}` is a unit: a value is a number followed by its unit, e.g. \"1 {name}\""
                 )
             } else if env.mass.is_some() {
                 "values may use the constants and `m`, the mass of the body".into()

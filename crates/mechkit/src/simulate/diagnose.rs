@@ -70,8 +70,8 @@ pub(crate) fn diagnose_evaluation(
         if let Some(i) = f.iter().position(|x| !x.is_finite()) {
             let body = &sys.bodies()[i / dim].name;
             let axis = ["x", "y", "z"][i % dim];
-            let pos: Vec<String> = k.position(i / dim).iter().map(|x| format!("{x}")).collect();
-            let vel: Vec<String> = k.velocity(i / dim).iter().map(|x| format!("{x}")).collect();
+            let pos = vector(k.position(i / dim), "m");
+            let vel = vector(k.velocity(i / dim), "m/s");
             // A force on one body may depend on the others (a pair force, `other.x` in a
             // formula): show where they all are.
             let others: Vec<String> = sys
@@ -80,15 +80,12 @@ pub(crate) fn diagnose_evaluation(
                 .enumerate()
                 .filter(|(j, _)| *j != i / dim)
                 .take(6)
-                .map(|(j, b)| {
-                    let p: Vec<String> = k.position(j).iter().map(|x| format!("{x}")).collect();
-                    format!("{} at [{}]", b.name, p.join(", "))
-                })
+                .map(|(j, b)| format!("{} at {}", b.name, vector(k.position(j), "m")))
                 .collect();
             let others = if others.is_empty() {
                 String::new()
             } else {
-                format!("; the other bodies: {}", others.join(", "))
+                format!(" (the other bodies: {})", others.join(", "))
             };
             return Some(Divergence {
                 t: state.t,
@@ -96,12 +93,10 @@ pub(crate) fn diagnose_evaluation(
                 quantity: format!("force `{}` on {body} ({axis} component)", force.name()),
                 value: f[i],
                 message: format!(
-                    "at t = {} s the force `{}` on {body} is {} ({axis} component), with {body} at position [{}] and velocity [{}]{others}: a division by zero or a value outside a function's domain (sqrt, log of a negative number)",
+                    "at t = {} s the force `{}` on {body} is {} ({axis} component), with {body} at position {pos} and velocity {vel}{others}: a division by zero or a value outside a function's domain (sqrt, log of a negative number) in the force; check its formula at these positions, or end the run before them with an event",
                     state.t,
                     force.name(),
-                    f[i],
-                    pos.join(", "),
-                    vel.join(", ")
+                    f[i]
                 ),
             });
         }
@@ -127,6 +122,16 @@ pub(crate) fn diagnose_evaluation(
         value,
         message: format!("at t = {} s the kinetic energy is {value}", state.t),
     })
+}
+
+/// A position or velocity for a message: `0.5 m` in 1-D, `(0.5, 2) m` otherwise.
+fn vector(v: &[Real], unit: &str) -> String {
+    if let [x] = v {
+        format!("{x} {unit}")
+    } else {
+        let parts: Vec<String> = v.iter().map(ToString::to_string).collect();
+        format!("({}) {unit}", parts.join(", "))
+    }
 }
 
 /// Why an adaptive run could not go on: a force that is not finite at the states the steps

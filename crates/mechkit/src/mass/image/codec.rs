@@ -108,7 +108,7 @@ mod tests {
             "{e}"
         );
         let e = Raster::open("/no/such/image.png").unwrap_err().to_string();
-        assert_eq!(e, "/no/such/image.png: no such file");
+        assert!(e.starts_with("/no/such/image.png: no such file"), "{e}");
     }
 
     #[test]

@@ -11,13 +11,13 @@ use super::Brightness;
 #[non_exhaustive]
 pub enum ImageError {
     /// The file does not exist.
-    #[error("{}: no such file", path.display())]
+    #[error("{}: no such file; check the path (it is relative to the current directory)", path.display())]
     NotFound {
         /// The path as given.
         path: PathBuf,
     },
     /// The file exists but cannot be read.
-    #[error("{}: cannot be read: {message}", path.display())]
+    #[error("{}: cannot be read: {message}; check that it is a file you may read", path.display())]
     Read {
         /// The path as given.
         path: PathBuf,
@@ -36,7 +36,10 @@ pub enum ImageError {
         found: String,
     },
     /// A PNG or JPEG file that cannot be decoded (truncated or corrupt).
-    #[error("{}: a {format} file that cannot be decoded: {message}", path.display())]
+    #[error(
+        "{}: a {format} file that cannot be decoded: {message}; the file is truncated or damaged: export it again as PNG",
+        path.display()
+    )]
     Decode {
         /// The path as given.
         path: PathBuf,

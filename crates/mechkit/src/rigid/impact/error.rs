@@ -41,7 +41,11 @@ pub enum ImpactError {
         minimum: Real,
     },
     /// A zero or non-finite normal.
-    #[error("the contact normal {normal:?} has no direction; give a non-zero vector")]
+    #[error(
+        "the contact normal ({}, {}) has no direction; give a non-zero vector",
+        normal[0],
+        normal[1]
+    )]
     Normal {
         /// The normal given.
         normal: [Real; 2],

@@ -2,7 +2,7 @@
 //! (with units), `"k=1,2,4"` (a list) or `"k=2 N/m"` (one value).
 
 use mechkit_expr::Dim;
-use mechkit_expr::units::{Dimension, Quantity};
+use mechkit_expr::units::{Dimension, Quantity, UnitErrorKind};
 
 use super::SweepError;
 use crate::Real;
@@ -191,7 +191,12 @@ impl Parameter {
             let q = Quantity::parse(item).map_err(|e| {
                 bad(
                     &self.text,
-                    format!("`{item}`: {}", e.message()),
+                    // the unit message quotes `item` itself when it has no number
+                    if matches!(e.kind, UnitErrorKind::NoNumber) {
+                        e.message()
+                    } else {
+                        format!("`{item}`: {}", e.message())
+                    },
                     &e.hint().unwrap_or_else(|| USAGE.to_string()),
                 )
             })?;

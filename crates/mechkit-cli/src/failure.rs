@@ -1,0 +1,86 @@
+//! How failures reach the user: an error as `error: ` with its causes, and a panic (a bug) as
+//! an `error: internal error` line instead of Rust's `thread 'main' panicked at …`.
+
+use std::panic::PanicHookInfo;
+
+/// The error's message with its causes after its first line (`cannot read p.csv: No such
+/// file or directory`, then the hint lines if any), each cause once: a cause whose text the
+/// message already contains is skipped.
+pub fn message(e: &anyhow::Error) -> String {
+    let text = e.to_string();
+    let (mut first, rest) = match text.split_once('\n') {
+        Some((first, rest)) => (first.to_string(), Some(rest)),
+        None => (text.clone(), None),
+    };
+    for cause in e.chain().skip(1) {
+        let cause = cause.to_string();
+        if !text.contains(&cause) && !first.contains(&cause) {
+            first.push_str(": ");
+            first.push_str(&cause);
+        }
+    }
+    match rest {
+        Some(rest) => format!("{first}\n{rest}"),
+        None => first,
+    }
+}
+
+/// Replaces Rust's panic message by [`internal_error`]. With `RUST_BACKTRACE` set, the
+/// default message (and backtrace) is printed as well, for whoever debugs it. The exit status
+/// of a panic stays 101.
+pub fn install_panic_hook() {
+    let default = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info: &PanicHookInfo<'_>| {
+        if std::env::var_os("RUST_BACKTRACE").is_some_and(|v| v != "0") {
+            default(info);
+        }
+        let what = info
+            .payload()
+            .downcast_ref::<&str>()
+            .map(ToString::to_string)
+            .or_else(|| info.payload().downcast_ref::<String>().cloned());
+        let at = info
+            .location()
+            .map(|l| format!("{}:{}", l.file(), l.line()));
+        eprintln!("{}", internal_error(what.as_deref(), at.as_deref()));
+    }));
+}
+
+/// The message for a bug: what failed and where in mechkit's source, and what to do.
+pub fn internal_error(what: Option<&str>, at: Option<&str>) -> String {
+    let what = what.unwrap_or("an unexpected failure");
+    let at = at.map(|a| format!(" (at {a})")).unwrap_or_default();
+    format!(
+        "error: internal error, a bug in mechkit: {what}{at}\n = hint: please report it with \
+         the command and its input files; the output written so far may be incomplete"
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn causes_follow_the_first_line_once() {
+        let e = anyhow::Error::new(std::io::Error::other("disk full"))
+            .context("cannot write out.csv\n  = hint: check the directory");
+        assert_eq!(
+            message(&e),
+            "cannot write out.csv: disk full\n  = hint: check the directory"
+        );
+        let e = anyhow::Error::new(std::io::Error::other("disk full"))
+            .context("cannot write out.csv: disk full");
+        assert_eq!(message(&e), "cannot write out.csv: disk full");
+    }
+
+    #[test]
+    fn a_bug_is_reported_without_rust_panic_wording() {
+        let text = internal_error(Some("index out of bounds"), Some("src/x.rs:3"));
+        assert!(text.starts_with(
+            "error: internal error, a bug in mechkit: index out of bounds (at src/x.rs:3)"
+        ));
+        assert!(text.contains("hint: please report it"));
+        assert!(!text.contains("panicked"));
+        assert!(internal_error(None, None).contains("an unexpected failure"));
+    }
+}

@@ -1,0 +1,81 @@
+//! Formulas and quantities given on the command line (`diff`, `units`, `integrate`, `solve`):
+//! each message quotes the argument with a caret under the problem.
+
+use super::case::{Case, assert_cases};
+
+#[test]
+fn formula_and_unit_messages() {
+    assert_cases(CASES);
+}
+
+/// A `mechkit diff FORMULA` case.
+macro_rules! diff {
+    ($kind:literal, $formula:literal) => {
+        Case {
+            area: "formula",
+            kind: $kind,
+            files: &[],
+            args: &["diff", $formula],
+            code: 2,
+        }
+    };
+}
+
+/// A `mechkit units …` case.
+macro_rules! units {
+    ($kind:literal, $($arg:literal),+) => {
+        Case {
+            area: "unit",
+            kind: $kind,
+            files: &[],
+            args: &["units", $($arg),+],
+            code: 2,
+        }
+    };
+}
+
+pub static CASES: &[Case] = &[
+    diff!("empty", ""),
+    diff!("unexpected_character", "x $ 2"),
+    diff!("single_equals", "x = 2"),
+    diff!("unexpected_token", "x^^2"),
+    diff!("unexpected_end", "x +"),
+    diff!("missing_operator", "2 x"),
+    diff!("unclosed_paren", "sin(x"),
+    diff!("unmatched_close_paren", "x)"),
+    diff!("unknown_function", "sinn(x)"),
+    diff!("wrong_argument_count", "sin(x, 2)"),
+    Case {
+        area: "formula",
+        kind: "undefined_name_at_a_point",
+        files: &[],
+        args: &["diff", "a*x^2", "--at", "1"],
+        code: 2,
+    },
+    Case {
+        area: "formula",
+        kind: "bad_set_flag",
+        files: &[],
+        args: &["diff", "a*x^2", "--at", "1", "--set", "a:2"],
+        code: 2,
+    },
+    Case {
+        area: "formula",
+        kind: "integrate_bound_missing",
+        files: &[],
+        args: &["integrate", "x^2", "--from", "0"],
+        code: 2,
+    },
+    Case {
+        area: "formula",
+        kind: "solve_no_equation",
+        files: &[],
+        args: &["solve", "x^2 + 1 == 0"],
+        code: 2,
+    },
+    units!("unknown_unit", "3 mps"),
+    units!("no_number", "abc"),
+    units!("bad_power", "3 m^^2"),
+    units!("trailing_operator", "3 m/"),
+    units!("incompatible_conversion", "3 m/s", "--to", "s"),
+];
