@@ -8,9 +8,9 @@ use toml::de::DeValue;
 use super::doc::Table;
 use super::error::{ErrorKind, ScenarioError};
 
-/// The largest scenario file read: 16 MiB. Scenarios are a few kilobytes; anything near this
+/// The largest scenario file read: 16 MB. Scenarios are a few kilobytes; anything near this
 /// is not a scenario (a data file or a binary given by mistake).
-pub const MAX_SCENARIO_BYTES: u64 = 16 << 20;
+pub const MAX_SCENARIO_BYTES: u64 = 16_000_000;
 
 /// Output a run may write unless the scenario (`[output] max_size`) or the command line
 /// (`--max-output`) says otherwise: 1 GB, far more than a plot or a spreadsheet can use.

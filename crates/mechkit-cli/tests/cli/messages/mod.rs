@@ -22,6 +22,7 @@ mod cli_flags;
 mod commands;
 mod data;
 mod image;
+mod limits;
 mod md;
 mod runtime;
 mod scenario;

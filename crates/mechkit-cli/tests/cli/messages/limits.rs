@@ -1,0 +1,105 @@
+//! Resource limits: output size, the step limit, the size of a scenario file.
+
+use super::case::{
+    Case,
+    Contents::{Bytes, Text},
+    assert_cases,
+};
+
+#[test]
+fn limit_messages() {
+    assert_cases(CASES);
+}
+
+const FALL: &str = "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\nposition = \"100 m\"\n[[force]]\nname = \"gravity\"\nkind = \"uniform-gravity\"\ng = \"9.81 m/s^2\"\n[integrator]\nmethod = \"rk4\"\ndt = \"1 ms\"\n[stop]\nt_max = \"4 s\"\n";
+
+fn huge() -> Vec<u8> {
+    "# not a scenario\n".repeat(1_000_000).into_bytes()
+}
+
+pub static CASES: &[Case] = &[
+    Case {
+        area: "limits",
+        kind: "output_limit",
+        files: &[("s.toml", Text(FALL))],
+        args: &[
+            "run",
+            "s.toml",
+            "--out",
+            "out",
+            "--no-plots",
+            "--max-output",
+            "20kB",
+        ],
+        code: 1,
+    },
+    Case {
+        area: "limits",
+        kind: "md_output_limit",
+        files: &[],
+        args: &[
+            "md",
+            "--cells",
+            "4",
+            "--steps",
+            "100",
+            "--xyz-every",
+            "5",
+            "--out",
+            "out",
+            "--max-output",
+            "60kB",
+        ],
+        code: 1,
+    },
+    Case {
+        area: "limits",
+        kind: "max_output_flag",
+        files: &[("s.toml", Text(FALL))],
+        args: &["run", "s.toml", "--out", "out", "--max-output", "20 kX"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "max_size_value",
+        files: &[(
+            "s.toml",
+            Text(
+                "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n[output]\nmax_size = \"lots\"\n",
+            ),
+        )],
+        args: &["run", "s.toml", "--out", "out"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "max_size_type",
+        files: &[(
+            "s.toml",
+            Text(
+                "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n[output]\nmax_size = 1.5\n",
+            ),
+        )],
+        args: &["run", "s.toml", "--out", "out"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "step_limit_before_t_max",
+        files: &[(
+            "s.toml",
+            Text(
+                "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\nmax_steps = 50\n",
+            ),
+        )],
+        args: &["run", "s.toml", "--out", "out", "--no-plots"],
+        code: 0,
+    },
+    Case {
+        area: "limits",
+        kind: "scenario_too_large",
+        files: &[("big.toml", Bytes(huge))],
+        args: &["check", "big.toml"],
+        code: 2,
+    },
+];
