@@ -84,6 +84,7 @@ pub mod md;
 pub mod ode;
 pub mod particles;
 pub mod quad;
+pub mod relative;
 pub mod rigid;
 pub mod rocket;
 pub mod roots;

@@ -8,11 +8,13 @@ mod bead;
 mod friction;
 mod md;
 mod mechanics;
+mod relative;
 mod rigid_collide;
 mod roll;
 mod rotation;
 mod spin;
 mod sweep;
+mod terminal;
 
 pub use bead::BeadArgs;
 pub use friction::FrictionArgs;
@@ -21,11 +23,13 @@ pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
     RocketArgs, WorkArgs,
 };
+pub use relative::RelativeArgs;
 pub use rigid_collide::RigidCollideArgs;
 pub use roll::RollArgs;
 pub use rotation::RotationArgs;
 pub use spin::SpinArgs;
 pub use sweep::{SweepArgs, SweepMergeArgs};
+pub use terminal::TerminalArgs;
 
 const EXAMPLES: &str = r#"Examples:
   mechkit run examples/feather.toml --out out/feather
@@ -130,6 +134,14 @@ pub enum Command {
     /// angular acceleration, circular motion (v = ωR, a_c = ω²R, a_t = αR, latitude), and
     /// v = ω × r, a = α × r + ω × (ω × r) for a point in 3-D.
     Rotation(RotationArgs),
+    /// Relative velocity: the heading that keeps a plane or a boat on its track through a wind
+    /// or a current, and its ground speed; a velocity seen from another frame (Galilean
+    /// transformation, v' = v − u).
+    Relative(RelativeArgs),
+    /// Drag from a measured terminal velocity: D/(m g) = 1/v_T², D/m, D with the mass, C_d with
+    /// the density and the area; v_T from a value, a distance in a time, or a line through
+    /// position samples.
+    Terminal(TerminalArgs),
     /// A body on a circle or a curve y(x) under gravity: the normal force along the way, where
     /// it leaves the curve (N = 0) and where it lands again; path.csv and path.svg.
     Bead(BeadArgs),

@@ -15,6 +15,7 @@ mod md;
 mod md_setup;
 mod potential;
 mod power;
+mod relative;
 mod rigid_collide;
 mod rigid_landing;
 mod rocket;
@@ -23,6 +24,7 @@ mod rotation;
 mod run;
 mod spin;
 mod sweep;
+mod terminal;
 mod work;
 mod work_field;
 
@@ -63,6 +65,8 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Friction(args) => friction::friction(&args),
         Command::Roll(args) => roll::roll(&args),
         Command::Rotation(args) => rotation::rotation(&args),
+        Command::Relative(args) => relative::relative(&args),
+        Command::Terminal(args) => terminal::terminal(&args),
         Command::Bead(args) => bead::bead(&args),
         Command::RigidCollide(args) => rigid_collide::rigid_collide(&args),
         Command::Sweep(args) => sweep::sweep(&args),

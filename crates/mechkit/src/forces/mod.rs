@@ -30,6 +30,8 @@ mod set;
 mod spring;
 mod wind;
 
+pub mod terminal;
+
 pub use constant::ConstantForce;
 pub use contact::ContactForce;
 pub use contact_builder::{ContactError, ContactForceBuilder, ContactPair, ContactWall};

@@ -1,0 +1,253 @@
+//! Drag from a terminal velocity: a body falling steadily at `v_T` has its weight balanced by
+//! the drag, `m g = b v_T` (linear) or `m g = D v_T²` (quadratic). A measured `v_T` therefore
+//! gives `b/(m g) = 1/v_T` or `D/(m g) = 1/v_T²`, and with the mass the coefficient itself;
+//! with the fluid's density and the body's frontal area, the dimensionless drag coefficient
+//! `C_d = 2 D/(ρ A)`.
+//!
+//! `v_T` comes from a distance fallen at steady speed in a time, or from position samples by a
+//! least-squares line through the part of the fall where the speed is steady.
+//! ```
+//! use mechkit::forces::terminal::{DragLaw, TerminalDrag};
+//! // a feather falls 2.4 m in 4.8 s at terminal speed
+//! let d = TerminalDrag::new(2.4 / 4.8, DragLaw::Quadratic).unwrap();
+//! assert!((d.per_weight - 4.0).abs() < 1e-12); // D/(m g) in s²/m²
+//! ```
+
+use thiserror::Error;
+
+use crate::Real;
+
+/// How the drag grows with speed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DragLaw {
+    /// `F = −b v`.
+    Linear,
+    /// `F = −D |v| v`.
+    Quadratic,
+}
+
+impl DragLaw {
+    /// Parses `linear` or `quadratic`.
+    pub fn parse(text: &str) -> Option<DragLaw> {
+        match text {
+            "linear" => Some(DragLaw::Linear),
+            "quadratic" => Some(DragLaw::Quadratic),
+            _ => None,
+        }
+    }
+
+    /// The name, as parsed.
+    pub fn name(self) -> &'static str {
+        match self {
+            DragLaw::Linear => "linear",
+            DragLaw::Quadratic => "quadratic",
+        }
+    }
+}
+
+/// Why no drag could be found.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum TerminalError {
+    /// The terminal speed is not positive and finite.
+    #[error("the terminal speed must be positive and finite, not {0} m/s")]
+    Speed(Real),
+    /// A quantity that must be positive is not.
+    #[error("{what} must be positive and finite, not {value}")]
+    NotPositive {
+        /// Which quantity.
+        what: &'static str,
+        /// Its value.
+        value: Real,
+    },
+    /// Too few samples for a line.
+    #[error("{0} samples in the steady part: a line needs at least 3")]
+    TooFewSamples(usize),
+    /// The times do not increase.
+    #[error("the times must increase (sample {0})")]
+    Unordered(usize),
+}
+
+/// The drag that balances the weight at a terminal speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TerminalDrag {
+    /// The law.
+    pub law: DragLaw,
+    /// The terminal speed `v_T` (m/s).
+    pub terminal_speed: Real,
+    /// The drag per unit weight: `b/(m g) = 1/v_T` (s/m) or `D/(m g) = 1/v_T²` (s²/m²).
+    pub per_weight: Real,
+}
+
+impl TerminalDrag {
+    /// The drag for a terminal speed (its sign is ignored: falling is negative in `y`).
+    pub fn new(terminal_speed: Real, law: DragLaw) -> Result<Self, TerminalError> {
+        let v = terminal_speed.abs();
+        if !(v > 0.0 && v.is_finite()) {
+            return Err(TerminalError::Speed(terminal_speed));
+        }
+        let per_weight = match law {
+            DragLaw::Linear => 1.0 / v,
+            DragLaw::Quadratic => 1.0 / (v * v),
+        };
+        Ok(Self {
+            law,
+            terminal_speed: v,
+            per_weight,
+        })
+    }
+
+    /// From a distance fallen at steady speed in a time.
+    pub fn from_fall(distance: Real, time: Real, law: DragLaw) -> Result<Self, TerminalError> {
+        positive("the time", time)?;
+        positive("the distance", distance.abs())?;
+        Self::new(distance / time, law)
+    }
+
+    /// The coefficient `b` (kg/s) or `D` (kg/m) for a body of `mass` in gravity `g`.
+    pub fn coefficient(&self, mass: Real, g: Real) -> Result<Real, TerminalError> {
+        positive("the mass", mass)?;
+        positive("g", g)?;
+        Ok(self.per_weight * mass * g)
+    }
+
+    /// The drag coefficient `C_d = 2 D/(ρ A)` of quadratic drag, for a body of `mass` in
+    /// gravity `g`, in a fluid of `density`, with frontal `area`; `None` for linear drag.
+    pub fn drag_coefficient(
+        &self,
+        mass: Real,
+        g: Real,
+        density: Real,
+        area: Real,
+    ) -> Result<Option<Real>, TerminalError> {
+        positive("the density", density)?;
+        positive("the area", area)?;
+        let d = self.coefficient(mass, g)?;
+        Ok((self.law == DragLaw::Quadratic).then(|| 2.0 * d / (density * area)))
+    }
+}
+
+fn positive(what: &'static str, value: Real) -> Result<(), TerminalError> {
+    if value > 0.0 && value.is_finite() {
+        Ok(())
+    } else {
+        Err(TerminalError::NotPositive { what, value })
+    }
+}
+
+/// A straight line fitted through position samples: the steady speed and how well a line
+/// describes them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteadyFit {
+    /// The slope (m/s): the velocity, signed.
+    pub velocity: Real,
+    /// The intercept at `t = 0` (m).
+    pub intercept: Real,
+    /// The root-mean-square distance of the samples from the line (m).
+    pub rms_residual: Real,
+    /// The slopes of the first and second halves of the samples: equal when the speed is
+    /// steady, different while the body still accelerates.
+    pub half_slopes: (Real, Real),
+    /// How many samples were fitted.
+    pub samples: usize,
+}
+
+/// Fits a line `x = v t + x₀` by least squares through the samples from index `from` on (the
+/// part of the fall where the speed is steady).
+pub fn steady_fit(t: &[Real], x: &[Real], from: usize) -> Result<SteadyFit, TerminalError> {
+    let n = t.len().min(x.len());
+    let (t, x) = (&t[from.min(n)..n], &x[from.min(n)..n]);
+    if t.len() < 3 {
+        return Err(TerminalError::TooFewSamples(t.len()));
+    }
+    if let Some(i) = t.windows(2).position(|w| w[1] <= w[0]) {
+        return Err(TerminalError::Unordered(from + i + 1));
+    }
+    let (velocity, intercept) = line(t, x);
+    let rms = (t
+        .iter()
+        .zip(x)
+        .map(|(ti, xi)| (xi - velocity * ti - intercept).powi(2))
+        .sum::<Real>()
+        / t.len() as Real)
+        .sqrt();
+    let half = t.len() / 2;
+    let first = line(&t[..half.max(2)], &x[..half.max(2)]).0;
+    let second = line(&t[half.min(t.len() - 2)..], &x[half.min(t.len() - 2)..]).0;
+    Ok(SteadyFit {
+        velocity,
+        intercept,
+        rms_residual: rms,
+        half_slopes: (first, second),
+        samples: t.len(),
+    })
+}
+
+/// Least-squares slope and intercept (centred sums, for accuracy).
+fn line(t: &[Real], x: &[Real]) -> (Real, Real) {
+    let n = t.len() as Real;
+    let tm = t.iter().sum::<Real>() / n;
+    let xm = x.iter().sum::<Real>() / n;
+    let (mut stt, mut stx) = (0.0, 0.0);
+    for (ti, xi) in t.iter().zip(x) {
+        stt += (ti - tm) * (ti - tm);
+        stx += (ti - tm) * (xi - xm);
+    }
+    let slope = stx / stt;
+    (slope, xm - slope * tm)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_weight_balances_the_drag_at_the_terminal_speed() {
+        let (m, g) = (0.057, 9.81);
+        for law in [DragLaw::Linear, DragLaw::Quadratic] {
+            let d = TerminalDrag::new(-12.5, law).expect("valid");
+            let c = d.coefficient(m, g).expect("valid");
+            let drag = match law {
+                DragLaw::Linear => c * 12.5,
+                DragLaw::Quadratic => c * 12.5 * 12.5,
+            };
+            assert!((drag - m * g).abs() < 1e-15);
+        }
+        let d = TerminalDrag::from_fall(2.4, 4.8, DragLaw::Quadratic).expect("valid");
+        assert_eq!(d.per_weight, 4.0);
+        // C_d of a sphere of radius 3.3 cm: 2 m g/(ρ A v_T²)
+        let cd = d
+            .drag_coefficient(0.057, 9.81, 1.2, std::f64::consts::PI * 0.033f64.powi(2))
+            .expect("valid")
+            .expect("quadratic");
+        let want = 2.0 * 0.057 * 9.81 / (1.2 * std::f64::consts::PI * 0.033f64.powi(2) * 0.25);
+        assert!((cd - want).abs() < 1e-12 * want);
+        assert!(TerminalDrag::new(0.0, DragLaw::Linear).is_err());
+        assert!(TerminalDrag::from_fall(1.0, 0.0, DragLaw::Linear).is_err());
+    }
+
+    #[test]
+    fn a_line_through_a_steady_fall_gives_its_speed() {
+        // y(t) = y0 − ln(cosh(√(gD) t))/D: nearly a line after a few time constants
+        let (g, d): (Real, Real) = (9.81, 0.5);
+        let vt = (g / d).sqrt();
+        let t: Vec<Real> = (0..800).map(|i| Real::from(i) * 0.01).collect();
+        let y: Vec<Real> = t
+            .iter()
+            .map(|&t| 10.0 - ((g * d).sqrt() * t).cosh().ln() / d)
+            .collect();
+        let fit = steady_fit(&t, &y, 400).expect("fit");
+        assert!(
+            (fit.velocity + vt).abs() < 1e-6 * vt,
+            "{} vs {vt}",
+            fit.velocity
+        );
+        assert!((fit.half_slopes.0 - fit.half_slopes.1).abs() < 1e-6);
+        // the whole fall, from rest, is not steady: the halves disagree
+        let all = steady_fit(&t[..200], &y[..200], 0).expect("fit");
+        assert!((all.half_slopes.0 - all.half_slopes.1).abs() > 0.1 * vt);
+        assert!(matches!(
+            steady_fit(&t, &y, 798),
+            Err(TerminalError::TooFewSamples(2))
+        ));
+    }
+}

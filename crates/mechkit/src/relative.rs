@@ -1,0 +1,214 @@
+//! Relative motion: the Galilean transformation between frames in uniform relative motion, and
+//! steering through a moving medium (a plane in a crosswind, a boat crossing a river).
+//!
+//! A frame `A` moving with velocity `u` relative to a frame `B` (its origin at `r₀` when
+//! `t = 0`) sees a body at `r_A`, `v_A` where `B` sees it at
+//! `r_B = r_A + r₀ + u t`, `v_B = v_A + u`; accelerations agree.
+//!
+//! Steering: a craft moves at `speed` relative to a medium that moves with `current` over
+//! the ground. To travel over the ground along the direction `track`, it must cancel the part
+//! of the current across the track with part of its own velocity, and the rest of its speed,
+//! plus the current along the track, is its ground speed. With the current straight across
+//! the track, the ground speed is `√(s² − c²)` and the heading makes the angle
+//! `acos(c/s)` with the upstream direction.
+//! ```
+//! use mechkit::relative::steer;
+//! // a plane at 300 km/h that must fly north (+y) in a 60 km/h wind blowing east (+x)
+//! let s = steer(300.0, [60.0, 0.0], [0.0, 1.0]).unwrap();
+//! assert!((s.ground_speed - (300.0f64.powi(2) - 60.0f64.powi(2)).sqrt()).abs() < 1e-9);
+//! assert!((s.angle_to_upstream.to_degrees() - 78.463).abs() < 1e-3);
+//! ```
+
+use thiserror::Error;
+
+use crate::Real;
+
+/// Why a steering problem has no solution.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum RelativeError {
+    /// The speed is not positive and finite.
+    #[error("the speed relative to the medium must be positive and finite, not {0}")]
+    Speed(Real),
+    /// The track direction has no length (or is not finite).
+    #[error("the direction of travel has no length: give a direction such as [0, 1] (north)")]
+    Track,
+    /// The current across the track is faster than the craft.
+    #[error(
+        "the current across the track ({} m/s) is faster than the craft moves through the medium ({speed} m/s): no heading keeps it on the track",
+        across.abs()
+    )]
+    TooMuchCross {
+        /// The component of the current across the track.
+        across: Real,
+        /// The craft's speed relative to the medium.
+        speed: Real,
+    },
+    /// The craft can hold the track's line but is carried backwards along it.
+    #[error(
+        "on the track's line the ground speed would be {ground_speed} m/s: the current against the track is stronger than the craft can make up"
+    )]
+    NoProgress {
+        /// The (non-positive) ground speed along the track.
+        ground_speed: Real,
+    },
+}
+
+/// The velocity in frame `B` of a body moving with `v_in_a` in frame `A`, when `A` moves with
+/// `frame_velocity` relative to `B` (Galilean: `v_B = v_A + u`).
+pub fn velocity_in_b<const N: usize>(v_in_a: [Real; N], frame_velocity: [Real; N]) -> [Real; N] {
+    std::array::from_fn(|i| v_in_a[i] + frame_velocity[i])
+}
+
+/// The velocity in frame `A` of a body moving with `v_in_b` in frame `B` (`v_A = v_B − u`).
+pub fn velocity_in_a<const N: usize>(v_in_b: [Real; N], frame_velocity: [Real; N]) -> [Real; N] {
+    std::array::from_fn(|i| v_in_b[i] - frame_velocity[i])
+}
+
+/// The position in frame `B` at time `t` of a point at `r_in_a` in frame `A`, whose origin
+/// is at `origin` in `B` at `t = 0` and moves with `frame_velocity`.
+pub fn position_in_b<const N: usize>(
+    r_in_a: [Real; N],
+    origin: [Real; N],
+    frame_velocity: [Real; N],
+    t: Real,
+) -> [Real; N] {
+    std::array::from_fn(|i| r_in_a[i] + origin[i] + frame_velocity[i] * t)
+}
+
+/// The solution of a steering problem, in the plane of the motion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Steering {
+    /// The unit vector the craft points along (its velocity relative to the medium, divided
+    /// by its speed).
+    pub heading: [Real; 2],
+    /// The velocity over the ground (along the track).
+    pub ground_velocity: [Real; 2],
+    /// The speed over the ground.
+    pub ground_speed: Real,
+    /// The angle between the heading and the track (the correction into the current), in
+    /// radians, positive counter-clockwise from the track to the heading.
+    pub correction: Real,
+    /// The angle between the heading and the direction the current comes from (`−current`),
+    /// in radians, in `[0, π]`; `NaN` without a current. This is the textbook's angle "to the
+    /// bank, upstream" when the current is across the track.
+    pub angle_to_upstream: Real,
+    /// The current's component along the track (positive: a tailwind).
+    pub along: Real,
+    /// The current's component across the track (positive: to the left of the track).
+    pub across: Real,
+}
+
+/// Steers a craft of `speed` relative to a medium moving with `current` so that it travels over
+/// the ground along `track` (any non-zero vector). Fails when the current across the track is
+/// faster than the craft, or when the craft would not make progress along the track.
+pub fn steer(speed: Real, current: [Real; 2], track: [Real; 2]) -> Result<Steering, RelativeError> {
+    if !(speed > 0.0 && speed.is_finite()) {
+        return Err(RelativeError::Speed(speed));
+    }
+    let norm = track[0].hypot(track[1]);
+    if !(norm > 0.0 && norm.is_finite()) {
+        return Err(RelativeError::Track);
+    }
+    let t = [track[0] / norm, track[1] / norm];
+    let left = [-t[1], t[0]];
+    let along = current[0] * t[0] + current[1] * t[1];
+    let across = current[0] * left[0] + current[1] * left[1];
+    if across.abs() > speed {
+        return Err(RelativeError::TooMuchCross { across, speed });
+    }
+    // the craft's own velocity cancels the current across the track
+    let own_across = -across;
+    let own_along = (speed * speed - across * across).max(0.0).sqrt();
+    let ground_speed = own_along + along;
+    if ground_speed <= 0.0 {
+        return Err(RelativeError::NoProgress { ground_speed });
+    }
+    let heading = [
+        (own_along * t[0] + own_across * left[0]) / speed,
+        (own_along * t[1] + own_across * left[1]) / speed,
+    ];
+    let current_speed = current[0].hypot(current[1]);
+    let angle_to_upstream = if current_speed > 0.0 {
+        let cos = -(heading[0] * current[0] + heading[1] * current[1]) / current_speed;
+        cos.clamp(-1.0, 1.0).acos()
+    } else {
+        Real::NAN
+    };
+    Ok(Steering {
+        heading,
+        ground_velocity: [ground_speed * t[0], ground_speed * t[1]],
+        ground_speed,
+        correction: own_across.atan2(own_along),
+        angle_to_upstream,
+        along,
+        across,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ground_velocity_is_the_sum_of_the_own_velocity_and_the_current() {
+        for (speed, current, track) in [
+            (300.0, [60.0, 0.0], [0.0, 1.0]),
+            (5.0, [-1.5, 2.0], [1.0, 1.0]),
+            (2.0, [0.0, -1.0], [3.0, -4.0]),
+        ] {
+            let s = steer(speed, current, track).expect("solvable");
+            let own = [s.heading[0] * speed, s.heading[1] * speed];
+            let sum = velocity_in_b(own, current);
+            for (a, b) in sum.iter().zip(&s.ground_velocity) {
+                assert!((a - b).abs() < 1e-12 * speed);
+            }
+            // along the track, and forwards
+            let n = track[0].hypot(track[1]);
+            let cross = s.ground_velocity[0] * track[1] / n - s.ground_velocity[1] * track[0] / n;
+            assert!(cross.abs() < 1e-12 * speed);
+            assert!(s.ground_speed > 0.0);
+            assert!((s.heading[0].hypot(s.heading[1]) - 1.0).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn a_river_crossing_heads_upstream_at_acos_of_the_speed_ratio() {
+        // a boat at 2 m/s crossing (+y) a river flowing at 1 m/s (+x)
+        let s = steer(2.0, [1.0, 0.0], [0.0, 1.0]).expect("solvable");
+        assert!((s.ground_speed - 3.0f64.sqrt()).abs() < 1e-15);
+        assert!((s.angle_to_upstream - 0.5f64.acos()).abs() < 1e-15);
+        assert!((s.correction - 30f64.to_radians()).abs() < 1e-15);
+        assert_eq!(s.across, -1.0);
+    }
+
+    #[test]
+    fn impossible_crossings_say_why() {
+        assert!(matches!(
+            steer(1.0, [2.0, 0.0], [0.0, 1.0]),
+            Err(RelativeError::TooMuchCross { .. })
+        ));
+        assert!(matches!(
+            steer(1.0, [0.0, -2.0], [0.0, 1.0]),
+            Err(RelativeError::NoProgress { .. })
+        ));
+        assert_eq!(
+            steer(1.0, [0.0, 0.0], [0.0, 0.0]),
+            Err(RelativeError::Track)
+        );
+        assert_eq!(
+            steer(0.0, [0.0, 0.0], [0.0, 1.0]),
+            Err(RelativeError::Speed(0.0))
+        );
+    }
+
+    #[test]
+    fn positions_and_velocities_transform_back_and_forth() {
+        let u = [3.0, -1.0, 0.5];
+        let v = [1.0, 2.0, 3.0];
+        assert_eq!(velocity_in_a(velocity_in_b(v, u), u), v);
+        assert_eq!(
+            position_in_b([1.0, 0.0, 0.0], [0.0, 2.0, 0.0], u, 2.0),
+            [7.0, 0.0, 1.0]
+        );
+    }
+}
