@@ -9,8 +9,9 @@
 //! then walls), and the sweep repeats until no touching pair approaches. A 3-ball Newton's
 //! cradle with `e = 1` therefore hands the velocity down the line: the first sweep stops ball 1
 //! and starts ball 2, which meets ball 3 in the same sweep, and the second sweep finds nothing
-//! left to resolve. The sweeps stop after 10,000 rounds (a jammed pile), leaving the last
-//! velocities.
+//! left to resolve. A pair approaching by less than `1e-12` of the bodies' speeds has settled
+//! (a perfectly inelastic chain reaches its common velocity only to rounding). The sweeps stop
+//! after 10,000 rounds (a jammed pile), leaving the last velocities.
 
 use std::sync::Arc;
 
@@ -52,6 +53,26 @@ fn samples_for(u: Real, h: Real, reach: Real) -> usize {
 
 /// Most resolution sweeps at one impact.
 const MAX_SWEEPS: usize = 10_000;
+
+/// Approach speeds at or below this fraction of the bodies' speeds are rounding, not approach:
+/// a perfectly inelastic chain converges to a common velocity only to within a few ulps, and
+/// resolving the ulps again and again would run every impact to [`MAX_SWEEPS`].
+const SETTLED: Real = 1e-12;
+
+/// Whether bodies with velocities `va` and `vb` approach along `normal` (from `a` to `b`) by
+/// more than rounding.
+fn approaching(va: &[Real], vb: &[Real], normal: &[Real]) -> bool {
+    let norm = normal.iter().map(|x| x * x).sum::<Real>().sqrt();
+    let approach: Real = va
+        .iter()
+        .zip(vb)
+        .zip(normal)
+        .map(|((a, b), n)| (a - b) * n)
+        .sum::<Real>()
+        / norm;
+    let scale = va.iter().chain(vb).fold(0.0, |m: Real, x| m.max(x.abs()));
+    approach > SETTLED * scale
+}
 
 /// A fixed plane that bodies bounce off.
 #[derive(Debug, Clone, PartialEq)]
@@ -280,6 +301,9 @@ impl Impacts {
                 } else {
                     (0..d).map(|k| q[b * d + k] - q[a * d + k]).collect()
                 };
+                if !approaching(&v[a * d..(a + 1) * d], &v[b * d..(b + 1) * d], &normal) {
+                    continue;
+                }
                 let (restitution, friction) = self.rule(a, b);
                 let c = Collision {
                     m1: self.mass[a],
@@ -303,12 +327,17 @@ impl Impacts {
                 if gap > TOUCH * r.max(1e-12) {
                     continue;
                 }
+                let inward: Vec<Real> = wall.normal.iter().map(|x| -x).collect();
+                let at_rest = [0.0; 3];
+                if !approaching(&v[i * d..(i + 1) * d], &at_rest[..d], &inward) {
+                    continue;
+                }
                 let c = Collision {
                     m1: self.mass[i],
                     m2: Real::INFINITY,
                     v1: v[i * d..(i + 1) * d].to_vec(),
                     v2: vec![0.0; d],
-                    normal: wall.normal.iter().map(|x| -x).collect(),
+                    normal: inward,
                     restitution: wall.restitution,
                     friction: wall.friction,
                 };
