@@ -10,15 +10,17 @@
 
 use mechkit::Real;
 use mechkit::calculus;
+use mechkit::collisions::Restitution;
 use mechkit::data::{ColumnRef, Order, Table};
 use mechkit::deriv::{Derivation, Difference, SavitzkyGolay, kinematics, uniform_step};
-use mechkit::energy::SampledIntegral;
+use mechkit::energy::{ForceField, SampledIntegral};
 use mechkit::expr::{Formula, MapScope, simplify};
 use mechkit::mass::TriangleMesh;
 use mechkit::mass::image::{Channel, Density, PixelBody, PixelFrame, Raster, Selection};
 use mechkit::md::AtomsFile;
 use mechkit::quad::SampleRule;
-use mechkit::scenario::{BodyFile, Scenario};
+use mechkit::scenario::sweep::{Parameter, Sampling, Shard, SweepGrid};
+use mechkit::scenario::{BodyFile, Scenario, format_size, parse_size};
 use mechkit::units::{Quantity, Unit};
 
 /// The names a fuzzed formula may use: what a force formula sees in a 2-D scenario, plus a
@@ -256,6 +258,40 @@ pub fn image(data: &[u8]) {
 /// A fuzz target's body.
 pub type Target = fn(&[u8]);
 
+/// The values of command-line options that have their own small languages: `--set` parameter
+/// lists, sweep ranges and grids, shards, sizes, data columns, restitutions, image channels,
+/// force fields. Each line of the input is given to every parser.
+pub fn options(data: &[u8]) {
+    let Some(src) = text(data) else { return };
+    let mut params = Vec::new();
+    for line in src.lines().take(8) {
+        if let Ok(p) = calculus::parse_params(line).map_err(|e| e.to_string()) {
+            params = p;
+        }
+        match Parameter::parse(line) {
+            Ok(p) => {
+                let grid = SweepGrid::new(vec![p.clone(), p], Sampling::Grid);
+                if grid.check().is_ok() {
+                    let n = grid.len();
+                    let _ = grid.point(n / 2);
+                }
+            }
+            Err(e) => {
+                let _ = e.to_string();
+            }
+        }
+        if let Ok(shard) = Shard::parse(line).map_err(|e| e.to_string()) {
+            let _ = shard.indices(1000);
+        }
+        let _ = parse_size(line).map(format_size);
+        let _ = ColumnRef::parse(line).map_err(|e| e.to_string());
+        let _ = Restitution::parse(line).map_err(|e| e.to_string());
+        let _ = Channel::parse(line).map_err(|e| e.to_string());
+        let components: Vec<&str> = line.split(';').collect();
+        let _ = ForceField::parse(&components, &params).map_err(|e| e.to_string());
+    }
+}
+
 /// The targets by name, as the fuzz binaries and the replay test know them.
 pub const TARGETS: &[(&str, Target)] = &[
     ("expression", expression),
@@ -263,4 +299,5 @@ pub const TARGETS: &[(&str, Target)] = &[
     ("scenario", scenario),
     ("data_file", data_file),
     ("image", image),
+    ("options", options),
 ];

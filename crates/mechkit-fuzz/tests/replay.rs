@@ -112,3 +112,10 @@ fn image_seeds_and_regressions() {
     inputs.extend(regressions("image"));
     replay("image", &inputs, 8);
 }
+
+#[test]
+fn options_seeds_and_regressions() {
+    let mut inputs = lines(&repo().join("fuzz/seeds/options.txt"));
+    inputs.extend(regressions("options"));
+    replay("options", &inputs, 20);
+}

@@ -290,3 +290,35 @@ fn bad_parameters_are_clear_errors() {
     .to_string();
     assert!(e.contains("--plot") && e.contains("`w`"), "{e}");
 }
+
+/// Found while writing the `options` fuzz target: a range of 10^11 points asked for 800 GB at
+/// once (the process aborted), and three large ranges overflowed the count of runs (a panic
+/// in a debug build, a wrong count in a release build). Both are refused with the limit now.
+#[test]
+fn fuzz_huge_sweeps_are_refused_not_allocated() {
+    use mechkit::scenario::sweep::{MAX_RUNS, Parameter, Sampling, SweepGrid};
+    let err = Parameter::parse("v0=0:5:100000000000")
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("more than a sweep runs"), "{err}");
+    let big = |name: &str| Parameter::parse(&format!("{name}=0:1:100000")).unwrap();
+    // 10^20 runs: past what a usize counts
+    let grid = SweepGrid::new(vec![big("a"), big("b"), big("c"), big("d")], Sampling::Grid);
+    assert_eq!(grid.len(), usize::MAX, "the count saturates");
+    let err = grid.check().unwrap_err().to_string();
+    assert!(err.contains("more than 10^19 runs"), "{err}");
+    let random = SweepGrid::new(
+        vec![big("a")],
+        Sampling::Random {
+            n: MAX_RUNS + 1,
+            seed: 1,
+        },
+    );
+    assert!(random.check().is_err());
+    let largest = Parameter::parse(&format!("a=0:1:{MAX_RUNS}")).unwrap();
+    assert!(
+        SweepGrid::new(vec![largest], Sampling::Grid)
+            .check()
+            .is_ok()
+    );
+}

@@ -102,4 +102,36 @@ pub static CASES: &[Case] = &[
         args: &["check", "big.toml"],
         code: 2,
     },
+    Case {
+        area: "limits",
+        kind: "sweep_range_too_long",
+        files: &[("s.toml", Text(SWEEP))],
+        args: &[
+            "sweep",
+            "s.toml",
+            "--set",
+            "v0=0:5:100000000000",
+            "--out",
+            "out",
+        ],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "sweep_grid_too_large",
+        files: &[("s.toml", Text(SWEEP))],
+        args: &[
+            "sweep",
+            "s.toml",
+            "--set",
+            "v0=0:5:10000",
+            "--set",
+            "g=1:2:10000",
+            "--out",
+            "out",
+        ],
+        code: 2,
+    },
 ];
+
+const SWEEP: &str = "dimensions = 1\n[constants]\nv0 = \"1 m/s\"\ng = \"9.81 m/s^2\"\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\nvelocity = \"v0\"\n[[force]]\nname = \"gravity\"\nkind = \"uniform-gravity\"\ng = \"g\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n";

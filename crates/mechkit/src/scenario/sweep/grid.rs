@@ -1,6 +1,7 @@
 //! The points of a sweep: the grid of all combinations (the last `--set` varies fastest), or a
 //! seeded random sample; and the slice of them one shard runs.
 
+use super::param::MAX_RUNS;
 use super::{Parameter, SweepError};
 use crate::Real;
 
@@ -53,13 +54,40 @@ impl SweepGrid {
                 "--random needs at least 1 point\n  = hint: e.g. --random 1000 --seed 1".into(),
             ));
         }
+        if self.len() > MAX_RUNS {
+            let counts: Vec<String> = self
+                .params
+                .iter()
+                .map(|p| format!("{} {}", p.values.len(), p.name))
+                .collect();
+            let hint = match self.sampling {
+                Sampling::Grid => format!(
+                    "use fewer points ({}), or --random N for a sample of the space",
+                    counts.join(" × ")
+                ),
+                Sampling::Random { .. } => format!("ask for at most {MAX_RUNS} with --random"),
+            };
+            let runs = if self.len() == usize::MAX {
+                "more than 10^19".to_string()
+            } else {
+                self.len().to_string()
+            };
+            return Err(SweepError::Options(format!(
+                "the sweep would make {runs} runs, more than the {MAX_RUNS} a sweep runs\n  = hint: {hint}"
+            )));
+        }
         Ok(())
     }
 
     /// The number of runs.
     pub fn len(&self) -> usize {
         match self.sampling {
-            Sampling::Grid => self.params.iter().map(|p| p.values.len()).product(),
+            // saturating: a grid too large to count is refused by `check`
+            Sampling::Grid => self
+                .params
+                .iter()
+                .try_fold(1usize, |n, p| n.checked_mul(p.values.len()))
+                .unwrap_or(usize::MAX),
             Sampling::Random { n, .. } => n,
         }
     }

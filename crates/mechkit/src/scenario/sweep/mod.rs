@@ -46,6 +46,6 @@ mod table;
 pub use error::SweepError;
 pub use grid::{Sampling, Shard, SweepGrid};
 pub(crate) use param::unknown_override;
-pub use param::{ConstantOverride, Parameter};
+pub use param::{ConstantOverride, MAX_RUNS, Parameter};
 pub use run::{SweepOptions, SweepRow, run_sweep};
 pub use table::{SweepTable, merge_parts};
