@@ -38,6 +38,7 @@ mod energy;
 mod errors;
 mod friction;
 mod interrupt;
+mod issue_011;
 mod limits;
 mod mass;
 mod md;

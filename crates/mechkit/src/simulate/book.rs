@@ -103,7 +103,7 @@ impl EventBook {
                     quantity: e.name().to_string(),
                     value: Real::from(count),
                     message: format!(
-                        "the event `{}` fired again at t = {te} s (occurrence {count}) at the instant of its own last occurrence: after its state change the next arrival came sooner than the time resolution of the run, so its occurrences accumulate at this instant (Zeno behaviour, like a ball bouncing infinitely often before coming to rest at the accumulation time); end the run before that instant (t_max), or add an event that stops or changes the model there (e.g. when the rebound speed falls below a threshold)",
+                        "the event `{}` fired again at t = {te} s right after its own state change there (occurrence {count}): its next occurrence came sooner than the run can resolve in time, so its occurrences accumulate at this instant (Zeno behaviour, like a ball bouncing infinitely often before it comes to rest); end the run before that instant (t_max), or add an event that stops or changes the model there (e.g. when the rebound speed falls below a threshold)",
                         e.name()
                     ),
                 });

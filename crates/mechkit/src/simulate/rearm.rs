@@ -96,10 +96,22 @@ mod tests {
         let falling = [Event::new("g", |_, _| 0.0).direction(Direction::Falling)];
         let mut out = [Side::Unknown];
         // slightly below zero after the change, rising: armed above
-        sides_after_change(&falling, &[0], &[Side::Pos], (&[-1e-30], &[1e-20]), &mut out);
+        sides_after_change(
+            &falling,
+            &[0],
+            &[Side::Pos],
+            (&[-1e-30], &[1e-20]),
+            &mut out,
+        );
         assert_eq!(out, [Side::Pos]);
         // still falling after the change (a kick along): at zero
-        sides_after_change(&falling, &[0], &[Side::Pos], (&[-1e-30], &[-1e-20]), &mut out);
+        sides_after_change(
+            &falling,
+            &[0],
+            &[Side::Pos],
+            (&[-1e-30], &[-1e-20]),
+            &mut out,
+        );
         assert_eq!(out, [Side::Zero]);
         let rising = [Event::new("g", |_, _| 0.0).direction(Direction::Rising)];
         sides_after_change(&rising, &[0], &[Side::Neg], (&[0.0], &[-1.0]), &mut out);

@@ -243,6 +243,34 @@ mod tests {
         assert_eq!(found, vec![1.0]);
     }
 
+    /// Scans `(0, 1]` for a falling event armed above zero (after a bounce) from `f(0)`.
+    fn armed(f: impl Fn(Real) -> Real) -> Option<Real> {
+        let events = [Event::new("g", |_, _| 0.0).direction(Direction::Falling)];
+        let mut sides = vec![Side::Pos];
+        let mut values = |t: Real, out: &mut [Real]| out[0] = f(t);
+        scan(
+            &events,
+            &[true],
+            &mut sides,
+            (0.0, &[f(0.0)]),
+            (1.0, &[f(1.0)]),
+            7,
+            &mut values,
+            &mut ScanBuffers::default(),
+        )
+        .map(|fired| fired.firing.t)
+    }
+
+    #[test]
+    fn an_armed_event_finds_an_excursion_no_sample_sees() {
+        // just below zero after a bounce, up and back down by t = 2e-4, far before the first
+        // sample at 1/8: the return is located
+        let t = armed(|t| -1e-30 + 1e-4 * t - 0.5 * t * t).unwrap();
+        assert!((t - 2e-4).abs() < 1e-16, "{t}");
+        // no excursion the time grid can show: fires again at once (the book's Zeno)
+        assert_eq!(armed(|t| -1e-30 - t), Some(0.0));
+    }
+
     #[test]
     fn a_root_at_the_start_fires_when_leaving_in_the_direction() {
         assert_eq!(run(|t| t, Direction::Rising, 3), vec![0.0]);

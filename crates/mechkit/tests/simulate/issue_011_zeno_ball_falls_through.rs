@@ -61,6 +61,20 @@ fn check(e: f64, fixed_dt: Option<f64>) {
     );
     assert!(lowest > -1e-12, "{label}: the ball went down to {lowest} m");
     assert!(r.final_state.y[0].abs() < 1e-12, "{label}");
+    // no bounce skipped: the gaps between bounces shrink by e each time, as long as they are
+    // well above the time resolution
+    let t: Vec<f64> = r.events.iter().map(|ev| ev.t).collect();
+    for k in 2..t.len() {
+        let (g0, g1) = (t[k - 1] - t[k - 2], t[k] - t[k - 1]);
+        if g1 > 1e-11 {
+            assert!(
+                (g1 / g0 - e).abs() < 1e-3,
+                "{label}: bounce {}: gap ratio {}",
+                k + 1,
+                g1 / g0
+            );
+        }
+    }
     // every bounce, at its analytic time t_k = t1 + 2 t1 e (1 − e^(k−1))/(1 − e)
     assert!(r.events.len() >= 20, "{label}: {} bounces", r.events.len());
     for (k, ev) in r.events.iter().take(20).enumerate() {
@@ -112,7 +126,10 @@ restitution = 0.5
 [stop]
 t_max = "100 s"
 "#;
-    let out = Scenario::from_str("wall.toml", toml).unwrap().run().unwrap();
+    let out = Scenario::from_str("wall.toml", toml)
+        .unwrap()
+        .run()
+        .unwrap();
     let r = &out.report;
     let t_inf = (2.0 * 0.99 / G).sqrt() * 3.0;
     assert_eq!(r.stop_reason, StopReason::Zeno);
