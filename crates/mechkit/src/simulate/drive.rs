@@ -425,7 +425,7 @@ pub(super) fn drive(
                     events,
                     &firing.events,
                     &sides_scan,
-                    (&g_a, &g_b),
+                    (&at_values, &g_a, &g_b),
                     &mut sides,
                 );
                 engine.restart(&state, ledger.work());

@@ -53,15 +53,17 @@ pub(super) fn values_ahead(
 }
 
 /// The sides of the events right after a state change: `fired` fired, `before` are their sides
-/// just before the firing, `g_post` their values after the change and `g_ahead` a moment
-/// later along the flow. A fired event whose function the change turned back towards the side
-/// it came from is armed on that side (its next arrival at zero fires); any other fired event
-/// is at zero (leaving it does not fire), and the others keep their sides.
+/// just before the firing, `g_pre` their values at the event before the change, `g_post` after
+/// it and `g_ahead` a moment later along the flow. A fired event whose function the change
+/// turned back towards the side it came from, while leaving it where it was (at the located
+/// zero, to rounding: a bounce changes the velocity, not the height) or on that side, is armed
+/// on that side (its next arrival at zero fires); any other fired event is at zero (leaving it
+/// does not fire: a kick along, or a jump elsewhere), and the others keep their sides.
 pub(super) fn sides_after_change(
     events: &[Event],
     fired: &[usize],
     before: &[Side],
-    (g_post, g_ahead): (&[Real], &[Real]),
+    (g_pre, g_post, g_ahead): (&[Real], &[Real], &[Real]),
     out: &mut [Side],
 ) {
     for (i, e) in events.iter().enumerate() {
@@ -73,12 +75,17 @@ pub(super) fn sides_after_change(
                 Trigger::Holds { .. } => Side::Zero,
             };
             let rate = g_ahead[i] - g_post[i];
-            let turned_back = match origin {
-                Side::Pos => rate > 0.0,
-                Side::Neg => rate < 0.0,
-                _ => false,
+            let (turned_back, on_origin) = match origin {
+                Side::Pos => (rate > 0.0, g_post[i] > 0.0),
+                Side::Neg => (rate < 0.0, g_post[i] < 0.0),
+                _ => (false, false),
             };
-            if turned_back { origin } else { Side::Zero }
+            let in_place = g_post[i] == g_pre[i] || g_post[i] == 0.0;
+            if turned_back && (in_place || on_origin) {
+                origin
+            } else {
+                Side::Zero
+            }
         } else if g_post[i] == 0.0 {
             Side::Zero
         } else {
@@ -95,29 +102,39 @@ mod tests {
     fn a_bounce_is_armed_again_and_a_kick_is_not() {
         let falling = [Event::new("g", |_, _| 0.0).direction(Direction::Falling)];
         let mut out = [Side::Unknown];
-        // slightly below zero after the change, rising: armed above
-        sides_after_change(
-            &falling,
-            &[0],
-            &[Side::Pos],
-            (&[-1e-30], &[1e-20]),
-            &mut out,
-        );
+        let b = [-1e-30];
+        // slightly below zero after the change (where it was located), rising: armed above
+        sides_after_change(&falling, &[0], &[Side::Pos], (&b, &b, &[1e-20]), &mut out);
         assert_eq!(out, [Side::Pos]);
         // still falling after the change (a kick along): at zero
+        sides_after_change(&falling, &[0], &[Side::Pos], (&b, &b, &[-1e-20]), &mut out);
+        assert_eq!(out, [Side::Zero]);
+        // moved well below and rising (a jump elsewhere): at zero, its side follows the samples
         sides_after_change(
             &falling,
             &[0],
             &[Side::Pos],
-            (&[-1e-30], &[-1e-20]),
+            (&b, &[-1.0], &[-0.9]),
             &mut out,
         );
         assert_eq!(out, [Side::Zero]);
         let rising = [Event::new("g", |_, _| 0.0).direction(Direction::Rising)];
-        sides_after_change(&rising, &[0], &[Side::Neg], (&[0.0], &[-1.0]), &mut out);
+        sides_after_change(
+            &rising,
+            &[0],
+            &[Side::Neg],
+            (&[0.0], &[0.0], &[-1.0]),
+            &mut out,
+        );
         assert_eq!(out, [Side::Neg]);
         // not fired: its own side
-        sides_after_change(&rising, &[], &[Side::Neg], (&[2.0], &[3.0]), &mut out);
+        sides_after_change(
+            &rising,
+            &[],
+            &[Side::Neg],
+            (&[2.0], &[2.0], &[3.0]),
+            &mut out,
+        );
         assert_eq!(out, [Side::Pos]);
     }
 }

@@ -140,3 +140,45 @@ t_max = "100 s"
     );
     assert!((r.final_state.y[0] - 0.01).abs() < 1e-9);
 }
+
+/// What the fix must not change: a state change that does not turn the function back in place
+/// (a jump elsewhere: a periodic coordinate wrapped from 1 to 0 at unit speed) fires once per
+/// period and never looks like Zeno; a jump below the floor with the ball rising fires again only
+/// when the ball comes back down through it.
+#[test]
+fn issue_011_jumps_are_not_rearmed() {
+    let sys = ParticleSystem::builder(1).body("p", 1.0).build().unwrap();
+    let wrap = Event::new("wrap", |s, _| s.q[0] - 1.0)
+        .direction(Direction::Rising)
+        .set(|_, _, y| y[0] -= 1.0);
+    let r = Simulation::adaptive(&sys, Method::Dopri5, AdaptiveConfig::default())
+        .t_max(10.5)
+        .event(wrap)
+        .run(State::from_qv(0.0, &[0.0], &[1.0]), &mut [])
+        .unwrap();
+    assert_eq!(r.stop_reason, StopReason::TMax);
+    assert_eq!(r.events.len(), 10);
+    for (k, ev) in r.events.iter().enumerate() {
+        assert!((ev.t - (k + 1) as f64).abs() < 1e-9, "{}", ev.t);
+    }
+    // a ball reaching the floor is put 1 m below it, moving up at 1 m/s; g = 9.81 brings it
+    // back down without reaching the floor, so it never crosses it again
+    let sys = ParticleSystem::builder(1)
+        .body("ball", 1.0)
+        .force(UniformGravity::new("gravity", vec![0], G))
+        .build()
+        .unwrap();
+    let sink = Event::new("sink", |s, _| s.q[0])
+        .direction(Direction::Falling)
+        .set(|_, _, y| {
+            y[0] = -1.0;
+            y[1] = 1.0;
+        });
+    let r = Simulation::adaptive(&sys, Method::Dopri5, AdaptiveConfig::default())
+        .t_max(2.0)
+        .event(sink)
+        .run(State::from_qv(0.0, &[1.0], &[0.0]), &mut [])
+        .unwrap();
+    assert_eq!(r.stop_reason, StopReason::TMax);
+    assert_eq!(r.events.len(), 1);
+}
