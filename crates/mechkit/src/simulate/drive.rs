@@ -411,11 +411,10 @@ pub(super) fn drive(
                 emit(observers, &post)?;
                 event_values(events, &post, sys, &mut g_a);
                 values_ahead(
-                    events,
+                    (events, &firing.events),
                     sys,
                     (&state, &eval_a, ledger.work()),
                     step_scale,
-                    forces_for_events,
                     steps,
                     &mut probe,
                     &mut evaluations,

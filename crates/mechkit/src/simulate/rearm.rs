@@ -9,21 +9,21 @@
 //! flow, `ġ ≈ (g(t + δ, y + δ ẏ) − g(t, y)) / δ`, with `δ = √ε · max(|t|, typical step)`.
 
 use super::event::{Direction, Event, Side, Trigger};
-use super::probe::{Probe, event_values};
+use super::probe::Probe;
 use super::run::sample_of;
 use crate::Real;
 use crate::ode::State;
 use crate::particles::{Evaluation, ParticleSystem, SampleKind};
 
-/// The values of the event functions a moment `δ` along the flow of `state` (whose
-/// accelerations are in `eval`), in `out`; `probe` is scratch space.
+/// The values of the functions of the `fired` events a moment `δ` along the flow of `state`
+/// (whose accelerations are in `eval`), in `out` (the other entries are left alone); `probe`
+/// is scratch space.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn values_ahead(
-    events: &[Event],
+    (events, fired): (&[Event], &[usize]),
     sys: &ParticleSystem,
     (state, eval, work): (&State, &Evaluation, &[Real]),
     scale: Real,
-    forces: bool,
     step: u64,
     probe: &mut Probe,
     evaluations: &mut u64,
@@ -40,7 +40,7 @@ pub(super) fn values_ahead(
         probe.state.y[k] = state.y[k] + delta * state.y[n + k];
         probe.state.y[n + k] = state.y[n + k] + delta * eval.a.get(k).copied().unwrap_or(0.0);
     }
-    let eval_ahead = if forces {
+    let eval_ahead = if fired.iter().any(|&i| events[i].needs_forces()) {
         let (q, v) = probe.state.qv();
         sys.evaluate(probe.state.t, q, v, &mut probe.eval, &mut probe.scratch);
         *evaluations += 1;
@@ -49,7 +49,9 @@ pub(super) fn values_ahead(
         eval
     };
     let s = sample_of(step, &probe.state, eval_ahead, work, SampleKind::Event);
-    event_values(events, &s, sys, out);
+    for &i in fired {
+        out[i] = events[i].condition().value(&s, sys);
+    }
 }
 
 /// The sides of the events right after a state change: `fired` fired, `before` are their sides
