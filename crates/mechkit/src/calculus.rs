@@ -13,6 +13,9 @@ use crate::function::Function;
 use crate::quad::{QuadResult, Rule, Tolerance, integrate as quadrature, integrate_rule};
 use crate::roots::find_all;
 
+mod equation;
+use equation::{check_unknown, equation};
+
 /// A formula, a unit or a value that could not be read.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -304,36 +307,6 @@ pub struct Solution {
     pub numeric: Vec<Real>,
 }
 
-/// Splits `lhs = rhs` (a single `=`, not `==`, `<=`, `>=`, `!=`) into `lhs - rhs`.
-fn equation(text: &str) -> Result<Sym, CalculusError> {
-    let b = text.as_bytes();
-    let positions: Vec<usize> = (0..b.len())
-        .filter(|&i| {
-            b[i] == b'='
-                && !(i > 0 && matches!(b[i - 1], b'=' | b'<' | b'>' | b'!'))
-                && !(i + 1 < b.len() && b[i + 1] == b'=')
-        })
-        .collect();
-    match positions.as_slice() {
-        [] => Ok(Sym::from_expr(&parse(text)?.expr)),
-        [i] => {
-            let lhs = parse(&text[..*i])?.expr;
-            let rhs = parse(&text[i + 1..]).map_err(|mut e| {
-                e.span = e.span.shifted(i + 1);
-                e.source = text.to_string();
-                e
-            })?;
-            Ok(Sym::difference(
-                Sym::from_expr(&lhs),
-                Sym::from_expr(&rhs.expr),
-            ))
-        }
-        _ => Err(CalculusError::Invalid(format!(
-            "`{text}` has more than one `=`; separate equations with `;`"
-        ))),
-    }
-}
-
 /// Solves one equation for `x`: symbolically when it is linear or quadratic in `x`, otherwise
 /// (or additionally, with an interval) numerically on `interval` with `params` for the other
 /// names.
@@ -343,7 +316,8 @@ pub fn solve(
     interval: Option<(Real, Real)>,
     params: &Params,
 ) -> Result<Solution, CalculusError> {
-    let eq = equation(text)?;
+    let (eq, names) = equation(text)?;
+    check_unknown(x, text, &names)?;
     let env = lookup(params);
     let solved = eq.solve(x);
     let (symbolic, assumptions) = match solved {
@@ -392,12 +366,20 @@ pub fn solve(
 
 /// Solves several linear equations (`;`-separated) for several unknowns.
 pub fn solve_system(text: &str, unknowns: &[&str]) -> Result<Vec<(String, Sym)>, CalculusError> {
-    let eqs = text
+    let (eqs, names): (Vec<Sym>, Vec<Vec<String>>) = text
         .split(';')
         .map(str::trim)
         .filter(|s| !s.is_empty())
         .map(equation)
-        .collect::<Result<Vec<_>, _>>()?;
+        .collect::<Result<Vec<_>, _>>()?
+        .into_iter()
+        .unzip();
+    let mut names = names.concat();
+    names.sort();
+    names.dedup();
+    for u in unknowns {
+        check_unknown(u, text, &names)?;
+    }
     let sol = solve_linear(&eqs, unknowns).map_err(CalculusError::Invalid)?;
     Ok(unknowns.iter().map(|u| (*u).to_string()).zip(sol).collect())
 }

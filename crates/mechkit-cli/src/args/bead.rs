@@ -40,7 +40,7 @@ pub struct BeadArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub t_max: String,
     /// Relative tolerance of the integration (Dormand-Prince 5(4)).
-    #[arg(long, default_value_t = 1e-10)]
+    #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub rtol: f64,
     /// Output directory for path.csv and path.svg [default: out/bead].
     #[arg(long, short)]

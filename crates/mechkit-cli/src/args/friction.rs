@@ -59,7 +59,7 @@ pub struct FrictionArgs {
     #[arg(long, allow_hyphen_values = true, requires = "spring_k")]
     pub t_max: Option<String>,
     /// Relative tolerance of the simulation (DOP853); atol is 1000 times smaller.
-    #[arg(long, default_value_t = 1e-10)]
+    #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub rtol: f64,
     /// Stick-slip: directory for stick_slip.csv and the x(t), v(t) and force plots.
     #[arg(long, short, requires = "spring_k")]

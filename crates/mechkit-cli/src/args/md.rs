@@ -10,14 +10,14 @@ pub struct MdArgs {
     #[arg(long, default_value = "fcc")]
     pub lattice: String,
     /// Unit cells per axis (fcc: 4 atoms per cell; 20 cells = 32,000 atoms).
-    #[arg(long, default_value_t = 20)]
+    #[arg(value_parser = super::whole_count, long, default_value_t = 20, allow_hyphen_values = true)]
     pub cells: usize,
     /// Number density ρ in σ^-d.
-    #[arg(long, default_value_t = 0.8442)]
+    #[arg(long, default_value_t = 0.8442, allow_hyphen_values = true)]
     pub density: f64,
     /// Initial temperature in ε/k_B (Maxwell-Boltzmann, zero total momentum); default 1.44
     /// on a lattice; with --positions the particles start at rest unless it is given.
-    #[arg(long, conflicts_with = "velocities")]
+    #[arg(long, conflicts_with = "velocities", allow_hyphen_values = true)]
     pub temperature: Option<f64>,
     /// Initial positions instead of a lattice: CSV (x[,y[,z]] per line, the column count is
     /// the dimension) or XYZ (by the .xyz extension).
@@ -32,7 +32,8 @@ pub struct MdArgs {
         long,
         value_name = "L[,L,L]",
         requires = "positions",
-        value_delimiter = ','
+        value_delimiter = ',',
+        allow_hyphen_values = true
     )]
     pub r#box: Vec<f64>,
     /// Boundaries of a --positions box: periodic (minimum image) or open.
@@ -43,54 +44,54 @@ pub struct MdArgs {
     #[arg(long, default_value = "lj")]
     pub potential: String,
     /// ε of lj and soft-sphere.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     pub epsilon: f64,
     /// σ of lj and soft-sphere (the soft spheres' diameter and cut-off).
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     pub sigma: f64,
     /// Stiffness k of spring.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     pub k: f64,
     /// Rest length r0 of spring.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     pub rest_length: f64,
     /// Mass of every particle.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     pub mass: f64,
     /// Seed of the initial velocities.
-    #[arg(long, default_value_t = 87287)]
+    #[arg(value_parser = super::whole_u64, long, default_value_t = 87287, allow_hyphen_values = true)]
     pub seed: u64,
     /// Number of velocity-Verlet steps.
-    #[arg(long, default_value_t = 100)]
+    #[arg(value_parser = super::whole_count, long, default_value_t = 100, allow_hyphen_values = true)]
     pub steps: usize,
     /// Time step in τ.
-    #[arg(long, default_value_t = 0.005)]
+    #[arg(long, default_value_t = 0.005, allow_hyphen_values = true)]
     pub dt: f64,
     /// Cut-off of lj and spring (spring: between the first and second neighbour distances
     /// to bond nearest neighbours only).
-    #[arg(long, default_value_t = 2.5)]
+    #[arg(long, default_value_t = 2.5, allow_hyphen_values = true)]
     pub cutoff: f64,
     /// Shift the potential so U(r_c) = 0 (LAMMPS: pair_modify shift yes).
     #[arg(long)]
     pub shift: bool,
     /// Neighbour-list skin in σ.
-    #[arg(long, default_value_t = 0.3)]
+    #[arg(long, default_value_t = 0.3, allow_hyphen_values = true)]
     pub skin: f64,
     /// Threads for the forces (results are bit-identical for any number).
-    #[arg(long, default_value_t = 1)]
+    #[arg(value_parser = super::whole_count, long, default_value_t = 1, allow_hyphen_values = true)]
     pub threads: usize,
     /// Thermo output every this many steps.
-    #[arg(long, default_value_t = 50)]
+    #[arg(value_parser = super::whole_count, long, default_value_t = 50, allow_hyphen_values = true)]
     pub thermo_every: usize,
     /// Write DIR/thermo.csv, DIR/rdf.csv and (with --xyz-every) DIR/trajectory.xyz.
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Extended-XYZ frame every this many steps (needs --out).
-    #[arg(long, requires = "out")]
+    #[arg(value_parser = super::whole_count, long, requires = "out", allow_hyphen_values = true)]
     pub xyz_every: Option<usize>,
     /// Largest file to write, e.g. `10GB` (default 1 GB); the run stops cleanly with a
     /// message when thermo.csv or trajectory.xyz would pass it.
-    #[arg(long, value_name = "SIZE")]
+    #[arg(long, value_name = "SIZE", allow_hyphen_values = true)]
     pub max_output: Option<String>,
     /// Print the result as JSON.
     #[arg(long)]

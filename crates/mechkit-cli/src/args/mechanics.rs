@@ -61,7 +61,7 @@ pub struct ComArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub pixel_size: Option<String>,
     /// Image: the scale from a known length, e.g. "240 px = 12 cm".
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub scale: Option<String>,
     /// Image: the pixel position of the physical origin "x, y" (column, row, from the
     /// top-left corner) [default: the bottom-left corner]; physical y points up.
@@ -102,16 +102,16 @@ pub struct ImpulseArgs {
     /// Data file with a time column and a force column.
     pub file: PathBuf,
     /// The time column (name or 1-based number) [default: the first].
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub t: Option<String>,
     /// The force column [default: the second].
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub f: Option<String>,
     /// Quadrature rule: trapezoid, simpson, left, right or midpoint.
     #[arg(long, default_value = "trapezoid")]
     pub method: String,
     /// The mass that receives the impulse: Δv = J/m.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mass: Option<String>,
     /// Its velocity before (default 0).
     #[arg(long, allow_hyphen_values = true)]
@@ -134,17 +134,17 @@ pub struct DeriveArgs {
     /// start comments; an optional header line names the columns).
     pub file: PathBuf,
     /// The time column (name or 1-based number) [default: the first].
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub t: Option<String>,
     /// The position columns, comma-separated [default: every other column].
-    #[arg(long, value_delimiter = ',')]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub x: Option<Vec<String>>,
     /// Finite differences: central (second order), forward (the course's loop) or backward.
     #[arg(long, default_value = "central")]
     pub method: String,
     /// Savitzky-Golay smoothing for noisy data: WINDOW[:ORDER] samples, e.g. 21:2 (uniform
     /// time steps only).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub smooth: Option<String>,
     /// Output directory for derived.csv and the plots [default: out/<file name>].
     #[arg(long, short)]
@@ -163,10 +163,10 @@ pub struct WorkArgs {
     /// Data file: columns of x and F (whitespace or comma separated; # and % start comments).
     pub file: Option<PathBuf>,
     /// The column of x (name or 1-based number) [default: the first].
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub x: Option<String>,
     /// The column of F (name or 1-based number) [default: the second].
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub f: Option<String>,
     /// Quadrature rule: trapezoid, simpson, left, right or midpoint.
     #[arg(long, default_value = "trapezoid")]
@@ -177,7 +177,7 @@ pub struct WorkArgs {
     pub of: Option<String>,
     /// A mass: with position data, the speed v(x) from ½mv² = ½mv0² + W(x); with time data,
     /// the change of velocity J/m.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mass: Option<String>,
     /// Start speed for v(x) (default 0).
     #[arg(long, allow_hyphen_values = true)]
@@ -225,7 +225,7 @@ pub struct PowerArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub at: Option<String>,
     /// Also report when this speed is reached.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub until_speed: Option<String>,
     /// Average power instead: the work done ...
     #[arg(long, requires = "time", allow_hyphen_values = true)]
@@ -269,7 +269,7 @@ pub struct RocketArgs {
     #[arg(long)]
     pub coast: bool,
     /// Relative tolerance of the simulation (Dormand-Prince 5(4)); atol is 1000 times smaller.
-    #[arg(long, default_value_t = 1e-10)]
+    #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub rtol: f64,
     /// Directory for the v(t), x(t) and m(t) plots [default: out/rocket].
     #[arg(long, short)]
@@ -295,7 +295,7 @@ pub struct PotentialArgs {
     /// F = -∇U is reported, and its values at --at points).
     #[arg(long, default_value = "x")]
     pub var: String,
-    /// The range A:B to analyse and plot (write --range=-1:2 for a negative start).
+    /// The range A:B to analyse and plot, increasing, e.g. -1:2.
     #[arg(long, allow_hyphen_values = true)]
     pub range: Option<String>,
     /// Values of the other names, e.g. "U0=1 eV,a=3.4 Å".
@@ -305,7 +305,7 @@ pub struct PotentialArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub energy: Option<String>,
     /// Mass of a body released at --x0 with --v0: its energy, turning points and v(x).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mass: Option<String>,
     /// Start position of the body.
     #[arg(long, allow_hyphen_values = true)]
@@ -318,7 +318,7 @@ pub struct PotentialArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub at: Option<String>,
     /// Grid intervals used to find equilibria and turning points.
-    #[arg(long, default_value_t = 2000)]
+    #[arg(value_parser = super::whole_count, long, default_value_t = 2000, allow_hyphen_values = true)]
     pub samples: usize,
     /// Where to write the energy diagram (SVG) [default: out/energy_diagram.svg].
     #[arg(long)]

@@ -182,7 +182,7 @@ pub struct DiffArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub at: Option<String>,
     /// Initial step of the numerical derivative (default 0.1).
-    #[arg(long, requires = "at")]
+    #[arg(long, requires = "at", allow_hyphen_values = true)]
     pub step: Option<String>,
     /// Values of the other names, e.g. "F0=1,b=2" (needed with --at).
     #[arg(long, allow_hyphen_values = true)]
@@ -216,7 +216,7 @@ pub struct IntegrateArgs {
     #[arg(long, value_delimiter = ',', requires = "from")]
     pub method: Option<Vec<String>>,
     /// Numbers of intervals for --method, comma-separated.
-    #[arg(long, value_delimiter = ',', default_value = "10", requires = "method")]
+    #[arg(value_parser = whole_count, long, value_delimiter = ',', default_value = "10", requires = "method", allow_hyphen_values = true)]
     pub n: Vec<usize>,
     /// Print JSON.
     #[arg(long)]
@@ -275,7 +275,7 @@ pub struct RunArgs {
     /// Largest trajectory file to write, e.g. `10GB` or `500MB` (default: `[output] max_size`
     /// of the scenario, else 1 GB); the run stops cleanly with `output_limit` when it is
     /// reached.
-    #[arg(long, value_name = "SIZE")]
+    #[arg(long, value_name = "SIZE", allow_hyphen_values = true)]
     pub max_output: Option<String>,
     /// Instead of one run: run with each of these methods (comma-separated, e.g.
     /// "euler,euler-cromer,rk4,dopri5") and compare them with a reference solution (DOP853 at
@@ -284,13 +284,13 @@ pub struct RunArgs {
     pub compare_methods: Option<Vec<String>>,
     /// With --compare-methods: the step of fixed-step methods (default: the scenario's dt),
     /// e.g. "1 ms".
-    #[arg(long, requires = "compare_methods")]
+    #[arg(long, requires = "compare_methods", allow_hyphen_values = true)]
     pub dt: Option<String>,
     /// With --compare-methods: rtol of adaptive methods (default: the scenario's, else 1e-6).
-    #[arg(long, requires = "compare_methods")]
+    #[arg(long, requires = "compare_methods", allow_hyphen_values = true)]
     pub rtol: Option<f64>,
     /// With --compare-methods: atol of adaptive methods (default: the scenario's, else 1e-9).
-    #[arg(long, requires = "compare_methods")]
+    #[arg(long, requires = "compare_methods", allow_hyphen_values = true)]
     pub atol: Option<f64>,
 }
 
@@ -299,4 +299,101 @@ pub struct RunArgs {
 pub struct CheckArgs {
     /// The scenario file (TOML).
     pub file: PathBuf,
+}
+
+/// A count (a whole number ≥ 0) of an option: a negative or fractional value gets a message
+/// that says what is wanted instead of Rust's "invalid digit found in string".
+fn whole_count(text: &str) -> Result<usize, String> {
+    whole_u64(text).and_then(|n| usize::try_from(n).map_err(|_| format!("`{text}` is too large")))
+}
+
+/// A whole number ≥ 0 (a count or a seed), with our own message.
+fn whole_u64(text: &str) -> Result<u64, String> {
+    text.trim()
+        .parse::<u64>()
+        .map_err(|_| format!("`{text}` is not a whole number ≥ 0 (a count, e.g. 20)"))
+}
+
+#[cfg(test)]
+mod negative_values {
+    use clap::error::ErrorKind;
+    use clap::{CommandFactory, Parser};
+
+    /// Every option and positional that takes a value, as `(subcommand path, arg id, long)`.
+    fn value_args() -> Vec<(Vec<String>, String, Option<String>)> {
+        fn walk(
+            cmd: &clap::Command,
+            path: &[String],
+            out: &mut Vec<(Vec<String>, String, Option<String>)>,
+        ) {
+            for a in cmd.get_arguments() {
+                let takes = a.get_num_args().is_some_and(|n| n.takes_values())
+                    || a.get_action().takes_values();
+                if takes && a.get_id() != "help" && a.get_id() != "version" {
+                    out.push((
+                        path.to_vec(),
+                        a.get_id().to_string(),
+                        a.get_long().map(str::to_string),
+                    ));
+                }
+            }
+            for sub in cmd.get_subcommands() {
+                let mut p = path.to_vec();
+                p.push(sub.get_name().to_string());
+                walk(sub, &p, out);
+            }
+        }
+        let mut out = Vec::new();
+        walk(&super::Cli::command(), &[], &mut out);
+        out
+    }
+
+    /// Options and positionals whose values are paths or names, never numbers.
+    const NOT_NUMBERS: &[&str] = &[
+        "file",
+        "out",
+        "plot",
+        "mark",
+        "parts",
+        "positions",
+        "velocities",
+        "body",
+        "unit",
+        "method",
+        "compare_methods",
+        "channel",
+        "lattice",
+        "boundary",
+        "potential",
+        "side",
+        "frame",
+        "of",
+    ];
+
+    /// Issue 11: a negative number (or a list or range starting with one) given to any
+    /// numeric option must reach mechkit's own validation, never clap's "unexpected argument
+    /// '-1'" (`mechkit md --density -1` used to work only as `--density=-1`).
+    #[test]
+    fn issue_011_negative_numbers_are_values() {
+        let mut bad = Vec::new();
+        for (path, id, long) in value_args() {
+            if NOT_NUMBERS.contains(&id.as_str()) {
+                continue;
+            }
+            for value in ["-1", "-1,2", "-2 m/s", "-1:2"] {
+                let mut argv = vec!["mechkit".to_string()];
+                argv.extend(path.iter().cloned());
+                if let Some(l) = &long {
+                    argv.push(format!("--{l}"));
+                }
+                argv.push(value.to_string());
+                if let Err(e) = super::Cli::try_parse_from(&argv)
+                    && e.kind() == ErrorKind::UnknownArgument
+                {
+                    bad.push(format!("{} {id}: {value}", path.join(" ")));
+                }
+            }
+        }
+        assert!(bad.is_empty(), "{} args: {bad:#?}", bad.len());
+    }
 }

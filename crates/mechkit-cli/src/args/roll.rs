@@ -41,7 +41,7 @@ pub struct RollArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub t_max: String,
     /// Relative tolerance of the simulation (DOP853); atol is 1000 times smaller.
-    #[arg(long, default_value_t = 1e-10)]
+    #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub rtol: f64,
     /// Directory for roll.csv and the plots of v and ωR, and of the energies.
     #[arg(long, short)]

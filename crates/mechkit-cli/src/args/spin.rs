@@ -49,14 +49,14 @@ pub struct SpinArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub dt: Option<String>,
     /// Relative tolerance of the adaptive methods; atol is 1000 times smaller.
-    #[arg(long, default_value_t = 1e-10)]
+    #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub rtol: f64,
     /// The frame of the angular momentum in the integrated state: world (dL/dt = τ) or body
     /// (Euler's equations).
     #[arg(long, value_parser = ["world", "body"], default_value = "world")]
     pub frame: String,
     /// Number of output intervals (CSV rows and plot points).
-    #[arg(long, default_value_t = 2000)]
+    #[arg(value_parser = super::whole_count, long, default_value_t = 2000, allow_hyphen_values = true)]
     pub samples: usize,
     /// Directory for spin.csv and the plots (nothing is written without it).
     #[arg(long, short)]

@@ -14,17 +14,17 @@ pub struct SweepArgs {
     pub set: Vec<String>,
     /// Instead of the grid, N points drawn uniformly (between a range's bounds, among a
     /// list's values) from a seeded generator.
-    #[arg(long, value_name = "N")]
+    #[arg(value_parser = super::whole_count, long, value_name = "N", allow_hyphen_values = true)]
     pub random: Option<usize>,
     /// Seed of --random.
-    #[arg(long, default_value_t = 1, requires = "random")]
+    #[arg(value_parser = super::whole_u64, long, default_value_t = 1, requires = "random", allow_hyphen_values = true)]
     pub seed: u64,
     /// Run only the K-th of N slices (runs with index % N == K - 1) and write
     /// sweep.partK.csv; join the parts with `mechkit sweep-merge`.
-    #[arg(long, value_name = "K/N")]
+    #[arg(long, value_name = "K/N", allow_hyphen_values = true)]
     pub shard: Option<String>,
     /// Worker threads [default: all cores]; the table does not depend on it.
-    #[arg(long)]
+    #[arg(value_parser = super::whole_count, long, allow_hyphen_values = true)]
     pub threads: Option<usize>,
     /// The plot of every run drawn in one figure, e.g. "v(x)" [default: the scenario's first
     /// plot].

@@ -8,7 +8,7 @@ use mechkit::expr::sym::Solutions;
 use mechkit::quad::Rule;
 use serde_json::json;
 
-use super::input::{interval, params, value};
+use super::input::{increasing_interval, params, value};
 use super::{Outcome, print};
 use crate::args::{DiffArgs, IntegrateArgs, SolveArgs, UnitsArgs};
 
@@ -261,7 +261,7 @@ pub fn solve(args: &SolveArgs) -> Result<Outcome> {
     let range = args
         .interval
         .as_deref()
-        .map(|t| interval(t, "--in", &p))
+        .map(|t| increasing_interval(t, "--in", &p))
         .transpose()?;
     let s = check_expr(calculus::solve(&args.equation, x, range, &p), "equation")?;
     let symbolic: Option<Vec<String>> = match &s.symbolic {

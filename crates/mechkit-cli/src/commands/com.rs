@@ -105,6 +105,50 @@ fn body_file(args: &ComArgs, file: &std::path::Path) -> Result<Outcome> {
     Ok(Outcome::Success)
 }
 
+/// Flags of an image (or a body file) have no meaning with point masses: refused rather than
+/// ignored.
+fn reject_body_flags(args: &ComArgs) -> Result<()> {
+    for (given, flag, example) in [
+        (args.mark.is_some(), "--mark", "--mark marked.png"),
+        (args.threshold.is_some(), "--threshold", "--threshold 1.5"),
+        (args.channel != "sum", "--channel", "--channel r"),
+        (args.invert, "--invert", "--invert"),
+        (
+            args.density_from_darkness,
+            "--density-from-darkness",
+            "--density-from-darkness",
+        ),
+        (
+            args.pixel_size.is_some(),
+            "--pixel-size",
+            "--pixel-size \"0.5 mm\"",
+        ),
+        (
+            args.scale.is_some(),
+            "--scale",
+            "--scale \"240 px = 12 cm\"",
+        ),
+        (args.origin.is_some(), "--origin", "--origin \"0, 480\""),
+    ] {
+        if given {
+            bail!(
+                "{flag} applies to an image of the body (mechkit com body.png {example}); it cannot be used with point masses (--mass)"
+            );
+        }
+    }
+    if args.total_mass.is_some() {
+        bail!(
+            "--total-mass applies to an image or a body file; with point masses the total is the sum of the --mass values"
+        );
+    }
+    if args.about.is_some() {
+        bail!(
+            "--about applies to an image or a body file (mechkit com body.toml --about \"0 m, 0 m\"); it cannot be used with point masses (--mass)"
+        );
+    }
+    Ok(())
+}
+
 pub fn com(args: &ComArgs) -> Result<Outcome> {
     if let Some(file) = &args.file {
         if is_image(file) {
@@ -112,6 +156,7 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
         }
         return body_file(args, file);
     }
+    reject_body_flags(args)?;
     if args.mass.is_empty() {
         bail!(
             "give the bodies as --mass M --at POSITION pairs, e.g. --mass \"2 kg\" --at \"0 m\" --mass \"1 kg\" --at \"3 m\""

@@ -63,9 +63,7 @@ pub fn quantity(text: &str, what: &str, dim: Dimension) -> Result<f64> {
 /// `A:B` (each end as in [`value`]); `flag` names the option in errors.
 pub fn interval(text: &str, flag: &str, params: &Params) -> Result<(f64, f64)> {
     let Some((a, b)) = split_interval(text) else {
-        bail!(
-            "{flag} takes an interval A:B, e.g. {flag} 0:10 (or {flag}=-1:2 for a negative start), not `{text}`"
-        );
+        bail!("{flag} takes an interval A:B, e.g. {flag} 0:10 or {flag} -1:2, not `{text}`");
     };
     let (a, b) = (
         value(a, &format!("{flag} start"), params)?,
@@ -73,6 +71,22 @@ pub fn interval(text: &str, flag: &str, params: &Params) -> Result<(f64, f64)> {
     );
     if a == b {
         bail!("{flag} {text}: the interval is empty; give two different ends");
+    }
+    Ok((a, b))
+}
+
+/// `A:B` with `A < B`: a range to scan or plot, where a reversed one is a slip, refused with
+/// the ends swapped as the example (an oriented interval, such as the limits of an integral or
+/// a path's parameter, is [`interval`]).
+pub fn increasing_interval(text: &str, flag: &str, params: &Params) -> Result<(f64, f64)> {
+    let (a, b) = interval(text, flag, params)?;
+    if a > b {
+        let (start, end) = split_interval(text).unwrap_or((text, text));
+        bail!(
+            "{flag} {text}: the range must be increasing (its start below its end), e.g. {flag} {}:{}",
+            end.trim(),
+            start.trim()
+        );
     }
     Ok((a, b))
 }
@@ -158,6 +172,15 @@ mod tests {
         assert_eq!(value("-inf", "--from", &p).unwrap(), f64::NEG_INFINITY);
         assert_eq!(value("∞", "--to", &p).unwrap(), f64::INFINITY);
         assert!(interval("1", "--range", &p).is_err());
+        // issue 11: a reversed range is refused, an oriented interval is not
+        assert_eq!(interval("2:1", "--param", &p).unwrap(), (2.0, 1.0));
+        let e = increasing_interval("2:-1", "--range", &p)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("must be increasing") && e.contains("--range -1:2"),
+            "{e}"
+        );
         assert_eq!(split_top_level("atan2(y, x), 0", ','), ["atan2(y, x)", "0"]);
     }
 }

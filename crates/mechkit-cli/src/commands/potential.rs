@@ -10,7 +10,7 @@ use mechkit::expr::units::Dimension;
 use mechkit::figure::{Band, LineStyle, Marker, MarkerShape, PlotData, Series};
 use serde_json::{Value, json};
 
-use super::input::{interval, params, quantity, show, split_top_level, value};
+use super::input::{increasing_interval, params, quantity, show, split_top_level, value};
 use super::{Outcome, print};
 use crate::args::PotentialArgs;
 use crate::plot::render_svg;
@@ -21,9 +21,9 @@ pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
         return gradient(args, &p);
     }
     let Some(range) = &args.range else {
-        bail!("give the range to analyse, e.g. --range 0.8:3 (or --range=-1:2)");
+        bail!("give the range to analyse, e.g. --range 0.8:3 or --range -1:2");
     };
-    let (a, b) = interval(range, "--range", &p)?;
+    let (a, b) = increasing_interval(range, "--range", &p)?;
     if !(a.is_finite() && b.is_finite()) {
         bail!(
             "--range {range}: a diagram samples its range, so both ends must be finite (for the speed far away use a large end, e.g. --range 0.01:1e9, or --at 1e15)"
@@ -36,7 +36,7 @@ pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
         (None, Some(f)) => Potential::from_force(f, x, &p, a),
         (Some(_), Some(_)) => bail!("give either a potential U or --force F, not both"),
         (None, None) => bail!(
-            "give a potential, e.g. mechkit potential \"k*x^2/2\" --range=-1:1 --set k=1, or a force with --force"
+            "give a potential, e.g. mechkit potential \"k*x^2/2\" --range -1:1 --set k=1, or a force with --force"
         ),
     }
     .map_err(|e| anyhow!("{e}"))?;

@@ -39,6 +39,7 @@ mod energy;
 mod errors;
 mod friction;
 mod interrupt;
+mod issue_011;
 mod limits;
 mod mass;
 mod md;

@@ -91,9 +91,24 @@ impl EventBook {
             // Zeno: firing again and again within a relative 1e-9 of the time
             let (run, previous) = self.zeno[i];
             let gap = 1e-9 * te.abs().max(scale.abs());
+            // firing again at the very instant of its own last occurrence: the state change
+            // there could not carry the function off zero for any time the run resolves
+            let at_once = te <= previous && e.state_change().is_some();
             let run = if te - previous <= gap { run + 1 } else { 0 };
             self.zeno[i] = (run, te);
-            if run >= ZENO_LIMIT {
+            if at_once {
+                out.failure = Some(Divergence {
+                    t: te,
+                    step,
+                    quantity: e.name().to_string(),
+                    value: Real::from(count),
+                    message: format!(
+                        "the event `{}` fired again at t = {te} s right after its own state change there (occurrence {count}): its next occurrence came sooner than the run can resolve in time, so its occurrences accumulate at this instant (Zeno behaviour, like a ball bouncing infinitely often before it comes to rest); end the run before that instant (t_max), or add an event that stops or changes the model there (e.g. when the rebound speed falls below a threshold)",
+                        e.name()
+                    ),
+                });
+                out.stop = Some(StopReason::Zeno);
+            } else if run >= ZENO_LIMIT {
                 out.failure = Some(Divergence {
                     t: te,
                     step,

@@ -8,6 +8,7 @@ use super::event::{Event, Side};
 use super::fused::{Fused, MIN_CHUNK, chunk_len};
 use super::observe::Observer;
 use super::probe::{Grid, Probe, Step, emit, event_values};
+use super::rearm::{sides_after_change, values_ahead};
 use super::report::{Divergence, RunReport, SimulateError, StopReason};
 use super::run::{Simulation, sample_of};
 use super::scan::{Fired, ScanBuffers, scan};
@@ -409,13 +410,23 @@ pub(super) fn drive(
                 let post = sample_of(steps, &state, &eval_a, ledger.work(), kind);
                 emit(observers, &post)?;
                 event_values(events, &post, sys, &mut g_a);
-                for i in 0..m {
-                    sides[i] = if firing.events.contains(&i) || g_a[i] == 0.0 {
-                        Side::Zero
-                    } else {
-                        sides_scan[i].after(g_a[i])
-                    };
-                }
+                values_ahead(
+                    (events, &firing.events),
+                    sys,
+                    (&state, &eval_a, ledger.work()),
+                    step_scale,
+                    steps,
+                    &mut probe,
+                    &mut evaluations,
+                    &mut g_b,
+                );
+                sides_after_change(
+                    events,
+                    &firing.events,
+                    &sides_scan,
+                    (&at_values, &g_a, &g_b),
+                    &mut sides,
+                );
                 engine.restart(&state, ledger.work());
                 hand_over(&mut engine, te, &state.y, &eval_a.a, &mut dydt);
                 fixed_origin = te;

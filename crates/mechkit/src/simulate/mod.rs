@@ -18,6 +18,7 @@ mod fused;
 pub mod interrupt;
 mod observe;
 mod probe;
+mod rearm;
 mod reduce;
 mod report;
 mod run;

@@ -70,7 +70,12 @@ pub(crate) fn scan(
             if !events[i].fires(cur[i], to) {
                 continue;
             }
-            let te = if to == Side::Zero {
+            let te = if left_armed(cur[i], prev_vals[i]) {
+                // re-armed by a state change that turned the function back (a bounce) while
+                // it still sits at or past zero: its next arrival is found after its
+                // excursion to the armed side, or at once when none can be resolved
+                excursion_end((i, m), cur[i], (t_prev, t_j), vals[i], values)
+            } else if to == Side::Zero {
                 t_j
             } else if matches!(cur[i], Side::Zero | Side::StartZero) || prev_vals[i] == 0.0 {
                 t_prev
@@ -129,6 +134,60 @@ pub(crate) fn scan(
     None
 }
 
+/// Whether an event armed on side `side` (by a state change that turned its function back)
+/// starts a sample interval at a value `g` that is not on that side yet.
+fn left_armed(side: Side, g: Real) -> bool {
+    match side {
+        Side::Pos => g <= 0.0,
+        Side::Neg => g >= 0.0,
+        Side::Zero | Side::StartZero | Side::Unknown => false,
+    }
+}
+
+/// Most halvings of a sample interval in the search for an excursion.
+const MAX_HALVINGS: usize = 200;
+
+/// The end of the excursion of event `i`'s function (of `m`) to `side` that starts at `t_prev` (where
+/// the function is not on `side` yet) and is over by `t_j` (value `g_j`, not on `side`): the
+/// interval is halved towards `t_prev` until a point on `side` is found, and the return to
+/// zero after it is located by Brent's method. When no representable time after `t_prev`
+/// shows the function on `side`, the excursion is too short to resolve and the event fires
+/// again at `t_prev` (the book reads it as an accumulation of occurrences: Zeno).
+fn excursion_end(
+    (i, m): (usize, usize),
+    side: Side,
+    (t_prev, t_j): (Real, Real),
+    g_j: Real,
+    values: &mut dyn FnMut(Real, &mut [Real]),
+) -> Real {
+    let mut buf = vec![Real::NAN; m];
+    let mut value_at = |t: Real, buf: &mut Vec<Real>| {
+        values(t, buf);
+        buf[i]
+    };
+    let on_side = |g: Real| match side {
+        Side::Pos => g > 0.0,
+        _ => g < 0.0,
+    };
+    let (mut hi, mut g_hi) = (t_j, g_j);
+    let mut off = (t_j - t_prev) / 2.0;
+    for _ in 0..MAX_HALVINGS {
+        let s = t_prev + off;
+        if s <= t_prev || s >= hi {
+            break;
+        }
+        let g = value_at(s, &mut buf);
+        if on_side(g) {
+            let tol = 2.0 * Real::EPSILON * s.abs().max(hi.abs());
+            return brent_with_values(|t| value_at(t, &mut buf), s, hi, Some((g, g_hi)), tol)
+                .unwrap_or(hi);
+        }
+        (hi, g_hi) = (s, g);
+        off /= 2.0;
+    }
+    t_prev
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -182,6 +241,34 @@ mod tests {
     fn a_root_on_the_step_end_fires_once_there() {
         let found = run(|t| t - 1.0, Direction::Both, 3);
         assert_eq!(found, vec![1.0]);
+    }
+
+    /// Scans `(0, 1]` for a falling event armed above zero (after a bounce) from `f(0)`.
+    fn armed(f: impl Fn(Real) -> Real) -> Option<Real> {
+        let events = [Event::new("g", |_, _| 0.0).direction(Direction::Falling)];
+        let mut sides = vec![Side::Pos];
+        let mut values = |t: Real, out: &mut [Real]| out[0] = f(t);
+        scan(
+            &events,
+            &[true],
+            &mut sides,
+            (0.0, &[f(0.0)]),
+            (1.0, &[f(1.0)]),
+            7,
+            &mut values,
+            &mut ScanBuffers::default(),
+        )
+        .map(|fired| fired.firing.t)
+    }
+
+    #[test]
+    fn an_armed_event_finds_an_excursion_no_sample_sees() {
+        // just below zero after a bounce, up and back down by t = 2e-4, far before the first
+        // sample at 1/8: the return is located
+        let t = armed(|t| -1e-30 + 1e-4 * t - 0.5 * t * t).unwrap();
+        assert!((t - 2e-4).abs() < 1e-16, "{t}");
+        // no excursion the time grid can show: fires again at once (the book's Zeno)
+        assert_eq!(armed(|t| -1e-30 - t), Some(0.0));
     }
 
     #[test]

@@ -62,4 +62,24 @@ pub static CASES: &[Case] = &[
     ),
     flags!("point_mass_not_a_mass", "com", "--mass", "1 m@0"),
     flags!("no_bodies", "com"),
+    flags!(
+        "point_masses_with_mark",
+        "com",
+        "--mass",
+        "1 kg",
+        "--at",
+        "0 m",
+        "--mark",
+        "out.png"
+    ),
+    flags!(
+        "point_masses_with_about",
+        "com",
+        "--mass",
+        "1 kg",
+        "--at",
+        "0 m",
+        "--about",
+        "1 m"
+    ),
 ];

@@ -136,6 +136,13 @@ pub static CASES: &[Case] = &[
         "cos(s), sin(s)"
     ),
     command!(
+        "potential_range_reversed",
+        "potential",
+        "x^2",
+        "--range",
+        "2:-1"
+    ),
+    command!(
         "potential_range_uses_an_unknown_name",
         "potential",
         "x^2",

@@ -37,6 +37,8 @@ pub static CASES: &[Case] = &[
     md!("unknown_lattice", "--lattice", "bcc"),
     md!("no_cells", "--cells", "0"),
     md!("density_not_positive", "--density=-1"),
+    md!("density_negative_without_equals", "--density", "-1"),
+    md!("cells_negative", "--cells", "-1"),
     md!("time_step_not_positive", "--dt", "0"),
     md!("box_too_small", "--lattice", "square", "--cells", "2"),
     md!("unknown_potential", "--potential", "morse"),

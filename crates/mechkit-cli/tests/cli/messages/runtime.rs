@@ -47,6 +47,18 @@ pub static CASES: &[Case] = &[
     },
     Case {
         area: "run",
+        kind: "zeno_at_once",
+        files: &[(
+            "s.toml",
+            Text(
+                "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\nposition = \"1 m\"\n[[force]]\nname = \"gravity\"\nkind = \"uniform-gravity\"\ng = \"9.81 m/s^2\"\n[integrator]\nmethod = \"dopri5\"\n[[event]]\nname = \"bounce\"\nfunction = \"x\"\ndirection = \"falling\"\nset = { v = \"-0.5*v\" }\n[stop]\nt_max = \"100 s\"\n",
+            ),
+        )],
+        args: &["run", "s.toml", "--out", "out", "--no-plots"],
+        code: 1,
+    },
+    Case {
+        area: "run",
         kind: "no_t_max_warning",
         files: &[(
             "s.toml",

@@ -1,0 +1,142 @@
+//! Which events are armed again after a state change.
+//!
+//! An event that fires and changes the state leaves its function at zero (to rounding, on
+//! either side). Leaving zero afterwards is not a crossing, unless the change **turned the
+//! function back**: a bounce sends `g = x` from falling to rising, so the next arrival at zero
+//! (the next bounce) must fire even when the excursion above zero is too short for any sample
+//! point of the next step to see it (late bounces near the accumulation point, long fixed
+//! steps). The direction the function takes after the change is its rate along the new state's
+//! flow, `ġ ≈ (g(t + δ, y + δ ẏ) − g(t, y)) / δ`, with `δ = √ε · max(|t|, typical step)`.
+
+use super::event::{Direction, Event, Side, Trigger};
+use super::probe::Probe;
+use super::run::sample_of;
+use crate::Real;
+use crate::ode::State;
+use crate::particles::{Evaluation, ParticleSystem, SampleKind};
+
+/// The values of the functions of the `fired` events a moment `δ` along the flow of `state`
+/// (whose accelerations are in `eval`), in `out` (the other entries are left alone); `probe`
+/// is scratch space.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn values_ahead(
+    (events, fired): (&[Event], &[usize]),
+    sys: &ParticleSystem,
+    (state, eval, work): (&State, &Evaluation, &[Real]),
+    scale: Real,
+    step: u64,
+    probe: &mut Probe,
+    evaluations: &mut u64,
+    out: &mut [Real],
+) {
+    let n = state.y.len() / 2;
+    let mut delta = Real::EPSILON.sqrt() * state.t.abs().max(scale.abs());
+    if !(delta.is_finite() && delta > 0.0) {
+        delta = Real::EPSILON.sqrt();
+    }
+    probe.state.t = state.t + delta;
+    probe.state.y.resize(2 * n, 0.0);
+    for k in 0..n {
+        probe.state.y[k] = state.y[k] + delta * state.y[n + k];
+        probe.state.y[n + k] = state.y[n + k] + delta * eval.a.get(k).copied().unwrap_or(0.0);
+    }
+    let eval_ahead = if fired.iter().any(|&i| events[i].needs_forces()) {
+        let (q, v) = probe.state.qv();
+        sys.evaluate(probe.state.t, q, v, &mut probe.eval, &mut probe.scratch);
+        *evaluations += 1;
+        &probe.eval
+    } else {
+        eval
+    };
+    let s = sample_of(step, &probe.state, eval_ahead, work, SampleKind::Event);
+    for &i in fired {
+        out[i] = events[i].condition().value(&s, sys);
+    }
+}
+
+/// The sides of the events right after a state change: `fired` fired, `before` are their sides
+/// just before the firing, `g_pre` their values at the event before the change, `g_post` after
+/// it and `g_ahead` a moment later along the flow. A fired event whose function the change
+/// turned back towards the side it came from, while leaving it where it was (at the located
+/// zero, to rounding: a bounce changes the velocity, not the height) or on that side, is armed
+/// on that side (its next arrival at zero fires); any other fired event is at zero (leaving it
+/// does not fire: a kick along, or a jump elsewhere), and the others keep their sides.
+pub(super) fn sides_after_change(
+    events: &[Event],
+    fired: &[usize],
+    before: &[Side],
+    (g_pre, g_post, g_ahead): (&[Real], &[Real], &[Real]),
+    out: &mut [Side],
+) {
+    for (i, e) in events.iter().enumerate() {
+        out[i] = if fired.contains(&i) {
+            let origin = match e.trigger {
+                Trigger::Crossing(Direction::Falling) => Side::Pos,
+                Trigger::Crossing(Direction::Rising) => Side::Neg,
+                Trigger::Crossing(Direction::Both) => before[i],
+                Trigger::Holds { .. } => Side::Zero,
+            };
+            let rate = g_ahead[i] - g_post[i];
+            let (turned_back, on_origin) = match origin {
+                Side::Pos => (rate > 0.0, g_post[i] > 0.0),
+                Side::Neg => (rate < 0.0, g_post[i] < 0.0),
+                _ => (false, false),
+            };
+            let in_place = g_post[i] == g_pre[i] || g_post[i] == 0.0;
+            if turned_back && (in_place || on_origin) {
+                origin
+            } else {
+                Side::Zero
+            }
+        } else if g_post[i] == 0.0 {
+            Side::Zero
+        } else {
+            before[i].after(g_post[i])
+        };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_bounce_is_armed_again_and_a_kick_is_not() {
+        let falling = [Event::new("g", |_, _| 0.0).direction(Direction::Falling)];
+        let mut out = [Side::Unknown];
+        let b = [-1e-30];
+        // slightly below zero after the change (where it was located), rising: armed above
+        sides_after_change(&falling, &[0], &[Side::Pos], (&b, &b, &[1e-20]), &mut out);
+        assert_eq!(out, [Side::Pos]);
+        // still falling after the change (a kick along): at zero
+        sides_after_change(&falling, &[0], &[Side::Pos], (&b, &b, &[-1e-20]), &mut out);
+        assert_eq!(out, [Side::Zero]);
+        // moved well below and rising (a jump elsewhere): at zero, its side follows the samples
+        sides_after_change(
+            &falling,
+            &[0],
+            &[Side::Pos],
+            (&b, &[-1.0], &[-0.9]),
+            &mut out,
+        );
+        assert_eq!(out, [Side::Zero]);
+        let rising = [Event::new("g", |_, _| 0.0).direction(Direction::Rising)];
+        sides_after_change(
+            &rising,
+            &[0],
+            &[Side::Neg],
+            (&[0.0], &[0.0], &[-1.0]),
+            &mut out,
+        );
+        assert_eq!(out, [Side::Neg]);
+        // not fired: its own side
+        sides_after_change(
+            &rising,
+            &[],
+            &[Side::Neg],
+            (&[2.0], &[2.0], &[3.0]),
+            &mut out,
+        );
+        assert_eq!(out, [Side::Pos]);
+    }
+}
