@@ -368,6 +368,8 @@ mod negative_values {
         "side",
         "frame",
         "of",
+        "data",
+        "law",
     ];
 
     /// Issue 11: a negative number (or a list or range starting with one) given to any

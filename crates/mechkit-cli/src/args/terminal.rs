@@ -27,10 +27,10 @@ pub struct TerminalArgs {
     #[arg(long)]
     pub data: Option<PathBuf>,
     /// The time column of --data (name or 1-based number) [default: the first].
-    #[arg(long, requires = "data")]
+    #[arg(long, allow_hyphen_values = true, requires = "data")]
     pub t: Option<String>,
     /// The position column of --data [default: the second].
-    #[arg(long, requires = "data")]
+    #[arg(long, allow_hyphen_values = true, requires = "data")]
     pub y: Option<String>,
     /// Fit the line from this time on, once the speed is steady, e.g. "1.5 s" [default: the
     /// second half of the samples].

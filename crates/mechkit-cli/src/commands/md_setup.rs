@@ -61,6 +61,10 @@ pub fn flag(e: &MdError) -> &'static str {
             _ => "input",
         },
         MdError::NoCells { .. } => "--cells",
+        MdError::TooMany { what, .. } => match *what {
+            "the number of threads" => "--threads",
+            _ => "--cells (or --positions)",
+        },
         MdError::TooFewParticles { .. } => "--cells (or --positions)",
         MdError::BoxTooSmall { .. } => "--cells or --box (or --cutoff, --skin)",
         _ => "input",

@@ -35,6 +35,10 @@ pub fn sweep(args: &SweepArgs) -> Result<Outcome> {
     let shard = args.shard.as_deref().map(Shard::parse).transpose()?;
     let threads = match args.threads {
         Some(0) => bail!("--threads must be at least 1\n  = hint: leave it out to use every core"),
+        Some(n) if n > mechkit::md::MAX_THREADS => bail!(
+            "--threads {n} is more than {}\n  = hint: leave it out to use every core; more threads than cores only slow a sweep down",
+            mechkit::md::MAX_THREADS
+        ),
         Some(n) => n,
         None => std::thread::available_parallelism().map_or(1, std::num::NonZero::get),
     };

@@ -187,3 +187,25 @@ fn a_full_disk_mid_run_stops_cleanly_with_a_summary() {
     let t_end = at(&summary, "/t_end").as_f64().expect("t_end");
     assert!(t_end > 0.1 && t_end < 3.0, "{t_end}");
 }
+
+/// Counts a user types are bounded before anything is allocated or started: atoms of a
+/// lattice (`--cells 2000` asked for 768 GB and aborted), threads (`--threads 100000` started
+/// them all), runs of a sweep.
+#[test]
+fn huge_counts_are_refused_before_anything_is_allocated() {
+    let dir = Dir::new();
+    dir.run(&["md", "--cells", "2000", "--steps", "1"])
+        .assert_bad_input(&["--cells", "32000000000", "more than 10000000"]);
+    dir.run(&["md", "--cells", "8", "--steps", "1", "--threads", "100000"])
+        .assert_bad_input(&["--threads", "more than 256"]);
+    dir.create("fall.toml", FALL);
+    dir.run(&[
+        "sweep",
+        "fall.toml",
+        "--set",
+        "g=1:2:100000000000",
+        "--out",
+        "out",
+    ])
+    .assert_bad_input(&["more than a sweep runs"]);
+}

@@ -32,6 +32,18 @@ pub enum MdError {
         /// The box's dimension.
         dim: usize,
     },
+    /// A count above what this code runs (atoms, threads).
+    #[error("{what} would be {value}, more than {max}; {hint}")]
+    TooMany {
+        /// What is counted (`the number of atoms`, `the number of threads`).
+        what: &'static str,
+        /// The count asked for (saturated at `u64::MAX`).
+        value: u64,
+        /// The limit.
+        max: u64,
+        /// How to stay within it.
+        hint: &'static str,
+    },
     /// A lattice with no unit cells.
     #[error("the lattice needs at least one unit cell along each axis (got {cells})")]
     NoCells {

@@ -112,6 +112,18 @@ impl Lattice {
             });
         }
         let dim = self.dim();
+        let atoms = (cells as u64)
+            .checked_pow(dim as u32)
+            .and_then(|n| n.checked_mul(self.basis().len() as u64))
+            .unwrap_or(u64::MAX);
+        if atoms > super::MAX_ATOMS as u64 {
+            return Err(MdError::TooMany {
+                what: "the number of atoms",
+                value: atoms,
+                max: super::MAX_ATOMS as u64,
+                hint: "use fewer unit cells",
+            });
+        }
         let edges = self.cell_edges(self.constant_for_density(density));
         let mut lengths = [0.0; 3];
         for a in 0..dim {

@@ -42,6 +42,12 @@ mod system;
 mod velocities;
 mod xyz;
 
+/// The most atoms a run holds: ten million (a few GB with the neighbour list).
+pub const MAX_ATOMS: usize = 10_000_000;
+
+/// The most threads a run starts.
+pub const MAX_THREADS: usize = 256;
+
 pub use atoms_file::AtomsFile;
 pub use error::MdError;
 pub use forces::{ForceScratch, PairSums, all_pairs_forces, compute_forces, compute_forces_with};

@@ -101,6 +101,22 @@ impl<P: PairPotential> Md<P> {
                 value: 0.0,
             });
         }
+        if config.threads > super::MAX_THREADS {
+            return Err(MdError::TooMany {
+                what: "the number of threads",
+                value: config.threads as u64,
+                max: super::MAX_THREADS as u64,
+                hint: "more threads than cores only slow a run down",
+            });
+        }
+        if x.len() > super::MAX_ATOMS {
+            return Err(MdError::TooMany {
+                what: "the number of atoms",
+                value: x.len() as u64,
+                max: super::MAX_ATOMS as u64,
+                hint: "give fewer atoms",
+            });
+        }
         sim_box.check_range(potential.cutoff() + config.skin)?;
         let pool = if config.threads > 1 {
             rayon::ThreadPoolBuilder::new()

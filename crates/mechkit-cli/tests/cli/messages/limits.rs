@@ -132,6 +132,36 @@ pub static CASES: &[Case] = &[
         ],
         code: 2,
     },
+    Case {
+        area: "limits",
+        kind: "md_too_many_atoms",
+        files: &[],
+        args: &["md", "--cells", "2000", "--steps", "1"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "md_too_many_threads",
+        files: &[],
+        args: &["md", "--cells", "8", "--steps", "1", "--threads", "100000"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "sweep_too_many_threads",
+        files: &[("s.toml", Text(SWEEP))],
+        args: &[
+            "sweep",
+            "s.toml",
+            "--set",
+            "v0=0:5:3",
+            "--threads",
+            "1000",
+            "--out",
+            "out",
+        ],
+        code: 2,
+    },
 ];
 
 const SWEEP: &str = "dimensions = 1\n[constants]\nv0 = \"1 m/s\"\ng = \"9.81 m/s^2\"\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\nvelocity = \"v0\"\n[[force]]\nname = \"gravity\"\nkind = \"uniform-gravity\"\ng = \"g\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n";
