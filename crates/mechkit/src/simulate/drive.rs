@@ -6,15 +6,14 @@ use super::book::EventBook;
 use super::diagnose::{diagnose_evaluation, diagnose_state, step_failure};
 use super::event::{Event, Side};
 use super::fused::{Fused, MIN_CHUNK, chunk_len};
+use super::halt::stop_before_step;
 use super::observe::Observer;
 use super::probe::{Grid, Probe, Step, emit, event_values};
 use super::rearm::{sides_after_change, values_ahead};
 use super::report::{Divergence, RunReport, SimulateError, StopReason};
 use super::run::{Simulation, sample_of};
 use super::scan::{Fired, ScanBuffers, scan};
-use super::stepping::{
-    Engine, StepEnds, Stepping, WorkSystem, fixed_next, step_budget, step_limit_warning,
-};
+use super::stepping::{Engine, StepEnds, Stepping, WorkSystem, fixed_next, step_budget};
 use crate::Real;
 use crate::energy::EnergyLedger;
 use crate::ode::{AdaptiveError, State, steps_to_cover};
@@ -135,29 +134,9 @@ pub(super) fn drive(
     let mut fuse_resumes_at: u64 = 0;
 
     while stop_reason.is_none() {
-        if super::interrupt::requested() {
-            stop_reason = Some(StopReason::Interrupted);
-            warnings.push(format!(
-                "interrupted at t = {} s after {steps} steps; the outputs hold everything up to there",
-                state.t
-            ));
-            break;
-        }
-        if let Some((reason, why)) = observers.iter().find_map(|o| o.halt()) {
-            stop_reason = Some(reason);
-            warnings.push(why);
-            break;
-        }
-        if let Some(tm) = sim.t_max
-            && state.t >= tm
-        {
-            stop_reason = Some(StopReason::TMax);
-            break;
-        }
-        if steps >= limit {
-            stop_reason = Some(StopReason::MaxSteps);
-            let has_condition = events.iter().any(Event::is_stop_condition);
-            warnings.extend(step_limit_warning(sim, has_condition, state.t));
+        stop_reason =
+            stop_before_step(sim, observers, events, state.t, steps, limit, &mut warnings);
+        if stop_reason.is_some() {
             break;
         }
         // the steps no observer looks at, in the compiled kernel

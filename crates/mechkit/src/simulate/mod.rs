@@ -15,6 +15,7 @@ mod diagnose;
 mod drive;
 mod event;
 mod fused;
+mod halt;
 pub mod interrupt;
 mod observe;
 mod probe;

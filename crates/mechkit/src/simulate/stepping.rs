@@ -272,33 +272,6 @@ pub(crate) fn step_budget(
     }
 }
 
-/// What to say when a run used up its step budget at time `t` before anything else ended it:
-/// why it had not ended, and how to let it go on. Nothing when the budget was the only end
-/// asked for.
-pub(crate) fn step_limit_warning(
-    sim: &Simulation<'_>,
-    has_stop_condition: bool,
-    t: Real,
-) -> Option<String> {
-    let why = if has_stop_condition {
-        "the stop condition never became true"
-    } else {
-        "nothing else ends this run"
-    };
-    match (sim.max_steps, sim.t_max) {
-        (None, _) => Some(format!(
-            "stopped after the default budget of {DEFAULT_MAX_STEPS} steps at t = {t} s: {why}; set [stop] t_max"
-        )),
-        (Some(n), Some(tm)) => Some(format!(
-            "stopped at the step limit of {n} steps at t = {t} s, before t_max = {tm} s; raise [stop] max_steps to go on"
-        )),
-        (Some(n), None) if has_stop_condition => Some(format!(
-            "stopped at the step limit of {n} steps at t = {t} s: {why}; raise [stop] max_steps to go on"
-        )),
-        (Some(_), None) => None,
-    }
-}
-
 /// The end of fixed step number `k + 1` of a grid started at `origin` (landing on `t_max`).
 pub(crate) fn fixed_next(
     origin: Real,
