@@ -10,6 +10,9 @@ use crate::particles::{ParticleSystem, Sample};
 /// last, is Zeno behaviour: the run stops with a diagnosis.
 pub const ZENO_LIMIT: u32 = 50;
 
+/// What to do about Zeno behaviour, at the end of its diagnosis.
+const ZENO_ADVICE: &str = "end the run before that instant (t_max), or add an event that stops or changes the model there (e.g. when the rebound speed falls below a threshold)";
+
 /// At most this many event occurrences are kept in the report (all are counted).
 const MAX_RECORDS: usize = 100_000;
 
@@ -96,28 +99,26 @@ impl EventBook {
             let at_once = te <= previous && e.state_change().is_some();
             let run = if te - previous <= gap { run + 1 } else { 0 };
             self.zeno[i] = (run, te);
-            if at_once {
-                out.failure = Some(Divergence {
-                    t: te,
-                    step,
-                    quantity: e.name().to_string(),
-                    value: Real::from(count),
-                    message: format!(
-                        "the event `{}` fired again at t = {te} s right after its own state change there (occurrence {count}): its next occurrence came sooner than the run can resolve in time, so its occurrences accumulate at this instant (Zeno behaviour, like a ball bouncing infinitely often before it comes to rest); end the run before that instant (t_max), or add an event that stops or changes the model there (e.g. when the rebound speed falls below a threshold)",
-                        e.name()
-                    ),
-                });
-                out.stop = Some(StopReason::Zeno);
+            let why = if at_once {
+                Some(format!(
+                    "the event `{}` fired again at t = {te} s right after its own state change there (occurrence {count}): its next occurrence came sooner than the run can resolve in time, so its occurrences accumulate at this instant (Zeno behaviour, like a ball bouncing infinitely often before it comes to rest); {ZENO_ADVICE}",
+                    e.name()
+                ))
             } else if run >= ZENO_LIMIT {
+                Some(format!(
+                    "the event `{}` fired {ZENO_LIMIT} times in a row, each within {gap:.1e} s of the last, up to t = {te} s (occurrence {count}): its occurrences accumulate at one instant (Zeno behaviour, like a ball bouncing infinitely often before coming to rest); {ZENO_ADVICE}",
+                    e.name()
+                ))
+            } else {
+                None
+            };
+            if let Some(message) = why {
                 out.failure = Some(Divergence {
                     t: te,
                     step,
                     quantity: e.name().to_string(),
                     value: Real::from(count),
-                    message: format!(
-                        "the event `{}` fired {ZENO_LIMIT} times in a row, each within {gap:.1e} s of the last, up to t = {te} s (occurrence {count}): its occurrences accumulate at one instant (Zeno behaviour, like a ball bouncing infinitely often before coming to rest); end the run before that instant (t_max), or add an event that stops or changes the model there (e.g. when the rebound speed falls below a threshold)",
-                        e.name()
-                    ),
+                    message,
                 });
                 out.stop = Some(StopReason::Zeno);
             }
