@@ -44,6 +44,10 @@ mod selection;
 #[cfg(test)]
 mod tests;
 
+/// The most pixels an image file may have: 100 megapixels, above any phone or camera photo
+/// the method needs, far below what a decompression bomb claims.
+pub const MAX_PIXELS: u64 = 100_000_000;
+
 pub use brightness::{Brightness, PERCENTILES};
 #[cfg(feature = "image")]
 pub use codec::marked_png;

@@ -13,6 +13,15 @@ fn limit_messages() {
 
 const FALL: &str = "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\nposition = \"100 m\"\n[[force]]\nname = \"gravity\"\nkind = \"uniform-gravity\"\ng = \"9.81 m/s^2\"\n[integrator]\nmethod = \"rk4\"\ndt = \"1 ms\"\n[stop]\nt_max = \"4 s\"\n";
 
+/// 594 bytes of JPEG claiming 361 megapixels (a fuzz finding).
+fn bomb() -> Vec<u8> {
+    std::fs::read(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../fuzz/regressions/image/jpeg-bomb-361-megapixels.jpg"),
+    )
+    .expect("the saved fuzz input")
+}
+
 fn huge() -> Vec<u8> {
     "# not a scenario\n".repeat(1_000_000).into_bytes()
 }
@@ -160,6 +169,13 @@ pub static CASES: &[Case] = &[
             "--out",
             "out",
         ],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "image_too_large",
+        files: &[("photo.jpg", Bytes(bomb))],
+        args: &["com", "photo.jpg"],
         code: 2,
     },
 ];

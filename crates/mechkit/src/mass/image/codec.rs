@@ -1,10 +1,10 @@
 //! Reading PNG and JPEG files into a [`Raster`] and writing one as PNG (feature `image`).
 
-use std::io::ErrorKind;
+use std::io::{Cursor, ErrorKind};
 use std::path::Path;
 
 use ::image::codecs::png::PngEncoder;
-use ::image::{ExtendedColorType, ImageEncoder, ImageFormat};
+use ::image::{ExtendedColorType, ImageEncoder, ImageFormat, ImageReader};
 
 use super::{FileFormat, ImageError, PixelBody, Raster, Selection};
 
@@ -40,13 +40,23 @@ impl Raster {
                 });
             }
         };
-        let decoded = ::image::load_from_memory_with_format(bytes, format).map_err(|e| {
-            ImageError::Decode {
+        let decode_error = |e: ::image::ImageError| ImageError::Decode {
+            path: path.to_path_buf(),
+            format: name,
+            message: e.to_string(),
+        };
+        // the header first: a few hundred bytes can claim a billion pixels
+        let reader = || ImageReader::with_format(Cursor::new(bytes), format);
+        let (width, height) = reader().into_dimensions().map_err(decode_error)?;
+        if u64::from(width) * u64::from(height) > super::MAX_PIXELS {
+            return Err(ImageError::TooLarge {
                 path: path.to_path_buf(),
                 format: name,
-                message: e.to_string(),
-            }
-        })?;
+                width,
+                height,
+            });
+        }
+        let decoded = reader().decode().map_err(decode_error)?;
         let (width, height) = (decoded.width() as usize, decoded.height() as usize);
         let rgba = decoded.into_rgba8().into_raw();
         let mut rgb = Vec::with_capacity(width * height * 3);
@@ -90,6 +100,30 @@ pub fn marked_png(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Fuzz finding `image/jpeg-bomb-361-megapixels.jpg`: 594 bytes of JPEG whose header
+    /// claims 16396 × 22025 pixels. Decoding took 30 s and gigabytes; the header is now read
+    /// first and the image refused by its size.
+    #[test]
+    fn fuzz_jpeg_bomb_is_refused_from_its_header() {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../fuzz/regressions/image/jpeg-bomb-361-megapixels.jpg");
+        let bytes = std::fs::read(&path).expect("the saved input");
+        assert!(bytes.len() < 1000);
+        let e = Raster::decode(&bytes, "bomb.jpg").unwrap_err();
+        assert!(
+            matches!(
+                e,
+                ImageError::TooLarge {
+                    width: 16396,
+                    height: 22025,
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        assert!(e.to_string().contains("361 megapixels"), "{e}");
+    }
 
     #[test]
     fn png_round_trip_and_what_is_not_an_image() {

@@ -35,6 +35,24 @@ pub enum ImageError {
         /// What the first bytes say the file is ("a GIF image", "text", …).
         found: String,
     },
+    /// An image with more pixels than mechkit decodes (a photo has tens of megapixels; a few
+    /// hundred bytes can claim hundreds).
+    #[error(
+        "{}: the {format} image is {width} × {height} pixels ({:.0} megapixels), more than mechkit reads ({} megapixels); scale it down (the centre of mass does not need more)",
+        path.display(),
+        f64::from(*width) * f64::from(*height) / 1e6,
+        super::MAX_PIXELS / 1_000_000
+    )]
+    TooLarge {
+        /// The path as given.
+        path: PathBuf,
+        /// `PNG` or `JPEG`.
+        format: &'static str,
+        /// Width in pixels, from the file's header.
+        width: u32,
+        /// Height in pixels.
+        height: u32,
+    },
     /// A PNG or JPEG file that cannot be decoded (truncated or corrupt).
     #[error(
         "{}: a {format} file that cannot be decoded: {message}; the file is truncated or damaged: export it again as PNG",
