@@ -42,12 +42,7 @@ pub fn sweep(args: &SweepArgs) -> Result<Outcome> {
         Some(n) => n,
         None => std::thread::available_parallelism().map_or(1, std::num::NonZero::get),
     };
-    let text = std::fs::read_to_string(&args.file).with_context(|| {
-        format!(
-            "cannot read {}\n  = hint: check the file name",
-            args.file.display()
-        )
-    })?;
+    let text = mechkit::scenario::read_source(&args.file)?;
     let name = args.file.display().to_string();
     let dir = args.out.clone().unwrap_or_else(|| {
         let stem = args

@@ -145,8 +145,9 @@ impl Scenario {
     }
 }
 
-/// The text of a scenario or body file, or an error that names it.
-fn read_source(path: &Path) -> Result<String, ScenarioError> {
+/// The text of a scenario or body file (at most [`MAX_SCENARIO_BYTES`]), or an error that names
+/// it.
+pub fn read_source(path: &Path) -> Result<String, ScenarioError> {
     if let Ok(meta) = std::fs::metadata(path)
         && meta.len() > limits::MAX_SCENARIO_BYTES
     {
