@@ -114,6 +114,8 @@ impl AtomsFile {
     /// assert_eq!((f.dim, f.vectors[1][0]), (3, 1.5));
     /// ```
     pub fn parse_xyz(text: &str) -> Result<Self, MdError> {
+        // (fuzz finding `data_file/xyz-count-27958181655`: the count alone used to size the
+        // allocation, and a count of 2.8·10^10 aborted the process)
         let mut lines = text.lines();
         let count = lines.next().unwrap_or("").trim();
         let n: usize = count
@@ -132,13 +134,23 @@ impl AtomsFile {
                 "the particle count is 0; an XYZ file needs at least one particle",
             ));
         }
+        if n > super::MAX_ATOMS {
+            return Err(error(
+                1,
+                format!(
+                    "the particle count is {n}, more than mechkit md runs ({}); check the count on line 1",
+                    super::MAX_ATOMS
+                ),
+            ));
+        }
         lines.next().ok_or_else(|| {
             error(
                 2,
                 "the comment line is missing; line 2 of an XYZ file is a comment (it may be empty)",
             )
         })?;
-        let mut vectors = Vec::with_capacity(n);
+        // the lines the text holds bound what the count may claim
+        let mut vectors = Vec::with_capacity(n.min(text.len() / 8 + 1));
         for k in 0..n {
             let line = k + 3;
             let row = lines
@@ -183,6 +195,23 @@ impl AtomsFile {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Fuzz finding `data_file/xyz-count-27958181655`: an XYZ count line of 2.8·10^10 sized the
+    /// allocation before a particle was read, and the process aborted. The count is bounded
+    /// now, and a count the text cannot hold ends where the lines end.
+    #[test]
+    fn fuzz_xyz_count_does_not_size_the_allocation() {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../fuzz/regressions/data_file/xyz-count-27958181655");
+        let text =
+            String::from_utf8_lossy(&std::fs::read(path).expect("the saved input")).into_owned();
+        let e = AtomsFile::parse_xyz(&text).unwrap_err().to_string();
+        assert!(e.contains("more than mechkit md runs"), "{e}");
+        let e = AtomsFile::parse_xyz("9000000\nc\nAr 0 0 0\n")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("ends after 1 of 9000000"), "{e}");
+    }
 
     #[test]
     fn bad_files_name_the_line() {
