@@ -6,6 +6,7 @@ use std::fmt::Write as _;
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
 use mechkit::mass::PointMasses;
+use mechkit::mass::image::FileFormat;
 use serde_json::json;
 
 use super::body::{load, parts_json, parts_text, point, vec_json, vec_text};
@@ -29,15 +30,23 @@ fn fmt(v: &[f64], scale: f64) -> String {
     }
 }
 
-/// Whether a path names an image (by its extension; only PNG and JPEG are read, the others
-/// get an error that names their format).
+/// Whether a path names an image: by its extension (only PNG and JPEG are read, the others
+/// get an error that names their format), or, whatever its name, by the first bytes of a PNG
+/// or JPEG file.
 fn is_image(path: &std::path::Path) -> bool {
-    path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
+    let by_name = path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
         matches!(
             e.to_ascii_lowercase().as_str(),
             "png" | "jpg" | "jpeg" | "gif" | "bmp" | "tif" | "tiff" | "webp" | "heic" | "avif"
         )
-    })
+    });
+    by_name || {
+        use std::io::Read as _;
+        let mut head = [0u8; 16];
+        std::fs::File::open(path)
+            .and_then(|mut f| f.read(&mut head))
+            .is_ok_and(|n| FileFormat::sniff(&head[..n]).is_readable())
+    }
 }
 
 /// `mechkit com BODYFILE`: mass and centre of mass of the body and of each part.

@@ -195,3 +195,22 @@ fn shapes_match_their_generator() {
         }
     }
 }
+
+/// A photo is recognised by its first bytes whatever its name (a file saved without an
+/// extension used to be read as a body file: "stream did not contain valid UTF-8").
+#[test]
+fn an_image_without_an_extension_is_read_as_an_image() {
+    let dir = Dir::new();
+    std::fs::copy(
+        examples().join("data/disk_r150.png"),
+        dir.path().join("photo"),
+    )
+    .expect("copied");
+    let out = dir.run(&["com", "photo", "--json"]);
+    out.assert_code(0);
+    assert_eq!(out.json()["area"], 70688.0);
+    assert_eq!(
+        out.json()["centre_of_mass"],
+        serde_json::json!([200.0, 200.0])
+    );
+}
