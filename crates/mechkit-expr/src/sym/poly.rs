@@ -4,8 +4,12 @@
 use super::Sym;
 use crate::number::Number;
 
+/// The highest degree treated as a polynomial. `x^(10^10)` is a monomial, but a list of its
+/// coefficients would take 240 GB (a fuzz finding: `exp(-x^10^10*…)` aborted the integrator).
+pub const MAX_DEGREE: usize = 1000;
+
 /// The coefficients of `s` as a polynomial in `x`, lowest degree first; `None` if it is not one
-/// (after expansion).
+/// (after expansion) or its degree passes [`MAX_DEGREE`].
 pub fn coefficients(s: &Sym, x: &str) -> Option<Vec<Sym>> {
     let e = s.expand();
     let terms = match &e {
@@ -25,11 +29,14 @@ pub fn coefficients(s: &Sym, x: &str) -> Option<Vec<Sym>> {
                 Sym::Var(v) if v == x => degree += 1,
                 Sym::Pow(b, p) if matches!(&**b, Sym::Var(v) if v == x) => {
                     let k = p.as_num()?.as_integer()?;
-                    degree += usize::try_from(k).ok()?;
+                    degree = degree.checked_add(usize::try_from(k).ok()?)?;
                 }
                 other if other.free_of(x) => rest.push(f),
                 _ => return None,
             }
+        }
+        if degree > MAX_DEGREE {
+            return None;
         }
         if coeffs.len() <= degree {
             coeffs.resize(degree + 1, Vec::new());
@@ -209,6 +216,19 @@ fn divisors(n: i128) -> Vec<i128> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Fuzz finding `expression/integrate-x-to-the-1e10`: `exp(-x^10^10*pi^p*smx-0-x^10*pi)`
+    /// asked the integrator for the coefficients of a degree-10^10 polynomial, a 240 GB list,
+    /// and the process aborted.
+    #[test]
+    fn fuzz_a_huge_degree_is_not_a_coefficient_list() {
+        let big = Sym::parse("x^10^10").unwrap();
+        assert!(coefficients(&big, "x").is_none());
+        let at_limit = Sym::parse("x^1000 + 1").unwrap();
+        assert_eq!(coefficients(&at_limit, "x").map(|c| c.len()), Some(1001));
+        let found = Sym::parse("exp(-x^10^10*pi^p*smx-0-x^10*pi)").unwrap();
+        assert!(found.integrate("x").is_none());
+    }
 
     #[test]
     fn coefficients_of_a_symbolic_polynomial() {
