@@ -226,8 +226,6 @@ pub(crate) struct CsvWriter {
     rows: u64,
     /// Why the run must stop: the file reached its limit, or could not be written.
     halt: Option<(StopReason, String)>,
-    /// Whether a write failed (then closing keeps what reached the disk).
-    failed: bool,
 }
 
 impl CsvWriter {
@@ -256,7 +254,6 @@ impl CsvWriter {
             line: String::with_capacity(256),
             rows: 0,
             halt: None,
-            failed: false,
         })
     }
 
@@ -310,7 +307,6 @@ impl CsvWriter {
             }
             Err(e) => {
                 // a full disk, a quota: stop cleanly, keep the rows already on disk
-                self.failed = true;
                 self.halt = Some((
                     StopReason::OutputError,
                     format!(
@@ -358,7 +354,7 @@ impl CsvWriter {
     /// Flushes and renames the file into place; returns the number of rows written.
     /// After a failed write, what reached the disk is renamed into place.
     pub fn close(self) -> std::io::Result<u64> {
-        if self.failed {
+        if matches!(self.halt, Some((StopReason::OutputError, _))) {
             self.out.keep_what_was_written()?;
         } else {
             self.out.finish()?;
