@@ -27,12 +27,20 @@ pub struct Antiderivative {
 /// Recursion limit of the rule search.
 const MAX_DEPTH: usize = 12;
 
+/// Work budget of one integration: each rule search costs 1, each derivative taken to test a
+/// substitution costs its size in nodes. The course's integrals and the tests use at most 51;
+/// a search that would pass the budget (a tower of 150 powers tried for substitutions at every
+/// level took 11 s) gives up, and the answer is "no closed form" (quadrature still gives the
+/// definite value).
+const FUEL: usize = 20_000;
+
 pub(super) struct Ctx {
     pub x: String,
     pub assumptions: Vec<String>,
     pub positive: Vec<Sym>,
     depth: usize,
     fresh: usize,
+    fuel: usize,
 }
 
 impl Sym {
@@ -54,6 +62,7 @@ impl Sym {
             positive: Vec::new(),
             depth: 0,
             fresh: 0,
+            fuel: FUEL,
         };
         let result = integrate(self, &mut ctx)?;
         verify(self, &result, x, &ctx.positive).then_some(Antiderivative {
@@ -72,9 +81,10 @@ pub(super) fn ln_abs(u: Sym) -> Sym {
 }
 
 fn integrate(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
-    if ctx.depth > MAX_DEPTH {
+    if ctx.depth > MAX_DEPTH || ctx.fuel == 0 {
         return None;
     }
+    ctx.fuel -= 1;
     ctx.depth += 1;
     let r = rules(f, ctx);
     ctx.depth -= 1;
@@ -262,7 +272,11 @@ fn derivative_divides(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     let mut cands = Vec::new();
     inner_candidates(f, x, &mut cands);
     for u in cands {
+        if ctx.fuel == 0 {
+            return None;
+        }
         let du = u.diff(x);
+        ctx.fuel = ctx.fuel.saturating_sub(size(&du));
         if du.is_zero() {
             continue;
         }
@@ -272,6 +286,16 @@ fn derivative_divides(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         }
     }
     None
+}
+
+/// The number of nodes of an expression.
+fn size(s: &Sym) -> usize {
+    1 + match s {
+        Sym::Num(_) | Sym::Var(_) => 0,
+        Sym::Add(items) | Sym::Mul(items) | Sym::Call(_, items) => items.iter().map(size).sum(),
+        Sym::Pow(a, b) | Sym::Cmp(_, a, b) | Sym::And(a, b) | Sym::Or(a, b) => size(a) + size(b),
+        Sym::Not(a) => size(a),
+    }
 }
 
 /// `(a + b x^2)^(-1/2)`: `asin(x sqrt(-b/a))/sqrt(-b)` when `b < 0`,
@@ -419,58 +443,5 @@ fn frac(v: f64) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn int(src: &str) -> Option<String> {
-        Sym::parse(src)
-            .unwrap()
-            .integrate("x")
-            .map(|a| a.result.to_string())
-    }
-
-    #[test]
-    fn course_integrals() {
-        assert_eq!(int("1/(a + x^2)").unwrap(), "atan(x/sqrt(a))/sqrt(a)");
-        assert_eq!(int("k*x").unwrap(), "k*x^2/2");
-        assert_eq!(int("C/x^2").unwrap(), "-C/x");
-        assert_eq!(
-            int("-F0*sin(2*pi*x/b)").unwrap(),
-            "F0*b*cos(2*pi*x/b)/(2*pi)"
-        );
-        assert!(int("U0*((a/x)^12 - (b/x)^6)").is_some());
-        assert_eq!(int("1/x").unwrap(), "ln(abs(x))");
-        assert_eq!(int("x^3 - 2*x").unwrap(), "x^4/4 - x^2");
-    }
-
-    #[test]
-    fn substitutions_and_parts() {
-        for f in [
-            "exp(-3*x + 1)",
-            "x/(a + x^2)",
-            "x*exp(x^2)",
-            "x*sin(x)",
-            "x^2*exp(2*x)",
-            "x*ln(x)",
-            "1/(2 + 3*x)",
-            "cos(x)^-2",
-            "1/sqrt(4 - x^2)",
-            "1/sqrt(x^2 + 1)",
-            "1/(1 - x^2)",
-            "1/((x - 1)*(x + 2))",
-            "(x^2 + 1)/((x - 1)^2*(x + 3))",
-            "1/(x^2 + 2*x + 5)",
-            "x^3/(x^2 - 1)",
-            "tan(x)",
-            "sinh(2*x)*x",
-        ] {
-            assert!(int(f).is_some(), "no antiderivative for {f}");
-        }
-    }
-
-    #[test]
-    fn no_answer_rather_than_a_wrong_one() {
-        assert!(int("exp(x^2)").is_none());
-        assert!(int("sin(x)/x").is_none());
-    }
-}
+#[path = "integrate_tests.rs"]
+mod tests;

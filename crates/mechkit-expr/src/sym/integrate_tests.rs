@@ -1,0 +1,85 @@
+use super::*;
+
+fn int(src: &str) -> Option<String> {
+    Sym::parse(src)
+        .unwrap()
+        .integrate("x")
+        .map(|a| a.result.to_string())
+}
+
+#[test]
+fn course_integrals() {
+    assert_eq!(int("1/(a + x^2)").unwrap(), "atan(x/sqrt(a))/sqrt(a)");
+    assert_eq!(int("k*x").unwrap(), "k*x^2/2");
+    assert_eq!(int("C/x^2").unwrap(), "-C/x");
+    assert_eq!(
+        int("-F0*sin(2*pi*x/b)").unwrap(),
+        "F0*b*cos(2*pi*x/b)/(2*pi)"
+    );
+    assert!(int("U0*((a/x)^12 - (b/x)^6)").is_some());
+    assert_eq!(int("1/x").unwrap(), "ln(abs(x))");
+    assert_eq!(int("x^3 - 2*x").unwrap(), "x^4/4 - x^2");
+}
+
+#[test]
+fn substitutions_and_parts() {
+    for f in [
+        "exp(-3*x + 1)",
+        "x/(a + x^2)",
+        "x*exp(x^2)",
+        "x*sin(x)",
+        "x^2*exp(2*x)",
+        "x*ln(x)",
+        "1/(2 + 3*x)",
+        "cos(x)^-2",
+        "1/sqrt(4 - x^2)",
+        "1/sqrt(x^2 + 1)",
+        "1/(1 - x^2)",
+        "1/((x - 1)*(x + 2))",
+        "(x^2 + 1)/((x - 1)^2*(x + 3))",
+        "1/(x^2 + 2*x + 5)",
+        "x^3/(x^2 - 1)",
+        "tan(x)",
+        "sinh(2*x)*x",
+    ] {
+        assert!(int(f).is_some(), "no antiderivative for {f}");
+    }
+}
+
+#[test]
+fn no_answer_rather_than_a_wrong_one() {
+    assert!(int("exp(x^2)").is_none());
+    assert!(int("sin(x)/x").is_none());
+}
+
+/// Fuzz finding (expression): a tower of about 150 powers `a^b^c^…` made the substitution
+/// search take the derivative of every level at every depth: 11 s and millions of clones. The
+/// work budget stops it; the course's integrals stay far inside it.
+#[test]
+fn fuzz_a_power_tower_exhausts_the_budget_not_the_machine() {
+    let tower =
+        include_str!("../../../../fuzz/regressions/expression/power-tower-substitution-search");
+    let run = |src: &str| {
+        let f = Sym::parse(src).unwrap();
+        let mut ctx = Ctx {
+            x: "x".into(),
+            assumptions: Vec::new(),
+            positive: Vec::new(),
+            depth: 0,
+            fresh: 0,
+            fuel: FUEL,
+        };
+        let found = integrate(&f, &mut ctx).is_some();
+        (found, FUEL - ctx.fuel)
+    };
+    let (found, used) = run(tower);
+    assert!(!found && used >= FUEL - 1, "used {used} of {FUEL}");
+    for f in [
+        "x^2*exp(2*x)",
+        "(x^2 + 1)/((x - 1)^2*(x + 3))",
+        "1/(a + x^2)",
+    ] {
+        let (found, used) = run(f);
+        assert!(found && used < FUEL / 100, "{f}: used {used}");
+    }
+}
