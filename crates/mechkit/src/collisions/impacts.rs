@@ -21,6 +21,8 @@ use crate::simulate::{Direction, Event};
 
 /// Relative gap within which two surfaces count as touching.
 const TOUCH: Real = 1e-9;
+/// Gap, relative to the size of the positions, within which a point (radius 0) touches a wall.
+const POINT_TOUCH: Real = 1e-12;
 /// Gaps within this many rounding units of the positions are zero: two balls resting in
 /// contact must not flicker across zero on the step's interpolant (a cubic through equal
 /// values can miss them by an ulp), which would fire their event at every step.
@@ -323,8 +325,12 @@ impl Impacts {
             }
             for (i, w, r) in self.wall_contacts() {
                 let wall = &self.walls[w];
-                let gap = wall.distance(&q[i * d..(i + 1) * d]) - r;
-                if gap > TOUCH * r.max(1e-12) {
+                let at = &q[i * d..(i + 1) * d];
+                let gap = wall.distance(at) - r;
+                // touching: within TOUCH of the radius, or of the positions' size for a point
+                // (radius 0), which the located crossing leaves a few ulps off the wall
+                let scale = r + at.iter().chain(&wall.point).map(|x| x.abs()).sum::<Real>();
+                if gap > TOUCH * r + POINT_TOUCH * scale {
                     continue;
                 }
                 let inward: Vec<Real> = wall.normal.iter().map(|x| -x).collect();
@@ -475,5 +481,29 @@ mod tests {
         assert_eq!(imp.resolve_contacts(&mut y), 1);
         assert_eq!(y[5], 2.0);
         assert_eq!(imp.resolve_contacts(&mut y), 0);
+    }
+
+    /// Fuzz finding (scenario): a point (radius 0) falling onto a wall with normal (1, 1)
+    /// reached it a few ulps off the plane, outside a touching gap of 1e-9 of its radius (0):
+    /// the event fired and nothing bounced, and the ball fell through.
+    #[test]
+    fn fuzz_a_point_bounces_off_an_oblique_wall() {
+        let imp = Impacts::new(2, vec!["p".into()], vec![0.06], vec![Some(0.0)]).with_wall(
+            Wall::new(
+                "floor",
+                vec![0.0, 0.0],
+                &[1.0, 1.0],
+                Restitution::ELASTIC,
+                0.0,
+            )
+            .unwrap(),
+        );
+        // on the plane x + y = 0 to rounding, falling straight down
+        let x = 5.0;
+        let mut y = vec![x, -x + 4.0 * Real::EPSILON * x, 0.0, -7.6];
+        assert!(imp.walls()[0].distance(&y[..2]) > 0.0);
+        assert_eq!(imp.resolve_contacts(&mut y), 1);
+        // reflected about the normal: (0, -7.6) → (7.6, 0)
+        assert!((y[2] - 7.6).abs() < 1e-12 && y[3].abs() < 1e-12, "{y:?}");
     }
 }

@@ -164,8 +164,10 @@ impl AdaptiveRk {
         let rms = |v: &dyn Fn(usize) -> Real| {
             ((0..n).map(|i| v(i) * v(i)).sum::<Real>() / n as Real).sqrt()
         };
-        let d0 = rms(&|i| y[i] / self.scale(i, y[i], y[i]));
-        let d1 = rms(&|i| f0[i] / self.scale(i, y[i], y[i]));
+        // a component with no tolerance at all (atol = 0 and y = 0) says nothing of the scale
+        let ratio = |v: Real, sc: Real| if sc > 0.0 { v / sc } else { 0.0 };
+        let d0 = rms(&|i| ratio(y[i], self.scale(i, y[i], y[i])));
+        let d1 = rms(&|i| ratio(f0[i], self.scale(i, y[i], y[i])));
         let span = (t_bound - t).abs();
         let mut h0 = if d0 < 1e-5 || d1 < 1e-5 {
             1e-6
@@ -177,14 +179,19 @@ impl AdaptiveRk {
         let mut f1 = vec![0.0; y.len()];
         sys.rhs_into(t + h0, &y1, &mut f1);
         self.stats.evaluations += 1;
-        let d2 = rms(&|i| (f1[i] - f0[i]) / self.scale(i, y[i], y[i])) / h0;
+        let d2 = rms(&|i| ratio(f1[i] - f0[i], self.scale(i, y[i], y[i]))) / h0;
         let q = Real::from(self.tableau.error_order.unwrap_or(1));
         let h1 = if d1.max(d2) <= 1e-15 {
             (h0 * 1e-3).max(1e-6)
         } else {
             (0.01 / d1.max(d2)).powf(1.0 / (q + 1.0))
         };
-        (100.0 * h0).min(h1).min(self.config.h_max).min(span)
+        let h = (100.0 * h0).min(h1).min(self.config.h_max).min(span);
+        if h > 0.0 && h.is_finite() {
+            h
+        } else {
+            Real::min(1e-6, self.config.h_max).min(span)
+        }
     }
 
     /// Takes one accepted step from `state` towards `t_bound` (never past it), retrying
@@ -241,11 +248,14 @@ impl AdaptiveRk {
         let alpha = 1.0 / (q + 1.0) - 0.75 * beta;
         loop {
             let remaining = t_bound - t;
-            let last = h >= remaining;
+            // with no end (t_bound = ∞) no step is the last one, however large
+            let last = remaining.is_finite() && h >= remaining;
             if last {
                 h = remaining;
             }
-            if h < h_min && !last {
+            // a step size that is not a finite number (0/0 in a norm) is a failure too, never
+            // a step: NaN compares false with everything, and ∞ would be retried for ever
+            if !(last || h >= h_min && h.is_finite()) {
                 let component = self.dominant_component(&state.y);
                 return Err(AdaptiveError::StepTooSmall {
                     t,
@@ -407,18 +417,30 @@ fn squared_sums(
         let e3 = &e3[..n];
         for i in 0..n {
             let sc = scale(i, y[i], y_new[i]);
-            let a = e[i] / sc;
-            let b = e3[i] / sc;
+            let (a, b) = (scaled(e[i], sc), scaled(e3[i], sc));
             s5 += a * a;
             s3 += b * b;
         }
     } else {
         for i in 0..n {
-            let v = e[i] / scale(i, y[i], y_new[i]);
+            let v = scaled(e[i], scale(i, y[i], y_new[i]));
             s5 += v * v;
         }
     }
     (s5, s3)
+}
+
+/// An error over its scale; with no tolerance at all (atol = 0 and y = 0), no error is 0, not
+/// 0/0, and any error is too large.
+#[inline]
+fn scaled(e: Real, sc: Real) -> Real {
+    if sc > 0.0 {
+        e / sc
+    } else if e == 0.0 {
+        0.0
+    } else {
+        Real::INFINITY
+    }
 }
 
 /// ln 1e-2 and ln 1e-4: the floors of the remembered errors.

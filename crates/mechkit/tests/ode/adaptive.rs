@@ -120,3 +120,44 @@ fn dense_output_orders() {
         assert!((p - (order + 1.0)).abs() < 0.3, "{name}: {p}");
     }
 }
+
+/// Free fall in 2-D, `y = [x, y, vx, vy]`, with `vx = 0`: the x components stay exactly 0.
+struct FreeFall;
+
+impl mechkit::ode::OdeSystem for FreeFall {
+    fn dim(&self) -> usize {
+        4
+    }
+
+    fn rhs_into(&self, _t: f64, y: &[f64], dydt: &mut [f64]) {
+        dydt.copy_from_slice(&[y[2], y[3], 0.0, -4.81]);
+    }
+}
+
+/// Fuzz finding (scenario): with `atol = 0`, a component that stays 0 has no scale at all, and
+/// 0/0 made the first step size NaN; with no end (`t_bound = ∞`) the step loop then retried an
+/// infinite step for ever. Both kernels now take finite steps, and a step size that is not a
+/// finite number is a failure, never a step.
+#[test]
+fn fuzz_no_tolerance_and_no_end_take_finite_steps() {
+    for tableau in [Tableau::dopri5(), Tableau::dop853()] {
+        let config = AdaptiveConfig {
+            rtol: Tolerance::Scalar(1e-12),
+            atol: Tolerance::Scalar(0.0),
+            ..AdaptiveConfig::default()
+        };
+        let mut rk = AdaptiveRk::new(tableau, config).unwrap();
+        let mut s = State::new(0.0, vec![0.0, 1.05, 0.0, 0.0]);
+        for _ in 0..20 {
+            let h = rk.step(&FreeFall, &mut s, f64::INFINITY).unwrap();
+            assert!(h > 0.0 && h.is_finite(), "h = {h}");
+        }
+        assert_eq!((s.y[0], s.y[2]), (0.0, 0.0));
+        // the parabola, to the tolerance
+        let exact = 1.05 - 0.5 * 4.81 * s.t * s.t;
+        assert!(
+            (s.y[1] - exact).abs() <= 1e-9 * exact.abs().max(1.0),
+            "{s:?}"
+        );
+    }
+}
