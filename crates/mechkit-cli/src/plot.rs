@@ -178,8 +178,17 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
             };
             // an empty label keeps the curve out of the legend (a sweep's thinned legend)
             if !s.label.is_empty() {
+                let markers = s.style == LineStyle::Markers;
                 anno.label(s.label.clone()).legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                    // a marker series shows its marker, a line its line
+                    let (from, to) = if markers {
+                        (x + 10, x + 10)
+                    } else {
+                        (x, x + 20)
+                    };
+                    EmptyElement::at((x, y))
+                        + PathElement::new(vec![(from - x, 0), (to - x, 0)], color.stroke_width(2))
+                        + Circle::new((10, 0), if markers { 3 } else { 0 }, color.filled())
                 });
             }
             if s.style == LineStyle::Solid

@@ -67,6 +67,8 @@
 //! - [`deriv`]: derivatives of sampled data (finite differences, Savitzky-Golay) and of
 //!   functions (Ridders' extrapolation).
 //! - [`scenario`] (feature `scenario`): TOML scenario files → model → run → summary.
+//! - [`gallery`] (feature `scenario`): the course's worked problems: the case file, scripts of
+//!   command-line calls that answer them, computed-against-expected checks and the report.
 //! - [`units`]: re-export of the unit system of `mechkit-expr`.
 
 pub mod calculus;
@@ -79,6 +81,8 @@ mod error;
 pub mod figure;
 pub mod forces;
 pub mod function;
+#[cfg(feature = "scenario")]
+pub mod gallery;
 pub mod mass;
 pub mod md;
 pub mod ode;

@@ -33,6 +33,11 @@ pub struct CollideArgs {
     /// Coulomb friction coefficient along the contact plane (oblique impacts).
     #[arg(long, allow_hyphen_values = true)]
     pub friction: Option<f64>,
+    /// Gravitational acceleration, e.g. "9.81 m/s^2": also report how high each body rises
+    /// afterwards when its speed turns into height (a pendulum bob, a ballistic pendulum),
+    /// h = v²/(2g).
+    #[arg(long, allow_hyphen_values = true)]
+    pub g: Option<String>,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 
 mod bead;
 mod friction;
+mod gallery;
 mod md;
 mod mechanics;
 mod relative;
@@ -18,6 +19,7 @@ mod terminal;
 
 pub use bead::BeadArgs;
 pub use friction::FrictionArgs;
+pub use gallery::GalleryArgs;
 pub use md::MdArgs;
 pub use mechanics::{
     CollideArgs, ComArgs, DeriveArgs, ImpulseArgs, InertiaArgs, PotentialArgs, PowerArgs,
@@ -166,6 +168,9 @@ pub enum Command {
     /// Join the sweep.partK.csv files of a sharded sweep into sweep.csv, checking that they
     /// are parts of one sweep and hold every run once.
     SweepMerge(SweepMergeArgs),
+    /// The course's worked problems, bundled: list them, run one (its answers against the
+    /// book's, its outputs and plots), or run all into the validation report.
+    Gallery(GalleryArgs),
 }
 
 /// `mechkit diff`.
@@ -370,6 +375,9 @@ mod negative_values {
         "of",
         "data",
         "law",
+        "case",
+        "report",
+        "root",
     ];
 
     /// Issue 11: a negative number (or a list or range starting with one) given to any

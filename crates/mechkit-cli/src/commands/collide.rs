@@ -93,6 +93,18 @@ pub fn collide(args: &CollideArgs) -> Result<Exit> {
         );
     }
     let friction = args.friction.unwrap_or(0.0);
+    let g = match &args.g {
+        None => None,
+        Some(text) => {
+            let g = quantity(text, "--g", Dimension::ACCELERATION)?;
+            if !(g > 0.0 && g.is_finite()) {
+                bail!(
+                    "--g {text}: the gravitational acceleration must be positive, e.g. \"9.81 m/s^2\""
+                );
+            }
+            Some(g)
+        }
+    };
     let c = Collision {
         m1,
         m2,
@@ -117,9 +129,27 @@ pub fn collide(args: &CollideArgs) -> Result<Exit> {
         }
         Resolution::Collided(o) => {
             if args.json {
-                print(&format!("{:#}\n", to_json(&c, &o)))?;
+                let mut j = to_json(&c, &o);
+                if let Some(g) = g {
+                    let [h1, h2] = o.rise(g);
+                    j["g"] = json!(g);
+                    j["rise1"] = json!(h1);
+                    j["rise2"] = json!(h2);
+                }
+                print(&format!("{j:#}\n"))?;
             } else {
-                print(&text(&c, &o))?;
+                let mut out = text(&c, &o);
+                if let Some(g) = g {
+                    let [h1, h2] = o.rise(g);
+                    let _ = writeln!(
+                        out,
+                        "  rise afterwards, h = v²/(2g) with g = {} m/s²: body 1 {} m, body 2 {} m",
+                        show(g),
+                        show(h1),
+                        show(h2)
+                    );
+                }
+                print(&out)?;
             }
         }
     }

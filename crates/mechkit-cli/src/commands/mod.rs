@@ -9,6 +9,8 @@ mod com;
 mod com_image;
 mod derive;
 mod friction;
+mod gallery;
+mod gallery_run;
 mod inertia;
 mod input;
 mod md;
@@ -71,6 +73,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::RigidCollide(args) => rigid_collide::rigid_collide(&args),
         Command::Sweep(args) => sweep::sweep(&args),
         Command::SweepMerge(args) => sweep::sweep_merge(&args),
+        Command::Gallery(args) => gallery::gallery(&args),
         Command::ListIntegrators => {
             let mut text = String::new();
             for m in mechkit::ode::Method::ALL {

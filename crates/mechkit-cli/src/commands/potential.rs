@@ -114,6 +114,20 @@ pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
         })
         .collect();
     if args.json {
+        // the positions of each kind, for a reader that wants the stable ones only
+        let by_stability: serde_json::Map<String, serde_json::Value> =
+            ["stable", "unstable", "neutral"]
+                .into_iter()
+                .map(|kind| {
+                    let xs: Vec<f64> = diagram
+                        .equilibria
+                        .iter()
+                        .filter(|e| e.stability.name() == kind)
+                        .map(|e| e.x)
+                        .collect();
+                    (kind.to_string(), json!(xs))
+                })
+                .collect();
         let j = json!({
             "var": x,
             "range": [a, b],
@@ -126,6 +140,7 @@ pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
                 "x": e.x, "potential": e.potential, "curvature": e.curvature,
                 "stability": e.stability.name(), "barrier": e.barrier,
             })).collect::<Vec<_>>(),
+            "by_stability": by_stability,
             "singularities": diagram.singularities,
             "energy": diagram.energy.as_ref().map(|c| json!({
                 "value": c.energy,

@@ -28,7 +28,6 @@
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
 mod bead;
-mod book;
 mod calculus;
 mod collide;
 mod com_image;
@@ -38,6 +37,7 @@ mod docs;
 mod energy;
 mod errors;
 mod friction;
+mod gallery;
 mod interrupt;
 mod issue_011;
 mod limits;

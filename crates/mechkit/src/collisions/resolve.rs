@@ -158,6 +158,14 @@ impl Outcome {
     pub fn energy_lost(&self) -> Real {
         self.kinetic_before - self.kinetic_after
     }
+
+    /// The height each body rises after the collision when its whole speed turns into height
+    /// under gravity `g`: `h = |v|²/(2 g)`, the swing of a pendulum bob or of a ballistic
+    /// pendulum (a string or a track turns the velocity upward without work).
+    pub fn rise(&self, g: Real) -> [Real; 2] {
+        let h = |v: &[Real]| v.iter().map(|x| x * x).sum::<Real>() / (2.0 * g);
+        [h(&self.v1), h(&self.v2)]
+    }
 }
 
 /// The result: resolved, or no collision because the bodies already separate.

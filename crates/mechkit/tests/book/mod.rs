@@ -1,21 +1,18 @@
 //! The course's worked problems (`examples/book/cases.jsonl`, a copy of
 //! `shared/book_cases.jsonl`) reproduced through scenario files: every `examples/book/*.toml`
 //! is run, and each of its `[observe]` values named like an expected key is compared with the
-//! expected value within the case's tolerance. Keys with no observable are listed (the gallery
-//! issue turns them into failures).
+//! expected value within the case's tolerance ([`mechkit::gallery::Check`]). A value no file
+//! computes fails the CLI's `gallery::the_validation_report_is_current`.
 
-use std::collections::BTreeMap;
-
+use mechkit::gallery::{Case, Check, case_of};
 use mechkit::scenario::Scenario;
-use serde_json::Value;
+use serde_json::json;
 
 use crate::util::workspace;
 
-mod cases;
-use cases::tolerance;
-
-fn cases() -> BTreeMap<String, Value> {
-    cases::cases(&workspace().join("examples/book/cases.jsonl"))
+fn cases() -> Vec<Case> {
+    let text = std::fs::read_to_string(workspace().join("examples/book/cases.jsonl")).unwrap();
+    Case::parse_all(&text).unwrap()
 }
 
 #[test]
@@ -44,35 +41,25 @@ fn book_cases_reproduce_the_expected_answers() {
     assert!(!dir.is_empty());
     for path in dir {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
-        let (case, expected) = cases::case_of(&cases, &stem);
+        let case = case_of(&cases, &stem).unwrap_or_else(|| panic!("{stem}: no such case"));
         let summary = Scenario::load(&path).unwrap().run().unwrap().summary;
-        let pairs: Vec<(String, Value)> = match &expected {
-            Value::Object(map) => map.iter().map(|(k, v)| (k.clone(), v.clone())).collect(),
-            other => vec![("answer".to_string(), other.clone())],
-        };
-        for (key, want) in pairs {
+        for (key, _) in case.expected_of(&stem).unwrap() {
             let Some(&got) = summary.observables.get(&key) else {
-                println!("{stem}: `{key}` not covered");
+                println!("{stem}: `{key}` not observed here");
                 continue;
             };
-            let want = match want {
-                Value::Bool(b) => f64::from(u8::from(b)),
-                Value::Number(n) => n.as_f64().unwrap(),
-                other => {
-                    println!("{stem}: `{key}` = {other} is not a number");
-                    continue;
-                }
-            };
-            let tol = tolerance(&case["tolerance"], &key, want);
+            let check = Check::new(case, &stem, &key, &json!(got));
             checked += 1;
-            let ok = (got - want).abs() <= tol;
             println!(
-                "{stem}: {key} expected {want} got {got} (tolerance {tol:e}) {}",
-                if ok { "ok" } else { "FAIL" }
+                "{stem}: {key} expected {} got {got} (tolerance {:?}) {}",
+                check.expected,
+                check.tolerance,
+                if check.pass { "ok" } else { "FAIL" }
             );
-            if !ok {
+            if !check.pass {
                 failures.push(format!(
-                    "{stem}: {key} expected {want} ± {tol:e}, got {got}"
+                    "{stem}: {key} expected {} ± {:?}, got {got}",
+                    check.expected, check.tolerance
                 ));
             }
         }

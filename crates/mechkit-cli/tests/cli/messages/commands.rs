@@ -182,4 +182,29 @@ pub static CASES: &[Case] = &[
         "--at",
         "5 s"
     ),
+    command!(
+        "collide_negative_g",
+        "collide",
+        "--m1",
+        "1",
+        "--v1",
+        "1",
+        "--m2",
+        "2",
+        "--v2",
+        "0",
+        "-e",
+        "1",
+        "--g=-9.8"
+    ),
+    command!("gallery_unknown_case", "gallery", "c99"),
+    command!("gallery_ambiguous_case", "gallery", "c1"),
+    command!("gallery_root_without_cases", "gallery", "--root", "."),
+    Case {
+        area: "command",
+        kind: "gallery_report_without_markers",
+        files: &[("v.md", Text("# Validation\n"))],
+        args: &["gallery", "--report", "v.md", "--no-plots"],
+        code: 2,
+    },
 ];

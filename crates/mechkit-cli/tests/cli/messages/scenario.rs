@@ -212,6 +212,30 @@ pub static CASES: &[Case] = &[
     },
     Case {
         area: "scenario",
+        kind: "analytic_curve_of_no_plot",
+        files: &[(
+            "s.toml",
+            Text(
+                "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n[output.analytic]\n\"v(x)\" = \"-9.8*t\"\n",
+            ),
+        )],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "scenario",
+        kind: "analytic_curve_unknown_name",
+        files: &[(
+            "s.toml",
+            Text(
+                "dimensions = 1\n[constants]\ng = \"9.8 m/s^2\"\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n[output.analytic]\n\"v(t)\" = \"-g*t + v0\"\n",
+            ),
+        )],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "scenario",
         kind: "file_not_found",
         files: &[],
         args: &["run", "nofile.toml"],
