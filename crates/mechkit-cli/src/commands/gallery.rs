@@ -10,7 +10,7 @@ use mechkit::scenario::write_atomic;
 use rayon::prelude::*;
 use serde_json::{Value, json};
 
-use super::gallery_run::{self, BOOK, Bundle};
+use super::gallery_run::{self, Bundle};
 use super::{Outcome, print};
 use crate::args::GalleryArgs;
 
@@ -149,11 +149,8 @@ fn run_all(
                 None => exts
                     .iter()
                     .map(|ext| CaseRun {
-                        stem: stem.to_string(),
-                        file: format!("{BOOK}/{stem}.{ext}"),
-                        checks: Vec::new(),
-                        plots: Vec::new(),
                         error: Some("no case of this name in cases.jsonl".into()),
+                        ..gallery_run::not_run(stem, ext)
                     })
                     .collect(),
             },

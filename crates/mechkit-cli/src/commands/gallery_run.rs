@@ -114,6 +114,17 @@ impl Drop for Bundle {
     }
 }
 
+/// The run of `examples/book/<stem>.<ext>` before it runs: nothing computed, no error.
+pub fn not_run(stem: &str, ext: &str) -> CaseRun {
+    CaseRun {
+        stem: stem.to_string(),
+        file: format!("{BOOK}/{stem}.{ext}"),
+        checks: Vec::new(),
+        plots: Vec::new(),
+        error: None,
+    }
+}
+
 /// Runs the files of one stem (`examples/book/<stem>.toml` and/or `.sh`) of `case`, writing
 /// their outputs into `dir` (emptied first). The SVG files written are the first run's
 /// `plots`, as paths under `dir`.
@@ -125,16 +136,7 @@ pub fn run_stem(
     dir: &Path,
     plots: bool,
 ) -> Vec<CaseRun> {
-    let mut runs: Vec<CaseRun> = exts
-        .iter()
-        .map(|ext| CaseRun {
-            stem: stem.to_string(),
-            file: format!("{BOOK}/{stem}.{ext}"),
-            checks: Vec::new(),
-            plots: Vec::new(),
-            error: None,
-        })
-        .collect();
+    let mut runs: Vec<CaseRun> = exts.iter().map(|ext| not_run(stem, ext)).collect();
     if dir.exists()
         && let Err(e) = std::fs::remove_dir_all(dir)
     {

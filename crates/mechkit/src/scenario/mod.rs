@@ -36,6 +36,7 @@
 //!
 //! The format is documented key by key in `docs/scenario.md`.
 
+mod analytic;
 mod bodyfile;
 mod build;
 mod compare;
@@ -62,6 +63,7 @@ mod values;
 use std::path::Path;
 
 pub use crate::figure::{PlotData, Series};
+pub use analytic::Analytic;
 pub use bodyfile::BodyFile;
 pub use compare::{CompareSettings, Comparison, MethodResult};
 pub use error::{ErrorKind, Location, ScenarioError};

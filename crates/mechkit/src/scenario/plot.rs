@@ -7,14 +7,15 @@
 use mechkit_expr::nearest;
 use toml::de::DeValue;
 
+use super::analytic::{Analytic, read_analytic};
 use super::doc::Table;
 use super::error::{ErrorKind, ScenarioError};
 use super::output::Keep;
-use super::values::{ValueEnv, formula_error, resolve, scalar};
+use super::values::{ValueEnv, resolve, scalar};
 use mechkit_expr::units::Dimension;
 
 use crate::Real;
-use crate::figure::{LineStyle, PlotData, Series};
+use crate::figure::{PlotData, Series};
 use crate::particles::{BodyRef, NameContext, Sample, StateVar, VarLevel};
 use crate::simulate::{Observer, ObserverError};
 
@@ -25,9 +26,6 @@ const MAX_POINTS: usize = 20_000;
 const OUTPUT_KEYS: &[&str] = &[
     "every", "interval", "times", "plots", "max_size", "analytic",
 ];
-
-/// Points of an analytic curve drawn over a plot.
-const ANALYTIC_POINTS: usize = 25;
 
 /// Output times: every `interval`, or a list.
 #[derive(Debug, Clone, PartialEq)]
@@ -185,51 +183,6 @@ pub(crate) fn read_output(
     Ok((every, interval, plots))
 }
 
-/// `[output.analytic]`: `"v(t)" = "formula of t"` draws the formula over the plot `v(t)` as
-/// markers, from the scenario's constants and the plot's horizontal quantity.
-fn read_analytic(
-    a: &Table<'_, '_>,
-    plots: &mut [PlotSpec],
-    env: ValueEnv<'_>,
-) -> Result<(), ScenarioError> {
-    for (key, value) in a.entries {
-        let spec: &str = key.get_ref();
-        let drawn: Vec<String> = plots.iter().map(|p| p.spec.clone()).collect();
-        let Some(plot) = plots.iter_mut().find(|p| p.spec.trim() == spec.trim()) else {
-            return Err(a
-                .src
-                .error(
-                    ErrorKind::Invalid,
-                    format!("`{spec}` in [output.analytic] is not one of the plots"),
-                    key.span(),
-                )
-                .with_hint(format!(
-                    "the plots drawn are {}; name one of them, or add it to `plots`",
-                    drawn.join(", ")
-                )));
-        };
-        let DeValue::String(text) = value.get_ref() else {
-            return Err(a.wrong_type(spec, value, "a formula string such as \"-g*t\""));
-        };
-        let mut scope = mechkit_expr::MapScope::new().described(format!(
-            "an analytic curve is a formula of `{}` and the names of [constants]",
-            plot.x_name
-        ));
-        for (name, v, _) in env.constants {
-            scope = scope.constant(name, *v);
-        }
-        scope = scope.slot(&plot.x_name, 0);
-        let located = |e: &mechkit_expr::ExprError| formula_error(&a.src, &value.span(), e);
-        let formula = mechkit_expr::Formula::parse(text).map_err(|e| located(&e))?;
-        let program = formula.compile(&scope).map_err(|e| located(&e))?;
-        plot.analytic = Some(Analytic {
-            formula: text.to_string(),
-            program,
-        });
-    }
-    Ok(())
-}
-
 fn default_plots(dim: usize) -> Vec<&'static str> {
     match dim {
         1 => vec!["x(t)", "v(t)", "energy(t)"],
@@ -266,38 +219,6 @@ pub struct PlotSpec {
     pub x_name: String,
     /// A formula of `x_name` drawn over the curves as markers (`[output.analytic]`).
     pub analytic: Option<Analytic>,
-}
-
-/// An exact solution drawn over a plot: a formula of the plot's horizontal quantity.
-#[derive(Debug, Clone)]
-pub struct Analytic {
-    /// As written.
-    pub formula: String,
-    /// Compiled, with the horizontal quantity in slot 0.
-    pub program: mechkit_expr::Program,
-}
-
-impl PartialEq for Analytic {
-    fn eq(&self, other: &Self) -> bool {
-        self.formula == other.formula
-    }
-}
-
-impl Analytic {
-    /// The formula at `n` evenly spaced points over `[lo, hi]` (finite values only).
-    pub fn sample(&self, lo: Real, hi: Real, n: usize) -> Vec<(Real, Real)> {
-        (0..n)
-            .map(|i| {
-                let x = if n > 1 {
-                    lo + (hi - lo) * i as Real / (n - 1) as Real
-                } else {
-                    lo
-                };
-                (x, self.program.eval(&[x]))
-            })
-            .filter(|(_, y)| y.is_finite())
-            .collect()
-    }
 }
 
 impl PlotSpec {
@@ -498,21 +419,7 @@ impl<'a> PlotRecorder<'a> {
                     .map(|(s, p)| Series::line(s.label.clone(), p))
                     .collect();
                 if let Some(a) = &spec.analytic {
-                    let (lo, hi) = plot
-                        .series
-                        .iter()
-                        .flat_map(|s| s.points.iter().map(|p| p.0))
-                        .filter(|x| x.is_finite())
-                        .fold((Real::INFINITY, Real::NEG_INFINITY), |(lo, hi), x| {
-                            (lo.min(x), hi.max(x))
-                        });
-                    if lo <= hi {
-                        plot.series.push(Series {
-                            label: format!("exact: {}", a.formula),
-                            points: a.sample(lo, hi, ANALYTIC_POINTS),
-                            style: LineStyle::Markers,
-                        });
-                    }
+                    a.draw_over(&mut plot);
                 }
                 plot.equal_aspect = spec.series.iter().all(|s| {
                     matches!(s.x, StateVar::Position(..)) && matches!(s.y, StateVar::Position(..))
