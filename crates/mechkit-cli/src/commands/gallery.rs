@@ -269,6 +269,16 @@ fn write_report(
 ) -> Result<Outcome> {
     let document = std::fs::read_to_string(path)
         .with_context(|| format!("cannot read the report file {}", path.display()))?;
+    // the markers are checked before the cases run
+    let unmarked = |e: String| {
+        anyhow!(
+            "{}: {e}\n  = hint: put the two lines\n      {}\n      {}\n    where the table should go",
+            path.display(),
+            report::BEGIN,
+            report::END
+        )
+    };
+    report::splice(&document, "").map_err(unmarked)?;
     let report_dir = absolute(path.parent().unwrap_or(Path::new("")))?;
     let out = args
         .out
@@ -307,15 +317,7 @@ fn write_report(
         };
     }
     let section = report::report(cases, &runs);
-    let updated =
-        report::splice(&document, &section).map_err(|e| {
-            anyhow!(
-                "{}: {e}\n  = hint: put the two lines\n      {}\n      {}\n    where the table should go",
-                path.display(),
-                report::BEGIN,
-                report::END
-            )
-        })?;
+    let updated = report::splice(&document, &section).map_err(unmarked)?;
     let rows = report::checks(cases, &runs);
     let failing = rows.iter().filter(|(c, _)| !c.pass).count();
     if args.check {
