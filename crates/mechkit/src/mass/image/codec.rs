@@ -27,8 +27,19 @@ impl Raster {
         Self::decode(&bytes, path)
     }
 
-    /// Decodes the bytes of a PNG or JPEG file; `path` names it in errors.
+    /// Decodes the bytes of a PNG or JPEG file; `path` names it in errors. An image whose
+    /// header claims more than [`MAX_PIXELS`](super::MAX_PIXELS) is refused before decoding.
     pub fn decode(bytes: &[u8], path: impl AsRef<Path>) -> Result<Self, ImageError> {
+        Self::decode_at_most(bytes, path, super::MAX_PIXELS)
+    }
+
+    /// [`Raster::decode`] with a smaller pixel limit (the fuzz target decodes small images
+    /// only: a large one runs the same code longer).
+    pub fn decode_at_most(
+        bytes: &[u8],
+        path: impl AsRef<Path>,
+        max_pixels: u64,
+    ) -> Result<Self, ImageError> {
         let path = path.as_ref();
         let (format, name) = match FileFormat::sniff(bytes) {
             FileFormat::Png => (ImageFormat::Png, "PNG"),
@@ -48,7 +59,7 @@ impl Raster {
         // the header first: a few hundred bytes can claim a billion pixels
         let reader = || ImageReader::with_format(Cursor::new(bytes), format);
         let (width, height) = reader().into_dimensions().map_err(decode_error)?;
-        if u64::from(width) * u64::from(height) > super::MAX_PIXELS {
+        if u64::from(width) * u64::from(height) > max_pixels.min(super::MAX_PIXELS) {
             return Err(ImageError::TooLarge {
                 path: path.to_path_buf(),
                 format: name,
