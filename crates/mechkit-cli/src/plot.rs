@@ -253,3 +253,19 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
     }
     write_atomic(path, svg.as_bytes()).with_context(|| format!("cannot write {}", path.display()))
 }
+
+/// Draws a run's plots into `dir` as `<stem>.svg`, lists them in its summary and rewrites
+/// `summary.json` (what `mechkit run` and `mechkit gallery` write after a run).
+pub fn render_run(
+    scenario: &mechkit::scenario::Scenario,
+    out: &mut mechkit::scenario::RunOutput,
+    dir: &Path,
+) -> Result<()> {
+    for p in &out.plots {
+        let name = format!("{}.svg", p.file_stem);
+        render_svg(p, &scenario.title, &dir.join(&name))?;
+        out.summary.files.plots.push(name);
+    }
+    scenario.write_summary(dir, &out.summary)?;
+    Ok(())
+}

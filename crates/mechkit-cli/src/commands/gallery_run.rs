@@ -179,15 +179,7 @@ fn run_scenario(
     let scenario = Scenario::load(path)?;
     let mut out = scenario.run_to_dir(dir)?;
     if plots {
-        for p in &out.plots {
-            plot::render_svg(
-                p,
-                &scenario.title,
-                &dir.join(format!("{}.svg", p.file_stem)),
-            )?;
-            out.summary.files.plots.push(format!("{}.svg", p.file_stem));
-        }
-        scenario.write_summary(dir, &out.summary)?;
+        plot::render_run(&scenario, &mut out, dir)?;
     }
     for (key, _) in case.expected_of(stem).unwrap_or_default() {
         if let Some(&v) = out.summary.observables.get(&key) {

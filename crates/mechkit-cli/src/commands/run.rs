@@ -28,12 +28,7 @@ pub fn run(args: &RunArgs) -> Result<Outcome> {
     }
     let mut out = scenario.run_to_dir(&dir)?;
     if !args.no_plots {
-        for p in &out.plots {
-            let path = dir.join(format!("{}.svg", p.file_stem));
-            plot::render_svg(p, &scenario.title, &path)?;
-            out.summary.files.plots.push(format!("{}.svg", p.file_stem));
-        }
-        scenario.write_summary(&dir, &out.summary)?;
+        plot::render_run(&scenario, &mut out, &dir)?;
     }
     for w in &out.summary.warnings {
         eprintln!("warning: {w}");
