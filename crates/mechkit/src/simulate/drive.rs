@@ -107,7 +107,7 @@ pub(super) fn drive(
     };
     hand_over(&mut engine, t0, &state.y, &eval_a.a, &mut dydt);
 
-    let mut grid = Grid::of(sim, t0);
+    let mut grid = Grid::of(sim, t0, &mut warnings);
     let mut probe = Probe::new(t0, n2, nf);
     let mut ends = StepEnds::default();
     let mut eval_b = Evaluation::default();

@@ -89,11 +89,18 @@ pub(super) struct Grid {
     pub list: Option<Vec<Real>>,
     pub k: u64,
     pub t_max: Option<Real>,
+    /// With no end (no `t_max`), the last output time's index (see [`MAX_UNENDED_OUTPUTS`]).
+    pub last_k: Option<u64>,
 }
+
+/// Output times of a run with an output interval and no `t_max`: the step budget bounds the
+/// steps, but not the times in them (a free fall's adaptive steps grow without bound, and one
+/// step of 10^10 s held 5·10^12 output times of 2 ms).
+pub const MAX_UNENDED_OUTPUTS: u64 = super::DEFAULT_MAX_STEPS;
 
 impl Grid {
     /// The output times a run asked for (`None`: just the steps).
-    pub fn of(sim: &Simulation<'_>, t0: Real) -> Option<Grid> {
+    pub fn of(sim: &Simulation<'_>, t0: Real, warnings: &mut Vec<String>) -> Option<Grid> {
         match (&sim.times, sim.interval) {
             (Some(list), _) => Some(Grid {
                 t0,
@@ -101,20 +108,34 @@ impl Grid {
                 list: Some(list.iter().copied().filter(|t| *t > t0).collect()),
                 k: 0,
                 t_max: sim.t_max,
+                last_k: None,
             }),
-            (None, Some(dt)) => Some(Grid {
-                t0,
-                dt,
-                list: None,
-                k: 1,
-                t_max: sim.t_max,
-            }),
+            (None, Some(dt)) => {
+                let last_k = sim.t_max.is_none().then_some(MAX_UNENDED_OUTPUTS);
+                if let Some(n) = last_k {
+                    warnings.push(format!(
+                        "the output every {dt} s ends after {n} output times (t = {} s), as the run has no t_max; set t_max to choose the end",
+                        t0 + n as Real * dt
+                    ));
+                }
+                Some(Grid {
+                    t0,
+                    dt,
+                    list: None,
+                    k: 1,
+                    t_max: sim.t_max,
+                    last_k,
+                })
+            }
             (None, None) => None,
         }
     }
 
     /// The next output time.
     pub fn next(&self) -> Option<Real> {
+        if self.last_k.is_some_and(|last| self.k > last) {
+            return None;
+        }
         let t = match &self.list {
             Some(list) => *list.get(usize::try_from(self.k).ok()?)?,
             None => self.t0 + self.k as Real * self.dt,

@@ -206,3 +206,29 @@ fn a_force_that_stops_being_finite_is_named() {
     assert_eq!(r.stop_reason, StopReason::Diverged);
     assert!(d.quantity.contains("root"), "{}", d.quantity);
 }
+
+/// Fuzz finding (scenario): a free fall with `[output] interval = "2 ms"` and no `t_max`. The
+/// step budget bounds the steps, not the output times inside them: the adaptive steps grew
+/// without bound, and one of them held trillions of output times (the run never ended). With
+/// no end the output times stop after `MAX_UNENDED_OUTPUTS`, and a warning says so.
+#[test]
+fn fuzz_output_times_without_an_end_are_bounded() {
+    let text = std::fs::read_to_string(
+        crate::util::workspace()
+            .join("fuzz/regressions/scenario/output-interval-without-an-end.toml"),
+    )
+    .unwrap();
+    let scenario = mechkit::scenario::Scenario::from_str("fall.toml", &text).unwrap();
+    let out = scenario.run().unwrap();
+    let warning = out
+        .summary
+        .warnings
+        .iter()
+        .find(|w| w.contains("output every 0.002 s ends after 1000000 output times"));
+    assert!(warning.is_some(), "{:?}", out.summary.warnings);
+    assert!(
+        warning
+            .unwrap()
+            .contains("(t = 2000 s), as the run has no t_max; set t_max")
+    );
+}
