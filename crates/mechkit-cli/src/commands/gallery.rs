@@ -316,9 +316,9 @@ fn write_report(
             String::new()
         };
     }
-    let section = report::report(cases, &runs);
-    let updated = report::splice(&document, &section).map_err(unmarked)?;
     let rows = report::checks(cases, &runs);
+    let section = report::render(cases, &runs, &rows);
+    let updated = report::splice(&document, &section).map_err(unmarked)?;
     let failing = rows.iter().filter(|(c, _)| !c.pass).count();
     if args.check {
         if updated != document {

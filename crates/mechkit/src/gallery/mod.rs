@@ -234,11 +234,7 @@ impl Check {
             pass: false,
             note: String::new(),
         };
-        let want = match &expected {
-            Value::Number(n) => n.as_f64(),
-            Value::Bool(b) => Some(f64::from(u8::from(*b))),
-            _ => None,
-        };
+        let want = number(&expected);
         match (want, &expected, computed) {
             (_, Value::Null, _) => check.note = format!("the case expects no `{key}`"),
             (_, _, Value::Null) => check.note = "not computed".into(),

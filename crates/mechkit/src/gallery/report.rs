@@ -65,7 +65,11 @@ pub fn checks(cases: &[Case], runs: &[CaseRun]) -> Vec<(Check, Option<String>)> 
 
 /// The Markdown report: a count, then the table.
 pub fn report(cases: &[Case], runs: &[CaseRun]) -> String {
-    let rows = checks(cases, runs);
+    render(cases, runs, &checks(cases, runs))
+}
+
+/// [`report`] of rows already compared by [`checks`].
+pub fn render(cases: &[Case], runs: &[CaseRun], rows: &[(Check, Option<String>)]) -> String {
     let passed = rows.iter().filter(|(c, _)| c.pass).count();
     let mut out = String::new();
     let _ = writeln!(
@@ -77,7 +81,7 @@ pub fn report(cases: &[Case], runs: &[CaseRun]) -> String {
     out.push_str("| case | topic | value | expected | computed | error | result | plots |\n");
     out.push_str("|---|---|---|---|---|---|---|---|\n");
     let mut last_stem = String::new();
-    for (check, _) in &rows {
+    for (check, _) in rows {
         let first = check.stem != last_stem;
         last_stem.clone_from(&check.stem);
         let run = runs.iter().find(|r| r.stem == check.stem);
