@@ -147,24 +147,27 @@ pub(super) fn fold_call(f: Func, args: &[Sym]) -> Option<Sym> {
 /// `c*r*sin(u)^2 + c*r*cos(u)^2 → c*r`: finds such pairs among collected terms (rest,
 /// coefficient) and merges them.
 pub(super) fn pythagoras(terms: &mut Vec<(Sym, Number)>, constant: &mut Number) {
+    // (u, other factors as a product) of a term holding the factor f(u)^2; nothing is
+    // cloned unless the term has one
     let squared = |s: &Sym, f: Func| -> Option<(Sym, Sym)> {
-        // returns (u, other factors as a product)
-        let factors: Vec<Sym> = match s {
-            Sym::Mul(xs) => xs.clone(),
-            other => vec![other.clone()],
+        let factors = match s {
+            Sym::Mul(xs) => xs.as_slice(),
+            other => std::slice::from_ref(other),
         };
-        let i = factors.iter().position(|x| {
-            matches!(x, Sym::Pow(b, e) if e.as_num() == Some(Number::int(2)) && matches!(&**b, Sym::Call(g, _) if *g == f))
+        let (i, u) = factors.iter().enumerate().find_map(|(i, x)| match x {
+            Sym::Pow(b, e) if e.as_num() == Some(Number::int(2)) => match &**b {
+                Sym::Call(g, args) if *g == f => Some((i, &args[0])),
+                _ => None,
+            },
+            _ => None,
         })?;
-        let Sym::Pow(b, _) = &factors[i] else {
-            unreachable!()
-        };
-        let Sym::Call(_, args) = &**b else {
-            unreachable!()
-        };
-        let mut rest = factors.clone();
-        rest.remove(i);
-        Some((args[0].clone(), Sym::product(rest)))
+        let rest = factors
+            .iter()
+            .enumerate()
+            .filter(|&(k, _)| k != i)
+            .map(|(_, x)| x.clone())
+            .collect();
+        Some((u.clone(), Sym::product(rest)))
     };
     let mut i = 0;
     while i < terms.len() {
