@@ -48,20 +48,17 @@ fn text(data: &[u8]) -> Option<&str> {
     std::str::from_utf8(data).ok()
 }
 
-/// A formula as typed into a scenario or `mechkit calculus`: parsed, its errors rendered,
+/// A formula as typed into a scenario or `mechkit diff`: parsed, its errors rendered,
 /// compiled and evaluated (interpreter and native code must agree bit for bit), simplified,
-/// differentiated, integrated (indefinite and on `[0, 1]`) and, when it is an equation,
-/// solved.
+/// and differentiated (symbolically, and numerically at a point). The costlier symbolic
+/// integration and equation solving have their own target, [`calculus`], so that the parser
+/// and simplifier get most of the inputs.
 pub fn expression(data: &[u8]) {
     let Some(src) = text(data) else { return };
     let formula = match Formula::parse(src) {
         Ok(f) => f,
         Err(e) => {
             let _ = e.to_string();
-            // equations (`=`) are not formulas; `solve` reads them
-            if src.contains('=') {
-                equation(src);
-            }
             return;
         }
     };
@@ -90,6 +87,21 @@ pub fn expression(data: &[u8]) {
         }
     }
     let _ = calculus::derivative_at(src, "x", 0.7, &params(), 0.1).map_err(|e| e.to_string());
+}
+
+/// A formula or equation as typed into `mechkit integrate` or `mechkit solve`: a formula is
+/// integrated symbolically (with its check by differentiation) and on `[0, 1]`; an equation
+/// (`lhs = rhs`, which does not parse as a formula) is solved on `[-10, 10]`. The inputs are the [`expression`] target's.
+pub fn calculus(data: &[u8]) {
+    let Some(src) = text(data) else { return };
+    if Formula::parse(src).is_err() {
+        // equations (`=`) are not formulas; `solve` reads them
+        if src.contains('=') {
+            let _ = calculus::solve(src, "x", Some((-10.0, 10.0)), &params())
+                .map_err(|e| e.to_string());
+        }
+        return;
+    }
     match calculus::integral(src, "x", Some((0.0, 1.0)), &params()) {
         Ok(i) => {
             let _ = i.antiderivative.map(|a| a.to_string());
@@ -98,10 +110,6 @@ pub fn expression(data: &[u8]) {
             let _ = e.to_string();
         }
     }
-}
-
-fn equation(src: &str) {
-    let _ = calculus::solve(src, "x", Some((-10.0, 10.0)), &params()).map_err(|e| e.to_string());
 }
 
 /// A quantity with a unit, as in a scenario value or `mechkit convert`: the first line is
@@ -301,6 +309,7 @@ pub fn options(data: &[u8]) {
 /// The targets by name, as the fuzz binaries and the replay test know them.
 pub const TARGETS: &[(&str, Target)] = &[
     ("expression", expression),
+    ("calculus", calculus),
     ("units", units),
     ("scenario", scenario),
     ("data_file", data_file),

@@ -76,11 +76,23 @@ fn regressions(target: &str) -> Vec<(String, Vec<u8>)> {
     read_all(files(&repo().join("fuzz/regressions").join(target), &[]))
 }
 
-#[test]
-fn expression_seeds_and_regressions() {
+/// The formulas both the `expression` and the `calculus` targets read: the seed list and
+/// both targets' findings.
+fn formulas() -> Vec<(String, Vec<u8>)> {
     let mut inputs = lines(&repo().join("fuzz/seeds/expression.txt"));
     inputs.extend(regressions("expression"));
-    replay("expression", &inputs, 20);
+    inputs.extend(regressions("calculus"));
+    inputs
+}
+
+#[test]
+fn expression_seeds_and_regressions() {
+    replay("expression", &formulas(), 20);
+}
+
+#[test]
+fn calculus_seeds_and_regressions() {
+    replay("calculus", &formulas(), 20);
 }
 
 #[test]

@@ -58,7 +58,7 @@ fn no_answer_rather_than_a_wrong_one() {
 #[test]
 fn fuzz_a_power_tower_exhausts_the_budget_not_the_machine() {
     let tower =
-        include_str!("../../../../fuzz/regressions/expression/power-tower-substitution-search");
+        include_str!("../../../../fuzz/regressions/calculus/power-tower-substitution-search");
     let run = |src: &str| {
         let f = Sym::parse(src).unwrap();
         let mut ctx = Ctx {

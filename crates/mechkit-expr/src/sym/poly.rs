@@ -217,9 +217,10 @@ fn divisors(n: i128) -> Vec<i128> {
 mod tests {
     use super::*;
 
-    /// Fuzz finding `expression/integrate-x-to-the-1e10`: `exp(-x^10^10*pi^p*smx-0-x^10*pi)`
-    /// asked the integrator for the coefficients of a degree-10^10 polynomial, a 240 GB list,
-    /// and the process aborted.
+    /// Fuzz finding `calculus/integrate-x-to-the-1e10` (found by the `expression` target
+    /// before `calculus` was split from it): `exp(-x^10^10*pi^p*smx-0-x^10*pi)` asked the
+    /// integrator for the coefficients of a degree-10^10 polynomial, a 240 GB list, and the
+    /// process aborted.
     #[test]
     fn fuzz_a_huge_degree_is_not_a_coefficient_list() {
         let big = Sym::parse("x^10^10").unwrap();
