@@ -10,6 +10,8 @@ use mechkit::scenario::write_atomic;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 
+mod bars;
+
 static FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 
@@ -88,6 +90,13 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
     {
         let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| anyhow!("{e}"))?;
+        if !plot.bars.is_empty() {
+            bars::draw(&root, plot, title)?;
+            root.present().map_err(|e| anyhow!("{e}"))?;
+            drop(root);
+            return write_atomic(path, svg.as_bytes())
+                .with_context(|| format!("cannot write {}", path.display()));
+        }
         let points = || plot.series.iter().flat_map(|s| s.points.iter());
         let marks = || plot.markers.iter().map(|m| m.at);
         let (mut xr, mut yr) = (

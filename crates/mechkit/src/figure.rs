@@ -1,4 +1,4 @@
-//! Plot data, ready to render: curves, marked points, shaded bands. The library computes
+//! Plot data, ready to render: curves, marked points, shaded bands, bars. The library computes
 //! figures; drawing them (SVG) is the command line's job.
 
 use crate::Real;
@@ -81,6 +81,30 @@ pub struct Band {
     pub label: String,
 }
 
+/// What a bar of a bar chart stands for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum BarKind {
+    /// An amount, drawn up from zero (a kinetic energy).
+    Total,
+    /// A change, drawn from the running total before it to the one after it (the work of a
+    /// force); a gain and a loss are told apart by colour.
+    Change,
+}
+
+/// One bar, from `from` to `to` on the vertical axis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Bar {
+    /// Label under the bar.
+    pub label: String,
+    /// Bottom (a change: the running total before it).
+    pub from: Real,
+    /// Top (a change: the running total after it; below `from` for a loss).
+    pub to: Real,
+    /// What it stands for.
+    pub kind: BarKind,
+}
+
 /// The data of one plot, ready to render.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlotData {
@@ -105,6 +129,9 @@ pub struct PlotData {
     /// The vertical range to show, when the curves' own range would hide the interesting part
     /// (a potential that diverges at the edge of its range).
     pub y_limits: Option<(Real, Real)>,
+    /// Bars, left to right: a plot with bars is a bar chart, drawn with the labels along the
+    /// horizontal axis instead of a scale.
+    pub bars: Vec<Bar>,
 }
 
 impl PlotData {
@@ -125,6 +152,7 @@ impl PlotData {
             markers: Vec::new(),
             bands: Vec::new(),
             y_limits: None,
+            bars: Vec::new(),
         }
     }
 

@@ -238,3 +238,36 @@ fn rigid_body_scenario_runs_end_to_end() {
         assert!(dir.path().join("out").join(plot).exists(), "{plot}");
     }
 }
+
+/// `"energy-bars"` draws the ledger as a waterfall: the bouncing ball's kinetic energy at the
+/// start, the work of gravity, the energy its 31 bounces took, and its kinetic energy at the
+/// end, with the values the summary reports.
+#[test]
+fn energy_bars_draw_the_ledger() {
+    let dir = Dir::new();
+    let example = examples().join("bouncing_ball_floor.toml");
+    let out = dir.run(&["run", example.to_str().unwrap(), "--out", "out", "--json"]);
+    out.assert_code(0);
+    let s = out.json();
+    let plots: Vec<&str> = at(&s, "/files/plots")
+        .as_array()
+        .expect("plots is an array")
+        .iter()
+        .map(|p| p.as_str().expect("a file name"))
+        .collect();
+    assert!(plots.contains(&"energy-bars.svg"), "{plots:?}");
+    let svg = dir.read("out/energy-bars.svg");
+    for label in [
+        "K start",
+        "W gravity",
+        "events",
+        "K end",
+        "work-energy residual",
+    ] {
+        assert!(svg.contains(label), "no {label} in the bars");
+    }
+    // the work of gravity, as the summary gives it, written to four significant digits
+    let w = num(&s, "/work/gravity");
+    assert!(w > 0.5, "gravity did work on the falling ball: {w}");
+    assert!(svg.contains(&format!("+{w:.4} J")) || svg.contains(&format!("+{w:.3} J")));
+}

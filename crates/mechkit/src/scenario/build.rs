@@ -267,7 +267,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
     let mut events = read_events(root, &names)?;
     events.extend(model_events);
     let observables = read_observe(root, &names)?;
-    let (every, output_times, plots) = read_output(root, &names, dim, env)?;
+    let (every, output_times, plots, energy_bars) = read_output(root, &names, dim, env)?;
     let max_output = super::limits::read_max_size(root.table("output")?.as_ref())?
         .unwrap_or(super::limits::DEFAULT_MAX_OUTPUT);
     if t_max.is_none() && max_steps.is_none() {
@@ -293,6 +293,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         every,
         output_times,
         plots,
+        energy_bars,
         warnings,
         source_hash: super::provenance::fnv1a(root.src.text.as_bytes()),
     })

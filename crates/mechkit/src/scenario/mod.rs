@@ -43,6 +43,7 @@ mod compare;
 mod constants;
 mod contact;
 mod doc;
+mod energy_bars;
 mod error;
 mod events;
 mod forces;
@@ -66,6 +67,7 @@ pub use crate::figure::{PlotData, Series};
 pub use analytic::Analytic;
 pub use bodyfile::BodyFile;
 pub use compare::{CompareSettings, Comparison, MethodResult};
+pub use energy_bars::ENERGY_BARS;
 pub use error::{ErrorKind, Location, ScenarioError};
 pub use limits::{DEFAULT_MAX_OUTPUT, MAX_SCENARIO_BYTES, format_size, parse_size};
 pub use observe::Observable;
@@ -122,6 +124,9 @@ pub struct Scenario {
     pub output_times: Option<OutputTimes>,
     /// Requested plots.
     pub plots: Vec<PlotSpec>,
+    /// Whether the energy ledger is drawn as bars after the run (`"energy-bars"` in
+    /// `[output] plots`; [`Summary::energy_bars`]).
+    pub energy_bars: bool,
     /// Warnings about the setup.
     pub warnings: Vec<String>,
     /// FNV-1a of the scenario text (the summary's provenance).

@@ -9,6 +9,7 @@ use toml::de::DeValue;
 
 use super::analytic::{Analytic, read_analytic};
 use super::doc::Table;
+use super::energy_bars::ENERGY_BARS;
 use super::error::{ErrorKind, ScenarioError};
 use super::output::Keep;
 use super::values::{ValueEnv, resolve, scalar};
@@ -36,7 +37,8 @@ pub enum OutputTimes {
     At(Vec<Real>),
 }
 
-type Output = (u64, Option<OutputTimes>, Vec<PlotSpec>);
+/// The decimation, the output times, the plots, and whether the energy bars are drawn.
+type Output = (u64, Option<OutputTimes>, Vec<PlotSpec>, bool);
 
 /// `times = ["0.5 s", "1 s", …]`: increasing times.
 fn output_times(t: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<Option<Vec<Real>>, ScenarioError> {
@@ -67,7 +69,7 @@ fn output_times(t: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<Option<Vec<Real>
 }
 
 /// Reads `[output]`: the decimation `every`, the output times (`interval` or `times`) and the
-/// plots.
+/// plots (`energy-bars` among them is the ledger's bar chart, drawn after the run).
 pub(crate) fn read_output(
     root: &Table<'_, '_>,
     names: &NameContext<'_>,
@@ -163,7 +165,12 @@ pub(crate) fn read_output(
         };
     let src = root.src;
     let mut plots = Vec::new();
+    let mut energy_bars = false;
     for (spec, span) in specs {
+        if spec.trim() == ENERGY_BARS {
+            energy_bars = true;
+            continue;
+        }
         let p = PlotSpec::parse(&spec, names).map_err(|(msg, hint)| match &span {
             Some(span) => src
                 .error(ErrorKind::Invalid, msg, span.clone())
@@ -180,7 +187,7 @@ pub(crate) fn read_output(
     {
         read_analytic(&a, &mut plots, env)?;
     }
-    Ok((every, interval, plots))
+    Ok((every, interval, plots, energy_bars))
 }
 
 fn default_plots(dim: usize) -> Vec<&'static str> {
@@ -224,7 +231,7 @@ pub struct PlotSpec {
 impl PlotSpec {
     /// Parses `Y(X)` against the scenario's names. Errors carry a message and a hint.
     pub fn parse(spec: &str, names: &NameContext<'_>) -> Result<PlotSpec, (String, String)> {
-        let usage = "a plot is written `y(x)` with quantities such as t, x, y, vx, v, a, K, U, E: \"x(t)\", \"v(x)\", \"y(x)\", \"energy(t)\"".to_string();
+        let usage = "a plot is written `y(x)` with quantities such as t, x, y, vx, v, a, K, U, E: \"x(t)\", \"v(x)\", \"y(x)\", \"energy(t)\"; \"energy-bars\" draws the energy ledger as bars".to_string();
         let s = spec.trim();
         let open = s
             .rfind('(')

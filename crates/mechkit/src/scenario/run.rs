@@ -106,9 +106,13 @@ impl Scenario {
             warnings,
             Provenance::of(&report, self.source_hash),
         );
+        let mut plots = plots.into_data();
+        if self.energy_bars {
+            plots.push(summary.energy_bars());
+        }
         Ok(RunOutput {
             summary,
-            plots: plots.into_data(),
+            plots,
             report,
         })
     }
