@@ -1,8 +1,10 @@
 //! Event-driven collisions in a simulation: spheres (disks in 2-D, points with a size in 1-D)
 //! against each other and against fixed planes (walls). Every pair and every (body, wall)
 //! has an event on its gap, `|r_b - r_a| - (R_a + R_b)` or `(r - p)·n - R`, fired when the
-//! gap falls through zero; the run's event machinery locates the instant of impact on the
-//! step's interpolant, and the event's state change resolves the contact with [`Collision`].
+//! gap falls through zero (on a line, with the start given, the pair's gap is signed by the
+//! bodies' order: `±(x_b - x_a) - (R_a + R_b)`); the run's event machinery locates the instant
+//! of impact on the step's interpolant, and the event's state change resolves the contact with
+//! [`Collision`].
 //!
 //! **Simultaneous contacts.** At an impact every pair that touches (gap within `1e-9` of the
 //! radii) and still approaches is resolved, pair by pair in a fixed order (body pairs by index,
@@ -21,7 +23,8 @@ use crate::simulate::{Direction, Event};
 
 /// Relative gap within which two surfaces count as touching.
 const TOUCH: Real = 1e-9;
-/// Gap, relative to the size of the positions, within which a point (radius 0) touches a wall.
+/// Gap, relative to the size of the positions, within which a point (radius 0) touches a wall
+/// or another point.
 const POINT_TOUCH: Real = 1e-12;
 /// Gaps within this many rounding units of the positions are zero: two balls resting in
 /// contact must not flicker across zero on the step's interpolant (a cubic through equal
@@ -53,15 +56,16 @@ fn samples_for(u: Real, h: Real, reach: Real) -> usize {
     }
 }
 
-/// Interior samples a step of length `h` needs for a wall's gap, whose rate is `u0` at the
-/// step's start and `u1` at its end. The gap to a wall is signed: a body that ends the step past
-/// the plane shows it at the step's end, however fast it went. Only a body that goes in and
-/// comes out again inside one step could be missed, and for that its normal velocity must turn
-/// from approach (`u0 < 0`) to retreat (`u1 > 0`); then the samples follow the spacing rule.
-/// (A normal velocity that turns twice inside one step, more than half an oscillation per
-/// step, is not looked for.) Without this, a body sliding along a wall would ask for samples in
-/// proportion to its step, and the steps of a smooth motion grow without bound.
-fn wall_samples(u0: Real, u1: Real, h: Real, reach: Real) -> usize {
+/// Interior samples a step of length `h` needs for a signed gap (a wall's, or two bodies' on
+/// a line), whose rate is `u0` at the step's start and `u1` at its end. A signed gap shows a
+/// body that ends the step past the plane (or past the other body) at the step's end, however
+/// fast it went. Only a body that goes in and comes out again inside one step could be missed,
+/// and for that its normal velocity must turn from approach (`u0 < 0`) to retreat (`u1 > 0`);
+/// then the samples follow the spacing rule. (A normal velocity that turns twice inside one
+/// step, more than half an oscillation per step, is not looked for.) Without this, a body
+/// sliding along a wall would ask for samples in proportion to its step, and the steps of a
+/// smooth motion grow without bound.
+fn signed_gap_samples(u0: Real, u1: Real, h: Real, reach: Real) -> usize {
     if u0 < 0.0 && u1 > 0.0 {
         samples_for(u0.abs().max(u1), h, reach)
     } else {
@@ -170,6 +174,8 @@ pub struct Impacts {
     friction: Real,
     rules: Vec<PairRule>,
     walls: Vec<Wall>,
+    /// In 1-D, the positions at the start, which fix the order of the bodies on the line.
+    start: Option<Vec<Real>>,
 }
 
 impl Impacts {
@@ -189,7 +195,28 @@ impl Impacts {
             friction: 0.0,
             rules: Vec::new(),
             walls: Vec::new(),
+            start: None,
         }
+    }
+
+    /// The positions at the start of the run. In 1-D bodies on a line cannot pass each other,
+    /// so they fix each pair's order: the gap between two bodies is then signed, like a
+    /// wall's, and a step that carries one through the other shows it at the step's end,
+    /// whatever their radii (without them the gap is `|x_b - x_a| - (R_a + R_b)`, and a pass
+    /// between two samples of a step could be missed). In 2-D and 3-D they change nothing.
+    #[must_use]
+    pub fn with_start(mut self, q: &[Real]) -> Self {
+        if self.dim == 1 {
+            self.start = Some(q.to_vec());
+        }
+        self
+    }
+
+    /// In 1-D with the start known, the side `b` is on of `a`: +1 or -1 (+1 when they start
+    /// at the same place).
+    fn side(&self, a: usize, b: usize) -> Option<Real> {
+        let q = self.start.as_ref()?;
+        Some(if q[b] < q[a] { -1.0 } else { 1.0 })
     }
 
     /// The default restitution and friction of body pairs (walls carry their own).
@@ -268,7 +295,10 @@ impl Impacts {
         let d2: Real = ra.iter().zip(rb).map(|(x, y)| (y - x) * (y - x)).sum();
         if self.dim == 1 {
             // in 1-D bodies keep their order: b is on the side it started
-            (rb[0] - ra[0]).abs() - reach
+            match self.side(a, b) {
+                Some(side) => side * (rb[0] - ra[0]) - reach,
+                None => (rb[0] - ra[0]).abs() - reach,
+            }
         } else {
             d2.sqrt() - reach
         }
@@ -311,11 +341,17 @@ impl Impacts {
             let mut any = false;
             for (a, b, reach) in self.pairs() {
                 let gap = self.pair_gap(q, a, b, reach);
-                if gap > TOUCH * reach {
+                // touching: within TOUCH of the radii, or of the positions' size for two
+                // points, which the located crossing leaves a few ulps apart (or past)
+                let scale = reach
+                    + (0..d)
+                        .map(|k| q[a * d + k].abs() + q[b * d + k].abs())
+                        .sum::<Real>();
+                if gap > TOUCH * reach + POINT_TOUCH * scale {
                     continue;
                 }
                 let normal = if d == 1 {
-                    vec![(q[b] - q[a]).signum()]
+                    vec![self.side(a, b).unwrap_or_else(|| (q[b] - q[a]).signum())]
                 } else {
                     (0..d).map(|k| q[b * d + k] - q[a * d + k]).collect()
                 };
@@ -413,9 +449,16 @@ impl Impacts {
                     s.resolve_contacts(y);
                 })
                 .set_description("impulse with restitution")
-                .sampling(move |y0, y1, h| {
-                    let u = p.relative_speed(y0, a, b).max(p.relative_speed(y1, a, b));
-                    samples_for(u, h, reach)
+                .sampling(move |y0, y1, h| match p.side(a, b) {
+                    // on a line the gap is signed, as a wall's
+                    Some(side) => {
+                        let rate = |y: &[Real]| side * (y[y.len() / 2 + b] - y[y.len() / 2 + a]);
+                        signed_gap_samples(rate(y0), rate(y1), h, reach)
+                    }
+                    None => {
+                        let u = p.relative_speed(y0, a, b).max(p.relative_speed(y1, a, b));
+                        samples_for(u, h, reach)
+                    }
                 }),
             );
         }
@@ -437,7 +480,7 @@ impl Impacts {
                 .sampling(move |y0, y1, h| {
                     let n = p.walls[w].normal.as_slice();
                     let (u0, u1) = (p.normal_velocity(y0, i, n), p.normal_velocity(y1, i, n));
-                    wall_samples(u0, u1, h, r)
+                    signed_gap_samples(u0, u1, h, r)
                 }),
             );
         }

@@ -53,21 +53,25 @@ fn overlaps_and_walls() {
     assert_eq!(imp.resolve_contacts(&mut y), 0);
 }
 
+/// One 60 g ball of radius `r` and an elastic floor through the origin with normal (1, 1).
+fn on_oblique_floor(r: Real) -> Impacts {
+    let floor = Wall::new(
+        "floor",
+        vec![0.0, 0.0],
+        &[1.0, 1.0],
+        Restitution::ELASTIC,
+        0.0,
+    )
+    .unwrap();
+    Impacts::new(2, vec!["ball".into()], vec![0.06], vec![Some(r)]).with_wall(floor)
+}
+
 /// Fuzz finding (scenario): a point (radius 0) falling onto a wall with normal (1, 1)
 /// reached it a few ulps off the plane, outside a touching gap of 1e-9 of its radius (0):
 /// the event fired and nothing bounced, and the ball fell through.
 #[test]
 fn fuzz_a_point_bounces_off_an_oblique_wall() {
-    let imp = Impacts::new(2, vec!["p".into()], vec![0.06], vec![Some(0.0)]).with_wall(
-        Wall::new(
-            "floor",
-            vec![0.0, 0.0],
-            &[1.0, 1.0],
-            Restitution::ELASTIC,
-            0.0,
-        )
-        .unwrap(),
-    );
+    let imp = on_oblique_floor(0.0);
     // on the plane x + y = 0 to rounding, falling straight down
     let x = 5.0;
     let mut y = vec![x, -x + 4.0 * Real::EPSILON * x, 0.0, -7.6];
@@ -85,16 +89,7 @@ fn fuzz_a_point_bounces_off_an_oblique_wall() {
 #[test]
 fn fuzz_a_wall_asks_for_samples_only_where_the_normal_velocity_turns() {
     let r = 0.05;
-    let imp = Impacts::new(2, vec!["ball".into()], vec![0.06], vec![Some(r)]).with_wall(
-        Wall::new(
-            "floor",
-            vec![0.0, 0.0],
-            &[1.0, 1.0],
-            Restitution::ELASTIC,
-            0.0,
-        )
-        .unwrap(),
-    );
+    let imp = on_oblique_floor(r);
     let events = imp.events();
     let [wall] = events.as_slice() else {
         panic!("one event: {}", events.len())

@@ -192,7 +192,8 @@ pub(crate) fn read_contacts(
         s.masses.to_vec(),
         s.radius.to_vec(),
     )
-    .with_default(e0, mu0);
+    .with_default(e0, mu0)
+    .with_start(s.q);
     for (a, b, e, mu) in pairs {
         impacts = impacts.with_pair(a, b, e, mu);
     }
