@@ -51,8 +51,8 @@ fn text(data: &[u8]) -> Option<&str> {
 /// A formula as typed into a scenario or `mechkit diff`: parsed, its errors rendered,
 /// compiled and evaluated (interpreter and native code must agree bit for bit), simplified,
 /// and differentiated (symbolically, and numerically at a point). The costlier symbolic
-/// integration and equation solving have their own target, [`calculus`], so that the parser
-/// and simplifier get most of the inputs.
+/// integration and equation solving have their own target, [`calculus()`](fn@calculus), so
+/// that the parser and simplifier get most of the inputs.
 pub fn expression(data: &[u8]) {
     let Some(src) = text(data) else { return };
     let formula = match Formula::parse(src) {
@@ -91,7 +91,8 @@ pub fn expression(data: &[u8]) {
 
 /// A formula or equation as typed into `mechkit integrate` or `mechkit solve`: a formula is
 /// integrated symbolically (with its check by differentiation) and on `[0, 1]`; an equation
-/// (`lhs = rhs`, which does not parse as a formula) is solved on `[-10, 10]`. The inputs are the [`expression`] target's.
+/// (`lhs = rhs`, which does not parse as a formula) is solved on `[-10, 10]`. The inputs are
+/// the [`expression`] target's.
 pub fn calculus(data: &[u8]) {
     let Some(src) = text(data) else { return };
     if Formula::parse(src).is_err() {

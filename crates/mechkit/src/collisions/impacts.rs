@@ -449,13 +449,12 @@ impl Impacts {
                     s.resolve_contacts(y);
                 })
                 .set_description("impulse with restitution")
-                .sampling(move |y0, y1, h| match p.side(a, b) {
-                    // on a line the gap is signed, as a wall's
-                    Some(side) => {
+                .sampling(move |y0, y1, h| {
+                    if let Some(side) = p.side(a, b) {
+                        // on a line the gap is signed, as a wall's
                         let rate = |y: &[Real]| side * (y[y.len() / 2 + b] - y[y.len() / 2 + a]);
                         signed_gap_samples(rate(y0), rate(y1), h, reach)
-                    }
-                    None => {
+                    } else {
                         let u = p.relative_speed(y0, a, b).max(p.relative_speed(y1, a, b));
                         samples_for(u, h, reach)
                     }

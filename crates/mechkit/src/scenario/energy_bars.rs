@@ -15,8 +15,8 @@ impl Summary {
     /// The energy ledger as a waterfall: the kinetic energy at the start, then the work of each
     /// force and the energy the events' state changes gave or took (a bounce's loss; left out
     /// when there is none) added to the running total in turn, gains first (a gain rises, a
-    /// loss falls), and the kinetic energy at the end. The running total meets the final kinetic energy up to
-    /// the work-energy residual, which the horizontal axis label gives.
+    /// loss falls), and the kinetic energy at the end. The running total meets the final
+    /// kinetic energy up to the work-energy residual, which the horizontal axis label gives.
     pub fn energy_bars(&self) -> PlotData {
         let k0 = self.kinetic_energy.start.unwrap_or(0.0);
         let k1 = self.kinetic_energy.end.unwrap_or(0.0);
@@ -61,7 +61,7 @@ impl Summary {
             ENERGY_BARS,
             ENERGY_BARS,
             format!(
-                "work-energy residual Σ W − ΔK = {:.3e} J",
+                "work-energy residual Σ W + events − ΔK = {:.3e} J",
                 self.work_energy_residual
             ),
             "energy [J]",
