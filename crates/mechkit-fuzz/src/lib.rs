@@ -132,8 +132,13 @@ pub fn units(data: &[u8]) {
 /// that every input finishes in milliseconds.
 pub const SCENARIO_STEPS: u64 = 200;
 
+/// Output limit of a fuzzed scenario's run: it bounds the output times as the step budget
+/// bounds the steps (a few hundred steps can hold 10^15 output times of `interval = "2 fs"`).
+pub const SCENARIO_OUTPUT: u64 = 1_000_000;
+
 /// A scenario file: loaded and built into a model (every error rendered with its location),
-/// then, when it loads, run in memory for at most [`SCENARIO_STEPS`] steps and summarised.
+/// then, when it loads, run in memory for at most [`SCENARIO_STEPS`] steps and
+/// [`SCENARIO_OUTPUT`] bytes of output, and summarised.
 /// The same text is also read as a body file of `mechkit body`.
 pub fn scenario(data: &[u8]) {
     let Some(src) = text(data) else { return };
@@ -146,6 +151,7 @@ pub fn scenario(data: &[u8]) {
                 s.max_steps
                     .map_or(SCENARIO_STEPS, |n| n.min(SCENARIO_STEPS)),
             );
+            s.max_output = s.max_output.min(SCENARIO_OUTPUT);
             match s.run() {
                 Ok(out) => {
                     let _ = out.summary.stop_reason.len();

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use super::error::{ErrorKind, ScenarioError};
 use super::observe::ObservableSet;
-use super::output::{CsvWriter, Keep, write_atomic};
+use super::output::{CsvWriter, Keep, csv_header, write_atomic};
 use super::plot::PlotRecorder;
 use super::provenance::Provenance;
 use super::summary::Summary;
@@ -61,7 +61,16 @@ impl Scenario {
             Some(OutputTimes::At(list)) => sim = sim.output_times(list.clone()),
             None => {}
         }
-        sim
+        sim.max_output_times(self.max_output_rows())
+    }
+
+    /// The most rows the trajectory could hold within the output limit: a row has at least
+    /// one character and one separator per column. Output times beyond it could never be
+    /// written, so an in-memory run (a sweep, the gallery) ends them there too, instead of
+    /// interpolating 10^15 rows that `interval = "2 fs"` over five seconds asks for.
+    fn max_output_rows(&self) -> u64 {
+        let columns = csv_header(&self.system, false).len() as u64;
+        self.max_output / (2 * columns)
     }
 
     fn keep(&self) -> Keep {

@@ -98,6 +98,15 @@ pub(super) struct Grid {
 /// step of 10^10 s held 5·10^12 output times of 2 ms).
 pub const MAX_UNENDED_OUTPUTS: u64 = super::DEFAULT_MAX_STEPS;
 
+/// `x` as written in a message: `0.002`, `2e-15`.
+fn short(x: Real) -> String {
+    if x == 0.0 || (1e-4..1e16).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
 impl Grid {
     /// The output times a run asked for (`None`: just the steps).
     pub fn of(sim: &Simulation<'_>, t0: Real, warnings: &mut Vec<String>) -> Option<Grid> {
@@ -111,13 +120,24 @@ impl Grid {
                 last_k: None,
             }),
             (None, Some(dt)) => {
-                let last_k = sim.t_max.is_none().then_some(MAX_UNENDED_OUTPUTS);
-                if let Some(n) = last_k {
-                    warnings.push(format!(
-                        "the output every {dt} s ends after {n} output times (t = {} s), as the run has no t_max; set t_max to choose the end",
-                        t0 + n as Real * dt
-                    ));
-                }
+                let last_k = match sim.t_max {
+                    None => {
+                        let n = sim.max_outputs.map_or(MAX_UNENDED_OUTPUTS, |m| m.min(MAX_UNENDED_OUTPUTS));
+                        warnings.push(format!(
+                            "the output every {dt} s ends after {n} output times (t = {} s), as the run has no t_max; set t_max to choose the end",
+                            t0 + n as Real * dt
+                        ));
+                        Some(n)
+                    }
+                    Some(tm) => sim.max_outputs.filter(|&n| (tm - t0) / dt > n as Real).inspect(|&n| {
+                        warnings.push(format!(
+                            "the output every {} s up to t_max = {tm} s asks for {:.3e} output times, more than the {n} allowed: the output ends at t = {} s; choose a larger output interval, or raise the output limit (`[output] max_size`, `--max-output`)",
+                            short(dt),
+                            (tm - t0) / dt,
+                            short(t0 + n as Real * dt)
+                        ));
+                    }),
+                };
                 Some(Grid {
                     t0,
                     dt,

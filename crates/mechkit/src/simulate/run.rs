@@ -46,6 +46,7 @@ pub struct Simulation<'a> {
     pub(crate) events: Vec<Event>,
     pub(crate) interval: Option<Real>,
     pub(crate) times: Option<Vec<Real>>,
+    pub(crate) max_outputs: Option<u64>,
     pub(crate) fuse: Option<bool>,
 }
 
@@ -71,6 +72,7 @@ impl<'a> Simulation<'a> {
             events: Vec::new(),
             interval: None,
             times: None,
+            max_outputs: None,
             fuse: None,
         }
     }
@@ -109,6 +111,17 @@ impl<'a> Simulation<'a> {
     #[must_use]
     pub fn output_interval(mut self, interval: Real) -> Self {
         self.interval = Some(interval);
+        self
+    }
+
+    /// Ends the output times of [`Simulation::output_interval`] after `n` of them, with a
+    /// warning, however many the interval asks for before `t_max` (the run itself goes on): a
+    /// bound on the rows a run can produce, for a caller whose output is bounded too (a
+    /// scenario's output limit). Without it the output times are bounded only by `t_max`, or
+    /// by 10^6 of them when there is none.
+    #[must_use]
+    pub fn max_output_times(mut self, n: u64) -> Self {
+        self.max_outputs = Some(n);
         self
     }
 

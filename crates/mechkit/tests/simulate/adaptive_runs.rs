@@ -232,3 +232,51 @@ fn fuzz_output_times_without_an_end_are_bounded() {
             .contains("(t = 2000 s), as the run has no t_max; set t_max")
     );
 }
+
+/// Fuzz finding (scenario, after 4.61 M inputs): a bouncing ball with `[output] interval =
+/// "2 fs"` up to `t_max = 5.06 s`, 2.5·10^15 output times. The 200 steps the fuzz target
+/// allows could not bound them, and an in-memory run (a sweep, the gallery), which has no file
+/// to reach the output limit, interpolated rows for ever. The output times now end where the
+/// trajectory could no longer fit in the output limit, with a warning that says how to raise
+/// it; the run itself goes on to its end.
+#[test]
+fn fuzz_a_femtosecond_output_interval_ends_at_the_output_limit() {
+    let text = std::fs::read_to_string(
+        crate::util::workspace().join("fuzz/regressions/scenario/femtosecond-output-interval.toml"),
+    )
+    .unwrap();
+    let mut scenario = mechkit::scenario::Scenario::from_str("ball.toml", &text).unwrap();
+    // 1 MB holds at most 1e6/(2*8) rows of t, x, y, vx, vy, K, work.gravity, power.gravity
+    // of at least one digit and one comma each
+    scenario.max_output = 1_000_000;
+    let out = scenario.run().unwrap();
+    // the run goes on past the output's end, to the rest of the bounces
+    assert!(
+        out.summary.t_end > 3.9,
+        "{} {}",
+        out.summary.t_end,
+        out.summary.stop_reason
+    );
+    let warning = out
+        .summary
+        .warnings
+        .iter()
+        .find(|w| {
+            w.contains("output every 2e-15 s up to t_max = 5.06 s asks for 2.530e15 output times")
+        })
+        .unwrap_or_else(|| panic!("{:?}", out.summary.warnings));
+    assert!(
+        warning.contains("raise the output limit (`[output] max_size`"),
+        "{warning}"
+    );
+    assert!(warning.contains("more than the 62500 allowed: the output ends at t = 1.25e-10 s"));
+    // 62,500 output times of 2 fs, then only the apexes (the first after the first bounce)
+    let points = &out.plots[0].series[0].points;
+    let last_grid = points
+        .iter()
+        .filter(|p| p.0 < 0.1)
+        .map(|p| p.0)
+        .fold(0.0, f64::max);
+    assert!((last_grid - 1.25e-10).abs() < 1e-20, "{last_grid}");
+    assert!(points.iter().filter(|p| p.0 >= 0.1).all(|p| p.0 > 0.4));
+}
