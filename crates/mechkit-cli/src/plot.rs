@@ -15,6 +15,13 @@ mod bars;
 static FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 
+/// The house style every chart shares: the registered font, its sizes, and the grid colour.
+const FONT_FAMILY: &str = "sans-serif";
+const CAPTION_SIZE: u32 = 22;
+const LABEL_SIZE: u32 = 14;
+const AXIS_DESC_SIZE: u32 = 16;
+const GRID: RGBColor = RGBColor(235, 235, 235);
+
 const PALETTE: [RGBColor; 8] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
@@ -28,7 +35,7 @@ const PALETTE: [RGBColor; 8] = [
 
 fn register_font() {
     REGISTER.call_once(|| {
-        plotters::style::register_font("sans-serif", FontStyle::Normal, FONT)
+        plotters::style::register_font(FONT_FAMILY, FontStyle::Normal, FONT)
             .unwrap_or_else(|_| panic!("the bundled font is a valid TrueType file"));
     });
 }
@@ -118,7 +125,10 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
         let ((x0, x1), (y0, y1)) = (xr, yr);
         let (xs, ys) = (x0.abs().max(x1.abs()), y0.abs().max(y1.abs()));
         let mut chart = ChartBuilder::on(&root)
-            .caption(format!("{title}: {}", plot.spec), ("sans-serif", 22))
+            .caption(
+                format!("{title}: {}", plot.spec),
+                (FONT_FAMILY, CAPTION_SIZE),
+            )
             .margin(16)
             .x_label_area_size(48)
             .y_label_area_size(80)
@@ -130,9 +140,9 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
             .y_label_formatter(&|v| tick(*v, ys))
             .x_desc(&plot.x_label)
             .y_desc(&plot.y_label)
-            .label_style(("sans-serif", 14))
-            .axis_desc_style(("sans-serif", 16))
-            .light_line_style(RGBColor(235, 235, 235))
+            .label_style((FONT_FAMILY, LABEL_SIZE))
+            .axis_desc_style((FONT_FAMILY, AXIS_DESC_SIZE))
+            .light_line_style(GRID)
             .draw()
             .map_err(|e| anyhow!("{e}"))?;
         let mut band_labels: Vec<&str> = Vec::new();
@@ -253,7 +263,7 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
                 .configure_series_labels()
                 .background_style(WHITE.mix(0.85))
                 .border_style(BLACK.mix(0.3))
-                .label_font(("sans-serif", 14))
+                .label_font((FONT_FAMILY, LABEL_SIZE))
                 .position(SeriesLabelPosition::UpperRight)
                 .draw()
                 .map_err(|e| anyhow!("{e}"))?;

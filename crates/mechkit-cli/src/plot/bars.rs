@@ -7,7 +7,7 @@ use mechkit::figure::{BarKind, PlotData};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::{PALETTE, tick};
+use super::{AXIS_DESC_SIZE, CAPTION_SIZE, FONT_FAMILY, GRID, LABEL_SIZE, PALETTE, tick};
 
 const GAIN: RGBColor = RGBColor(44, 160, 44);
 const LOSS: RGBColor = RGBColor(214, 39, 40);
@@ -35,7 +35,10 @@ where
     let scale = y0.abs().max(y1.abs());
     let labels: Vec<String> = bars.iter().map(|b| b.label.clone()).collect();
     let mut chart = ChartBuilder::on(root)
-        .caption(format!("{title}: {}", plot.spec), ("sans-serif", 22))
+        .caption(
+            format!("{title}: {}", plot.spec),
+            (FONT_FAMILY, CAPTION_SIZE),
+        )
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(80)
@@ -52,9 +55,9 @@ where
         .y_label_formatter(&|v| tick(*v, scale))
         .x_desc(&plot.x_label)
         .y_desc(&plot.y_label)
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 16))
-        .light_line_style(RGBColor(235, 235, 235))
+        .label_style((FONT_FAMILY, LABEL_SIZE))
+        .axis_desc_style((FONT_FAMILY, AXIS_DESC_SIZE))
+        .light_line_style(GRID)
         .draw()
         .map_err(|e| anyhow!("{e}"))?;
     if y0 < 0.0 {
@@ -96,8 +99,8 @@ where
             r
         }))
         .map_err(|e| anyhow!("{e}"))?;
-    let above =
-        TextStyle::from(("sans-serif", 14).into_font()).pos(Pos::new(HPos::Center, VPos::Bottom));
+    let above = TextStyle::from((FONT_FAMILY, LABEL_SIZE).into_font())
+        .pos(Pos::new(HPos::Center, VPos::Bottom));
     let below = above.pos(Pos::new(HPos::Center, VPos::Top));
     chart
         .draw_series(bars.iter().enumerate().map(|(i, b)| {
