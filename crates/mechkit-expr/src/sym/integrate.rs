@@ -1,7 +1,8 @@
 //! Antiderivatives from a table of rules: linearity, powers and Laurent terms, functions of a
 //! linear argument `f(a x + b)`, substitution when the derivative of an inner expression is a
 //! factor (`x/(a + x^2)`, `x*exp(x^2)`), integration by parts for a polynomial times
-//! `sin/cos/exp/sinh/cosh` or `ln`, `1/(a + b x^2)` (atan, or logarithms when the signs say
+//! `sin/cos/exp/sinh/cosh` or `ln`, squares of `sin/cos/tan/sinh/cosh/tanh` (by the double
+//! angle), `1/(a + b x^2)` (atan, or logarithms when the signs say
 //! so), `1/sqrt(a - x^2)`, `1/sqrt(x^2 + a)`, `1/cos^2`, and rational functions whose
 //! denominator factors into rational linear terms (partial fractions).
 //!
@@ -148,6 +149,31 @@ fn table(f: &Sym, x: &str) -> Option<Sym> {
             } else {
                 let n1 = Sym::sum(vec![(**n).clone(), Sym::one()]);
                 Sym::quotient(Sym::pow(xv, n1.clone()), n1)
+            }
+        }
+        // squares by the double angle: sin^2 x = (1 - cos 2x)/2, sinh^2 x = (cosh 2x - 1)/2
+        Sym::Pow(b, n) if n.as_num() == Some(Number::int(2)) => {
+            let Sym::Call(func, a) = &**b else {
+                return None;
+            };
+            if !is_x(&a[0]) {
+                return None;
+            }
+            let quarter = |g: Func| {
+                Sym::product(vec![
+                    Sym::rational(1, 4),
+                    Sym::call(g, vec![Sym::product(vec![Sym::int(2), xv.clone()])]),
+                ])
+            };
+            let half_x = Sym::product(vec![Sym::rational(1, 2), xv.clone()]);
+            match func {
+                Func::Sin => Sym::difference(half_x, quarter(Func::Sin)),
+                Func::Cos => Sym::sum(vec![half_x, quarter(Func::Sin)]),
+                Func::Sinh => Sym::difference(quarter(Func::Sinh), half_x),
+                Func::Cosh => Sym::sum(vec![quarter(Func::Sinh), half_x]),
+                Func::Tan => Sym::difference(Sym::call(Func::Tan, vec![xv.clone()]), xv),
+                Func::Tanh => Sym::difference(xv.clone(), Sym::call(Func::Tanh, vec![xv])),
+                _ => return None,
             }
         }
         // sec^2 and sech^2

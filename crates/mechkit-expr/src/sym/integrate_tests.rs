@@ -46,6 +46,25 @@ fn substitutions_and_parts() {
     }
 }
 
+/// Squares of the circular and hyperbolic functions, by the double angle (the mean of
+/// `sin^2` over a period is 1/2: the average power of an oscillator).
+#[test]
+fn squares_by_the_double_angle() {
+    assert_eq!(int("sin(x)^2").unwrap(), "x/2 - sin(2*x)/4");
+    assert_eq!(int("cos(x)^2").unwrap(), "x/2 + sin(2*x)/4");
+    assert_eq!(int("tan(x)^2").unwrap(), "tan(x) - x");
+    assert_eq!(int("sinh(x)^2").unwrap(), "sinh(2*x)/4 - x/2");
+    assert_eq!(int("cosh(x)^2").unwrap(), "x/2 + sinh(2*x)/4");
+    assert_eq!(int("tanh(x)^2").unwrap(), "x - tanh(x)");
+    for f in [
+        "A^2*w*sin(w*x + phi)^2",
+        "cos(2*pi*x/T)^2",
+        "3*sin(x)^2 - cos(x)^2",
+    ] {
+        assert!(int(f).is_some(), "no antiderivative for {f}");
+    }
+}
+
 #[test]
 fn no_answer_rather_than_a_wrong_one() {
     assert!(int("exp(x^2)").is_none());

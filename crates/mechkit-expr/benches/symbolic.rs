@@ -1,0 +1,70 @@
+//! The symbolic engine: antiderivatives (each verified by differentiating it back, as
+//! `mechkit integrate` does) and derivatives, for the course's integrals and for the 40
+//! slowest inputs the `calculus` fuzz target met in its corpus
+//! (`benches/data/slow_integrals.txt`: fuzz-mutated products and towers of powers, each
+//! taking up to 1.3 s in the fuzz build). The second group is the baseline for work on the
+//! engine's speed (docs/benchmarks.md, "Symbolic engine").
+//!
+//! Run with `cargo bench -p mechkit-expr --bench symbolic`.
+
+use std::hint::black_box;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use mechkit_expr::Sym;
+
+/// Integrals of the course: work of a spring and of a drag law, a Gaussian moment, a
+/// potential's antiderivative by parts, partial fractions, an arc-tangent.
+const COURSE: [&str; 8] = [
+    "-k*(x - L0)",
+    "x^2*exp(-x/a)",
+    "x*sin(w*x)",
+    "sin(x)^2",
+    "1/(a + x^2)",
+    "1/((x - 1)*(x + 2))",
+    "F0*cos(w*x + phi)",
+    "m*g*x*exp(-b*x)",
+];
+
+fn parsed(lines: impl Iterator<Item = &'static str>) -> Vec<Sym> {
+    lines.filter_map(|l| Sym::parse(l).ok()).collect()
+}
+
+fn integrate_all(fs: &[Sym]) -> usize {
+    fs.iter().filter(|f| f.integrate("x").is_some()).count()
+}
+
+fn differentiate_all(fs: &[Sym]) -> Vec<Sym> {
+    fs.iter().map(|f| f.diff("x")).collect()
+}
+
+fn course(c: &mut Criterion) {
+    let fs = parsed(COURSE.into_iter());
+    assert_eq!(
+        integrate_all(&fs),
+        COURSE.len(),
+        "every course integral has a closed form"
+    );
+    let mut group = c.benchmark_group("symbolic: course");
+    group.bench_function("integrate 8", |b| b.iter(|| integrate_all(black_box(&fs))));
+    group.bench_function("differentiate 8", |b| {
+        b.iter(|| differentiate_all(black_box(&fs)));
+    });
+    group.finish();
+}
+
+fn slow_corpus(c: &mut Criterion) {
+    let fs = parsed(include_str!("data/slow_integrals.txt").lines());
+    assert!(fs.len() >= 30, "the slow inputs parse: {} of 40", fs.len());
+    let mut group = c.benchmark_group("symbolic: slow fuzz inputs");
+    group.sample_size(10);
+    group.bench_function("integrate all", |b| {
+        b.iter(|| integrate_all(black_box(&fs)));
+    });
+    group.bench_function("differentiate all", |b| {
+        b.iter(|| differentiate_all(black_box(&fs)));
+    });
+    group.finish();
+}
+
+criterion_group!(benches, course, slow_corpus);
+criterion_main!(benches);
