@@ -2,6 +2,23 @@
 
 use thiserror::Error;
 
+use crate::Real;
+
+/// Whether `x` reads shorter in exponent form: `3.04e-300` rather than the 300 digits of `{}`
+/// (nonzero finite numbers outside 1e-4..1e16).
+pub(crate) fn in_exponent_form(x: Real) -> bool {
+    x != 0.0 && x.is_finite() && !(1e-4..1e16).contains(&x.abs())
+}
+
+/// A number for a message: `0.002`, `2e-15`.
+pub(crate) fn short(x: Real) -> String {
+    if in_exponent_form(x) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 /// Any error of this crate.
 #[derive(Debug, Error)]
 #[non_exhaustive]

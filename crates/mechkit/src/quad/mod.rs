@@ -23,11 +23,4 @@ pub use rule::{Rule, RuleError, integrate_rule};
 pub use sample_rule::{SampleRule, SamplesError, cumulative, integrate_samples};
 pub use samples::{cumtrapz, cumtrapz_into, simpson, trapz, trapz_uniform};
 
-/// A number for a message: `3.04e-300` rather than the 300 digits of `{}`.
-fn short(x: crate::Real) -> String {
-    if x != 0.0 && x.is_finite() && !(1e-4..1e16).contains(&x.abs()) {
-        format!("{x:e}")
-    } else {
-        format!("{x}")
-    }
-}
+use crate::error::short;

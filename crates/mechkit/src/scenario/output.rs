@@ -177,11 +177,10 @@ pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
 /// when that is shorter (`1.5e-9`, not `0.0000000015`).
 pub fn push_number(out: &mut String, x: Real) {
     use std::fmt::Write as _;
-    let a = x.abs();
-    if a == 0.0 || (1e-4..1e16).contains(&a) || !x.is_finite() {
-        let _ = write!(out, "{x}");
-    } else {
+    if crate::error::in_exponent_form(x) {
         let _ = write!(out, "{x:e}");
+    } else {
+        let _ = write!(out, "{x}");
     }
 }
 

@@ -8,6 +8,7 @@ use super::run::{Simulation, sample_of};
 use super::stepping::{Engine, StepEnds, WorkSystem};
 use crate::Real;
 use crate::energy::EnergyLedger;
+use crate::error::short;
 use crate::ode::State;
 use crate::particles::{Evaluation, ParticleSystem, Sample, SampleKind};
 
@@ -97,15 +98,6 @@ pub(super) struct Grid {
 /// steps, but not the times in them (a free fall's adaptive steps grow without bound, and one
 /// step of 10^10 s held 5·10^12 output times of 2 ms).
 pub const MAX_UNENDED_OUTPUTS: u64 = super::DEFAULT_MAX_STEPS;
-
-/// `x` as written in a message: `0.002`, `2e-15`.
-fn short(x: Real) -> String {
-    if x == 0.0 || (1e-4..1e16).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
-}
 
 impl Grid {
     /// The output times a run asked for (`None`: just the steps).
