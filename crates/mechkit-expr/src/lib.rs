@@ -27,6 +27,8 @@
 //! - [`ast`]: the expression tree, operators and built-in functions.
 //! - [`units`]: dimensions, the unit table, [`units::Quantity`] parsing.
 //! - [`Dim`]: dimensional analysis of formulas.
+//! - [`interval`]: [`Interval`] and [`Jet`], guaranteed bounds of a [`Program`] and of its
+//!   derivative over a box ([`Program::eval_interval`], [`Program::eval_jet`]).
 //!
 //! The language: numbers (`1e-9`), names (dotted: `feather.vx`), `+ - * / ^` (also `**`),
 //! unary minus, parentheses, comparisons `< <= > >= == !=`, `and or not` (also `&& || !`),
@@ -38,6 +40,7 @@ mod compile;
 mod dims;
 mod error;
 mod formula;
+pub mod interval;
 mod lexer;
 mod number;
 mod parser;
@@ -52,6 +55,7 @@ pub use compile::{Kernel, KernelBuilder, Program, Val, native_code};
 pub use dims::Dim;
 pub use error::{ExprError, ExprErrorKind};
 pub use formula::Formula;
+pub use interval::{Interval, Jet};
 pub use number::Number;
 pub use parser::{Parsed, parse};
 pub use scope::{BUILTIN_CONSTANTS, Binding, MapScope, Scope, builtin_constant};

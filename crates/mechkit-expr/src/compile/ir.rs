@@ -5,6 +5,7 @@
 
 use std::collections::HashMap;
 
+use super::domain::Domain;
 use crate::ast::{BinOp, Expr, Func};
 use crate::scope::{Binding, Scope, builtin_constant};
 
@@ -340,59 +341,48 @@ pub(super) fn remap(i: Inst, m: &[u32]) -> Inst {
 }
 
 /// The value of one instruction given the values of the earlier ones (`regs`) and the
-/// variables. This is the definition of every operation: the native code must agree with it
-/// bit for bit.
+/// variables, over any [`Domain`]. With `f64` this is the definition of every operation: the
+/// native code must agree with it bit for bit; over intervals and jets it encloses it.
 #[inline]
-pub(crate) fn execute(i: Inst, regs: &[f64], vars: &[f64]) -> f64 {
+pub(crate) fn execute<T: Domain>(i: Inst, regs: &[T], vars: &[T]) -> T {
     let g = |r: u32| regs[r as usize];
-    let truth = |b: bool| if b { 1.0 } else { 0.0 };
     match i {
-        Inst::Const(c) => c,
+        Inst::Const(c) => T::constant(c),
         Inst::Load(s) => vars[s as usize],
         Inst::Neg(a) => -g(a),
-        Inst::Not(a) => truth(g(a) == 0.0),
+        Inst::Not(a) => g(a).not(),
         Inst::Add(a, b) => g(a) + g(b),
         Inst::Sub(a, b) => g(a) - g(b),
         Inst::Mul(a, b) => g(a) * g(b),
         Inst::Div(a, b) => g(a) / g(b),
-        Inst::Cmp(op, a, b) => op.apply(g(a), g(b)),
-        Inst::And(a, b) => truth(g(a) != 0.0 && g(b) != 0.0),
-        Inst::Or(a, b) => truth(g(a) != 0.0 || g(b) != 0.0),
-        Inst::Pow(a, b) => crate::ast::pow(g(a), g(b)),
-        Inst::Square(a) => g(a) * g(a),
-        Inst::Call1(f, a) => f.apply1(g(a)),
-        Inst::Call2(f, a, b) => f.apply2(g(a), g(b)),
-        Inst::Select(c, a, b) => crate::ast::select(g(c), g(a), g(b)),
-        Inst::MinBits(a, b) => {
-            if (g(a).to_bits() as i64) < (g(b).to_bits() as i64) {
-                g(a)
-            } else {
-                g(b)
-            }
-        }
-        Inst::MaxBits(a, b) => {
-            if (g(a).to_bits() as i64) > (g(b).to_bits() as i64) {
-                g(a)
-            } else {
-                g(b)
-            }
-        }
+        Inst::Cmp(op, a, b) => g(a).compare(op, g(b)),
+        Inst::And(a, b) => g(a).and(g(b)),
+        Inst::Or(a, b) => g(a).or(g(b)),
+        Inst::Pow(a, b) => g(a).pow(g(b)),
+        Inst::Square(a) => g(a).square(),
+        Inst::Call1(f, a) => g(a).call1(f),
+        Inst::Call2(f, a, b) => g(a).call2(f, g(b)),
+        Inst::Select(c, a, b) => g(c).select(g(a), g(b)),
+        Inst::MinBits(a, b) => g(a).min_bits(g(b)),
+        Inst::MaxBits(a, b) => g(a).max_bits(g(b)),
     }
 }
 
 impl Ir {
-    /// Interprets the instructions (registers on the machine stack for short programs).
+    /// Interprets the instructions over any [`Domain`] (registers on the machine stack for
+    /// short programs).
     #[inline]
-    pub fn run(&self, vars: &[f64]) -> f64 {
+    pub fn run<T: Domain>(&self, vars: &[T]) -> T {
+        let zero = T::constant(0.0);
         match self.insts.len() {
-            0..=8 => self.run_in(vars, &mut [0.0; 8]),
-            9..=32 => self.run_in(vars, &mut [0.0; 32]),
-            n => self.run_in(vars, &mut vec![0.0; n]),
+            0..=8 => self.run_in(vars, &mut [zero; 8]),
+            9..=32 => self.run_in(vars, &mut [zero; 32]),
+            n => self.run_in(vars, &mut vec![zero; n]),
         }
     }
 
     #[inline]
-    fn run_in(&self, vars: &[f64], regs: &mut [f64]) -> f64 {
+    fn run_in<T: Domain>(&self, vars: &[T], regs: &mut [T]) -> T {
         for (k, i) in self.insts.iter().enumerate() {
             regs[k] = execute(*i, regs, vars);
         }
