@@ -16,18 +16,20 @@ mod plot;
 use std::process::ExitCode;
 
 use clap::Parser;
+use mechkit::simulate::Cancel;
 
 fn main() -> ExitCode {
     failure::install_panic_hook();
     let cli = args::Cli::parse();
-    // the commands whose loops look at the interrupt flag; the others end at Ctrl-C as usual
+    let cancel = Cancel::new();
+    // the commands whose loops look at the handle; the others end at Ctrl-C as usual
     if matches!(
         cli.command,
         args::Command::Run(_) | args::Command::Sweep(_) | args::Command::Md(_)
     ) {
-        catch_interrupts();
+        catch_interrupts(&cancel);
     }
-    match commands::dispatch(cli) {
+    match commands::dispatch(cli, &cancel) {
         Ok(commands::Outcome::Success) => ExitCode::SUCCESS,
         Ok(commands::Outcome::ComputationFailed) => ExitCode::from(1),
         Ok(commands::Outcome::Interrupted) => ExitCode::from(EXIT_INTERRUPTED),
@@ -42,12 +44,12 @@ fn main() -> ExitCode {
 /// Exit status after Ctrl-C: 128 + SIGINT, as shells report a process killed by it.
 const EXIT_INTERRUPTED: u8 = 130;
 
-/// Ctrl-C (SIGINT) and SIGTERM ask the running simulation to stop after its current step
-/// (`mechkit::simulate::interrupt`): it then finishes its outputs and exits with 130. A second
-/// Ctrl-C exits at once.
-fn catch_interrupts() {
+/// Ctrl-C (SIGINT) and SIGTERM raise `cancel`, which asks the running simulation to stop
+/// after its current step: it then finishes its outputs and exits with 130. A second Ctrl-C
+/// exits at once.
+fn catch_interrupts(cancel: &Cancel) {
     use signal_hook::consts::{SIGINT, SIGTERM};
-    let flag = mechkit::simulate::interrupt::flag();
+    let flag = cancel.flag();
     for signal in [SIGINT, SIGTERM] {
         // the conditional exit first: it sees the flag as the previous signal left it
         let registered = signal_hook::flag::register_conditional_shutdown(

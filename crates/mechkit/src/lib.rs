@@ -98,6 +98,7 @@ pub mod simulate;
 
 pub use error::Error;
 pub use mechkit_expr as expr;
+pub use mechkit_expr::interval;
 pub use mechkit_expr::units;
 
 /// The real number type used throughout.

@@ -10,6 +10,7 @@ use mechkit::md::{Md, MdConfig, PairPotential, Thermo};
 use mechkit::scenario::{
     DEFAULT_MAX_OUTPUT, StreamFile, output_limit_message, parse_size, write_atomic,
 };
+use mechkit::simulate::Cancel;
 use serde_json::json;
 
 use super::Outcome;
@@ -94,20 +95,25 @@ fn append(file: &mut StreamFile, bytes: &[u8]) -> Result<()> {
         .with_context(|| format!("cannot write {}", file.partial_path().display()))
 }
 
-/// Runs `mechkit md`.
-pub fn md(args: &MdArgs) -> Result<Outcome> {
+/// Runs `mechkit md`; `cancel` (Ctrl-C) ends it after the current step.
+pub fn md(args: &MdArgs, cancel: &Cancel) -> Result<Outcome> {
     if args.thermo_every == 0 || args.xyz_every == Some(0) {
         bail!("--thermo-every and --xyz-every must be at least 1 (a step count)");
     }
     let (s, potential) = setup(args)?;
     match potential {
-        Potential::Lj(p) => run(args, s, p),
-        Potential::Soft(p) => run(args, s, p),
-        Potential::Spring(p) => run(args, s, p),
+        Potential::Lj(p) => run(args, s, p, cancel),
+        Potential::Soft(p) => run(args, s, p, cancel),
+        Potential::Spring(p) => run(args, s, p, cancel),
     }
 }
 
-fn run<P: PairPotential>(args: &MdArgs, s: Setup, potential: P) -> Result<Outcome> {
+fn run<P: PairPotential>(
+    args: &MdArgs,
+    s: Setup,
+    potential: P,
+    cancel: &Cancel,
+) -> Result<Outcome> {
     let config = MdConfig {
         dt: args.dt,
         skin: args.skin,
@@ -136,7 +142,7 @@ fn run<P: PairPotential>(args: &MdArgs, s: Setup, potential: P) -> Result<Outcom
     let mut interrupted = false;
     let mut full = None;
     for step in 1..=args.steps {
-        if mechkit::simulate::interrupt::requested() {
+        if cancel.is_cancelled() {
             // Ctrl-C: the thermo row of the state reached, then the outputs as usual
             interrupted = true;
             break;

@@ -32,6 +32,8 @@ mod work_field;
 
 use std::fmt::Write as _;
 
+use mechkit::simulate::Cancel;
+
 use crate::args::{Cli, Command};
 
 /// How a command ended, when it did not fail on its input.
@@ -44,10 +46,11 @@ pub enum Outcome {
     Interrupted,
 }
 
-/// Runs the chosen subcommand.
-pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
+/// Runs the chosen subcommand; `cancel` (raised by Ctrl-C) stops the loops of `run`, `sweep`
+/// and `md`.
+pub fn dispatch(cli: Cli, cancel: &Cancel) -> anyhow::Result<Outcome> {
     match cli.command {
-        Command::Run(args) => run::run(&args),
+        Command::Run(args) => run::run(&args, cancel),
         Command::Check(args) => check::check(&args),
         Command::Diff(args) => calculus::diff(&args),
         Command::Integrate(args) => calculus::integrate(&args),
@@ -57,7 +60,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Power(args) => power::power(&args),
         Command::Rocket(args) => rocket::rocket(&args),
         Command::Spin(args) => spin::spin(&args),
-        Command::Md(args) => md::md(&args),
+        Command::Md(args) => md::md(&args, cancel),
         Command::Work(args) => work::work(&args),
         Command::Derive(args) => derive::derive(&args),
         Command::Collide(args) => collide::collide(&args),
@@ -71,7 +74,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<Outcome> {
         Command::Terminal(args) => terminal::terminal(&args),
         Command::Bead(args) => bead::bead(&args),
         Command::RigidCollide(args) => rigid_collide::rigid_collide(&args),
-        Command::Sweep(args) => sweep::sweep(&args),
+        Command::Sweep(args) => sweep::sweep(&args, cancel),
         Command::SweepMerge(args) => sweep::sweep_merge(&args),
         Command::Gallery(args) => gallery::gallery(&args),
         Command::ListIntegrators => {

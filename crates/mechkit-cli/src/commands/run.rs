@@ -5,14 +5,16 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context as _, Result, anyhow, bail};
 use mechkit::ode::Method;
 use mechkit::scenario::{CompareSettings, Scenario, parse_size, write_atomic};
+use mechkit::simulate::Cancel;
 use mechkit::units::{Dimension, Quantity};
 
 use super::{Outcome, print};
 use crate::args::RunArgs;
 use crate::plot;
 
-pub fn run(args: &RunArgs) -> Result<Outcome> {
+pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
     let mut scenario = Scenario::load(&args.file)?;
+    scenario.cancel = cancel.clone();
     if let Some(size) = &args.max_output {
         scenario.max_output = parse_size(size).map_err(|e| anyhow!("--max-output: {e}"))?;
     }

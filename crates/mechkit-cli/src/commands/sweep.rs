@@ -12,6 +12,7 @@ use mechkit::scenario::sweep::{
     Parameter, Sampling, Shard, SweepGrid, SweepOptions, merge_parts, run_sweep,
 };
 use mechkit::scenario::write_atomic;
+use mechkit::simulate::Cancel;
 
 use super::{Outcome, print};
 use crate::args::{SweepArgs, SweepMergeArgs};
@@ -20,7 +21,7 @@ use crate::plot;
 /// Curves labelled in the overlay's legend at most.
 const LEGEND: usize = 10;
 
-pub fn sweep(args: &SweepArgs) -> Result<Outcome> {
+pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
     let params = args
         .set
         .iter()
@@ -58,6 +59,7 @@ pub fn sweep(args: &SweepArgs) -> Result<Outcome> {
         } else {
             Some(args.plot.clone().unwrap_or_default())
         },
+        cancel: cancel.clone(),
     };
     let count = shard.map_or(grid.len(), |s| s.indices(grid.len()).len());
     let bar = if args.quiet || !std::io::stderr().is_terminal() {
@@ -140,9 +142,10 @@ pub fn sweep(args: &SweepArgs) -> Result<Outcome> {
         }
         print(&text)?;
     }
-    if mechkit::simulate::interrupt::requested() {
+    if cancel.is_cancelled() {
         eprintln!(
-            "interrupted: runs cut short have stop_reason `interrupted` in {}",
+            "interrupted: {} of {count} runs in {} (those cut short have stop_reason `interrupted`); the rest were not started",
+            table.rows.len(),
             csv.display()
         );
         return Ok(Outcome::Interrupted);

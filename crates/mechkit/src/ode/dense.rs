@@ -11,6 +11,7 @@
 #![allow(clippy::needless_range_loop)] // component loops over several parallel arrays
 
 use super::adaptive::AdaptiveRk;
+use super::polynomial::StepPolynomial;
 use super::stages::sparse;
 use super::system::OdeSystem;
 use super::tableau::DenseKind;
@@ -70,6 +71,71 @@ impl AdaptiveRk {
                         acc *= if m % 2 == 0 { theta } else { 1.0 - theta };
                     }
                     out[i] = self.last_y0[i] + acc;
+                }
+            }
+        }
+    }
+
+    /// The dense output of the last accepted step as a polynomial per component in the
+    /// fraction of the step (for enclosures: [`StepPolynomial::enclose`]).
+    pub fn dense_polynomial_into<S: OdeSystem + ?Sized>(
+        &mut self,
+        sys: &S,
+        out: &mut StepPolynomial,
+    ) {
+        let h = self.last_h;
+        let n = self.last_y0.len();
+        let s = self.tableau.stages();
+        match &self.tableau.dense {
+            DenseKind::Polynomial(p) => {
+                // y0 + h Σ_l k_l Σ_j p_lj θ^(j+1)
+                let width = 1 + p.iter().map(Vec::len).max().unwrap_or(0);
+                out.reset(self.last_t0, h, n, width);
+                for i in 0..n {
+                    let c = out.coefficients_mut(i);
+                    c[0] = self.last_y0[i];
+                    for (l, row) in p.iter().enumerate() {
+                        let k = self.stages.at(l, i);
+                        for (j, pj) in row.iter().enumerate() {
+                            c[j + 1] += h * pj * k;
+                        }
+                    }
+                }
+            }
+            DenseKind::Hermite => {
+                out.reset(self.last_t0, h, n, 4);
+                for i in 0..n {
+                    out.set_hermite(
+                        i,
+                        (self.last_y0[i], self.stages.at(0, i)),
+                        (self.last_y1[i], self.stages.at(s, i)),
+                    );
+                }
+            }
+            DenseKind::Dop853 => {
+                if !self.dense_ready {
+                    self.prepare_dop853(sys);
+                }
+                out.reset(self.last_t0, h, n, 8);
+                // y0 + θ(F0 + (1-θ)(F1 + θ(F2 + (1-θ)(F3 + θ(F4 + (1-θ)(F5 + θ F6)))))),
+                // expanded from the inside out
+                for i in 0..n {
+                    let mut acc = [0.0; 8];
+                    for m in (0..7).rev() {
+                        acc[0] += self.dense[m * n + i];
+                        // times θ: shift up; times (1 - θ): subtract the shifted copy
+                        let mut shifted = [0.0; 8];
+                        shifted[1..].copy_from_slice(&acc[..7]);
+                        if m % 2 == 0 {
+                            acc = shifted;
+                        } else {
+                            for (a, sh) in acc.iter_mut().zip(shifted) {
+                                *a -= sh;
+                            }
+                        }
+                    }
+                    acc[0] += self.last_y0[i];
+                    out.coefficients_mut(i).copy_from_slice(&acc);
                 }
             }
         }

@@ -4,6 +4,7 @@
 //! Positions and velocities are flat arrays, body after body: `q = [x₀, y₀, x₁, y₁, …]`, and
 //! the state vector of the system is `[q, v]` ([`crate::ode::State`]).
 
+mod enclosure;
 mod kinematics;
 mod names;
 mod sample;
@@ -11,6 +12,7 @@ mod state_expr;
 mod system;
 mod vars;
 
+pub use enclosure::StateJets;
 pub use kinematics::{Kinematics, dot, norm};
 pub use names::NameContext;
 pub use sample::{Evaluation, Sample, SampleKind};

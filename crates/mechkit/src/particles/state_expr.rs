@@ -1,7 +1,10 @@
 //! Formulas compiled against the state names, evaluated on kinematics (inside forces) or on
 //! samples (conditions, observables).
 
+use mechkit_expr::interval::Jet;
 use mechkit_expr::{Program, Val};
+
+use super::enclosure::StateJets;
 
 use super::kinematics::Kinematics;
 use super::sample::Sample;
@@ -106,6 +109,23 @@ impl StateExpr {
             args.push(value);
         }
         Some(e.b().inline(&self.program, &args))
+    }
+
+    /// Encloses the formula and its time derivative over the times of `j` (see
+    /// [`StateJets`]), bare names meaning body `local`; `None` when it reads a quantity that
+    /// cannot be enclosed there (one that depends on the forces).
+    pub fn enclose(&self, j: &StateJets<'_>, local: Option<usize>) -> Option<Jet> {
+        let n = self.vars.len();
+        if n <= INLINE_VARS {
+            let mut slots = [Jet::constant(0.0); INLINE_VARS];
+            for (s, v) in slots.iter_mut().zip(&self.vars) {
+                *s = v.enclose(j, local)?;
+            }
+            Some(self.program.eval_jet(&slots[..n]))
+        } else {
+            let slots: Option<Vec<Jet>> = self.vars.iter().map(|v| v.enclose(j, local)).collect();
+            Some(self.program.eval_jet(&slots?))
+        }
     }
 
     /// Evaluates on kinematics, bare names meaning body `local`.

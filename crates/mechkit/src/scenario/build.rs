@@ -21,7 +21,7 @@ use super::values::{Constant, ValueEnv, scalar, vector};
 use crate::Real;
 use crate::ode::State;
 use crate::particles::{BodyRef, NameContext, ParticleSystem, VarLevel};
-use crate::simulate::Stepping;
+use crate::simulate::{Cancel, Stepping};
 
 const TOP_KEYS: &[&str] = &[
     "title",
@@ -287,6 +287,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         t_max,
         max_steps,
         max_output,
+        cancel: Cancel::new(),
         stop,
         events,
         observables,

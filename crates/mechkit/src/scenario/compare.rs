@@ -171,7 +171,8 @@ impl Scenario {
             };
             let mut sim = Simulation::with_stepping(&self.system, stepping.clone())
                 .t_max(span)
-                .output_interval(interval);
+                .output_interval(interval)
+                .cancel_on(self.cancel.clone());
             if let Some(c) = &self.stop {
                 sim = sim.stop_when(c.clone());
             }

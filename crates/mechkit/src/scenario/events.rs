@@ -81,13 +81,16 @@ pub(crate) fn read_events(
                         .with_hint("write the zero crossing as `function = \"…\"` with `direction`, or drop `direction`"));
                 }
                 let c = condition(t, text, &span, names, "an event")?;
-                let g = c.clone();
-                Event::from_function(Condition::from_fn(
-                    name.clone(),
-                    c.inclusive(),
-                    c.needs_forces(),
-                    move |s, sys| g.value(s, sys),
-                ))
+                let (g, bound) = (c.clone(), c.clone());
+                Event::from_function(
+                    Condition::from_fn(
+                        name.clone(),
+                        c.inclusive(),
+                        c.needs_forces(),
+                        move |s, sys| g.value(s, sys),
+                    )
+                    .with_enclosure(move |j, sys| bound.enclose(j, sys)),
+                )
                 .direction(Direction::Rising)
             }
             (None, Some((text, span))) => {
@@ -107,12 +110,13 @@ pub(crate) fn read_events(
                             })?
                         }
                     };
-                Event::from_function(Condition::from_fn(
-                    name.clone(),
-                    false,
-                    needs,
-                    move |s, sys| g.eval_sample(s, sys.dim(), sys.masses(), None),
-                ))
+                let bound = g.clone();
+                Event::from_function(
+                    Condition::from_fn(name.clone(), false, needs, move |s, sys| {
+                        g.eval_sample(s, sys.dim(), sys.masses(), None)
+                    })
+                    .with_enclosure(move |j, _| bound.enclose(j, None)),
+                )
                 .direction(direction)
             }
         };

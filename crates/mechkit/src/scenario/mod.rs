@@ -86,7 +86,7 @@ use crate::Real;
 use crate::expr::Dim;
 use crate::ode::State;
 use crate::particles::ParticleSystem;
-use crate::simulate::{Condition, Event, Stepping};
+use crate::simulate::{Cancel, Condition, Event, Stepping};
 
 /// A checked, runnable scenario.
 #[derive(Debug)]
@@ -112,6 +112,11 @@ pub struct Scenario {
     /// [`DEFAULT_MAX_OUTPUT`]); the run stops with `output_limit` when the trajectory would
     /// pass it.
     pub max_output: u64,
+    /// Stops its runs (and the comparison's) after their current step, with
+    /// `stop_reason = "interrupted"`, once raised; a new handle, never raised, unless the
+    /// caller gives its own (the command line's Ctrl-C, a sweep's
+    /// [`SweepOptions::cancel`](sweep::SweepOptions::cancel)).
+    pub cancel: Cancel,
     /// Stop condition.
     pub stop: Option<Condition>,
     /// `[[event]]` entries.

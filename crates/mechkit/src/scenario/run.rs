@@ -43,7 +43,8 @@ fn io_error(what: &str, path: &Path, e: &std::io::Error) -> ScenarioError {
 
 impl Scenario {
     fn simulation(&self) -> Simulation<'_> {
-        let mut sim = Simulation::with_stepping(&self.system, self.stepping.clone());
+        let mut sim = Simulation::with_stepping(&self.system, self.stepping.clone())
+            .cancel_on(self.cancel.clone());
         if let Some(t) = self.t_max {
             sim = sim.t_max(t);
         }

@@ -1,5 +1,6 @@
 //! `[stop]`: `t_max`, `max_steps` and the condition `when`, compiled to an event function.
 
+use mechkit_expr::interval::{Interval, Jet};
 use mechkit_expr::units::Dimension;
 use mechkit_expr::{BinOp, Expr, Formula};
 
@@ -105,18 +106,38 @@ pub(crate) fn condition(
                 (lhs, rhs)
             };
             let inclusive = matches!(op, BinOp::Le | BinOp::Ge);
+            let (first_j, second_j) = (first.clone(), second.clone());
             return Ok(Condition::from_fn(text, inclusive, needs, move |s, sys| {
                 let (dim, mass) = (sys.dim(), sys.masses());
                 first.eval_sample(s, dim, mass, None) - second.eval_sample(s, dim, mass, None)
+            })
+            .with_enclosure(move |j, _| {
+                Some(first_j.enclose(j, None)? - second_j.enclose(j, None)?)
             }));
         }
     }
     let needs = !whole.is_kinematic();
+    let whole_j = whole.clone();
     Ok(Condition::from_fn(text, true, needs, move |s, sys| {
         if whole.eval_sample(s, sys.dim(), sys.masses(), None) == 0.0 {
             -1.0
         } else {
             1.0
         }
-    }))
+    })
+    .with_enclosure(move |j, _| Some(truth_jet(whole_j.enclose(j, None)?))))
+}
+
+/// The enclosure of a boolean condition's event function (`-1` where the formula is 0, `1`
+/// elsewhere) from the enclosure of the formula: constant where the formula's truth is
+/// decided, a possible jump (any slope) where it is not.
+fn truth_jet(formula: Jet) -> Jet {
+    let v = formula.v;
+    if v.lo() == 0.0 && v.hi() == 0.0 {
+        Jet::constant(-1.0)
+    } else if !v.contains_zero() {
+        Jet::constant(1.0)
+    } else {
+        Jet::step(Interval::new(-1.0, 1.0))
+    }
 }

@@ -10,6 +10,15 @@ use crate::particles::{ParticleSystem, Sample};
 /// last, is Zeno behaviour: the run stops with a diagnosis.
 pub const ZENO_LIMIT: u32 = 50;
 
+/// Occurrences of an event with a state change this close together, in units in the last
+/// place of the time, are Zeno behaviour at once.
+const ZENO_ULPS: Real = 64.0;
+
+/// The spacing of floating-point numbers at `x` (`x ≥ 0`).
+fn ulp(x: Real) -> Real {
+    x.next_up() - x
+}
+
 /// What to do about Zeno behaviour, at the end of its diagnosis.
 const ZENO_ADVICE: &str = "end the run before that instant (t_max), or add an event that stops or changes the model there (e.g. when the rebound speed falls below a threshold)";
 
@@ -94,14 +103,16 @@ impl EventBook {
             // Zeno: firing again and again within a relative 1e-9 of the time
             let (run, previous) = self.zeno[i];
             let gap = 1e-9 * te.abs().max(scale.abs());
-            // firing again at the very instant of its own last occurrence: the state change
-            // there could not carry the function off zero for any time the run resolves
-            let at_once = te <= previous && e.state_change().is_some();
+            // firing again within a few units in the last place of the time of its own last
+            // occurrence: the state change there could not carry the function off zero for
+            // any time the run resolves (an adaptive step is at least 10 ulps of t)
+            let at_once = e.state_change().is_some()
+                && te <= previous + ZENO_ULPS * ulp(previous.abs().max(te.abs()));
             let run = if te - previous <= gap { run + 1 } else { 0 };
             self.zeno[i] = (run, te);
             let why = if at_once {
                 Some(format!(
-                    "the event `{}` fired again at t = {te} s right after its own state change there (occurrence {count}): its next occurrence came sooner than the run can resolve in time, so its occurrences accumulate at this instant (Zeno behaviour, like a ball bouncing infinitely often before it comes to rest); {ZENO_ADVICE}",
+                    "the event `{}` fired again at t = {te} s right after its own state change there, within {ZENO_ULPS} units in the last place of t (occurrence {count}): its next occurrence came sooner than the run can resolve in time, so its occurrences accumulate at this instant (Zeno behaviour, like a ball bouncing infinitely often before it comes to rest); {ZENO_ADVICE}",
                     e.name()
                 ))
             } else if run >= ZENO_LIMIT {

@@ -4,9 +4,12 @@ use std::fmt;
 use std::sync::Arc;
 
 use crate::Real;
-use crate::particles::{ParticleSystem, Sample};
+use mechkit_expr::interval::Jet;
+
+use crate::particles::{ParticleSystem, Sample, StateJets};
 
 type EventFn = dyn Fn(&Sample<'_>, &ParticleSystem) -> Real + Send + Sync;
+type EncloseFn = dyn Fn(&StateJets<'_>, &ParticleSystem) -> Option<Jet> + Send + Sync;
 
 /// A condition on the state: it holds where its event function `g` is positive (or
 /// non-negative, when inclusive). `g` should be continuous where possible (`x < 0` has
@@ -15,6 +18,7 @@ type EventFn = dyn Fn(&Sample<'_>, &ParticleSystem) -> Real + Send + Sync;
 pub struct Condition {
     description: String,
     g: Arc<EventFn>,
+    enclosure: Option<Arc<EncloseFn>>,
     inclusive: bool,
     needs_forces: bool,
 }
@@ -24,6 +28,7 @@ impl fmt::Debug for Condition {
         f.debug_struct("Condition")
             .field("description", &self.description)
             .field("inclusive", &self.inclusive)
+            .field("provable", &self.enclosure.is_some())
             .finish_non_exhaustive()
     }
 }
@@ -41,9 +46,24 @@ impl Condition {
         Self {
             description: description.into(),
             g: Arc::new(g),
+            enclosure: None,
             inclusive,
             needs_forces,
         }
+    }
+
+    /// The same condition with an enclosure of its event function: `enclose(j, sys)` bounds
+    /// `g` and its time derivative over the times of `j` (or `None` where it cannot), so
+    /// that the run can prove where `g` keeps its sign or is monotone inside a step and
+    /// never miss a sign change ([`crate::simulate`]'s event guarantee). Without one, `g` is
+    /// sampled.
+    #[must_use]
+    pub fn with_enclosure(
+        mut self,
+        enclose: impl Fn(&StateJets<'_>, &ParticleSystem) -> Option<Jet> + Send + Sync + 'static,
+    ) -> Self {
+        self.enclosure = Some(Arc::new(enclose));
+        self
     }
 
     /// Coordinate `axis` of body `body` below `level`.
@@ -54,6 +74,7 @@ impl Condition {
             false,
             move |s, sys| level - s.q[body * sys.dim() + axis],
         )
+        .with_enclosure(move |j, _| Some(Jet::constant(level) - j.position(body, axis)))
     }
 
     /// Coordinate `axis` of body `body` above `level`.
@@ -64,6 +85,18 @@ impl Condition {
             false,
             move |s, sys| s.q[body * sys.dim() + axis] - level,
         )
+        .with_enclosure(move |j, _| Some(j.position(body, axis) - Jet::constant(level)))
+    }
+
+    /// Encloses the event function and its time derivative over the times of `j`, when the
+    /// condition can.
+    pub fn enclose(&self, j: &StateJets<'_>, sys: &ParticleSystem) -> Option<Jet> {
+        self.enclosure.as_ref().and_then(|f| f(j, sys))
+    }
+
+    /// Whether the event function can be enclosed.
+    pub fn is_provable(&self) -> bool {
+        self.enclosure.is_some()
     }
 
     /// What it tests, for reports.

@@ -9,6 +9,7 @@ use super::fused::{Fused, MIN_CHUNK, chunk_len};
 use super::halt::stop_before_step;
 use super::observe::Observer;
 use super::probe::{Grid, Probe, Step, emit, event_values};
+use super::prove::{Prover, Proving};
 use super::rearm::{sides_after_change, values_ahead};
 use super::report::{Divergence, RunReport, SimulateError, StopReason};
 use super::run::{Simulation, sample_of};
@@ -127,6 +128,8 @@ pub(super) fn drive(
     let mut g_scan = Vec::with_capacity(m);
     let mut sides_scan = Vec::with_capacity(m);
     let mut scan_buffers = ScanBuffers::default();
+    let mut prover = Prover::default();
+    let mut scan_points: Vec<Real> = Vec::new();
     let mut step_scale = Real::NAN;
     let mut fused = Fused::for_run(sim, &stepping, t0, planned.unwrap_or(limit), grid.is_some());
     let mut fused_steps: u64 = 0;
@@ -253,13 +256,29 @@ pub(super) fn drive(
             event_values(events, &at_b, sys, &mut g_b);
         }
 
-        // events, in time order, sampled as densely as the densest demand
-        let step_interior = events.iter().fold(interior, |n, e| {
-            n.max(
-                e.samples_needed(&ends.y0, &state.y, t_b - t_a)
-                    .min(MAX_INTERIOR),
-            )
-        });
+        // events, in time order, at the points that prove no sign change is missed (and as
+        // densely as contacts ask)
+        if book.enabled.iter().any(|e| *e) {
+            let extra = events.iter().fold(0, |n, e| {
+                n.max(
+                    e.samples_needed(&ends.y0, &state.y, t_b - t_a)
+                        .min(MAX_INTERIOR),
+                )
+            });
+            if events.iter().any(|e| e.condition().is_provable()) {
+                engine.step_polynomial(&ws, &ends, &mut prover.poly);
+            } else {
+                prover.poly.reset(t_a, t_b - t_a, 0, 1);
+            }
+            let proving = Proving {
+                events,
+                enabled: &book.enabled,
+                sys,
+                work: matches!(engine, Engine::Adaptive { .. }),
+                default_interior: interior,
+            };
+            prover.points(&proving, extra, &mut scan_points, &mut warnings);
+        }
         let mut t_scan = t_a;
         g_scan.clone_from(&g_a);
         sides_scan.clone_from(&sides);
@@ -292,7 +311,7 @@ pub(super) fn drive(
                     &mut sides_scan,
                     (t_scan, &g_scan),
                     (t_b, &g_b),
-                    step_interior,
+                    &scan_points,
                     &mut values,
                     &mut scan_buffers,
                 )

@@ -31,8 +31,8 @@ use super::stepping::Stepping;
 /// millisecond; a run this short takes about as long in the general loop).
 pub(super) const FUSE_MIN_STEPS: u64 = 20_000;
 
-/// At most this many steps per chunk, so that an interrupt (Ctrl-C) is seen within tens of
-/// milliseconds.
+/// At most this many steps per chunk, so that a raised [`Cancel`](super::Cancel) (Ctrl-C) is
+/// seen within tens of milliseconds.
 pub(super) const MAX_CHUNK: u64 = 1 << 22;
 
 /// Fewer silent steps than this before the next wanted sample are left to the general loop.

@@ -1,5 +1,5 @@
-//! Why a run stops before its next step: Ctrl-C, an observer that can take no more, `t_max`,
-//! or the step budget (with what to say about it).
+//! Why a run stops before its next step: its [`Cancel`](super::Cancel) raised (Ctrl-C), an
+//! observer that can take no more, `t_max`, or the step budget (with what to say about it).
 
 use super::event::Event;
 use super::observe::Observer;
@@ -18,7 +18,7 @@ pub(crate) fn stop_before_step(
     limit: u64,
     warnings: &mut Vec<String>,
 ) -> Option<StopReason> {
-    if super::interrupt::requested() {
+    if sim.cancel.as_ref().is_some_and(super::Cancel::is_cancelled) {
         warnings.push(format!(
             "interrupted at t = {t} s after {steps} steps; the outputs hold everything up to there"
         ));

@@ -10,15 +10,16 @@
 //! the refined answer sit side by side.
 
 mod book;
+mod cancel;
 mod condition;
 mod diagnose;
 mod drive;
 mod event;
 mod fused;
 mod halt;
-pub mod interrupt;
 mod observe;
 mod probe;
+mod prove;
 mod rearm;
 mod reduce;
 mod report;
@@ -27,6 +28,7 @@ mod scan;
 mod stepping;
 
 pub use book::ZENO_LIMIT;
+pub use cancel::Cancel;
 pub use condition::Condition;
 pub use event::{Direction, Event, EventAction};
 pub use observe::{Observer, ObserverError, Recorder};

@@ -26,7 +26,8 @@ pub enum StopReason {
     StepTooSmall,
     /// An event fired again and again at practically the same time (Zeno behaviour).
     Zeno,
-    /// A stop was asked for from outside ([`interrupt`](super::interrupt): Ctrl-C).
+    /// A stop was asked for from outside: the run's [`Cancel`](super::Cancel) was raised (by
+    /// Ctrl-C, another thread).
     Interrupted,
     /// An observer could take no more: an output file reached its size limit
     /// ([`Observer::halt`](super::Observer::halt)).

@@ -1,5 +1,6 @@
 //! A configured run: the system, how it steps, when it ends, its events and output times.
 
+use super::cancel::Cancel;
 use super::condition::Condition;
 use super::diagnose::coordinate_name;
 use super::event::Event;
@@ -48,6 +49,7 @@ pub struct Simulation<'a> {
     pub(crate) times: Option<Vec<Real>>,
     pub(crate) max_outputs: Option<u64>,
     pub(crate) fuse: Option<bool>,
+    pub(crate) cancel: Option<Cancel>,
 }
 
 impl<'a> Simulation<'a> {
@@ -74,6 +76,7 @@ impl<'a> Simulation<'a> {
             times: None,
             max_outputs: None,
             fuse: None,
+            cancel: None,
         }
     }
 
@@ -142,6 +145,15 @@ impl<'a> Simulation<'a> {
     #[must_use]
     pub fn fuse(mut self, on: bool) -> Self {
         self.fuse = Some(on);
+        self
+    }
+
+    /// Stops after the current step, with [`StopReason::Interrupted`](super::StopReason), once
+    /// `cancel` (or a clone of it) is raised; the outputs are finished as for any other end.
+    /// Without a handle the run cannot be stopped from outside.
+    #[must_use]
+    pub fn cancel_on(mut self, cancel: Cancel) -> Self {
+        self.cancel = Some(cancel);
         self
     }
 

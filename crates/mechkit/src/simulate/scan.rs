@@ -1,6 +1,7 @@
-//! Finding the first event firing inside a step: the event functions are sampled at the ends
-//! and at interior points of the step's interpolant, and the first sign change in the
-//! direction of an event is located by Brent's method.
+//! Finding the first event firing inside a step: the event functions are evaluated at the
+//! ends and at interior points of the step's interpolant (the points [`super::prove`] has
+//! shown to be enough), and the first sign change in the direction of an event is located
+//! by Brent's method.
 
 use super::event::{Event, Side};
 use crate::Real;
@@ -28,7 +29,8 @@ pub(crate) struct ScanBuffers {
 }
 
 /// Scans `(t_a, t_b]`: `sides` are the events' sides at `t_a`, `g_a`/`g_b` their values at the
-/// ends (NaN where unknown), `interior` the number of interior sample points, and
+/// ends (NaN where unknown), `points` the interior sample times (sorted; those outside
+/// `(t_a, t_b)` are skipped), and
 /// `values(t, out)` evaluates every event function at `t` on the interpolant. Disabled events
 /// never fire. `sides` follows the scan: the sides at `t_b` when nothing fires (`None`), at
 /// the last sample point before the firing otherwise.
@@ -39,7 +41,7 @@ pub(crate) fn scan(
     sides: &mut [Side],
     (t_a, g_a): (Real, &[Real]),
     (t_b, g_b): (Real, &[Real]),
-    interior: usize,
+    points: &[Real],
     values: &mut dyn FnMut(Real, &mut [Real]),
     buffers: &mut ScanBuffers,
 ) -> Option<Fired> {
@@ -52,14 +54,9 @@ pub(crate) fn scan(
     vals.clear();
     vals.resize(m, Real::NAN);
     let mut t_prev = t_a;
-    let parts = interior + 1;
-    for j in 1..=parts {
-        let t_j = if j == parts {
-            t_b
-        } else {
-            t_a + (t_b - t_a) * j as Real / parts as Real
-        };
-        if j == parts {
+    let inside = points.iter().copied().filter(|t| *t > t_a && *t < t_b);
+    for t_j in inside.chain(std::iter::once(t_b)) {
+        if t_j == t_b {
             vals.copy_from_slice(g_b);
         } else {
             values(t_j, vals);
@@ -193,7 +190,14 @@ mod tests {
     use super::*;
     use crate::simulate::Direction;
 
+    fn even(interior: usize) -> Vec<Real> {
+        (1..=interior)
+            .map(|j| j as Real / (interior + 1) as Real)
+            .collect()
+    }
+
     fn run(f: impl Fn(Real) -> Real, d: Direction, interior: usize) -> Vec<Real> {
+        let points = even(interior);
         let events = [Event::new("g", |_, _| 0.0).direction(d)];
         let (t_a, t_b) = (0.0, 1.0);
         let mut sides = vec![events[0].initial_side(f(t_a))];
@@ -208,7 +212,7 @@ mod tests {
                 &mut sides,
                 (t, &[f(t)]),
                 (t_b, &[f(t_b)]),
-                interior,
+                &points,
                 &mut values,
                 &mut buffers,
             );
@@ -254,7 +258,7 @@ mod tests {
             &mut sides,
             (0.0, &[f(0.0)]),
             (1.0, &[f(1.0)]),
-            7,
+            &even(7),
             &mut values,
             &mut ScanBuffers::default(),
         )

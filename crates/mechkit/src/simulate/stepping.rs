@@ -7,7 +7,7 @@ use super::run::{DEFAULT_MAX_STEPS, Simulation};
 use crate::Real;
 use crate::ode::{
     AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, Method, MethodKind, OdeSystem, State,
-    Stepper, hermite,
+    StepPolynomial, Stepper, hermite,
 };
 use crate::particles::{Evaluation, ParticleSystem};
 
@@ -244,6 +244,38 @@ impl Engine {
                 work.extend_from_slice(&buf[n2..]);
                 true
             }
+        }
+    }
+}
+
+impl Engine {
+    /// The interpolant of the last step as a polynomial per component (`[q, v]`, then the
+    /// work of each force in adaptive runs), the same interpolant [`Engine::interpolate`]
+    /// reads, for enclosures of the motion inside the step.
+    pub fn step_polynomial(
+        &mut self,
+        ws: &WorkSystem<'_>,
+        ends: &StepEnds,
+        out: &mut StepPolynomial,
+    ) {
+        match self {
+            Engine::Fixed { .. } => {
+                let n = ends.y0.len() / 2;
+                out.reset(ends.t0, ends.t1 - ends.t0, 2 * n, 4);
+                for i in 0..n {
+                    out.set_hermite(
+                        i,
+                        (ends.y0[i], ends.y0[n + i]),
+                        (ends.y1[i], ends.y1[n + i]),
+                    );
+                    out.set_hermite(
+                        n + i,
+                        (ends.y0[n + i], ends.a0[i]),
+                        (ends.y1[n + i], ends.a1[i]),
+                    );
+                }
+            }
+            Engine::Adaptive { rk, .. } => rk.dense_polynomial_into(ws, out),
         }
     }
 }

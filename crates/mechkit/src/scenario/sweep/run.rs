@@ -9,15 +9,19 @@ use crate::figure::PlotData;
 use crate::particles::{BodyRef, NameContext, VarLevel};
 use crate::scenario::build::build_with;
 use crate::scenario::{PlotSpec, Scenario};
+use crate::simulate::Cancel;
 
 /// What to run and keep besides the summary rows.
-#[derive(Debug, Clone, Default, PartialEq)]
+#[derive(Debug, Clone, Default)]
 pub struct SweepOptions {
     /// Only this slice of the runs.
     pub shard: Option<Shard>,
     /// A plot to record in every run for the overlay, e.g. `v(x)`; `Some("")` means the
     /// scenario's first plot, if it has one.
     pub plot: Option<String>,
+    /// Stops the sweep once raised: the runs in flight end with `stop_reason =
+    /// "interrupted"`, and the runs not started yet are not started (they have no row).
+    pub cancel: Cancel,
 }
 
 /// One run's summary.
@@ -52,7 +56,9 @@ pub struct SweepRow {
 /// worker threads), e.g. to advance a progress bar. Runs go to rayon's current thread pool.
 ///
 /// A run that fails numerically (diverges) is a row with its `stop_reason`; a point whose
-/// values make the scenario invalid (a negative mass) is an error naming the run.
+/// values make the scenario invalid (a negative mass) is an error naming the run. Once
+/// [`SweepOptions::cancel`] is raised, the runs in flight stop (`interrupted`) and no other
+/// run starts: the table then holds fewer rows than runs.
 pub fn run_sweep(
     name: &str,
     text: &str,
@@ -95,6 +101,7 @@ pub fn run_sweep(
         };
         let mut scenario = build_with(name, text, &overrides(i)).map_err(fail)?;
         scenario.plots = spec.iter().cloned().collect();
+        scenario.cancel = options.cancel.clone();
         let out = scenario.run().map_err(fail)?;
         let s = &out.summary;
         let row = SweepRow {
@@ -117,7 +124,12 @@ pub fn run_sweep(
         on_done();
         Ok(row)
     };
-    let results: Vec<Result<SweepRow, SweepError>> = indices.par_iter().map(|&i| one(i)).collect();
+    // each run looks at the handle just before it starts
+    let results: Vec<Result<SweepRow, SweepError>> = indices
+        .par_iter()
+        .filter(|_| !options.cancel.is_cancelled())
+        .map(|&i| one(i))
+        .collect();
     let rows = results.into_iter().collect::<Result<Vec<_>, _>>()?;
     Ok(SweepTable {
         manifest: super::table::manifest(name, text, grid),

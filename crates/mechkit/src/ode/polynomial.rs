@@ -1,0 +1,208 @@
+//! The interpolant of one step as a polynomial per component, for proofs about the motion
+//! inside the step.
+//!
+//! Every dense output in [`crate::ode`] is a polynomial in the fraction of the step
+//! `s = (t - t₀)/h ∈ [0, 1]`: Hermite's cubic, Shampine's quartic for Dormand-Prince 5(4),
+//! the cubic of Bogacki-Shampine, Hairer's degree-7 interpolant of DOP853. A
+//! [`StepPolynomial`] holds the monomial coefficients `y_i(s) = Σ_j c_ij s^j` of each
+//! component, so that the component and its time derivative can be *enclosed* over any range
+//! of `s` by interval arithmetic ([`StepPolynomial::enclose`]):
+//!
+//! - the value by the mean-value form `y(S) ⊂ y(m) + y'(S)·(S − m)` (`m` the midpoint of `S`),
+//!   intersected with Horner's scheme on `S`: the overestimate shrinks with the square of the
+//!   width, so halving a range quickly gives tight bounds;
+//! - the time derivative `dy/dt = y'(s)/h` the same way from `y''`.
+//!
+//! The coefficients are computed in floating point from the method's stages, so the
+//! polynomial equals the method's dense output to rounding.
+
+use mechkit_expr::interval::{Interval, Jet};
+
+use crate::Real;
+
+/// Most coefficients per component (DOP853's interpolant has degree 7).
+pub const MAX_COEFFICIENTS: usize = 8;
+
+/// The interpolant of one step: `y_i(t₀ + s h) = Σ_j c_ij s^j` for `s ∈ [0, 1]`.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct StepPolynomial {
+    /// Start of the step (s).
+    pub t0: Real,
+    /// Length of the step (s).
+    pub h: Real,
+    /// Coefficients per component (`degree + 1`).
+    width: usize,
+    /// `coeffs[i * width + j] = c_ij`.
+    coeffs: Vec<Real>,
+}
+
+impl StepPolynomial {
+    /// Makes room for `n` components of `width` coefficients (all zero) over the step from
+    /// `t0` of length `h`.
+    pub fn reset(&mut self, t0: Real, h: Real, n: usize, width: usize) {
+        assert!(
+            (1..=MAX_COEFFICIENTS).contains(&width),
+            "a step polynomial has 1 to {MAX_COEFFICIENTS} coefficients, not {width}"
+        );
+        self.t0 = t0;
+        self.h = h;
+        self.width = width;
+        self.coeffs.clear();
+        self.coeffs.resize(n * width, 0.0);
+    }
+
+    /// Number of components.
+    pub fn len(&self) -> usize {
+        self.coeffs.len().checked_div(self.width).unwrap_or(0)
+    }
+
+    /// Whether it has no components.
+    pub fn is_empty(&self) -> bool {
+        self.coeffs.is_empty()
+    }
+
+    /// The coefficients of component `i`, lowest power first.
+    pub fn coefficients(&self, i: usize) -> &[Real] {
+        &self.coeffs[i * self.width..(i + 1) * self.width]
+    }
+
+    /// The coefficients of component `i`, to fill.
+    pub fn coefficients_mut(&mut self, i: usize) -> &mut [Real] {
+        &mut self.coeffs[i * self.width..(i + 1) * self.width]
+    }
+
+    /// Sets component `i` to the cubic Hermite interpolant with values `y0`, `y1` and time
+    /// derivatives `d0`, `d1` at the ends (see [`super::hermite`]).
+    pub fn set_hermite(&mut self, i: usize, (y0, d0): (Real, Real), (y1, d1): (Real, Real)) {
+        let h = self.h;
+        let c = self.coefficients_mut(i);
+        c.fill(0.0);
+        c[0] = y0;
+        c[1] = h * d0;
+        c[2] = -3.0 * y0 - 2.0 * h * d0 + 3.0 * y1 - h * d1;
+        c[3] = 2.0 * y0 + h * d0 - 2.0 * y1 + h * d1;
+    }
+
+    /// The fraction of the step at time `t`.
+    pub fn fraction(&self, t: Real) -> Real {
+        if self.h == 0.0 {
+            1.0
+        } else {
+            (t - self.t0) / self.h
+        }
+    }
+
+    /// The value of component `i` at the fraction `s` of the step.
+    pub fn value(&self, i: usize, s: Real) -> Real {
+        self.coefficients(i)
+            .iter()
+            .rev()
+            .fold(0.0, |acc, c| acc * s + c)
+    }
+
+    /// Encloses component `i` and its time derivative over the fractions `s` of the step.
+    ///
+    /// The polynomial is re-expanded about the midpoint `m` of `S` (a Taylor shift,
+    /// `y(m + δ) = Σ_k b_k δ^k`), so with `r` the half-width of `S` the value lies within
+    /// `Σ_{k≥1} |b_k| r^k` of `b_0` and the slope within `Σ_{k≥2} k |b_k| r^(k-1)` of `b_1`:
+    /// the mean-value form, whose overestimate shrinks with the square of the width. The
+    /// arithmetic is plain floating point; its rounding is bounded a priori (every `b_k` is
+    /// a sum of at most 8 terms each at most `|c_j| (1 + |m|)^j`, formed in at most 16
+    /// roundings) and added to both radii, so the enclosures are rigorous.
+    pub fn enclose(&self, i: usize, s: Interval) -> Jet {
+        let c = self.coefficients(i);
+        let n = c.len();
+        let m = s.mid();
+        let r = (s.hi() - m).max(m - s.lo()).next_up();
+        let mut b = [0.0; MAX_COEFFICIENTS];
+        b[..n].copy_from_slice(c);
+        // Taylor shift to m: repeated synthetic division by (x - m)
+        for k in 0..n {
+            for j in (k..n - 1).rev() {
+                b[j] = b[j + 1].mul_add(m, b[j]);
+            }
+        }
+        // a priori bound on the rounding of every b_k
+        let grow = 1.0 + m.abs();
+        let mut scale = 0.0;
+        let mut power = 1.0;
+        for cj in c {
+            scale += cj.abs() * power;
+            power *= grow;
+        }
+        let unit = Real::EPSILON * 0.5;
+        let err = 2.0 * (2 * n) as Real * unit * scale * 1.01;
+        // radii of the value and of the slope (d/ds), with the rounding of each b_k
+        let (mut r0, mut r1) = (0.0, 0.0);
+        let mut rpow = 1.0; // r^(k-1) at the top of iteration k
+        for (k, bk) in b.iter().enumerate().take(n).skip(1) {
+            let bk = bk.abs() + err;
+            if k >= 2 {
+                r1 += k as Real * bk * rpow;
+            }
+            rpow *= r;
+            r0 += bk * rpow;
+        }
+        let (e0, e1) = (err, err);
+        // the sums themselves round: a relative margin of n ulps covers them
+        let margin = 1.0 + 4.0 * (n as Real) * Real::EPSILON;
+        let value = widen(b[0], (r0 + e0) * margin);
+        let slope = widen(if n > 1 { b[1] } else { 0.0 }, (r1 + e1) * margin);
+        let per_time = if self.h == 0.0 {
+            Interval::point(0.0)
+        } else {
+            slope / Interval::point(self.h)
+        };
+        Jet::new(value, per_time)
+    }
+}
+
+/// `[x - radius, x + radius]`, rounded outwards (unknown when anything is not finite).
+fn widen(x: Real, radius: Real) -> Interval {
+    let (lo, hi) = ((x - radius).next_down(), (x + radius).next_up());
+    if lo.is_finite() && hi.is_finite() {
+        Interval::new(lo, hi)
+    } else {
+        Interval::ENTIRE
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hermite_coefficients_reproduce_the_interpolant() {
+        let mut p = StepPolynomial::default();
+        p.reset(1.0, 0.5, 1, 4);
+        p.set_hermite(0, (0.3, -1.2), (0.9, 2.5));
+        for s in [0.0, 0.2, 0.5, 0.77, 1.0] {
+            let want = super::super::hermite(0.3, -1.2, 0.9, 2.5, 0.5, s);
+            assert!((p.value(0, s) - want).abs() < 1e-15, "{s}");
+        }
+    }
+
+    #[test]
+    fn enclosures_hold_values_and_derivatives() {
+        let mut p = StepPolynomial::default();
+        p.reset(0.0, 2.0, 1, 6);
+        p.coefficients_mut(0)
+            .copy_from_slice(&[0.1, -3.0, 7.5, -2.0, -4.0, 1.25]);
+        let exact = |s: Real| {
+            0.1 - 3.0 * s + 7.5 * s * s - 2.0 * s.powi(3) - 4.0 * s.powi(4) + 1.25 * s.powi(5)
+        };
+        let slope =
+            |s: Real| (-3.0 + 15.0 * s - 6.0 * s * s - 16.0 * s.powi(3) + 6.25 * s.powi(4)) * 0.5;
+        for (a, b) in [(0.0, 1.0), (0.1, 0.3), (0.45, 0.4501), (0.9, 1.0)] {
+            let jet = p.enclose(0, Interval::new(a, b));
+            for k in 0..=20 {
+                let s = a + (b - a) * Real::from(k) / 20.0;
+                assert!(jet.v.contains(exact(s)), "{s}: {jet:?}");
+                assert!(jet.d.contains(slope(s)), "{s}: {jet:?}");
+            }
+        }
+        // tight on narrow ranges: the mean-value form
+        let narrow = p.enclose(0, Interval::new(0.5, 0.5 + 1e-6));
+        assert!(narrow.v.width() < 1e-5);
+    }
+}

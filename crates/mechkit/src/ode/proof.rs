@@ -1,0 +1,179 @@
+//! Proven pieces of a step: where a function of the motion cannot change sign, or can change
+//! sign at most once, inside one step. The ground of the event guarantee.
+//!
+//! Given an enclosure `G(S)` of a function `g` and of its time derivative over any range `S`
+//! of the fraction `s ∈ [0, 1]` of a step (from interval arithmetic on the step's
+//! [`StepPolynomial`](super::StepPolynomial) and on the function's formula), the step is
+//! halved into pieces until each is
+//!
+//! - **sign-definite**: `G(S)` excludes 0, so `g` has no zero there;
+//! - **monotone**: the enclosure of `dg/dt` excludes 0, so `g` has at most one zero there,
+//!   and it changes sign between the piece's ends exactly when it has one; or
+//! - **at rounding level**: the piece cannot be halved in floating point, or its enclosure is
+//!   no wider than the rounding of `g` at one point.
+//!
+//! Sampling `g` at the ends of every piece that is not sign-definite then shows every sign
+//! change of odd multiplicity of `g` along the interpolant as a sign change between two
+//! consecutive samples, however short the excursion and however many per step.
+
+use mechkit_expr::interval::{Interval, Jet};
+
+use crate::Real;
+
+/// Most enclosures of one function in one step before the proof gives up.
+pub const MAX_BOUNDS: usize = 2_000;
+
+/// Halvings after which a piece is tested for being at rounding level.
+const ROUNDING_DEPTH: u32 = 30;
+
+/// What a piece of the step was proven to be.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Piece {
+    /// `g > 0` (`true`) or `g < 0` (`false`) throughout.
+    Definite(bool),
+    /// Monotone, or at rounding level: its ends must be sampled.
+    Open,
+}
+
+/// How a proof ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ProofOutcome {
+    /// The step is cut into proven pieces.
+    Proven,
+    /// More than [`MAX_BOUNDS`] enclosures were needed: sample the function instead.
+    OutOfBounds,
+    /// The function cannot be enclosed (it reads something the interpolant does not carry).
+    NotBounded,
+}
+
+/// The pieces of one step for one function, with reused buffers.
+#[derive(Debug, Clone, Default)]
+pub struct StepProof {
+    stack: Vec<(Real, Real, u32)>,
+    /// `(s_start, s_end, piece)`, in time order, covering `[0, 1]`.
+    pieces: Vec<(Real, Real, Piece)>,
+}
+
+impl StepProof {
+    /// Cuts the step from `t0` of length `h` into proven pieces of the function that
+    /// `enclose(S)` bounds over the fractions `S` of the step (`None`: it cannot).
+    pub fn cut(
+        &mut self,
+        t0: Real,
+        h: Real,
+        enclose: &mut dyn FnMut(Interval) -> Option<Jet>,
+    ) -> ProofOutcome {
+        self.pieces.clear();
+        self.stack.clear();
+        self.stack.push((0.0, 1.0, 0));
+        let mut bounds = 0;
+        while let Some((a, b, depth)) = self.stack.pop() {
+            bounds += 1;
+            if bounds > MAX_BOUNDS {
+                return ProofOutcome::OutOfBounds;
+            }
+            let Some(jet) = enclose(Interval::new(a, b)) else {
+                return ProofOutcome::NotBounded;
+            };
+            let piece = if jet.v.is_positive() {
+                Piece::Definite(true)
+            } else if jet.v.is_negative() {
+                Piece::Definite(false)
+            } else if jet.is_increasing() || jet.is_decreasing() {
+                Piece::Open
+            } else {
+                let mid = 0.5 * (a + b);
+                let (ta, tm, tb) = (t0 + a * h, t0 + mid * h, t0 + b * h);
+                let unsplittable = !(ta < tm && tm < tb) || mid <= a || mid >= b;
+                let at_rounding = depth >= ROUNDING_DEPTH && {
+                    bounds += 1;
+                    enclose(Interval::point(mid))
+                        .is_some_and(|point| jet.v.width() <= 4.0 * point.v.width())
+                };
+                if unsplittable || at_rounding {
+                    Piece::Open
+                } else {
+                    self.stack.push((mid, b, depth + 1));
+                    self.stack.push((a, mid, depth + 1));
+                    continue;
+                }
+            };
+            self.pieces.push((a, b, piece));
+        }
+        ProofOutcome::Proven
+    }
+
+    /// The pieces of the last proof, in time order.
+    pub fn pieces(&self) -> &[(Real, Real, Piece)] {
+        &self.pieces
+    }
+
+    /// Appends the fractions of the step strictly inside it at which the function must be
+    /// sampled: the boundaries next to a piece that is not sign-definite (or between
+    /// sign-definite pieces of opposite signs, where the function jumps).
+    pub fn sample_fractions_into(&self, out: &mut Vec<Real>) {
+        for w in self.pieces.windows(2) {
+            let keep = match (w[0].2, w[1].2) {
+                (Piece::Definite(a), Piece::Definite(b)) => a != b,
+                _ => true,
+            };
+            if keep {
+                out.push(w[0].1);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `g(s) = (s - 0.3)(s - 0.3 - 1e-9)(s - 0.8)` as a jet over `S` (time = fraction).
+    fn cubic(s: Interval) -> Jet {
+        let x = Jet::variable(s);
+        let f = |r: Real| x - Jet::constant(r);
+        f(0.3) * f(0.3 + 1e-9) * f(0.8)
+    }
+
+    #[test]
+    fn roots_a_billionth_apart_are_separated() {
+        let mut proof = StepProof::default();
+        assert_eq!(
+            proof.cut(0.0, 1.0, &mut |s| Some(cubic(s))),
+            ProofOutcome::Proven
+        );
+        let mut s = Vec::new();
+        proof.sample_fractions_into(&mut s);
+        let g = |s: Real| (s - 0.3) * (s - 0.3 - 1e-9) * (s - 0.8);
+        let mut points = vec![0.0];
+        points.extend(&s);
+        points.push(1.0);
+        let changes = points
+            .windows(2)
+            .filter(|w| g(w[0]) * g(w[1]) < 0.0)
+            .count();
+        assert_eq!(changes, 3, "{points:?}");
+    }
+
+    #[test]
+    fn a_function_without_bounds_is_reported() {
+        let mut proof = StepProof::default();
+        assert_eq!(proof.cut(0.0, 1.0, &mut |_| None), ProofOutcome::NotBounded);
+        assert_eq!(
+            proof.cut(0.0, 1.0, &mut |s| Some(if s.hi() < 0.5 {
+                Jet::constant(-1.0)
+            } else if s.lo() > 0.5 {
+                Jet::constant(1.0)
+            } else {
+                Jet::step(Interval::new(-1.0, 1.0))
+            })),
+            ProofOutcome::Proven,
+            "a jump at rounding level ends the halving"
+        );
+        let wild = |s: Interval| Jet::variable(s * Interval::point(1e5)).sin();
+        assert_eq!(
+            proof.cut(0.0, 1.0, &mut |s| Some(wild(s))),
+            ProofOutcome::OutOfBounds
+        );
+    }
+}

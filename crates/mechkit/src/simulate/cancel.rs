@@ -1,0 +1,92 @@
+//! Stopping a run from outside: a [`Cancel`] handle, one per run (or per sweep, or per
+//! process for the command line), that another thread or a signal handler raises. A run
+//! given one ([`Simulation::cancel_on`](super::Simulation::cancel_on)) looks at it before
+//! every step and stops cleanly with [`StopReason::Interrupted`](super::StopReason::Interrupted):
+//! the samples so far have reached the observers, the report is complete up to the last step,
+//! and output files are finished as for any other stop. Raising one handle stops only the runs
+//! that hold it (or a clone of it).
+
+use std::fmt;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// A request to stop, shared by its clones: raising any clone raises them all.
+///
+/// # Example
+/// ```
+/// use mechkit::prelude::*;
+/// use mechkit::simulate::Cancel;
+/// # let system = ParticleSystem::builder(1)
+/// #     .body("ball", 1.0)
+/// #     .force(UniformGravity::new("gravity", vec![0], 9.81))
+/// #     .build()
+/// #     .unwrap();
+/// let cancel = Cancel::new();
+/// let run = Simulation::new(&system, Method::EulerCromer, 1e-3)
+///     .t_max(10.0)
+///     .cancel_on(cancel.clone());
+/// // another thread (or a Ctrl-C handler) raises its clone
+/// let other = cancel.clone();
+/// std::thread::spawn(move || other.cancel()).join().unwrap();
+/// assert!(cancel.is_cancelled());
+/// let report = run.run(State::from_qv(0.0, &[0.0], &[0.0]), &mut []).unwrap();
+/// assert_eq!(report.stop_reason, StopReason::Interrupted);
+/// assert_eq!(report.steps, 0);
+/// // a run without the handle goes to its end
+/// let free = Simulation::new(&system, Method::EulerCromer, 1e-3).t_max(10.0);
+/// let report = free.run(State::from_qv(0.0, &[0.0], &[0.0]), &mut []).unwrap();
+/// assert_eq!(report.stop_reason, StopReason::TMax);
+/// ```
+#[derive(Clone, Default)]
+pub struct Cancel(Arc<AtomicBool>);
+
+impl Cancel {
+    /// A handle not yet raised.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Asks the runs holding this handle to stop after their current step.
+    pub fn cancel(&self) {
+        self.0.store(true, Ordering::Relaxed);
+    }
+
+    /// Whether a stop was asked for.
+    #[inline]
+    pub fn is_cancelled(&self) -> bool {
+        self.0.load(Ordering::Relaxed)
+    }
+
+    /// The flag itself, for a signal handler to raise (`signal_hook::flag::register`).
+    pub fn flag(&self) -> Arc<AtomicBool> {
+        Arc::clone(&self.0)
+    }
+}
+
+impl fmt::Debug for Cancel {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Cancel")
+            .field("cancelled", &self.is_cancelled())
+            .finish()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn clones_share_the_request_and_others_do_not() {
+        let a = Cancel::new();
+        let b = a.clone();
+        let other = Cancel::new();
+        assert!(!b.is_cancelled());
+        a.cancel();
+        assert!(b.is_cancelled());
+        assert!(!other.is_cancelled());
+        // what a signal handler stores through the flag is seen by the handle
+        other.flag().store(true, Ordering::Relaxed);
+        assert!(other.is_cancelled());
+        assert_eq!(format!("{a:?}"), "Cancel { cancelled: true }");
+    }
+}
