@@ -135,6 +135,15 @@ fn kepler(how: Events) -> usize {
 }
 
 fn main() {
+    if let Ok(only) = std::env::var("EVENTS_PROFILE") {
+        for _ in 0..300 {
+            black_box(match only.as_str() {
+                "ball" => bouncing_ball(Events::Proven),
+                _ => kepler(Events::Proven),
+            });
+        }
+        return;
+    }
     println!(
         "| run | no events | no events, general loop | proven events | sampled events (7 per step) |"
     );
