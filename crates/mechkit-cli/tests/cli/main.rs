@@ -40,6 +40,7 @@ mod friction;
 mod gallery;
 mod interrupt;
 mod issue_011;
+mod issue_021;
 mod limits;
 mod mass;
 mod md;
