@@ -153,7 +153,10 @@ impl StepPolynomial {
         } else {
             // dy/dt = (dy/ds)/h: the quotient rounds once more (the margin's extra ulps)
             let inv = 1.0 / self.h;
-            widen(slope * inv, (r1 + e1) * margin * inv.abs() * margin + (slope * inv).abs() * 4.0 * Real::EPSILON)
+            widen(
+                slope * inv,
+                (r1 + e1) * margin * inv.abs() * margin + (slope * inv).abs() * 4.0 * Real::EPSILON,
+            )
         };
         Jet::new(value, per_time)
     }
