@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
 use mechkit::figure::{LineStyle, Marker, MarkerShape, PlotData, Series};
-use mechkit::ode::{AdaptiveConfig, Tolerance};
+use mechkit::ode::AdaptiveConfig;
 use mechkit::rigid::constrained::{
     BeadOnCurve, BeadRun, ConstrainedError, Curve, Side, Start, StopReason,
 };
@@ -86,12 +86,7 @@ pub fn bead(args: &BeadArgs) -> Result<Outcome> {
     if !(t_max > 0.0 && t_max.is_finite()) {
         bail!("--t-max is {t_max} s; give a positive time, e.g. --t-max \"5 s\"");
     }
-    let config = AdaptiveConfig {
-        rtol: Tolerance::Scalar(args.rtol),
-        atol: Tolerance::Scalar(args.rtol * 1e-2),
-        h_max: t_max / 400.0,
-        ..AdaptiveConfig::default()
-    };
+    let config = AdaptiveConfig::from_rtol(args.rtol).sampled_over(t_max);
     config.validate(2).map_err(|e| anyhow!("--rtol: {e}"))?;
     let start = Start { coordinate, speed };
     let run = match model.simulate(start, t_max, &config) {

@@ -9,7 +9,7 @@ use std::path::Path;
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
 use mechkit::figure::{Band, LineStyle, PlotData, Series};
-use mechkit::ode::{AdaptiveConfig, Tolerance};
+use mechkit::ode::AdaptiveConfig;
 use mechkit::rigid::friction::{
     Coulomb, FrictionError, Incline, InclineReport, PhaseEnd, Regime, SpringBlock, StickSlipRun,
 };
@@ -175,12 +175,7 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
                 opt(&args.x0, "--x0", Dimension::LENGTH)?,
                 opt(&args.v0, "--v0", Dimension::VELOCITY)?,
             );
-        let config = AdaptiveConfig {
-            rtol: Tolerance::Scalar(args.rtol),
-            atol: Tolerance::Scalar(args.rtol * 1e-3),
-            h_max: t_max / 2000.0,
-            ..AdaptiveConfig::default()
-        };
+        let config = AdaptiveConfig::from_rtol(args.rtol).sampled_over(t_max);
         config.validate(2).map_err(|e| anyhow!("--rtol: {e}"))?;
         let run = match block.simulate(t_max, &config) {
             Ok(run) => run,
@@ -193,7 +188,7 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
         if let Some(dir) = &args.out {
             write_outputs(&block, &run, dir)?;
         }
-        j["stick_slip"] = stick_slip_json(&block, &run, args);
+        j["stick_slip"] = stick_slip_json(&block, &run, args, &config);
         stick_slip_text(&mut text, &block, &run, args);
     }
     if args.json {
@@ -271,7 +266,12 @@ fn regime_name(r: Regime) -> &'static str {
     }
 }
 
-fn stick_slip_json(block: &SpringBlock, run: &StickSlipRun, args: &FrictionArgs) -> Value {
+fn stick_slip_json(
+    block: &SpringBlock,
+    run: &StickSlipRun,
+    args: &FrictionArgs,
+    config: &AdaptiveConfig,
+) -> Value {
     let phases: Vec<Value> = run
         .phases
         .iter()
@@ -305,7 +305,8 @@ fn stick_slip_json(block: &SpringBlock, run: &StickSlipRun, args: &FrictionArgs)
             "residual": l.residual,
         },
         "simulation": {
-            "method": "dop853", "rtol": args.rtol, "atol": args.rtol * 1e-3,
+            "method": "dop853", "rtol": config.rtol.as_scalar(),
+            "atol": config.atol.as_scalar(), "h_max": config.h_max,
             "steps": run.stats.accepted, "rejected": run.stats.rejected,
             "evaluations": run.stats.evaluations, "samples": run.samples.len(),
         },

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::{Dimension, Quantity};
 use mechkit::figure::{LineStyle, PlotData, Series};
-use mechkit::ode::{AdaptiveConfig, Tolerance};
+use mechkit::ode::AdaptiveConfig;
 use mechkit::rocket::{Rocket, RocketError, RocketRun};
 use serde_json::{Value, json};
 
@@ -68,15 +68,10 @@ fn build(args: &RocketArgs) -> Result<Rocket> {
 
 pub fn rocket(args: &RocketArgs) -> Result<Outcome> {
     let rocket = build(args)?;
-    // at most 1/200 of the flight per step, so the plots follow the curves (a drag-free coast
-    // is a parabola, which the method would cross in one step)
+    // steps sampled over the flight, so the plots follow the curves (a drag-free coast is a
+    // parabola, which the method would cross in one step)
     let flight = rocket.apex().map_or(rocket.burn_time(), |(t, _)| t);
-    let config = AdaptiveConfig {
-        rtol: Tolerance::Scalar(args.rtol),
-        atol: Tolerance::Scalar(args.rtol * 1e-3),
-        h_max: flight / 200.0,
-        ..AdaptiveConfig::default()
-    };
+    let config = AdaptiveConfig::from_rtol(args.rtol).sampled_over(flight);
     config.validate(3).map_err(|e| anyhow!("--rtol: {e}"))?;
     let run = match rocket.simulate(&config, args.coast) {
         Ok(run) => run,
@@ -99,10 +94,10 @@ pub fn rocket(args: &RocketArgs) -> Result<Outcome> {
     if args.json {
         print(&format!(
             "{:#}\n",
-            to_json(&rocket, &run, args, config.h_max, plots.as_deref())
+            to_json(&rocket, &run, &config, plots.as_deref())
         ))?;
     } else {
-        print(&text(&rocket, &run, args, config.h_max, plots.as_deref()))?;
+        print(&text(&rocket, &run, args, &config, plots.as_deref()))?;
     }
     Ok(Outcome::Success)
 }
@@ -115,8 +110,7 @@ fn compare(closed: f64, simulated: f64) -> Value {
 fn to_json(
     rocket: &Rocket,
     run: &RocketRun,
-    args: &RocketArgs,
-    h_max: f64,
+    config: &AdaptiveConfig,
     plots: Option<&Path>,
 ) -> Value {
     let (t1, x1, v1) = run.burnout;
@@ -133,7 +127,8 @@ fn to_json(
         "burnout": {"t": t1, "v": compare(v_c, v1), "x": compare(x_c, x1)},
         "apex": apex,
         "simulation": {
-            "method": "dopri5", "rtol": args.rtol, "atol": args.rtol * 1e-3, "h_max": h_max,
+            "method": "dopri5", "rtol": config.rtol.as_scalar(),
+            "atol": config.atol.as_scalar(), "h_max": config.h_max,
             "steps": run.stats.accepted, "rejected": run.stats.rejected,
             "evaluations": run.stats.evaluations, "samples": run.samples.len(),
         },
@@ -145,9 +140,10 @@ fn text(
     rocket: &Rocket,
     run: &RocketRun,
     args: &RocketArgs,
-    h_max: f64,
+    config: &AdaptiveConfig,
     plots: Option<&Path>,
 ) -> String {
+    let h_max = config.h_max;
     let r = rocket;
     let drag = r.drag.map_or_else(
         || "no drag".to_string(),

@@ -8,7 +8,7 @@ use std::path::Path;
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
 use mechkit::figure::{Band, LineStyle, PlotData, Series};
-use mechkit::ode::{AdaptiveConfig, Tolerance};
+use mechkit::ode::AdaptiveConfig;
 use mechkit::rigid::rolling::{Contact, RollingBody, RollingError, RollingMotion, RollingRun};
 use mechkit::scenario::{push_number, write_atomic};
 use serde_json::{Value, json};
@@ -84,12 +84,7 @@ fn build(args: &RollArgs) -> Result<(RollingMotion, f64)> {
 
 pub fn roll(args: &RollArgs) -> Result<Outcome> {
     let (motion, t_max) = build(args)?;
-    let config = AdaptiveConfig {
-        rtol: Tolerance::Scalar(args.rtol),
-        atol: Tolerance::Scalar(args.rtol * 1e-3),
-        h_max: t_max / 1000.0,
-        ..AdaptiveConfig::default()
-    };
+    let config = AdaptiveConfig::from_rtol(args.rtol).sampled_over(t_max);
     config.validate(4).map_err(|e| anyhow!("--rtol: {e}"))?;
     let run = match motion.simulate(t_max, &config) {
         Ok(run) => run,
@@ -103,7 +98,7 @@ pub fn roll(args: &RollArgs) -> Result<Outcome> {
         write_outputs(&motion, &run, dir)?;
     }
     if args.json {
-        print(&format!("{:#}\n", to_json(&motion, &run, args)))?;
+        print(&format!("{:#}\n", to_json(&motion, &run, args, &config)))?;
     } else {
         print(&text(&motion, &run, args))?;
     }
@@ -125,7 +120,7 @@ fn compare(closed: Option<f64>, simulated: Option<f64>) -> Value {
     })
 }
 
-fn to_json(m: &RollingMotion, run: &RollingRun, args: &RollArgs) -> Value {
+fn to_json(m: &RollingMotion, run: &RollingRun, args: &RollArgs, config: &AdaptiveConfig) -> Value {
     let b = &m.body;
     let closed = m.roll_start();
     let sim = run.roll_start;
@@ -163,7 +158,8 @@ fn to_json(m: &RollingMotion, run: &RollingRun, args: &RollArgs) -> Value {
             "work_friction": l.work_friction, "residual": l.residual,
         },
         "simulation": {
-            "method": "dop853", "rtol": args.rtol, "atol": args.rtol * 1e-3,
+            "method": "dop853", "rtol": config.rtol.as_scalar(),
+            "atol": config.atol.as_scalar(), "h_max": config.h_max,
             "steps": run.stats.accepted, "rejected": run.stats.rejected,
             "evaluations": run.stats.evaluations, "samples": run.samples.len(),
         },

@@ -9,7 +9,7 @@ use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
 use mechkit::figure::{LineStyle, PlotData, Series};
 use mechkit::mass::{Mat3, Vec3};
-use mechkit::ode::{AdaptiveConfig, Tableau, Tolerance};
+use mechkit::ode::{AdaptiveConfig, Tableau};
 use mechkit::rigid::free3d::{
     Formulation, Free3dError, FreeBody, Orientation, Poinsot, SpinIntegrator, SpinOptions, SpinRun,
     SpinningBody,
@@ -92,11 +92,8 @@ fn integrator(args: &SpinArgs) -> Result<SpinIntegrator> {
     };
     Ok(match args.method.as_str() {
         "dop853" | "dopri5" => {
-            let config = AdaptiveConfig {
-                rtol: Tolerance::Scalar(args.rtol),
-                atol: Tolerance::Scalar(args.rtol * 1e-3),
-                ..AdaptiveConfig::default()
-            };
+            // no step limit: the samples are taken on their own grid by the interpolant
+            let config = AdaptiveConfig::from_rtol(args.rtol);
             config.validate(7).map_err(|e| anyhow!("--rtol: {e}"))?;
             let tableau = Tableau::by_name(&args.method).expect("a known pair");
             SpinIntegrator::Adaptive { tableau, config }
@@ -182,7 +179,7 @@ pub fn spin(args: &SpinArgs) -> Result<Outcome> {
         Some(dir) => Some(write_files(&spinning, &run, dir)?),
         None => None,
     };
-    let summary = to_json(&spinning, &run, args, &options, t_max, files.as_ref());
+    let summary = to_json(&spinning, &run, &options, t_max, files.as_ref());
     if args.json {
         print(&format!("{summary:#}\n"))?;
     } else {
@@ -200,7 +197,6 @@ fn tensor_json(m: &Mat3) -> Value {
 fn to_json(
     body: &SpinningBody,
     run: &SpinRun,
-    args: &SpinArgs,
     options: &SpinOptions,
     t_max: f64,
     files: Option<&Value>,
@@ -253,7 +249,9 @@ fn to_json(
         })
     });
     let step = match &options.integrator {
-        SpinIntegrator::Adaptive { .. } => json!({"rtol": args.rtol, "atol": args.rtol * 1e-3}),
+        SpinIntegrator::Adaptive { config, .. } => {
+            json!({"rtol": config.rtol.as_scalar(), "atol": config.atol.as_scalar()})
+        }
         SpinIntegrator::Fixed { dt, .. } | SpinIntegrator::Splitting { dt } => json!({"dt": dt}),
     };
     let b = body.body();

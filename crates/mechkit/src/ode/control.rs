@@ -23,6 +23,14 @@ impl Tolerance {
         }
     }
 
+    /// The value, when it is the same for every component.
+    pub fn as_scalar(&self) -> Option<Real> {
+        match self {
+            Tolerance::Scalar(v) => Some(*v),
+            Tolerance::PerComponent(_) => None,
+        }
+    }
+
     fn values(&self) -> Vec<Real> {
         match self {
             Tolerance::Scalar(v) => vec![*v],
@@ -102,6 +110,48 @@ impl Default for AdaptiveConfig {
             h0: None,
             error_components: None,
             controller: None,
+        }
+    }
+}
+
+/// The absolute tolerance per unit of relative tolerance in [`AdaptiveConfig::from_rtol`]:
+/// `atol = rtol · 10⁻³`, so a component controls its error relative to its size down to a
+/// thousandth of its unit (1 mm in metres, 1 ms in seconds) and absolutely below that.
+pub const ATOL_PER_RTOL: Real = 1e-3;
+
+/// Steps per span in [`AdaptiveConfig::sampled_over`]: `h_max = span / 1000`, so that the
+/// steps (what a model records and plots) follow the motion, even where the method could cross
+/// it in a few steps (a parabola in one).
+pub const STEPS_PER_SPAN: Real = 1000.0;
+
+impl AdaptiveConfig {
+    /// The default settings at relative tolerance `rtol`, with `atol = rtol ·`
+    /// [`ATOL_PER_RTOL`]: the one rule of the models' commands (`mechkit rocket`, `friction`,
+    /// `roll`, `bead`, `spin`).
+    ///
+    /// # Example
+    /// ```
+    /// use mechkit::ode::{AdaptiveConfig, Tolerance};
+    /// let config = AdaptiveConfig::from_rtol(1e-8).sampled_over(10.0);
+    /// assert_eq!(config.rtol, Tolerance::Scalar(1e-8));
+    /// assert_eq!(config.atol, Tolerance::Scalar(1e-8 * 1e-3));
+    /// assert_eq!(config.h_max, 10.0 / 1000.0);
+    /// ```
+    pub fn from_rtol(rtol: Real) -> Self {
+        Self {
+            rtol: Tolerance::Scalar(rtol),
+            atol: Tolerance::Scalar(rtol * ATOL_PER_RTOL),
+            ..Self::default()
+        }
+    }
+
+    /// The same settings with steps of at most `span /` [`STEPS_PER_SPAN`] (`span`: the
+    /// duration of the motion recorded, s).
+    #[must_use]
+    pub fn sampled_over(self, span: Real) -> Self {
+        Self {
+            h_max: span / STEPS_PER_SPAN,
+            ..self
         }
     }
 }

@@ -14,6 +14,11 @@
 //! | [`EulerCromer`] | `v_{n+1} = v_n + h a_n`, then `q_{n+1} = q_n + h v_{n+1}` | 1 (symplectic) |
 //! | [`VelocityVerlet`] | `q_{n+1} = q_n + h v_n + h²/2 a_n`, `v_{n+1} = v_n + h/2 (a_n + a_{n+1})` | 2 (symplectic) |
 //! | [`Rk4`] | classical fourth-order Runge-Kutta | 4 |
+//!
+//! Adaptive pairs ([`AdaptiveRk`], settings [`AdaptiveConfig`]; the models use
+//! [`AdaptiveConfig::from_rtol`] and [`AdaptiveConfig::sampled_over`]) run any system with
+//! events through [`run_to_event`] ([`events`]): crossings of `g(t, y) = 0` found inside every
+//! step, with a guarantee where `g` has an enclosure, in time order.
 
 mod adaptive;
 mod blocks;
@@ -22,6 +27,7 @@ mod dense;
 mod dop853;
 mod euler;
 mod euler_cromer;
+pub mod events;
 mod explicit_rk;
 mod fixed;
 mod hermite;
@@ -40,10 +46,12 @@ mod verlet;
 
 pub use adaptive::AdaptiveRk;
 pub use control::{
-    AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller, Tolerance,
+    ATOL_PER_RTOL, AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller,
+    STEPS_PER_SPAN, Tolerance,
 };
 pub use euler::Euler;
 pub use euler_cromer::EulerCromer;
+pub use events::{Direction, EventEnd, EventHit, OdeEvent, Progress, run_to_event};
 pub use explicit_rk::ExplicitRk;
 pub use hermite::{hermite, hermite_derivative};
 pub use method::{Method, MethodKind};

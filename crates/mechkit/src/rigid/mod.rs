@@ -7,7 +7,8 @@
 //!
 //! Each model is a value type with a checked constructor and its own error type, integrated
 //! by the steppers of [`crate::ode`]; regime switches (stick to slip, slipping to rolling,
-//! leaving a surface, a wheel stopping) are located inside a step, never detected a step late.
+//! leaving a surface, a wheel stopping) are events of the one driver
+//! ([`crate::ode::run_to_event`]), located inside a step, never detected a step late.
 
 pub mod constrained;
 pub mod fixed_axis;
@@ -16,7 +17,6 @@ pub mod friction;
 pub mod impact;
 pub mod kinematics;
 pub mod rolling;
-pub(crate) mod segment;
 
 pub use crate::elliptic;
 pub use constrained::{BeadOnCurve, Curve};

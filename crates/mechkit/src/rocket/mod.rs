@@ -20,7 +20,7 @@
 //!
 //! [`Rocket`] holds the parameters and these closed forms; [`Rocket::simulate`] integrates the
 //! state `(x, v, m)` with Dormand-Prince 5(4) through burnout (located exactly) and optionally
-//! the coast to the apex, and is the only answer when there is drag ([`RocketRun`]). The model
+//! the coast to the apex (an event of the one driver, [`crate::ode::run_to_event`]), and is the only answer when there is drag ([`RocketRun`]). The model
 //! has no launch pad: a rocket whose thrust is below its weight sinks at first.
 
 mod error;

@@ -1,11 +1,18 @@
-//! The simulated flight: the state `(x, v, m)` integrated with Dormand-Prince 5(4), the burn
-//! to exactly `t = T`, then the coast with the apex located by dense output and Brent's method
-//! and refined by integrating to it.
+//! The simulated flight: the state `(x, v, m)` integrated with Dormand-Prince 5(4) by the one
+//! event driver ([`run_to_event`]): the burn to exactly `t = T`, then the coast to the apex, a
+//! terminal event where `v` falls through zero (enclosed, so never missed inside a step),
+//! reached by integration and refined by one Newton step.
+
+use std::ops::ControlFlow;
 
 use super::error::RocketError;
 use super::vehicle::Rocket;
 use crate::Real;
-use crate::ode::{AdaptiveConfig, AdaptiveRk, AdaptiveStats, OdeSystem, State, Tableau};
+use crate::interval::Jet;
+use crate::ode::{
+    AdaptiveConfig, AdaptiveRk, AdaptiveStats, EventEnd, OdeEvent, OdeSystem, Progress, State,
+    Tableau, run_to_event,
+};
 
 /// A simulated flight ([`Rocket::simulate`]).
 #[derive(Debug, Clone, PartialEq)]
@@ -51,8 +58,9 @@ impl OdeSystem for Flight<'_> {
 impl Rocket {
     /// Integrates the flight from rest at `x = 0` with Dormand-Prince 5(4) at the tolerances of
     /// `config`: the burn up to exactly `t = T`, then, if `coast` and `g > 0`, the coast with
-    /// the mass `m1` until the speed reaches 0 (the apex: located inside the step by dense
-    /// output and Brent's method, then integrated to). Without drag it agrees with the closed forms
+    /// the mass `m1` until the speed reaches 0 (the apex: a terminal event of [`run_to_event`],
+    /// located inside the step on the interpolant, then integrated to and refined by a Newton
+    /// step). Without drag it agrees with the closed forms
     /// ([`Rocket::burnout`], [`Rocket::apex`]) to about the tolerance; with drag it is the
     /// only answer.
     ///
@@ -86,10 +94,12 @@ impl Rocket {
         };
         let mut state = State::new(0.0, vec![0.0, 0.0, self.m0]);
         let mut samples = vec![sample(&state)];
-        while state.t < t_burn {
-            rk.step(&burn, &mut state, t_burn)?;
-            samples.push(sample(&state));
-        }
+        run_to_event(&mut rk, &burn, &mut state, t_burn, &[], &mut |p| {
+            if let Progress::Step(s) = p {
+                samples.push(sample(s));
+            }
+            ControlFlow::Continue(())
+        })?;
         let burnout = (state.t, state.y[0], state.y[1]);
         let apex = if coast && self.g > 0.0 {
             // the mass m0 − ṁ t is integrated exactly up to rounding; the coast starts at m1
@@ -124,47 +134,30 @@ impl Rocket {
         }
         // drag and gravity both slow the climb, so the apex comes before the drag-free one
         let t_bound = t1 + 2.0 * v1 / self.g;
-        let mut dense = [0.0; 3];
-        loop {
-            let before = state.clone();
-            rk.step(&glide, &mut state, t_bound)?;
-            if state.y[1] > 0.0 {
-                assert!(state.t < t_bound, "the coast turns before t1 + 2 v1/g");
-                samples.push(sample(&state));
-                continue;
+        let apex = OdeEvent::new(|_, y| y[1])
+            .bounded_by(|_, y: &[Jet]| Some(y[1]))
+            .falling()
+            .terminal();
+        let end = run_to_event(rk, &glide, &mut state, t_bound, &[apex], &mut |p| {
+            if let Progress::Step(s) = p {
+                samples.push(sample(s));
             }
-            let (a, b) = rk.last_step();
-            let guess = if state.y[1] == 0.0 {
-                b
-            } else {
-                let mut speed = |t: Real| {
-                    rk.dense_into(&glide, t, &mut dense);
-                    dense[1]
-                };
-                crate::roots::brent_with_values(
-                    &mut speed,
-                    a,
-                    b,
-                    Some((before.y[1], state.y[1])),
-                    4.0 * Real::EPSILON * b,
-                )
-                .expect("the speed changes sign in this step")
-            };
-            // the interpolant is less accurate than the steps: integrate to the guess, then
-            // one Newton step on v = 0 with v' = −g there (no drag at zero speed)
-            let mut top = before;
-            rk.reset();
-            while top.t < guess {
-                rk.step(&glide, &mut top, guess)?;
-            }
-            let dt = top.y[1] / self.g;
-            let apex = State::new(
-                top.t + dt,
-                vec![top.y[0] + 0.5 * top.y[1] * dt, 0.0, top.y[2]],
-            );
-            samples.push(sample(&apex));
-            return Ok((apex.t, apex.y[0]));
-        }
+            ControlFlow::Continue(())
+        })?;
+        assert!(
+            matches!(end, EventEnd::Terminal { .. }),
+            "the coast turns before t1 + 2 v1/g"
+        );
+        // the state reached the interpolant's zero of v; one Newton step on v = 0 with v' = −g
+        // there (no drag at zero speed) takes it to the integrator's own
+        samples.pop();
+        let dt = state.y[1] / self.g;
+        let top = State::new(
+            state.t + dt,
+            vec![state.y[0] + 0.5 * state.y[1] * dt, 0.0, state.y[2]],
+        );
+        samples.push(sample(&top));
+        Ok((top.t, top.y[0]))
     }
 }
 

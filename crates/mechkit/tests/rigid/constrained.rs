@@ -97,7 +97,7 @@ fn a_semicircle_graph_agrees_with_the_circle() {
 /// the top is cos φ = (2h/R − 2)/3 (measured error ≤ 5.5e-12), the landing lies on the
 /// circle, and the least height that completes the loop, found by bisection on "did it
 /// leave", is 5R/2 to 4.7e-10 R (a dip of N below zero at the top narrower than a step is
-/// found by the golden-section search on the dense output).
+/// found: N is enclosed inside every step).
 #[test]
 fn loop_the_loop_needs_five_halves_r() {
     let r = 1.0;

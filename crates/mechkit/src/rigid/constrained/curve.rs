@@ -1,9 +1,12 @@
 //! The curves a body can be constrained to, as parametrised paths r(q) with r' and r''.
 
+use mechkit_expr::{MapScope, Program};
+
 use super::error::ConstrainedError;
 use crate::Real;
 use crate::calculus::Params;
 use crate::function::Function;
+use crate::interval::Jet;
 
 /// Which side of the curve the body is on, relative to the unit normal n (the tangent turned
 /// counter-clockwise: up for a graph y(x) traversed in +x, outward for a circle).
@@ -41,6 +44,19 @@ struct Graph {
     y: Function,
     dy: Function,
     d2y: Function,
+    /// `y`, `y'`, `y''` compiled, for enclosures (`None` if one does not compile).
+    programs: Option<[Program; 3]>,
+}
+
+/// `f(x)` compiled, its parameters folded in.
+fn compile(f: &Function) -> Option<Program> {
+    let scope = f
+        .params()
+        .iter()
+        .fold(MapScope::new().slot("x", 0), |scope, (name, value)| {
+            scope.constant(name, *value)
+        });
+    Program::compile(&f.sym().to_expr(), &scope).ok()
 }
 
 /// A curve in the vertical (x, y) plane, y up: a circle of radius R centred at the origin
@@ -106,8 +122,14 @@ impl Curve {
         let y = Function::parse(text, &["x"], params)?;
         let dy = y.diff("x");
         let d2y = dy.diff("x");
+        let programs = (|| Some([compile(&y)?, compile(&dy)?, compile(&d2y)?]))();
         Ok(Self {
-            kind: Kind::Graph(Box::new(Graph { y, dy, d2y })),
+            kind: Kind::Graph(Box::new(Graph {
+                y,
+                dy,
+                d2y,
+                programs,
+            })),
         })
     }
 
@@ -187,6 +209,32 @@ impl Curve {
         side.sign() * raw
     }
 
+    /// Encloses the normal force per unit mass along n, `(r''·n) q̇² + g n_y`, over a range of
+    /// times from jets of `q` and `q̇`: `g cos φ − R φ̇²` on a circle, `(y'' ẋ² + g)/√(1 + y'²)`
+    /// on a graph (`y'`, `y''` by interval arithmetic on their compiled formulas). `None` for a
+    /// graph whose formulas do not compile.
+    pub(super) fn enclose_normal_force(&self, q: Jet, qd: Jet, g: Real) -> Option<Jet> {
+        let c = Jet::constant;
+        match &self.kind {
+            Kind::Circle { radius } => Some(c(g) * q.cos() - c(*radius) * qd.sqr()),
+            Kind::Graph(gr) => {
+                let [_, dy, d2y] = gr.programs.as_ref()?;
+                let (d1, d2) = (dy.eval_jet(&[q]), d2y.eval_jet(&[q]));
+                Some((d2 * qd.sqr() + c(g)) / (c(1.0) + d1.sqr()).sqrt())
+            }
+        }
+    }
+
+    /// Encloses [`Curve::gap`] from jets of the position.
+    pub(super) fn enclose_gap(&self, p: [Jet; 2], side: Side) -> Option<Jet> {
+        let c = Jet::constant;
+        let raw = match &self.kind {
+            Kind::Circle { radius } => (p[0].sqr() + p[1].sqr()).sqrt() - c(*radius),
+            Kind::Graph(gr) => p[1] - gr.programs.as_ref()?[0].eval_jet(&[p[0]]),
+        };
+        Some(c(side.sign()) * raw)
+    }
+
     /// The coordinate of the point of the curve nearest a landing point `p` (exact for a
     /// circle; `x` for a graph).
     pub fn coordinate_of(&self, p: [Real; 2]) -> Real {
@@ -206,5 +254,40 @@ impl Curve {
     /// The length scale used for sampling free flights: R, or 1 m for a graph.
     pub(super) fn scale(&self) -> Real {
         self.radius().unwrap_or(1.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::interval::Interval;
+
+    #[test]
+    fn enclosures_hold_the_normal_force_and_the_gap() {
+        let params = vec![("a".to_string(), 0.7)];
+        let curves = [
+            Curve::circle(1.3).unwrap(),
+            Curve::graph("a*x^2/2 - sin(x)", &params).unwrap(),
+        ];
+        let (q, qd) = (Interval::new(0.3, 0.5), Interval::new(-1.2, 1.0));
+        let jet = |v: Interval| Jet::new(v, Interval::new(-5.0, 5.0));
+        for curve in &curves {
+            let n = curve.enclose_normal_force(jet(q), jet(qd), 9.81).unwrap();
+            let (x, y) = (Interval::new(0.2, 0.6), Interval::new(0.5, 1.5));
+            let gap = curve.enclose_gap([jet(x), jet(y)], Side::Inner).unwrap();
+            for i in 0..=10 {
+                let f = Real::from(i) / 10.0;
+                let (qi, qdi) = (0.3 + 0.2 * f, -1.2 + 2.2 * f);
+                let want = curve.geometry(qi).normal_force(qdi, 9.81);
+                assert!(
+                    n.v.contains(want),
+                    "{}: {want} not in {:?}",
+                    curve.describe(),
+                    n.v
+                );
+                let p = [0.2 + 0.4 * f, 1.5 - f];
+                assert!(gap.v.contains(curve.gap(p, Side::Inner)));
+            }
+        }
     }
 }

@@ -14,11 +14,13 @@
 //!
 //! i.e. m(v²κ + g cos β) with the curvature κ and the slope angle β. A body resting on one side
 //! of the curve ([`Side::Outer`]: on top of a graph, outside a circle; [`Side::Inner`]: below,
-//! inside) can only be pushed: when N reaches zero it leaves the curve. That moment is located
-//! inside the step on the dense output of Dormand-Prince 5(4) by Brent's method, the state is
-//! integrated to it, and the body continues as a free projectile until it meets the curve again
-//! (the landing, located by Brent's method on the closed-form flight) or `t_max`. A threaded
-//! bead ([`Side::Bead`]) never leaves; the curve pulls or pushes as needed.
+//! inside) can only be pushed: when N reaches zero it leaves the curve. The motion is integrated
+//! with Dormand-Prince 5(4) by the one event driver ([`crate::ode::run_to_event`]): leaving is a
+//! terminal event, N enclosed by interval arithmetic on the curve's r′ and r″ (so a dip below
+//! zero narrower than a step is found), the step redone to end there; the body then flies
+//! freely, integrated too, until it meets the curve again (the landing, an enclosed event on its
+//! gap from the curve) or `t_max`. The turning points are events where q̇ changes sign. A
+//! threaded bead ([`Side::Bead`]) never leaves; the curve pulls or pushes as needed.
 //!
 //! Checks (tests in `tests/rigid/constrained.rs`): sliding off a frictionless cylinder from the
 //! top leaves at cos θ = 2/3 + v₀²/(3gR); the loop-the-loop needs h = 5R/2; a bead on a circle
@@ -26,6 +28,7 @@
 
 mod curve;
 mod error;
+mod flight;
 mod run;
 
 pub use curve::{Curve, Side};

@@ -1,11 +1,16 @@
-//! The motion on the curve, the departure where the normal force reaches zero, and the free
-//! flight to the landing.
+//! The motion on the curve by the one event driver ([`run_to_event`]): the turning points, and
+//! the departure where the normal force reaches zero (then the free flight, `flight.rs`).
+
+use std::ops::ControlFlow;
 
 use super::curve::{Curve, Geometry, Side};
 use super::error::ConstrainedError;
 use crate::Real;
-use crate::ode::{AdaptiveConfig, AdaptiveRk, AdaptiveStats, OdeSystem, State, Tableau};
-use crate::roots::{brent, brent_with_values};
+use crate::interval::Jet;
+use crate::ode::{
+    AdaptiveConfig, AdaptiveRk, AdaptiveStats, EventEnd, OdeEvent, OdeSystem, Progress, State,
+    Tableau, run_to_event,
+};
 
 /// A body on a curve: the curve, the side it is on, its mass and gravity.
 #[derive(Debug, Clone, PartialEq)]
@@ -97,8 +102,8 @@ pub struct BeadRun {
     pub departure: Option<Departure>,
     /// Where it met the curve again, if it did before `t_max`.
     pub landing: Option<Landing>,
-    /// Times at which the speed along the curve changes sign (turning points), located by
-    /// Brent's method on the dense output.
+    /// Times at which the speed along the curve changes sign (turning points): events of
+    /// [`run_to_event`], located by Brent's method on the interpolant.
     pub turning_times: Vec<Real>,
     /// The energy per unit mass at the start, ½v² + g y (J/kg).
     pub energy: Real,
@@ -178,9 +183,12 @@ impl BeadOnCurve {
     }
 
     /// Integrates from `start` to `t_max` (s) with Dormand-Prince 5(4) at the tolerances of
-    /// `config`. A body on one side of the curve leaves it where the normal force reaches zero
-    /// (located inside the step by Brent's method on the dense output, then integrated to),
-    /// and flies freely until it meets the curve again or `t_max`.
+    /// `config`, by the one event driver ([`run_to_event`]). The turning points are events
+    /// where `q̇` changes sign. A body on one side of the curve leaves it where the normal force
+    /// reaches zero (a terminal event, enclosed on a circle and on a graph whose formulas
+    /// compile, so a dip of N below zero narrower than a step is not missed; the step redone to
+    /// end there), and flies freely, integrated by the same driver, until it meets the curve
+    /// again or `t_max` (the landing is an enclosed event on its gap from the curve).
     pub fn simulate(
         &self,
         start: Start,
@@ -210,46 +218,41 @@ impl BeadOnCurve {
         let mut departure = None;
         if leaves && self.normal_force(state.y[0], state.y[1]) < 0.0 {
             departure = Some(self.departure(&state));
-        }
-        let mut dense = [0.0; 2];
-        while departure.is_none() && state.t < t_max {
-            let before = state.clone();
-            rk.step(&sys, &mut state, t_max)?;
-            self.curve.check_at(state.y[0])?;
-            let (a, b) = rk.last_step();
-            if before.y[1] * state.y[1] < 0.0 {
-                let mut qd = |t: Real| {
-                    rk.dense_into(&sys, t, &mut dense);
-                    dense[1]
-                };
-                if let Some(t) = brent_with_values(
-                    &mut qd,
-                    a,
-                    b,
-                    Some((before.y[1], state.y[1])),
-                    4.0 * Real::EPSILON * b.abs(),
-                ) {
-                    turning_times.push(t);
-                }
+        } else {
+            let turning = OdeEvent::new(|_, y| y[1]).bounded_by(|_, y: &[Jet]| Some(y[1]));
+            let mut events = vec![turning];
+            if leaves {
+                events.push(self.leaving());
             }
-            if leaves && let Some(t_leave) = self.leaving_in_step(&mut rk, &sys, &before, b) {
-                // the interpolant is less accurate than the steps: integrate to the root
-                let mut top = before;
-                rk.reset();
-                while top.t < t_leave {
-                    rk.step(&sys, &mut top, t_leave)?;
+            let mut undefined = None;
+            let end = run_to_event(&mut rk, &sys, &mut state, t_max, &events, &mut |p| {
+                match p {
+                    Progress::Event(hit) => turning_times.push(hit.t),
+                    Progress::Step(s) => {
+                        let geo = match self.curve.check_at(s.y[0]) {
+                            Ok(geo) => geo,
+                            Err(e) => {
+                                undefined = Some(e);
+                                return ControlFlow::Break(());
+                            }
+                        };
+                        drift = drift.max((self.energy(&geo, s.y[1]) - energy).abs());
+                        samples.push(self.sample(s.t, &s.y));
+                    }
                 }
-                let geo = self.curve.geometry(top.y[0]);
-                drift = drift.max((self.energy(&geo, top.y[1]) - energy).abs());
-                samples.push(self.sample(top.t, &top.y));
-                departure = Some(self.departure(&top));
-                break;
+                ControlFlow::Continue(())
+            })?;
+            if let Some(e) = undefined {
+                return Err(e);
             }
-            let geo = self.curve.geometry(state.y[0]);
-            drift = drift.max((self.energy(&geo, state.y[1]) - energy).abs());
-            samples.push(self.sample(state.t, &state.y));
+            if end == (EventEnd::Terminal { event: 1 }) {
+                departure = Some(self.departure(&state));
+            }
         }
-        let landing = departure.and_then(|d| self.fly(&d, t_max, &mut samples));
+        let landing = match &departure {
+            Some(d) => self.fly(&mut rk, d, t_max, &mut samples)?,
+            None => None,
+        };
         Ok(BeadRun {
             samples,
             departure,
@@ -266,73 +269,17 @@ impl BeadOnCurve {
         })
     }
 
-    /// The first time in the last step where the normal force falls through zero: sampled at
-    /// interior points of the dense output (two crossings inside one step are not missed),
-    /// with every interior local minimum of the samples refined by golden-section search (a
-    /// dip below zero narrower than the sampling, as at the top of a loop barely completed,
-    /// is not missed either), then the crossing refined by Brent's method.
-    fn leaving_in_step(
-        &self,
-        rk: &mut AdaptiveRk,
-        sys: &System<'_>,
-        before: &State,
-        b: Real,
-    ) -> Option<Real> {
-        const PARTS: usize = 8;
-        let a = before.t;
-        let mut dense = [0.0; 2];
-        let mut force = |t: Real| {
-            rk.dense_into(sys, t, &mut dense);
-            self.normal_force(dense[0], dense[1])
-        };
-        let mut ts = [0.0; PARTS + 1];
-        let mut fs = [0.0; PARTS + 1];
-        for (i, (t, f)) in ts.iter_mut().zip(fs.iter_mut()).enumerate() {
-            *t = if i == PARTS {
-                b
-            } else {
-                a + (b - a) * (i as Real) / (PARTS as Real)
-            };
-            *f = if i == 0 {
-                self.normal_force(before.y[0], before.y[1])
-            } else {
-                force(*t)
-            };
-        }
-        let tol = |t: Real| 4.0 * Real::EPSILON * t.abs().max(1e-300);
-        for i in 1..=PARTS {
-            if fs[i - 1] >= 0.0 && fs[i] < 0.0 {
-                return brent_with_values(
-                    &mut force,
-                    ts[i - 1],
-                    ts[i],
-                    Some((fs[i - 1], fs[i])),
-                    tol(ts[i]),
-                );
-            }
-            let interior_min =
-                i < PARTS && fs[i] >= 0.0 && fs[i] <= fs[i - 1] && fs[i] <= fs[i + 1];
-            let edge_min = i == 1 && fs[0] >= 0.0 && fs[0] < fs[1];
-            if interior_min || edge_min {
-                let (lo, hi) = if edge_min && !interior_min {
-                    (ts[0], ts[1])
-                } else {
-                    (ts[i - 1], ts[i + 1])
-                };
-                let (t_min, f_min) = golden_min(&mut force, lo, hi);
-                if f_min < 0.0 {
-                    let f_lo = if lo == a { fs[0] } else { force(lo) };
-                    return brent_with_values(
-                        &mut force,
-                        lo,
-                        t_min,
-                        Some((f_lo, f_min)),
-                        tol(t_min),
-                    );
-                }
-            }
-        }
-        None
+    /// Leaving the curve as a terminal event: the normal force along the allowed direction
+    /// falls through zero. Enclosed from the jets of `q` and `q̇`
+    /// ([`Curve::enclose_normal_force`]); sampled where a graph's formulas do not compile.
+    fn leaving(&self) -> OdeEvent<'_> {
+        let scale = Jet::constant(self.side.sign() * self.mass);
+        OdeEvent::new(|_, y| self.normal_force(y[0], y[1]))
+            .bounded_by(move |_, y| {
+                Some(scale * self.curve.enclose_normal_force(y[0], y[1], self.g)?)
+            })
+            .falling()
+            .terminal()
     }
 
     fn departure(&self, s: &State) -> Departure {
@@ -345,88 +292,4 @@ impl BeadOnCurve {
             normal_force: self.normal_force(s.y[0], s.y[1]),
         }
     }
-
-    /// The free flight from the departure to the landing (or `t_max`), appending samples.
-    fn fly(&self, d: &Departure, t_max: Real, samples: &mut Vec<BeadSample>) -> Option<Landing> {
-        let (p, v, g) = (d.position, d.velocity, self.g);
-        let at = |tau: Real| {
-            (
-                [p[0] + v[0] * tau, p[1] + v[1] * tau - 0.5 * g * tau * tau],
-                [v[0], v[1] - g * tau],
-            )
-        };
-        let gap = |tau: Real| self.curve.gap(at(tau).0, self.side);
-        let span = t_max - d.t;
-        let scale = self.curve.scale();
-        let speed = v[0].hypot(v[1]);
-        let time_scale = (scale / g).sqrt().min(scale / speed);
-        let mut dtau = if time_scale.is_finite() {
-            (2e-3 * time_scale).min(span)
-        } else {
-            span
-        };
-        dtau = dtau.max(span / 200_000.0);
-        // the gap grows like τ³ from a tangential departure: wait until it is clearly open
-        let open = 1e-12 * scale;
-        let mut armed = false;
-        let mut k = 1u32;
-        let mut landing_tau = None;
-        while Real::from(k - 1) * dtau < span {
-            let tau = (Real::from(k) * dtau).min(span);
-            let gv = gap(tau);
-            if armed && gv < 0.0 {
-                landing_tau = brent(gap, tau - dtau, tau, 4.0 * Real::EPSILON * (d.t + tau));
-                break;
-            }
-            armed |= gv > open;
-            k += 1;
-        }
-        let end = landing_tau.unwrap_or(span);
-        for i in 1..=400u32 {
-            let tau = end * Real::from(i) / 400.0;
-            let (position, velocity) = at(tau);
-            samples.push(BeadSample {
-                t: d.t + tau,
-                position,
-                velocity,
-                normal_force: None,
-            });
-        }
-        let tau = landing_tau?;
-        let (position, velocity) = at(tau);
-        let q = self.curve.coordinate_of(position);
-        let (tangent, normal) = self.curve.frame(q);
-        let dot = |a: [Real; 2], b: [Real; 2]| a[0] * b[0] + a[1] * b[1];
-        Some(Landing {
-            t: d.t + tau,
-            coordinate: q,
-            position,
-            velocity,
-            tangential_speed: dot(velocity, tangent),
-            normal_speed: (-self.side.sign() * dot(velocity, normal)).max(0.0),
-        })
-    }
-}
-
-/// The minimum of `f` on `[a, b]` by golden-section search (to rounding): `(t, f(t))`.
-fn golden_min(f: &mut impl FnMut(Real) -> Real, a: Real, b: Real) -> (Real, Real) {
-    let r = 0.5 * (5.0_f64.sqrt() - 1.0);
-    let (mut a, mut b) = (a, b);
-    let (mut c, mut d) = (b - r * (b - a), a + r * (b - a));
-    let (mut fc, mut fd) = (f(c), f(d));
-    for _ in 0..200 {
-        if (b - a).abs() <= 4.0 * Real::EPSILON * b.abs().max(a.abs()) {
-            break;
-        }
-        if fc < fd {
-            (b, d, fd) = (d, c, fc);
-            c = b - r * (b - a);
-            fc = f(c);
-        } else {
-            (a, c, fc) = (c, d, fd);
-            d = a + r * (b - a);
-            fd = f(d);
-        }
-    }
-    if fc < fd { (c, fc) } else { (d, fd) }
 }

@@ -10,9 +10,7 @@ use super::error::Free3dError;
 use super::record::Record;
 use crate::Real;
 use crate::mass::Vec3;
-use crate::ode::{
-    AdaptiveConfig, AdaptiveRk, ExplicitRk, State, Tableau, Tolerance, steps_to_cover,
-};
+use crate::ode::{AdaptiveConfig, AdaptiveRk, ExplicitRk, State, Tableau, steps_to_cover};
 
 /// How the equations are integrated.
 #[derive(Debug, Clone)]
@@ -50,15 +48,12 @@ impl SpinIntegrator {
         }
     }
 
-    /// DOP853 at relative tolerance `rtol` (absolute `rtol · 1e-3`).
+    /// DOP853 at relative tolerance `rtol` ([`AdaptiveConfig::from_rtol`]: absolute
+    /// `rtol · 1e-3`).
     pub fn dop853(rtol: Real) -> Self {
         SpinIntegrator::Adaptive {
             tableau: Tableau::dop853(),
-            config: AdaptiveConfig {
-                rtol: Tolerance::Scalar(rtol),
-                atol: Tolerance::Scalar(rtol * 1e-3),
-                ..AdaptiveConfig::default()
-            },
+            config: AdaptiveConfig::from_rtol(rtol),
         }
     }
 }

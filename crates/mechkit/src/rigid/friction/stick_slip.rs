@@ -1,13 +1,19 @@
-//! The stick-slip simulation of a [`SpringBlock`]: each regime integrated with DOP853, the
-//! switches located inside the step ([`super::segment`]), the phases listed, and the energy
-//! ledger kept by integrating the heat and the work of the belt and of the anchor with the
-//! motion.
+//! The stick-slip simulation of a [`SpringBlock`]: each regime integrated with DOP853 by the
+//! one event driver ([`run_to_event`]), its end a terminal event with an enclosure (so a switch
+//! is never missed inside a step, and the step is redone to end exactly there), the phases
+//! listed, and the energy ledger kept by integrating the heat and the work of the belt and of
+//! the anchor with the motion.
+
+use std::ops::ControlFlow;
 
 use super::error::FrictionError;
 use super::spring_block::SpringBlock;
 use crate::Real;
-use crate::ode::{AdaptiveConfig, AdaptiveRk, AdaptiveStats, OdeSystem, State, Tableau};
-use crate::rigid::segment::{SegmentEnd, run_segment};
+use crate::interval::Jet;
+use crate::ode::{
+    AdaptiveConfig, AdaptiveRk, AdaptiveStats, EventEnd, OdeEvent, OdeSystem, Progress, State,
+    Tableau, run_to_event,
+};
 
 /// The regime of the block relative to the surface.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -167,8 +173,9 @@ impl SpringBlock {
     /// Simulates from `t = 0` to `t_max` with DOP853 at the tolerances of `config` (its
     /// error control looks at `x` and `v`; the heat and works ride along). The switches
     /// are events: a stick ends when `|F_s|` reaches `μs N`, a slip when `v − u` reaches 0;
-    /// both are located inside the step by the dense output and Brent's method, and the step
-    /// is redone to exactly that time. At the end of a slip the block sticks if the spring
+    /// both are terminal events of [`run_to_event`], found inside the step with a guarantee
+    /// and located by Brent's method on the interpolant, and the step is redone to exactly
+    /// that time. At the end of a slip the block sticks if the spring
     /// force is within `μs N`, otherwise it slips again the other way.
     ///
     /// # Example
@@ -232,14 +239,16 @@ impl SpringBlock {
             };
             let start = (state.t, state.y[0], state.y[1]);
             samples.push(self.sample(&motion, &state));
-            let event = |t: Real, y: &[Real]| match regime {
-                Regime::Stick => self.stick_bound() - self.spring_force(t, y[0]).abs(),
-                Regime::Slip { direction } => direction * (y[1] - u),
-            };
-            let end = run_segment(&mut rk, &motion, &mut state, t_max, &event, &mut |s| {
-                samples.push(self.sample(&motion, s));
+            let event = self.switch(regime);
+            rk.reset();
+            let end = run_to_event(&mut rk, &motion, &mut state, t_max, &[event], &mut |p| {
+                if let Progress::Step(s) = p {
+                    samples.push(self.sample(&motion, s));
+                }
+                ControlFlow::Continue(())
             })?;
-            if end == SegmentEnd::Event && matches!(regime, Regime::Slip { .. }) {
+            let switched = matches!(end, EventEnd::Terminal { .. });
+            if switched && matches!(regime, Regime::Slip { .. }) {
                 // the relative velocity is zero at the located time
                 state.y[1] = u;
             }
@@ -248,16 +257,17 @@ impl SpringBlock {
                 regime,
                 start,
                 end: (t1, x1, v1),
-                ended: match end {
-                    SegmentEnd::Event => PhaseEnd::Switch,
-                    SegmentEnd::TimeLimit => PhaseEnd::TimeLimit,
+                ended: if switched {
+                    PhaseEnd::Switch
+                } else {
+                    PhaseEnd::TimeLimit
                 },
                 slip_distance: match regime {
                     Regime::Stick => 0.0,
                     Regime::Slip { .. } => (x1 - start.1) - u * (t1 - start.0),
                 },
             });
-            if end == SegmentEnd::TimeLimit {
+            if !switched {
                 break;
             }
             regime = match regime {
@@ -274,6 +284,30 @@ impl SpringBlock {
             ledger,
             stats: rk.stats(),
         })
+    }
+
+    /// The end of a regime as a terminal event, positive while it lasts: a stick ends when
+    /// `|F_s|` reaches `μs N`, a slip when `v − u` reaches 0. Both are enclosed from the jets
+    /// of `t`, `x` and `v`.
+    fn switch(&self, regime: Regime) -> OdeEvent<'_> {
+        let (bound, k, w, u) = (
+            self.stick_bound(),
+            self.k,
+            self.anchor_speed,
+            self.belt_speed,
+        );
+        let c = Jet::constant;
+        match regime {
+            Regime::Stick => OdeEvent::new(move |t, y| bound - self.spring_force(t, y[0]).abs())
+                .bounded_by(move |t, y| {
+                    let fs = c(-k) * (y[0] - c(w) * t);
+                    Some(c(bound) - fs.abs())
+                }),
+            Regime::Slip { direction } => OdeEvent::new(move |_, y| direction * (y[1] - u))
+                .bounded_by(move |_, y| Some(c(direction) * (y[1] - c(u)))),
+        }
+        .falling()
+        .terminal()
     }
 
     fn sample(&self, motion: &Motion<'_>, s: &State) -> StickSlipSample {

@@ -1,12 +1,19 @@
-//! The simulated motion of a [`RollingMotion`]: slipping and rolling integrated with DOP853,
-//! the start of rolling located exactly when the contact point's velocity reaches zero, and
-//! the energy ledger with the work of friction integrated along.
+//! The simulated motion of a [`RollingMotion`]: slipping and rolling integrated with DOP853 by
+//! the one event driver ([`run_to_event`]), the start of rolling a terminal event where the
+//! contact point's velocity reaches zero (enclosed, so never missed inside a step; the step
+//! redone to end exactly there), and the energy ledger with the work of friction integrated
+//! along.
+
+use std::ops::ControlFlow;
 
 use super::error::RollingError;
 use super::motion::RollingMotion;
 use crate::Real;
-use crate::ode::{AdaptiveConfig, AdaptiveRk, AdaptiveStats, OdeSystem, State, Tableau};
-use crate::rigid::segment::{SegmentEnd, run_segment};
+use crate::interval::Jet;
+use crate::ode::{
+    AdaptiveConfig, AdaptiveRk, AdaptiveStats, EventEnd, OdeEvent, OdeSystem, Progress, State,
+    Tableau, run_to_event,
+};
 
 /// The regime of the contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -134,8 +141,9 @@ impl RollingMotion {
 
     /// Simulates from `t = 0` to `t_max` with DOP853 at the tolerances of `config` (the
     /// error control looks at `x, v, θ, ω`; the work of friction rides along). A slip ends
-    /// when the contact point's velocity `v − ω R` reaches zero, located inside the step by
-    /// the dense output and Brent's method; the step is redone to exactly then, `ω` is set to
+    /// when the contact point's velocity `v − ω R` reaches zero, a terminal event of
+    /// [`run_to_event`] located inside the step by Brent's method on the interpolant; the step
+    /// is redone to exactly then, `ω` is set to
     /// `v/R`, and the body rolls if the friction rolling needs is within `μs N`
     /// ([`RollingMotion::can_roll`]), otherwise it slips on the other way.
     ///
@@ -201,17 +209,15 @@ impl RollingMotion {
             }
             let start = quad(&state);
             samples.push(self.sample(&dynamics, &state));
-            let static_bound = self.friction.max_static(self.normal());
-            let event = |_t: Real, y: &[Real]| match contact {
-                // rolling lasts while the friction it needs is within μs N (on a plane that
-                // is constant: a rolling body keeps rolling)
-                Contact::Rolling => static_bound - dynamics.friction().abs(),
-                Contact::Slipping { direction } => direction * (y[1] - y[3] * radius),
-            };
-            let end = run_segment(&mut rk, &dynamics, &mut state, t_max, &event, &mut |s| {
-                samples.push(self.sample(&dynamics, s));
+            let event = self.switch(&dynamics);
+            rk.reset();
+            let end = run_to_event(&mut rk, &dynamics, &mut state, t_max, &[event], &mut |p| {
+                if let Progress::Step(s) = p {
+                    samples.push(self.sample(&dynamics, s));
+                }
+                ControlFlow::Continue(())
             })?;
-            let switched = end == SegmentEnd::Event;
+            let switched = matches!(end, EventEnd::Terminal { .. });
             if switched && matches!(contact, Contact::Slipping { .. }) {
                 // the contact point is at rest at the located time
                 state.y[3] = state.y[1] / radius;
@@ -242,6 +248,26 @@ impl RollingMotion {
             ledger,
             stats: rk.stats(),
         })
+    }
+
+    /// The end of a regime as a terminal event, positive while it lasts: rolling lasts while
+    /// the friction it needs is within `μs N` (on a plane that is constant: a rolling body
+    /// keeps rolling), slipping while the contact point slides the same way. Both enclosed.
+    fn switch(&self, d: &Dynamics<'_>) -> OdeEvent<'_> {
+        let radius = self.body.radius;
+        let c = Jet::constant;
+        match d.contact {
+            Contact::Rolling => {
+                let margin = self.friction.max_static(self.normal()) - d.friction().abs();
+                OdeEvent::new(move |_, _| margin).bounded_by(move |_, _| Some(c(margin)))
+            }
+            Contact::Slipping { direction } => {
+                OdeEvent::new(move |_, y| direction * (y[1] - y[3] * radius))
+                    .bounded_by(move |_, y| Some(c(direction) * (y[1] - y[3] * c(radius))))
+            }
+        }
+        .falling()
+        .terminal()
     }
 
     fn sample(&self, d: &Dynamics<'_>, s: &State) -> RollSample {

@@ -1,0 +1,17 @@
+//! Events of any [`OdeSystem`](crate::ode::OdeSystem) run by an
+//! [`AdaptiveRk`](crate::ode::AdaptiveRk): functions `g(t, y)` whose crossings of zero are found
+//! inside every step with a guarantee where the function can be enclosed, located by Brent's
+//! method on the interpolant, reported in time order, and, for a terminal event, reached by
+//! integration ([`run_to_event`]).
+//!
+//! `event.rs`: [`OdeEvent`], [`Direction`] and the crossing rules; `scan.rs`: the sample points
+//! of a step (from [`StepProof`](crate::ode::StepProof)) and the first crossings; `driver.rs`:
+//! the loop.
+
+mod driver;
+mod event;
+mod scan;
+
+pub use driver::{EventEnd, EventHit, Progress, run_to_event};
+pub use event::{Direction, OdeEvent};
+pub use scan::SAMPLES;
