@@ -42,25 +42,26 @@ pub(crate) struct Proving<'a> {
     pub work: bool,
     /// Interior samples of an event that cannot be enclosed.
     pub default_interior: usize,
+    /// The states `[q, v]` at the step's start and end (for the samples an unproven event
+    /// asks for: [`Event::samples_needed`]).
+    pub ends: (&'a [Real], &'a [Real]),
 }
+
+/// Most interior samples an unproven event may ask for in one step.
+const MAX_INTERIOR: usize = 100_000;
 
 impl Prover {
     /// Fills `points` with the sorted times strictly inside the step of [`Prover::poly`] at
     /// which the event functions must be sampled: the ends of the pieces that are not
-    /// sign-definite for the events that can be enclosed, evenly spaced samples for the others
-    /// and `extra` more evenly spaced samples (contacts ask for them).
-    pub fn points(
-        &mut self,
-        p: &Proving<'_>,
-        extra: usize,
-        points: &mut Vec<Real>,
-        warnings: &mut Vec<String>,
-    ) {
+    /// sign-definite for the events that can be enclosed, evenly spaced samples for the
+    /// others (at least as many as they ask for: [`Event::samples_needed`]).
+    pub fn points(&mut self, p: &Proving<'_>, points: &mut Vec<Real>, warnings: &mut Vec<String>) {
         points.clear();
         self.fractions.clear();
         self.warned.resize(p.events.len(), false);
         let (t0, h) = (self.poly.t0, self.poly.h);
-        let mut uniform = extra;
+        let asked = |e: &Event| e.samples_needed(p.ends.0, p.ends.1, h).min(MAX_INTERIOR);
+        let mut uniform = 0;
         for (i, event) in p.events.iter().enumerate() {
             if !p.enabled[i] {
                 continue;
@@ -85,9 +86,11 @@ impl Prover {
                             event.name()
                         ));
                     }
-                    uniform = uniform.max(FALLBACK_SAMPLES);
+                    uniform = uniform.max(FALLBACK_SAMPLES).max(asked(event));
                 }
-                ProofOutcome::NotBounded => uniform = uniform.max(p.default_interior),
+                ProofOutcome::NotBounded => {
+                    uniform = uniform.max(p.default_interior).max(asked(event));
+                }
             }
         }
         for j in 1..=uniform {
