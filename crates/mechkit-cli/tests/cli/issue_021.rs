@@ -107,5 +107,8 @@ t_max = 1.4
     let found = events(hoop, "hoop");
     assert_eq!(found.len(), 1, "{found:?}");
     // about t = 1 - 0.05/√(3² + 2.8²) (the velocity at the centre is (3, -2.8) m/s)
-    assert!((found[0] - (1.0 - 0.05 / 16.84_f64.sqrt())).abs() < 1e-3, "{found:?}");
+    assert!(
+        (found[0] - (1.0 - 0.05 / 16.84_f64.sqrt())).abs() < 1e-3,
+        "{found:?}"
+    );
 }

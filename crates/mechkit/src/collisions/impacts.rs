@@ -19,7 +19,9 @@ use std::sync::Arc;
 
 use super::resolve::{Collision, Resolution, Restitution};
 use crate::Real;
-use crate::simulate::{Direction, Event};
+use crate::interval::{Interval, Jet};
+use crate::particles::StateJets;
+use crate::simulate::{Condition, Direction, Event};
 
 /// Relative gap within which two surfaces count as touching.
 const TOUCH: Real = 1e-9;
@@ -39,6 +41,25 @@ fn snapped(gap: Real, scale: Real) -> Real {
     } else {
         gap
     }
+}
+
+/// The enclosure of [`snapped`] over a piece of a step, from the enclosure of the raw `gap`
+/// and an upper bound of `scale`: the raw gap where it is clear of the snapping band, else
+/// its hull with zero. The slope stays the raw gap's: snapping keeps a monotone gap monotone
+/// (non-strictly, with a flat zero), which is what the event proof asks of a slope, a sign
+/// change of the snapped gap at most once over a piece where the raw gap is monotone.
+fn snapped_jet(gap: Jet, scale: Real) -> Jet {
+    let band = (ROUNDING * scale).next_up();
+    if gap.v.lo() > band || gap.v.hi() < -band {
+        gap
+    } else {
+        Jet::new(gap.v.hull(Interval::point(0.0)), gap.d)
+    }
+}
+
+/// The largest magnitude in an enclosure.
+fn magnitude(x: Interval) -> Real {
+    x.lo().abs().max(x.hi().abs())
 }
 
 /// Sample spacing inside a step: a relative displacement of at most this fraction of the radii
@@ -412,6 +433,40 @@ impl Impacts {
         applied
     }
 
+    /// The enclosure of the (snapped) gap of bodies `a` and `b` over a piece of a step.
+    fn pair_gap_jet(&self, j: &StateJets<'_>, a: usize, b: usize, reach: Real) -> Jet {
+        let d = self.dim;
+        let (xa, xb) = (j.position(a, 0), j.position(b, 0));
+        let scale = reach + magnitude(xa.v) + magnitude(xb.v);
+        let raw = if d == 1 {
+            let apart = xb - xa;
+            match self.side(a, b) {
+                Some(side) => Jet::constant(side) * apart - Jet::constant(reach),
+                None => apart.abs() - Jet::constant(reach),
+            }
+        } else {
+            let d2 = (0..d)
+                .map(|k| (j.position(b, k) - j.position(a, k)).sqr())
+                .reduce(|x, y| x + y)
+                .expect("at least one dimension");
+            d2.sqrt() - Jet::constant(reach)
+        };
+        snapped_jet(raw, scale)
+    }
+
+    /// The enclosure of the (snapped) gap of body `i` to wall `w` over a piece of a step.
+    fn wall_gap_jet(&self, j: &StateJets<'_>, i: usize, w: usize, r: Real) -> Jet {
+        let wall = &self.walls[w];
+        let mut distance = Jet::constant(0.0);
+        let mut scale = r + wall.point.iter().map(|x| x.abs()).sum::<Real>();
+        for (k, (p, n)) in wall.point.iter().zip(&wall.normal).enumerate() {
+            let x = j.position(i, k);
+            scale += magnitude(x.v);
+            distance = distance + (x - Jet::constant(*p)) * Jet::constant(*n);
+        }
+        snapped_jet(distance - Jet::constant(r), scale.next_up())
+    }
+
     /// Relative speed of bodies `a` and `b` in `y = [q, v]`.
     fn relative_speed(&self, y: &[Real], a: usize, b: usize) -> Real {
         let d = self.dim;
@@ -439,48 +494,55 @@ impl Impacts {
         for (a, b, reach) in this.pairs() {
             let (g, s, p) = (Arc::clone(&this), Arc::clone(&this), Arc::clone(&this));
             let name = format!("{} hits {}", this.names[a], this.names[b]);
+            let bound = Arc::clone(&this);
+            let gap = Condition::from_fn(name, false, false, move |smp, _| {
+                let scale = reach + g.pos(smp.q, a)[0].abs() + g.pos(smp.q, b)[0].abs();
+                snapped(g.pair_gap(smp.q, a, b, reach), scale)
+            })
+            .with_enclosure(move |j, _| Some(bound.pair_gap_jet(j, a, b, reach)));
             events.push(
-                Event::new(name, move |smp, _| {
-                    let scale = reach + g.pos(smp.q, a)[0].abs() + g.pos(smp.q, b)[0].abs();
-                    snapped(g.pair_gap(smp.q, a, b, reach), scale)
-                })
-                .direction(Direction::Falling)
-                .set(move |_, _, y| {
-                    s.resolve_contacts(y);
-                })
-                .set_description("impulse with restitution")
-                .sampling(move |y0, y1, h| {
-                    if let Some(side) = p.side(a, b) {
-                        // on a line the gap is signed, as a wall's
-                        let rate = |y: &[Real]| side * (y[y.len() / 2 + b] - y[y.len() / 2 + a]);
-                        signed_gap_samples(rate(y0), rate(y1), h, reach)
-                    } else {
-                        let u = p.relative_speed(y0, a, b).max(p.relative_speed(y1, a, b));
-                        samples_for(u, h, reach)
-                    }
-                }),
+                Event::from_function(gap)
+                    .direction(Direction::Falling)
+                    .set(move |_, _, y| {
+                        s.resolve_contacts(y);
+                    })
+                    .set_description("impulse with restitution")
+                    .sampling(move |y0, y1, h| {
+                        if let Some(side) = p.side(a, b) {
+                            // on a line the gap is signed, as a wall's
+                            let rate =
+                                |y: &[Real]| side * (y[y.len() / 2 + b] - y[y.len() / 2 + a]);
+                            signed_gap_samples(rate(y0), rate(y1), h, reach)
+                        } else {
+                            let u = p.relative_speed(y0, a, b).max(p.relative_speed(y1, a, b));
+                            samples_for(u, h, reach)
+                        }
+                    }),
             );
         }
         for (i, w, r) in this.wall_contacts() {
             let (g, s, p) = (Arc::clone(&this), Arc::clone(&this), Arc::clone(&this));
             let name = format!("{} hits {}", this.names[i], this.walls[w].name);
+            let bound = Arc::clone(&this);
+            let gap = Condition::from_fn(name, false, false, move |smp, _| {
+                let wall = &g.walls[w];
+                let r_i = g.pos(smp.q, i);
+                let scale = r + r_i.iter().chain(&wall.point).map(|x| x.abs()).sum::<Real>();
+                snapped(wall.distance(r_i) - r, scale)
+            })
+            .with_enclosure(move |j, _| Some(bound.wall_gap_jet(j, i, w, r)));
             events.push(
-                Event::new(name, move |smp, _| {
-                    let wall = &g.walls[w];
-                    let r_i = g.pos(smp.q, i);
-                    let scale = r + r_i.iter().chain(&wall.point).map(|x| x.abs()).sum::<Real>();
-                    snapped(wall.distance(r_i) - r, scale)
-                })
-                .direction(Direction::Falling)
-                .set(move |_, _, y| {
-                    s.resolve_contacts(y);
-                })
-                .set_description("impulse with restitution")
-                .sampling(move |y0, y1, h| {
-                    let n = p.walls[w].normal.as_slice();
-                    let (u0, u1) = (p.normal_velocity(y0, i, n), p.normal_velocity(y1, i, n));
-                    signed_gap_samples(u0, u1, h, r)
-                }),
+                Event::from_function(gap)
+                    .direction(Direction::Falling)
+                    .set(move |_, _, y| {
+                        s.resolve_contacts(y);
+                    })
+                    .set_description("impulse with restitution")
+                    .sampling(move |y0, y1, h| {
+                        let n = p.walls[w].normal.as_slice();
+                        let (u0, u1) = (p.normal_velocity(y0, i, n), p.normal_velocity(y1, i, n));
+                        signed_gap_samples(u0, u1, h, r)
+                    }),
             );
         }
         events
