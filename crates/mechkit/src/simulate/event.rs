@@ -2,10 +2,10 @@
 //! apex, a crossing), with a direction, an action (record and continue, change the state, or
 //! stop) and limits on how often it fires.
 //!
-//! Inside every step the event functions are evaluated at the ends and at interior points of
-//! the step's interpolant, so a function that crosses zero twice inside one step is not
-//! missed; each crossing is then located by Brent's method on the interpolant to near machine
-//! precision, and the firings of all events are handled in time order.
+//! Inside every step each event function is bounded over pieces of the step's interpolant
+//! ([`super::prove`]), so no sign change inside a step is missed, however short; each crossing
+//! is then located by Brent's method on the interpolant to near machine precision, and the
+//! firings of all events are handled in time order.
 //!
 //! The rules at exact zeros (the cases SciPy's `solve_ivp` gets wrong, issues #9228, #17066,
 //! #19418): arriving at zero is a crossing, at that exact time (a root on a step boundary fires
@@ -19,39 +19,7 @@ use super::condition::Condition;
 use crate::Real;
 use crate::particles::{ParticleSystem, Sample};
 
-/// Which zero crossings of the event function count.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Direction {
-    /// From negative to zero or positive.
-    Rising,
-    /// From positive to zero or negative.
-    Falling,
-    /// Either way.
-    #[default]
-    Both,
-}
-
-impl Direction {
-    /// Name as in scenario files.
-    pub fn name(self) -> &'static str {
-        match self {
-            Direction::Rising => "rising",
-            Direction::Falling => "falling",
-            Direction::Both => "both",
-        }
-    }
-
-    /// Looks a direction up by name (`rising`/`up`/`increasing`, `falling`/`down`/`decreasing`,
-    /// `both`/`any`).
-    pub fn from_name(name: &str) -> Option<Direction> {
-        Some(match name.trim().to_ascii_lowercase().as_str() {
-            "rising" | "up" | "increasing" | "+" => Direction::Rising,
-            "falling" | "down" | "decreasing" | "-" => Direction::Falling,
-            "both" | "any" | "either" => Direction::Both,
-            _ => return None,
-        })
-    }
-}
+pub use crate::ode::events::Direction;
 
 /// What an event does when it fires (besides being recorded).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

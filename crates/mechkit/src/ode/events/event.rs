@@ -26,6 +26,28 @@ pub enum Direction {
     Both,
 }
 
+impl Direction {
+    /// Name as in scenario files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Direction::Rising => "rising",
+            Direction::Falling => "falling",
+            Direction::Both => "both",
+        }
+    }
+
+    /// Looks a direction up by name (`rising`/`up`/`increasing`, `falling`/`down`/`decreasing`,
+    /// `both`/`any`).
+    pub fn from_name(name: &str) -> Option<Direction> {
+        Some(match name.trim().to_ascii_lowercase().as_str() {
+            "rising" | "up" | "increasing" | "+" => Direction::Rising,
+            "falling" | "down" | "decreasing" | "-" => Direction::Falling,
+            "both" | "any" | "either" => Direction::Both,
+            _ => return None,
+        })
+    }
+}
+
 /// The side of zero an event function was last seen on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Side {
