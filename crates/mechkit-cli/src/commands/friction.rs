@@ -287,7 +287,8 @@ fn stick_slip_json(
             })
         })
         .collect();
-    let l = run.ledger;
+    let b = &run.balance;
+    let spring = b.potential.as_ref().expect("the spring has a potential");
     let count = |f: fn(&Regime) -> bool| run.phases.iter().filter(|p| f(&p.regime)).count();
     json!({
         "spring_k": block.k, "belt_speed": block.belt_speed,
@@ -298,11 +299,11 @@ fn stick_slip_json(
         "stick_phases": count(|r| *r == Regime::Stick),
         "slip_phases": count(|r| *r != Regime::Stick),
         "energy": {
-            "kinetic": {"start": l.kinetic.0, "end": l.kinetic.1},
-            "spring": {"start": l.spring.0, "end": l.spring.1},
-            "heat": l.heat, "work_friction": l.work_friction,
-            "work_belt": l.work_belt, "work_anchor": l.work_anchor,
-            "residual": l.residual,
+            "kinetic": {"start": b.kinetic.start, "end": b.kinetic.end},
+            "spring": {"start": spring.start, "end": spring.end},
+            "heat": run.heat(), "work_friction": run.work_friction(),
+            "work_belt": run.work_belt(), "work_anchor": run.work_anchor(),
+            "residual": b.residual(),
         },
         "simulation": {
             "method": "dop853", "rtol": config.rtol.as_scalar(),
@@ -365,23 +366,24 @@ fn stick_slip_text(out: &mut String, block: &SpringBlock, run: &StickSlipRun, ar
             run.phases.len() - TABLE_ROWS
         );
     }
-    let l = run.ledger;
+    let b = &run.balance;
+    let spring = b.potential.as_ref().expect("the spring has a potential");
     let _ = writeln!(
         out,
         "energy: K {} → {} J, spring {} → {} J, heat {} J, work of the belt {} J, of the anchor {} J, of friction on the block {} J",
-        sig(l.kinetic.0),
-        sig(l.kinetic.1),
-        sig(l.spring.0),
-        sig(l.spring.1),
-        sig(l.heat),
-        sig(l.work_belt),
-        sig(l.work_anchor),
-        sig(l.work_friction)
+        sig(b.kinetic.start),
+        sig(b.kinetic.end),
+        sig(spring.start),
+        sig(spring.end),
+        sig(run.heat()),
+        sig(run.work_belt()),
+        sig(run.work_anchor()),
+        sig(run.work_friction())
     );
     let _ = writeln!(
         out,
         "  K + U + heat - W_belt - W_anchor is constant to {:.1e} J",
-        l.residual
+        b.residual()
     );
     let s = run.stats;
     let _ = writeln!(

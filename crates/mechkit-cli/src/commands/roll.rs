@@ -6,6 +6,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use anyhow::{Result, anyhow, bail};
+use mechkit::energy::{EnergyBalance, EnergyPart, EnergyTerm};
 use mechkit::expr::units::Dimension;
 use mechkit::figure::{Band, LineStyle, PlotData, Series};
 use mechkit::ode::AdaptiveConfig;
@@ -105,6 +106,13 @@ pub fn roll(args: &RollArgs) -> Result<Outcome> {
     Ok(Outcome::Success)
 }
 
+/// The translational and rotational parts of `K`, and `U`, of a rolling run's balance.
+fn energy_parts(b: &EnergyBalance) -> (&EnergyPart, &EnergyPart, &EnergyTerm) {
+    let part = |name| b.kinetic.part(name).expect("rolling splits K");
+    let u = b.potential.as_ref().expect("gravity has a potential");
+    (part("translational"), part("rotational"), u)
+}
+
 fn contact_name(c: Contact) -> &'static str {
     match c {
         Contact::Rolling => "rolling",
@@ -124,7 +132,8 @@ fn to_json(m: &RollingMotion, run: &RollingRun, args: &RollArgs, config: &Adapti
     let b = &m.body;
     let closed = m.roll_start();
     let sim = run.roll_start;
-    let l = run.ledger;
+    let balance = &run.balance;
+    let (kt, kr, u) = energy_parts(balance);
     let flat = m.angle == 0.0;
     json!({
         "body": {"k": b.k, "mass": b.mass, "radius": b.radius, "moment_of_inertia": b.moment_of_inertia()},
@@ -152,10 +161,10 @@ fn to_json(m: &RollingMotion, run: &RollingRun, args: &RollArgs, config: &Adapti
             "ended_by": if p.switched { "switch" } else { "t_max" },
         })).collect::<Vec<_>>(),
         "energy": {
-            "translational": {"start": l.translational.0, "end": l.translational.1},
-            "rotational": {"start": l.rotational.0, "end": l.rotational.1},
-            "potential": {"start": l.potential.0, "end": l.potential.1},
-            "work_friction": l.work_friction, "residual": l.residual,
+            "translational": {"start": kt.start, "end": kt.end},
+            "rotational": {"start": kr.start, "end": kr.end},
+            "potential": {"start": u.start, "end": u.end},
+            "work_friction": balance.work_of("friction"), "residual": balance.residual(),
         },
         "simulation": {
             "method": "dop853", "rtol": config.rtol.as_scalar(),
@@ -273,22 +282,23 @@ fn text(m: &RollingMotion, run: &RollingRun, args: &RollArgs) -> String {
             if p.switched { "" } else { " (t_max)" }
         );
     }
-    let l = run.ledger;
+    let balance = &run.balance;
+    let (kt, kr, u) = energy_parts(balance);
     let _ = writeln!(
         out,
         "energy: K_trans {} → {} J, K_rot {} → {} J, U {} → {} J, work of friction {} J",
-        sig(l.translational.0),
-        sig(l.translational.1),
-        sig(l.rotational.0),
-        sig(l.rotational.1),
-        sig(l.potential.0),
-        sig(l.potential.1),
-        sig(l.work_friction)
+        sig(kt.start),
+        sig(kt.end),
+        sig(kr.start),
+        sig(kr.end),
+        sig(u.start),
+        sig(u.end),
+        sig(balance.work_of("friction").expect("rolling books friction"))
     );
     let _ = writeln!(
         out,
         "  K + U - W_friction is constant to {:.1e} J",
-        l.residual
+        balance.residual()
     );
     let s = run.stats;
     let _ = writeln!(
@@ -358,10 +368,7 @@ fn write_outputs(m: &RollingMotion, run: &RollingRun, dir: &Path) -> Result<()> 
     let curve = |f: &dyn Fn(&mechkit::rigid::rolling::RollSample) -> f64| -> Vec<(f64, f64)> {
         run.samples.iter().map(|s| (s.t, f(s))).collect()
     };
-    let e0 = {
-        let l = run.ledger;
-        l.translational.0 + l.rotational.0 + l.potential.0
-    };
+    let e0 = run.balance.energy().0;
     let plots = [
         PlotData::new("v and ωR", "v(t)", "t [s]", "[m/s]")
             .with_series(Series::line("v", curve(&|s| s.v)))

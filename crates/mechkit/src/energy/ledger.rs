@@ -13,6 +13,7 @@
 //! events (a bounce reversing a velocity) change `K` and `U` without any force doing work; they
 //! are booked separately ([`EnergyLedger::jump`]) so the residual still measures the trajectory.
 
+use super::balance::{EnergyBalance, EnergyPart, EnergyTerm, ForceWork};
 use crate::Real;
 use crate::particles::Evaluation;
 
@@ -289,6 +290,46 @@ impl EnergyLedger {
             .filter(|&i| self.potential_each_start[i].is_nan())
             .map(|i| self.work[i])
             .sum()
+    }
+
+    /// The run's [`EnergyBalance`]: `K` and `U` at the start and now (`U` split by force,
+    /// `None` when no force has a potential), the work of every force (those with a potential
+    /// marked conservative) and the energy changed by events ([`EnergyLedger::jump_energy`]).
+    /// Its residual is `ΔE − W_nc − ΔE_events`, the energy form of the check
+    /// (`work_energy_residual` is the kinetic form).
+    pub fn balance(&self) -> EnergyBalance {
+        let conservative = |i: usize| !self.potential_each_start[i].is_nan();
+        let potential = self
+            .potential_start
+            .zip(self.potential_end)
+            .map(|(start, end)| EnergyTerm {
+                start,
+                end,
+                parts: (0..self.names.len())
+                    .filter(|&i| conservative(i))
+                    .map(|i| EnergyPart {
+                        name: self.names[i].clone(),
+                        start: self.potential_each_start[i],
+                        end: self.potential_each_end[i],
+                    })
+                    .collect(),
+            });
+        EnergyBalance {
+            kinetic: EnergyTerm::new(self.kinetic_start, self.kinetic_end),
+            potential,
+            work: self
+                .names
+                .iter()
+                .zip(&self.work)
+                .enumerate()
+                .map(|(i, (name, &work))| ForceWork {
+                    name: name.clone(),
+                    work,
+                    conservative: conservative(i),
+                })
+                .collect(),
+            events: self.jump_energy(),
+        }
     }
 }
 

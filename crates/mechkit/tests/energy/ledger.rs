@@ -154,3 +154,46 @@ fn energy_drift_per_method_on_a_kepler_orbit() {
     assert!(vv.abs() < 1e-4, "Verlet relative drift {vv}");
     assert!(rk4.abs() < 1e-5, "RK4 relative drift {rk4}");
 }
+
+/// The ledger's balance: `Δ(K + U) = W_air` for a ball with drag, gravity listed as a
+/// conservative force with its potential as a named part.
+#[test]
+fn the_balance_of_a_run_books_drag_as_non_conservative_work() {
+    let (m, d) = (0.145, 9.0e-4);
+    let sys = ParticleSystem::builder(2)
+        .body("ball", m)
+        .force(UniformGravity::new("gravity", vec![0], 9.81))
+        .force(QuadraticDrag::new("air", vec![Target::new(0, d)]))
+        .build()
+        .unwrap();
+    let report = Simulation::new(&sys, Method::Rk4, 1e-3)
+        .t_max(4.0)
+        .run(State::from_qv(0.0, &[0.0, 0.0], &[30.0, 20.0]), &mut [])
+        .unwrap();
+    let l = &report.ledger;
+    let b = l.balance();
+    assert_eq!(b.kinetic.start, l.kinetic_start());
+    assert_eq!(b.kinetic.end, l.kinetic_end());
+    let u = b.potential.as_ref().expect("gravity has a potential");
+    assert_eq!(
+        (Some(u.start), Some(u.end)),
+        (l.potential_start(), l.potential_end())
+    );
+    assert_eq!(u.parts.len(), 1);
+    assert_eq!(u.parts[0].name, "gravity");
+    let names: Vec<(&str, bool)> = b
+        .work
+        .iter()
+        .map(|w| (w.name.as_str(), w.conservative))
+        .collect();
+    assert_eq!(names, [("gravity", true), ("air", false)]);
+    assert_eq!(b.work_of("air"), l.work_of("air"));
+    assert_eq!(b.non_conservative_work(), l.work_of("air").unwrap());
+    assert_eq!(b.events, 0.0);
+    let w_air = l.work_of("air").unwrap();
+    assert!(
+        b.residual().abs() < 1e-6 * w_air.abs(),
+        "residual {} of W_air = {w_air}",
+        b.residual()
+    );
+}

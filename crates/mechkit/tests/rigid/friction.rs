@@ -11,7 +11,8 @@
 //!   every slip phase equals the harmonic solution at every sample;
 //! - a block released on a fixed floor: each slip is a half period `π/Ω`, the amplitude drops
 //!   by `2 μd N/k` per half cycle, and it stops at the first turning point inside `μs N/k`;
-//! - the ledger `K + U + Q − W_belt − W_anchor` is constant (heat `Q ≥ 0`, non-decreasing);
+//! - the energy balance `K + U + Q − W_belt − W_anchor` is constant (heat `Q ≥ 0`, the
+//!   negative work of friction relative to the surface, non-decreasing);
 //! - `μs < μd` warns and uses `μd` as the static bound; negative coefficients are refused.
 
 use mechkit::ode::{AdaptiveConfig, Tolerance};
@@ -212,7 +213,7 @@ fn released_block_stops_after_whole_half_cycles() {
     assert!((x_end - x_exact).abs() < 1e-12);
     // the heat is exactly the spring energy lost
     let heat = 0.5 * k * (a * a - x_exact * x_exact);
-    assert!((run.ledger.heat - heat).abs() < 1e-12 * heat);
+    assert!((run.heat() - heat).abs() < 1e-12 * heat);
 }
 
 #[test]
@@ -229,19 +230,23 @@ fn energy_ledger_closes_and_heat_only_grows() {
     ];
     for block in cases {
         let run = block.simulate(5.0, &config()).unwrap();
-        let l = run.ledger;
-        let scale = l.kinetic.0 + l.spring.0 + l.heat + l.work_belt.abs() + l.work_anchor.abs();
+        let b = &run.balance;
+        let spring = b.potential.as_ref().unwrap();
+        assert_eq!(spring.parts[0].name, "spring");
+        let (heat, w_belt, w_anchor) = (run.heat(), run.work_belt(), run.work_anchor());
+        let scale = b.kinetic.start + spring.start + heat + w_belt.abs() + w_anchor.abs();
         println!(
-            "ledger: heat {:.6} J, W_belt {:.6} J, W_anchor {:.6} J, residual {:.1e} J ({} phases)",
-            l.heat,
-            l.work_belt,
-            l.work_anchor,
-            l.residual,
+            "balance: heat {heat:.6} J, W_belt {w_belt:.6} J, W_anchor {w_anchor:.6} J, residual {:.1e} J ({} phases)",
+            b.residual(),
             run.phases.len()
         );
-        assert!(l.residual.abs() < 1e-11 * scale.max(1.0), "{l:?}");
-        assert!((l.work_friction - (l.work_belt - l.heat)).abs() < 1e-15 * scale.max(1.0));
-        assert!(l.heat > 0.0);
+        assert!(b.residual().abs() < 1e-11 * scale.max(1.0), "{b:?}");
+        // the same balance in the form K + U + Q − (K0 + U0 + W_belt + W_anchor)
+        let (e0, e1) = b.energy();
+        assert!(((e1 + heat) - (e0 + w_belt + w_anchor)).abs() < 1e-11 * scale.max(1.0));
+        assert_eq!(b.work_of("friction"), Some(-heat));
+        assert!((run.work_friction() - (w_belt - heat)).abs() < 1e-15 * scale.max(1.0));
+        assert!(heat > 0.0);
         assert!(
             run.samples
                 .windows(2)
@@ -266,7 +271,7 @@ fn mu_static_below_mu_dynamic_warns_and_bounds_with_mu_dynamic() {
     let t_stick = 0.5 * 9.81 / (100.0 * 0.05);
     assert!((run.phases[0].end.0 - t_stick).abs() < 1e-12);
     // with μs = μd the slip starts without a jump in friction: from v = 0 it ends at v = 0
-    assert!(run.ledger.residual.abs() < 1e-12);
+    assert!(run.balance.residual().abs() < 1e-12);
 }
 
 #[test]

@@ -11,7 +11,7 @@
 //!   when the backspin is strong;
 //! - on a slope steeper than `atan(μs (1 + k)/k)` the body never rolls: the contact point
 //!   stops sliding one way and breaks away the other;
-//! - the ledger `K_trans + K_rot + U − W_friction` is constant, with the work of friction
+//! - the energy balance `K_trans + K_rot + U − W_friction` is constant, with the work of friction
 //!   `−μd N · v_c0²/(2 |v̇_c|)` over the slip and zero while rolling;
 //! - shapes give their inertia factors; a body with no radius cannot roll.
 
@@ -178,13 +178,16 @@ fn energy_ledger_closes_and_friction_works_only_while_slipping() {
     for (deg, v0, w0) in [(20.0, 2.0, -30.0), (0.0, 2.0, -60.0), (30.0, 0.0, 50.0)] {
         let motion = sphere_on_slope(deg, v0, w0);
         let run = motion.simulate(3.0, &config(1e-12)).unwrap();
-        let l = run.ledger;
-        let e0 = l.translational.0 + l.rotational.0;
+        let b = &run.balance;
+        let e0 = b.kinetic.start;
+        let (kt, kr) = (b.kinetic.parts[0].start, b.kinetic.parts[1].start);
+        assert_eq!((kt, kr), motion.kinetic(v0, w0));
+        let work_friction = b.work_of("friction").unwrap();
         println!(
-            "α = {deg}°: W_friction = {:.9} J, residual {:.1e} J",
-            l.work_friction, l.residual
+            "α = {deg}°: W_friction = {work_friction:.9} J, residual {:.1e} J",
+            b.residual()
         );
-        assert!(l.residual.abs() < 1e-12 * e0.max(1.0));
+        assert!(b.residual().abs() < 1e-12 * e0.max(1.0));
         // the slip's work in closed form: −μd N ∫|v_c| dt = −μd N v_c0²/(2|v̇_c|)
         let alpha = deg.to_radians();
         let n = 0.45 * 9.81 * alpha.cos();
@@ -192,9 +195,8 @@ fn energy_ledger_closes_and_friction_works_only_while_slipping() {
         let rate = 9.81 * alpha.sin() - vc0.signum() * 0.3 * 9.81 * alpha.cos() * 3.5;
         let w_exact = -0.3 * n * vc0 * vc0 / (2.0 * rate.abs());
         assert!(
-            (l.work_friction - w_exact).abs() < 1e-12 * w_exact.abs(),
-            "{} {w_exact}",
-            l.work_friction
+            (work_friction - w_exact).abs() < 1e-12 * w_exact.abs(),
+            "{work_friction} {w_exact}"
         );
         let t_roll = run.roll_start.unwrap().0;
         let at_roll = run

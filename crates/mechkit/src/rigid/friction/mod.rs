@@ -20,8 +20,9 @@
 //! s μd N`, a harmonic oscillation about a shifted centre, until `v − u` returns to 0. Both
 //! switches are events located inside the integrator's step ([`SpringBlock::simulate`]); the
 //! closed forms ([`SpringBlock::exact_slip`], [`SpringBlock::exact_slip_end`],
-//! [`SpringBlock::exact_stick_end`]) check it. The ledger balances
-//! `K + U_spring + Q = K0 + U0 + W_belt + W_anchor`, with `Q = ∫ μd N |v − u| dt` the heat.
+//! [`SpringBlock::exact_stick_end`]) check it. The energy balance
+//! ([`crate::energy::EnergyBalance`]) closes `K + U_spring + Q = K0 + U0 + W_belt + W_anchor`,
+//! with `Q = ∫ μd N |v − u| dt` the heat, the negative work of friction relative to the surface.
 
 mod coulomb;
 mod error;
@@ -31,4 +32,4 @@ mod stick_slip;
 pub use coulomb::{Coulomb, FrictionWarning, Incline, InclineReport};
 pub use error::FrictionError;
 pub use spring_block::{PhaseStart, SpringBlock};
-pub use stick_slip::{Phase, PhaseEnd, Regime, StickSlipLedger, StickSlipRun, StickSlipSample};
+pub use stick_slip::{Phase, PhaseEnd, Regime, StickSlipRun, StickSlipSample};

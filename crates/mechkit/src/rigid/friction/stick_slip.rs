@@ -1,7 +1,7 @@
 //! The stick-slip simulation of a [`SpringBlock`]: each regime integrated with DOP853 by the
 //! one event driver ([`run_to_event`]), its end a terminal event with an enclosure (so a switch
 //! is never missed inside a step, and the step is redone to end exactly there), the phases
-//! listed, and the energy ledger kept by integrating the heat and the work of the belt and of
+//! listed, and the energy balance kept by integrating the heat and the work of the belt and of
 //! the anchor with the motion.
 
 use std::ops::ControlFlow;
@@ -9,6 +9,7 @@ use std::ops::ControlFlow;
 use super::error::FrictionError;
 use super::spring_block::SpringBlock;
 use crate::Real;
+use crate::energy::{EnergyBalance, EnergyTerm};
 use crate::interval::Jet;
 use crate::ode::{
     AdaptiveConfig, AdaptiveRk, AdaptiveStats, EventEnd, OdeEvent, OdeSystem, Progress, State,
@@ -74,25 +75,6 @@ pub struct StickSlipSample {
     pub work_anchor: Real,
 }
 
-/// The energy balance of a run: `K + U + Q = K0 + U0 + W_belt + W_anchor`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct StickSlipLedger {
-    /// Kinetic energy at start and end (J).
-    pub kinetic: (Real, Real),
-    /// Spring energy at start and end (J).
-    pub spring: (Real, Real),
-    /// Heat `Q = ∫ μd N |v − u| dt` generated while slipping (J, ≥ 0).
-    pub heat: Real,
-    /// Work of friction on the block in the ground frame, `∫ f v dt = W_belt − Q` (J).
-    pub work_friction: Real,
-    /// Work of the moving surface, `∫ f u dt` (J); 0 on a fixed floor.
-    pub work_belt: Real,
-    /// Work of the moving anchor, `∫ F_s w dt` (J); 0 for a fixed wall.
-    pub work_anchor: Real,
-    /// `(K + U + Q) − (K0 + U0 + W_belt + W_anchor)` (J): zero up to the integration error.
-    pub residual: Real,
-}
-
 /// A simulated stick-slip motion ([`SpringBlock::simulate`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct StickSlipRun {
@@ -100,8 +82,11 @@ pub struct StickSlipRun {
     pub samples: Vec<StickSlipSample>,
     /// The stick and slip intervals in order.
     pub phases: Vec<Phase>,
-    /// The energy ledger.
-    pub ledger: StickSlipLedger,
+    /// The energy balance: `K`, the spring's `U` (part `"spring"`), and the work of
+    /// `"friction"` (relative to the surface, `∫ f (v − u) dt = −Q`: the heat is its negative),
+    /// of the `"belt"` (`∫ f u dt`, 0 on a fixed floor) and of the `"anchor"` (`∫ F_s w dt`, 0
+    /// for a fixed wall); the first two add up to the work of friction on the block.
+    pub balance: EnergyBalance,
     /// The integrator's counters over the run.
     pub stats: AdaptiveStats,
 }
@@ -194,7 +179,7 @@ impl SpringBlock {
     /// let (t1, x1, _) = run.phases[0].end;
     /// assert_relative_eq!(x1, 0.6 * 9.81 / 100.0, max_relative = 1e-12);
     /// assert_relative_eq!(t1, x1 / 0.1, max_relative = 1e-12);
-    /// assert!(run.ledger.residual.abs() < 1e-10);
+    /// assert!(run.balance.residual().abs() < 1e-10);
     /// # Ok::<(), mechkit::rigid::friction::FrictionError>(())
     /// ```
     pub fn simulate(
@@ -277,11 +262,11 @@ impl SpringBlock {
                 Regime::Slip { .. } => self.regime_at_rest(t1, x1),
             };
         }
-        let ledger = self.ledger(&state);
+        let balance = self.balance(&state);
         Ok(StickSlipRun {
             samples,
             phases,
-            ledger,
+            balance,
             stats: rk.stats(),
         })
     }
@@ -325,22 +310,46 @@ impl SpringBlock {
         }
     }
 
-    fn ledger(&self, end: &State) -> StickSlipLedger {
+    fn balance(&self, end: &State) -> EnergyBalance {
         let kinetic = |v: Real| 0.5 * self.mass * v * v;
-        let (k0, k1) = (kinetic(self.v0), kinetic(end.y[1]));
-        let (u0, u1) = (
+        let spring = (
             self.spring_energy(0.0, self.x0),
             self.spring_energy(end.t, end.y[0]),
         );
         let (heat, work_belt, work_anchor) = (end.y[2], end.y[3], end.y[4]);
-        StickSlipLedger {
-            kinetic: (k0, k1),
-            spring: (u0, u1),
-            heat,
-            work_friction: work_belt - heat,
-            work_belt,
-            work_anchor,
-            residual: (k1 + u1 + heat) - (k0 + u0 + work_belt + work_anchor),
-        }
+        EnergyBalance::new(EnergyTerm::new(kinetic(self.v0), kinetic(end.y[1])))
+            .with_potential(EnergyTerm::from_parts([("spring", spring.0, spring.1)]))
+            .with_work("friction", -heat)
+            .with_work("belt", work_belt)
+            .with_work("anchor", work_anchor)
+    }
+}
+
+impl StickSlipRun {
+    /// The heat `Q = ∫ μd N |v − u| dt` generated while slipping (J, ≥ 0): the negative work
+    /// of friction relative to the surface.
+    pub fn heat(&self) -> Real {
+        -self.work("friction")
+    }
+
+    /// The work of friction on the block in the ground frame, `∫ f v dt = W_belt − Q` (J).
+    pub fn work_friction(&self) -> Real {
+        self.work("belt") - self.heat()
+    }
+
+    /// The work of the moving surface through friction, `∫ f u dt` (J); 0 on a fixed floor.
+    pub fn work_belt(&self) -> Real {
+        self.work("belt")
+    }
+
+    /// The work of the moving anchor through the spring, `∫ F_s w dt` (J); 0 for a fixed wall.
+    pub fn work_anchor(&self) -> Real {
+        self.work("anchor")
+    }
+
+    fn work(&self, name: &str) -> Real {
+        self.balance
+            .work_of(name)
+            .expect("a stick-slip balance books friction, belt and anchor")
     }
 }

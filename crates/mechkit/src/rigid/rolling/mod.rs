@@ -19,7 +19,7 @@
 //! while `|f| ≤ μs N`, i.e. `|tan α| ≤ μs (1 + k)/k`; on a steeper slope the body slips on.
 //!
 //! [`RollingMotion::simulate`] integrates each regime with DOP853 and locates the switch
-//! exactly when `v_c` reaches zero; the ledger checks `K_trans + K_rot + U − W_friction`
+//! exactly when `v_c` reaches zero; its energy balance checks `K_trans + K_rot + U − W_friction`
 //! constant, with the work of friction `∫ f v_c dt` negative while slipping and zero while
 //! rolling.
 
@@ -31,4 +31,4 @@ mod run;
 pub use body::RollingBody;
 pub use error::RollingError;
 pub use motion::RollingMotion;
-pub use run::{Contact, RollLedger, RollPhase, RollSample, RollingRun};
+pub use run::{Contact, RollPhase, RollSample, RollingRun};

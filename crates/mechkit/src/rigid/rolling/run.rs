@@ -1,7 +1,7 @@
 //! The simulated motion of a [`RollingMotion`]: slipping and rolling integrated with DOP853 by
 //! the one event driver ([`run_to_event`]), the start of rolling a terminal event where the
 //! contact point's velocity reaches zero (enclosed, so never missed inside a step; the step
-//! redone to end exactly there), and the energy ledger with the work of friction integrated
+//! redone to end exactly there), and the energy balance with the work of friction integrated
 //! along.
 
 use std::ops::ControlFlow;
@@ -9,6 +9,7 @@ use std::ops::ControlFlow;
 use super::error::RollingError;
 use super::motion::RollingMotion;
 use crate::Real;
+use crate::energy::{EnergyBalance, EnergyTerm};
 use crate::interval::Jet;
 use crate::ode::{
     AdaptiveConfig, AdaptiveRk, AdaptiveStats, EventEnd, OdeEvent, OdeSystem, Progress, State,
@@ -63,21 +64,6 @@ pub struct RollSample {
     pub work_friction: Real,
 }
 
-/// The energy balance of a run: `K_trans + K_rot + U = E0 + W_friction`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RollLedger {
-    /// `½ m v²` at start and end (J).
-    pub translational: (Real, Real),
-    /// `½ I ω²` at start and end (J).
-    pub rotational: (Real, Real),
-    /// `−m g x sin α` at start and end (J).
-    pub potential: (Real, Real),
-    /// Work of friction `∫ f (v − ω R) dt` (J): negative while slipping, zero while rolling.
-    pub work_friction: Real,
-    /// `(K + U)_end − (K + U)_start − W_friction` (J): zero up to the integration error.
-    pub residual: Real,
-}
-
 /// A simulated motion ([`RollingMotion::simulate`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RollingRun {
@@ -89,8 +75,11 @@ pub struct RollingRun {
     pub roll_start: Option<(Real, Real, Real, Real)>,
     /// The friction force while rolling (N), as the simulation applied it, if it rolls.
     pub rolling_friction: Option<Real>,
-    /// The energy ledger.
-    pub ledger: RollLedger,
+    /// The energy balance `K_trans + K_rot + U = E0 + W_friction`: `K` in the parts
+    /// `"translational"` (`½ m v²`) and `"rotational"` (`½ I ω²`), `U = −m g x sin α` (part
+    /// `"gravity"`), and the work of `"friction"` `∫ f (v − ω R) dt`, negative while slipping,
+    /// zero while rolling.
+    pub balance: EnergyBalance,
     /// The integrator's counters.
     pub stats: AdaptiveStats,
 }
@@ -239,13 +228,13 @@ impl RollingMotion {
                 },
             };
         }
-        let ledger = self.ledger(&state);
+        let balance = self.balance(&state);
         Ok(RollingRun {
             samples,
             phases,
             roll_start,
             rolling_friction,
-            ledger,
+            balance,
             stats: rk.stats(),
         })
     }
@@ -284,17 +273,15 @@ impl RollingMotion {
         }
     }
 
-    fn ledger(&self, end: &State) -> RollLedger {
+    fn balance(&self, end: &State) -> EnergyBalance {
         let (kt0, kr0) = self.kinetic(self.v0, self.omega0);
         let (kt1, kr1) = self.kinetic(end.y[1], end.y[3]);
         let (u0, u1) = (self.potential(self.x0), self.potential(end.y[0]));
-        let work_friction = end.y[4];
-        RollLedger {
-            translational: (kt0, kt1),
-            rotational: (kr0, kr1),
-            potential: (u0, u1),
-            work_friction,
-            residual: (kt1 + kr1 + u1) - (kt0 + kr0 + u0) - work_friction,
-        }
+        EnergyBalance::new(EnergyTerm::from_parts([
+            ("translational", kt0, kt1),
+            ("rotational", kr0, kr1),
+        ]))
+        .with_potential(EnergyTerm::from_parts([("gravity", u0, u1)]))
+        .with_work("friction", end.y[4])
     }
 }
