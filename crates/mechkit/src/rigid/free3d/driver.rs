@@ -7,7 +7,7 @@ use super::equations::SpinEquations;
 use super::error::Free3dError;
 use super::splitting::split_step;
 use crate::Real;
-use crate::ode::{AdaptiveRk, ExplicitRk, OdeSystem, State, Stepper, hermite};
+use crate::ode::{AdaptiveRk, ExplicitRk, OdeSystem, State, StepPolynomial, Stepper, hermite};
 
 /// The integrator in use and what it needs to interpolate inside its last step.
 pub(super) enum Driver {
@@ -61,6 +61,21 @@ impl Driver {
                 let s = if w.h == 0.0 { 1.0 } else { (t - w.t0) / w.h };
                 for (i, o) in out.iter_mut().enumerate() {
                     *o = hermite(w.y0[i], w.f0[i], w.y1[i], w.f1[i], w.h, s);
+                }
+            }
+        }
+    }
+
+    /// The interpolant of the last step as a polynomial per component (the same one
+    /// [`Driver::interpolate`] reads), for enclosures of the motion inside the step.
+    pub(super) fn step_polynomial(&mut self, eq: &SpinEquations, out: &mut StepPolynomial) {
+        match self {
+            Driver::Adaptive(rk) => rk.dense_polynomial_into(eq, out),
+            Driver::Fixed { window, .. } | Driver::Splitting { window, .. } => {
+                let w = window;
+                out.reset(w.t0, w.h, w.y0.len(), 4);
+                for i in 0..w.y0.len() {
+                    out.set_hermite(i, (w.y0[i], w.f0[i]), (w.y1[i], w.f1[i]));
                 }
             }
         }

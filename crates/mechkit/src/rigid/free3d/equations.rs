@@ -16,6 +16,7 @@ use nalgebra::{Quaternion, UnitQuaternion};
 
 use super::body::{Attitude, SpinningBody};
 use crate::Real;
+use crate::interval::Jet;
 use crate::mass::Vec3;
 use crate::ode::OdeSystem;
 
@@ -64,36 +65,64 @@ impl Formulation {
 /// slow in unoptimised builds).
 pub(super) type Rows = [[Real; 3]; 3];
 
+/// What [`rotation`] and the matrix products compute with: plain numbers, or [`Jet`]s (the
+/// enclosures of a piece of a step, with the same operations in the same order).
+pub(super) trait Scalar:
+    Copy
+    + std::ops::Add<Output = Self>
+    + std::ops::Sub<Output = Self>
+    + std::ops::Mul<Output = Self>
+    + std::ops::Div<Output = Self>
+{
+    /// A constant.
+    fn c(x: Real) -> Self;
+}
+
+impl Scalar for Real {
+    #[inline]
+    fn c(x: Real) -> Self {
+        x
+    }
+}
+
+impl Scalar for Jet {
+    #[inline]
+    fn c(x: Real) -> Self {
+        Jet::constant(x)
+    }
+}
+
 /// `R(q/|q|)` of a quaternion `(w, x, y, z)`, as rows.
-pub(super) fn rotation(y: &[Real]) -> Rows {
+pub(super) fn rotation<T: Scalar>(y: &[T]) -> [[T; 3]; 3] {
     let (w, x, yy, z) = (y[0], y[1], y[2], y[3]);
-    let s = 2.0 / (w * w + x * x + yy * yy + z * z);
+    let one = T::c(1.0);
+    let s = T::c(2.0) / (w * w + x * x + yy * yy + z * z);
     [
         [
-            1.0 - s * (yy * yy + z * z),
+            one - s * (yy * yy + z * z),
             s * (x * yy - w * z),
             s * (x * z + w * yy),
         ],
         [
             s * (x * yy + w * z),
-            1.0 - s * (x * x + z * z),
+            one - s * (x * x + z * z),
             s * (yy * z - w * x),
         ],
         [
             s * (x * z - w * yy),
             s * (yy * z + w * x),
-            1.0 - s * (x * x + yy * yy),
+            one - s * (x * x + yy * yy),
         ],
     ]
 }
 
 /// `M v`.
-pub(super) fn mul(m: &Rows, v: [Real; 3]) -> [Real; 3] {
+pub(super) fn mul<T: Scalar>(m: &[[T; 3]; 3], v: [T; 3]) -> [T; 3] {
     m.map(|r| r[0] * v[0] + r[1] * v[1] + r[2] * v[2])
 }
 
 /// `Mᵀ v`.
-pub(super) fn mul_t(m: &Rows, v: [Real; 3]) -> [Real; 3] {
+pub(super) fn mul_t<T: Scalar>(m: &[[T; 3]; 3], v: [T; 3]) -> [T; 3] {
     [0, 1, 2].map(|c| m[0][c] * v[0] + m[1][c] * v[1] + m[2][c] * v[2])
 }
 
@@ -152,21 +181,23 @@ impl<'a> SpinEquations<'a> {
         }
     }
 
+    /// Encloses `ω` in the body frame (and its time derivative) over a piece of a step, from
+    /// the enclosures of the state's components there.
+    pub(super) fn omega_body_jet(&self, y: &[Jet]) -> [Jet; 3] {
+        let r = rotation(y);
+        let l = [y[4], y[5], y[6]];
+        let lb = match self.formulation {
+            Formulation::World => mul_t(&r, l),
+            Formulation::Body => l,
+        };
+        let inverse = self.inverse.map(|row| row.map(Jet::constant));
+        mul(&inverse, lb)
+    }
+
     /// `ω` in the body frame at the state `y`.
     pub fn omega_body(&self, y: &[Real]) -> Vec3 {
         let lb = self.l_body(&rotation(y), y);
         Vec3::from(mul(&self.inverse, lb))
-    }
-
-    /// `ω` and `dω/dt` in the body frame at the state `y`: `J dω/dt = L_body × ω + τ_body`.
-    pub(super) fn omega_rate(&self, y: &[Real]) -> ([Real; 3], [Real; 3]) {
-        let r = rotation(y);
-        let lb = self.l_body(&r, y);
-        let w = mul(&self.inverse, lb);
-        let tb = mul_t(&r, self.torque(&r));
-        let c = cross(lb, w);
-        let rate = mul(&self.inverse, [c[0] + tb[0], c[1] + tb[1], c[2] + tb[2]]);
-        (w, rate)
     }
 
     /// The world torque `(R d) × (0, 0, −m g)`.

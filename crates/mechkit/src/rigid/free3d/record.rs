@@ -1,5 +1,6 @@
 //! What a run keeps as it goes: samples on the output grid, the zeros of ω about the
-//! intermediate axis (located by Brent's method on the interpolant), the largest deviations of
+//! intermediate axis (none missed: proven pieces of each step's interpolant, then Brent's
+//! method), the largest deviations of
 //! the conserved quantities at step ends, and the unwrapped precession angle.
 
 use super::body::{Attitude, SpinningBody};
@@ -7,7 +8,8 @@ use super::driver::Driver;
 use super::equations::{Formulation, SpinEquations};
 use super::run::{Conservation, Crossing, SpinSample};
 use crate::Real;
-use crate::ode::{State, hermite};
+use crate::interval::Jet;
+use crate::ode::{ProofOutcome, State, StepPolynomial, StepProof};
 
 /// What is kept of the run as it goes.
 pub(super) struct Record<'a> {
@@ -26,9 +28,16 @@ pub(super) struct Record<'a> {
     phi: Real,
     /// The intermediate axis (free bodies) and the smallest |ω| component taken as a sign.
     watch: Option<(usize, Real)>,
-    /// ω about the watched axis and its rate at the last step end (where ω ≠ 0).
-    g_end: (Real, Real),
+    /// ω about the watched axis at the last step end where it was not 0.
+    g_end: Real,
+    /// The step's interpolant, its proof and the sample fractions (reused).
+    poly: StepPolynomial,
+    proof: StepProof,
+    fractions: Vec<Real>,
 }
+
+/// Evenly spaced intervals of a step whose proof ran out of bounds.
+const FALLBACK_PARTS: usize = 8;
 
 /// `x` wrapped to `(−π, π]`.
 fn wrap(x: Real) -> Real {
@@ -51,8 +60,7 @@ impl<'a> Record<'a> {
             .pivot()
             .is_none()
             .then(|| (body.body().intermediate_axis(), 1e-12 * omega.norm()));
-        let (w0, r0) = eq.omega_rate(&y0);
-        let g_end = watch.map_or((0.0, 0.0), |(k, _)| (w0[k], r0[k]));
+        let g_end = watch.map_or(0.0, |(k, _)| eq.omega_body(&y0)[k]);
         let mut r = Record {
             body,
             formulation: eq.formulation(),
@@ -67,6 +75,9 @@ impl<'a> Record<'a> {
             phi: invariants[4],
             watch,
             g_end,
+            poly: StepPolynomial::default(),
+            proof: StepProof::default(),
+            fractions: Vec::new(),
         };
         r.sample(0.0, &y0);
         r
@@ -131,10 +142,11 @@ impl<'a> Record<'a> {
         self.phi += wrap(phi - self.phi);
     }
 
-    /// Zeros of ω about `axis` in `[t0, t1]`. A screen first: the cubic Hermite of ω from its
-    /// values and exact rates (Euler's equations) at both ends, at eight sub-intervals; only
-    /// where it or the end values change sign is the step's interpolant evaluated at the
-    /// sub-intervals, and each sign change refined by Brent's method.
+    /// Zeros of ω about `axis` in `[t0, t1]`, none missed: ω is bounded over pieces of the
+    /// step's interpolant ([`StepProof`], with `ω` enclosed through the rotation of the
+    /// enclosed quaternion), evaluated at the ends of the pieces where it may change sign (at
+    /// [`FALLBACK_PARTS`] evenly spaced points if the proof runs out of bounds), and each sign
+    /// change between two of them larger than the noise is refined by Brent's method.
     fn locate_crossings(
         &mut self,
         driver: &mut Driver,
@@ -144,19 +156,21 @@ impl<'a> Record<'a> {
         noise: Real,
         y1: &[Real],
     ) {
-        const PARTS: usize = 8;
-        let (g0, d0) = self.g_end;
-        let (w1, r1) = eq.omega_rate(y1);
-        let (g1, d1) = (w1[axis], r1[axis]);
+        let g0 = self.g_end;
+        let g1 = eq.omega_body(y1)[axis];
         let h = t1 - t0;
-        let opposite = |g: Real| (g0 < 0.0 && g >= 0.0) || (g0 > 0.0 && g <= 0.0);
-        let may_cross = opposite(g1)
-            || (1..PARTS).any(|j| opposite(hermite(g0, d0, g1, d1, h, j as Real / PARTS as Real)));
-        if !may_cross {
-            if g1 != 0.0 {
-                self.g_end = (g1, d1);
-            }
-            return;
+        driver.step_polynomial(eq, &mut self.poly);
+        let poly = &self.poly;
+        let outcome = self.proof.cut(t0, h, &mut |s| {
+            let y: [Jet; 7] = std::array::from_fn(|i| poly.enclose(i, s));
+            Some(eq.omega_body_jet(&y)[axis])
+        });
+        self.fractions.clear();
+        if outcome == ProofOutcome::Proven {
+            self.proof.sample_fractions_into(&mut self.fractions);
+        } else {
+            self.fractions
+                .extend((1..FALLBACK_PARTS).map(|j| j as Real / FALLBACK_PARTS as Real));
         }
         let mut y = [0.0; 7];
         let mut omega_at = |driver: &mut Driver, t: Real| {
@@ -164,13 +178,14 @@ impl<'a> Record<'a> {
             eq.omega_body(&y)[axis]
         };
         let (mut ta, mut ga) = (t0, g0);
-        for j in 1..=PARTS {
-            let tb = if j == PARTS {
-                t1
-            } else {
-                t0 + h * j as Real / PARTS as Real
-            };
-            let gb = if j == PARTS { g1 } else { omega_at(driver, tb) };
+        let inside = self
+            .fractions
+            .iter()
+            .map(|s| t0 + s * h)
+            .filter(|t| *t > t0 && *t < t1);
+        let points: Vec<Real> = inside.chain(std::iter::once(t1)).collect();
+        for tb in points {
+            let gb = if tb == t1 { g1 } else { omega_at(driver, tb) };
             let significant = ga.abs().max(gb.abs()) > noise;
             if significant && ((ga < 0.0 && gb > 0.0) || (ga > 0.0 && gb < 0.0)) {
                 let root = crate::roots::brent_with_values(
@@ -191,7 +206,7 @@ impl<'a> Record<'a> {
             }
         }
         if g1 != 0.0 {
-            self.g_end = (g1, d1);
+            self.g_end = g1;
         }
     }
 }
