@@ -119,7 +119,7 @@ impl StepPolynomial {
         // Taylor shift to m: repeated synthetic division by (x - m)
         for k in 0..n {
             for j in (k..n - 1).rev() {
-                b[j] = b[j + 1].mul_add(m, b[j]);
+                b[j] += m * b[j + 1];
             }
         }
         // a priori bound on the rounding of every b_k
