@@ -178,13 +178,14 @@ impl<'a> Record<'a> {
             eq.omega_body(&y)[axis]
         };
         let (mut ta, mut ga) = (t0, g0);
-        let inside = self
-            .fractions
-            .iter()
-            .map(|s| t0 + s * h)
-            .filter(|t| *t > t0 && *t < t1);
-        let points: Vec<Real> = inside.chain(std::iter::once(t1)).collect();
-        for tb in points {
+        // the sample times: the fractions' times inside the step, then its end
+        for s in &mut self.fractions {
+            *s = t0 + *s * h;
+        }
+        self.fractions.retain(|t| *t > t0 && *t < t1);
+        self.fractions.push(t1);
+        for k in 0..self.fractions.len() {
+            let tb = self.fractions[k];
             let gb = if tb == t1 { g1 } else { omega_at(driver, tb) };
             let significant = ga.abs().max(gb.abs()) > noise;
             if significant && ((ga < 0.0 && gb > 0.0) || (ga > 0.0 && gb < 0.0)) {
