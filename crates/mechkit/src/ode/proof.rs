@@ -23,6 +23,11 @@ use crate::Real;
 /// Most enclosures of one function in one step before the proof gives up.
 pub const MAX_BOUNDS: usize = 2_000;
 
+/// Pieces whose enclosure is unknown (a value that may be NaN or unbounded) before the proof
+/// gives up: halving isolates a pole or a jump in one such piece per level (about 55 in all),
+/// while a function that is NaN over the whole step would double them at every level.
+const MAX_UNKNOWN: usize = 128;
+
 /// Halvings after which a piece is tested for being at rounding level.
 const ROUNDING_DEPTH: u32 = 30;
 
@@ -40,7 +45,8 @@ pub enum Piece {
 pub enum ProofOutcome {
     /// The step is cut into proven pieces.
     Proven,
-    /// More than [`MAX_BOUNDS`] enclosures were needed: sample the function instead.
+    /// More than [`MAX_BOUNDS`] enclosures were needed, or more than a few pieces had
+    /// unknown values (NaN possible): sample the function instead.
     OutOfBounds,
     /// The function cannot be enclosed (it reads something the interpolant does not carry).
     NotBounded,
@@ -67,6 +73,7 @@ impl StepProof {
         self.stack.clear();
         self.stack.push((0.0, 1.0, 0));
         let mut bounds = 0;
+        let mut unknown = 0;
         while let Some((a, b, depth)) = self.stack.pop() {
             bounds += 1;
             if bounds > MAX_BOUNDS {
@@ -75,6 +82,12 @@ impl StepProof {
             let Some(jet) = enclose(Interval::new(a, b)) else {
                 return ProofOutcome::NotBounded;
             };
+            if jet.v.is_entire() {
+                unknown += 1;
+                if unknown > MAX_UNKNOWN {
+                    return ProofOutcome::OutOfBounds;
+                }
+            }
             let piece = if jet.v.is_positive() {
                 Piece::Definite(true)
             } else if jet.v.is_negative() {
@@ -169,6 +182,17 @@ mod tests {
             })),
             ProofOutcome::Proven,
             "a jump at rounding level ends the halving"
+        );
+        let unknown = |_: Interval| Jet::ENTIRE;
+        assert_eq!(
+            proof.cut(0.0, 1.0, &mut |s| Some(unknown(s))),
+            ProofOutcome::OutOfBounds
+        );
+        let pole = |s: Interval| Jet::constant(1.0) / (Jet::variable(s) - Jet::constant(0.3));
+        assert_eq!(
+            proof.cut(0.0, 1.0, &mut |s| Some(pole(s))),
+            ProofOutcome::Proven,
+            "a pole is isolated to rounding"
         );
         let wild = |s: Interval| Jet::variable(s * Interval::point(1e5)).sin();
         assert_eq!(

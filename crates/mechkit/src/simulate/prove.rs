@@ -82,7 +82,7 @@ impl Prover {
                     if !self.warned[i] {
                         self.warned[i] = true;
                         warnings.push(format!(
-                            "the event `{}` needed more than {MAX_BOUNDS} bounds in the step at t = {t0} s; there it is sampled at {FALLBACK_SAMPLES} points, so a sign change between two samples may be missed; smaller steps (dt, or h_max) make the bounds tighter",
+                            "the event `{}` could not be bounded in the step at t = {t0} s (it needed more than {MAX_BOUNDS} bounds, or its value is not a number there); there it is sampled at {FALLBACK_SAMPLES} points, so a sign change between two samples may be missed; smaller steps (dt, or h_max) make the bounds tighter",
                             event.name()
                         ));
                     }
