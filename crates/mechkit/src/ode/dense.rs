@@ -11,7 +11,7 @@
 #![allow(clippy::needless_range_loop)] // component loops over several parallel arrays
 
 use super::adaptive::AdaptiveRk;
-use super::polynomial::StepPolynomial;
+use super::polynomial::{MAX_COEFFICIENTS, StepPolynomial};
 use super::stages::sparse;
 use super::system::OdeSystem;
 use super::tableau::DenseKind;
@@ -91,13 +91,20 @@ impl AdaptiveRk {
                 // y0 + h Σ_l k_l Σ_j p_lj θ^(j+1)
                 let width = 1 + p.iter().map(Vec::len).max().unwrap_or(0);
                 out.reset(self.last_t0, h, n, width);
+                // h p_lj, once per step (the same products as `h * p_lj * k`)
+                let mut hp = [[0.0; MAX_COEFFICIENTS]; 16];
+                for (row, pr) in hp.iter_mut().zip(p) {
+                    for (x, pj) in row.iter_mut().zip(pr) {
+                        *x = h * pj;
+                    }
+                }
                 for i in 0..n {
                     let c = out.coefficients_mut(i);
                     c[0] = self.last_y0[i];
-                    for (l, row) in p.iter().enumerate() {
+                    for (l, (row, pr)) in hp.iter().zip(p).enumerate() {
                         let k = self.stages.at(l, i);
-                        for (j, pj) in row.iter().enumerate() {
-                            c[j + 1] += h * pj * k;
+                        for (cj, hpj) in c[1..].iter_mut().zip(&row[..pr.len()]) {
+                            *cj += hpj * k;
                         }
                     }
                 }
