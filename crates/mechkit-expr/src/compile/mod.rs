@@ -91,12 +91,7 @@ impl Program {
     /// Evaluates the program. `vars` must hold at least [`Program::slots`] values.
     #[inline]
     pub fn eval(&self, vars: &[f64]) -> f64 {
-        assert!(
-            vars.len() >= self.ir.slots,
-            "program reads {} variables, {} given",
-            self.ir.slots,
-            vars.len()
-        );
+        self.check_slots(vars.len());
         #[cfg(feature = "jit")]
         if let Some(n) = &self.native {
             return n.call(vars);
@@ -106,7 +101,7 @@ impl Program {
 
     /// Evaluates with the interpreter, whatever is attached.
     pub fn eval_interpreted(&self, vars: &[f64]) -> f64 {
-        assert!(vars.len() >= self.ir.slots, "too few variables");
+        self.check_slots(vars.len());
         self.ir.run(vars)
     }
 
@@ -126,12 +121,7 @@ impl Program {
     /// assert!(g.contains(p.eval(&[0.65, 0.0])));
     /// ```
     pub fn eval_interval(&self, vars: &[Interval]) -> Interval {
-        assert!(
-            vars.len() >= self.ir.slots,
-            "program reads {} variables, {} given",
-            self.ir.slots,
-            vars.len()
-        );
+        self.check_slots(vars.len());
         self.ir.run(vars)
     }
 
@@ -152,13 +142,18 @@ impl Program {
     /// assert!(g.v.is_positive() && g.is_increasing());
     /// ```
     pub fn eval_jet(&self, vars: &[Jet]) -> Jet {
-        assert!(
-            vars.len() >= self.ir.slots,
-            "program reads {} variables, {} given",
-            self.ir.slots,
-            vars.len()
-        );
+        self.check_slots(vars.len());
         self.ir.run(vars)
+    }
+
+    /// Panics, as a caller bug, when fewer than [`Program::slots`] values are given.
+    #[inline]
+    fn check_slots(&self, given: usize) {
+        assert!(
+            given >= self.ir.slots,
+            "program reads {} variables, {given} given",
+            self.ir.slots
+        );
     }
 
     /// How many variable slots the program reads (one more than the largest slot index).

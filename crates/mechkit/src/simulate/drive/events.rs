@@ -62,7 +62,7 @@ impl Run<'_> {
     /// (as many as contacts ask for).
     fn prove_points(&mut self) {
         let (t_a, t_b) = (self.ends.t0, self.ends.t1);
-        if self.events.iter().any(|e| e.condition().is_provable()) {
+        if self.any_provable {
             self.engine
                 .step_polynomial(&self.ws, &self.ends, &mut self.prover.poly);
         } else {

@@ -85,6 +85,8 @@ pub(super) struct Run<'r> {
     pub forces_for_events: bool,
     /// Interior sample points per step of an event function that cannot be enclosed.
     pub interior: usize,
+    /// Whether any event function can be enclosed (the step's polynomial is then built).
+    pub any_provable: bool,
     /// The derivative handed to a fixed-step stepper at the start of a step.
     pub dydt: Vec<Real>,
     pub grid: Option<Grid>,
@@ -202,6 +204,7 @@ impl<'r> Run<'r> {
             book: EventBook::new(m),
             forces_for_events,
             interior: if forces_for_events { 1 } else { 7 },
+            any_provable: events.iter().any(|e| e.condition().is_provable()),
             dydt: vec![0.0; n2],
             grid: None,
             probe: Probe::new(t0, n2, nf),
