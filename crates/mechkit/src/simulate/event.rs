@@ -17,6 +17,7 @@ use std::sync::Arc;
 
 use super::condition::Condition;
 use crate::Real;
+use crate::ode::events::find::Side;
 use crate::particles::{ParticleSystem, Sample};
 
 pub use crate::ode::events::Direction;
@@ -214,22 +215,9 @@ impl Event {
         self.set_description.as_deref()
     }
 
-    /// The side of zero a value is on (`None` for NaN, which never fires).
-    pub(crate) fn side_of(g: Real) -> Option<Side> {
-        if g < 0.0 {
-            Some(Side::Neg)
-        } else if g > 0.0 {
-            Some(Side::Pos)
-        } else if g == 0.0 {
-            Some(Side::Zero)
-        } else {
-            None
-        }
-    }
-
     /// The side at the start of the run for the value `g` there.
     pub(crate) fn initial_side(&self, g: Real) -> Side {
-        match Self::side_of(g) {
+        match Side::of(g) {
             Some(Side::Zero) if matches!(self.trigger, Trigger::Crossing(_)) => Side::StartZero,
             Some(s) => s,
             None => Side::Unknown,
@@ -247,45 +235,8 @@ impl Event {
                 };
                 !holds(from) && holds(to) && from != Side::Unknown
             }
-            Trigger::Crossing(d) => {
-                let rising = matches!(
-                    (from, to),
-                    (Side::Neg, Side::Zero | Side::Pos) | (Side::StartZero, Side::Pos)
-                );
-                let falling = matches!(
-                    (from, to),
-                    (Side::Pos, Side::Zero | Side::Neg) | (Side::StartZero, Side::Neg)
-                );
-                match d {
-                    Direction::Rising => rising,
-                    Direction::Falling => falling,
-                    Direction::Both => rising || falling,
-                }
-            }
+            Trigger::Crossing(d) => d.fires(from, to),
         }
-    }
-}
-
-/// Where an event function is relative to zero.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Side {
-    /// Negative.
-    Neg,
-    /// At zero, already counted (or left alone): leaving it does not fire.
-    Zero,
-    /// Positive.
-    Pos,
-    /// Exactly zero at the start of the run: leaving it in the event's direction fires, at the
-    /// start.
-    StartZero,
-    /// Not known yet (NaN so far).
-    Unknown,
-}
-
-impl Side {
-    /// The side after a value `g`, from the side before (NaN keeps the old side).
-    pub(crate) fn after(self, g: Real) -> Side {
-        Event::side_of(g).unwrap_or(self)
     }
 }
 
@@ -293,22 +244,13 @@ impl Side {
 mod tests {
     use super::*;
 
-    fn ev(d: Direction) -> Event {
-        Event::new("g", |_, _| 0.0).direction(d)
-    }
-
     #[test]
-    fn crossing_rules() {
+    fn crossings_follow_the_direction() {
         use Side::*;
-        let r = ev(Direction::Rising);
-        assert!(r.fires(Neg, Pos) && r.fires(Neg, Zero) && r.fires(StartZero, Pos));
-        assert!(!r.fires(Zero, Pos) && !r.fires(Pos, Neg) && !r.fires(StartZero, Neg));
-        let f = ev(Direction::Falling);
-        assert!(f.fires(Pos, Neg) && f.fires(Pos, Zero) && f.fires(StartZero, Neg));
-        assert!(!f.fires(Zero, Neg) && !f.fires(Neg, Pos));
-        let b = ev(Direction::Both);
-        assert!(b.fires(Pos, Neg) && b.fires(Neg, Pos) && b.fires(StartZero, Pos));
-        assert!(!b.fires(Zero, Pos) && !b.fires(Zero, Neg) && !b.fires(Pos, Pos));
+        let ev = |d| Event::new("g", |_, _| 0.0).direction(d);
+        assert!(ev(Direction::Rising).fires(Neg, Pos) && !ev(Direction::Rising).fires(Zero, Pos));
+        assert!(ev(Direction::Falling).fires(StartZero, Neg));
+        assert!(ev(Direction::Both).initial_side(0.0) == StartZero);
     }
 
     #[test]

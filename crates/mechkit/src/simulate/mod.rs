@@ -24,7 +24,6 @@ mod rearm;
 mod reduce;
 mod report;
 mod run;
-mod scan;
 mod stepping;
 
 pub use book::ZENO_LIMIT;

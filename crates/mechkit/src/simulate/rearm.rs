@@ -8,11 +8,12 @@
 //! steps). The direction the function takes after the change is its rate along the new state's
 //! flow, `ġ ≈ (g(t + δ, y + δ ẏ) − g(t, y)) / δ`, with `δ = √ε · max(|t|, typical step)`.
 
-use super::event::{Direction, Event, Side, Trigger};
+use super::event::{Direction, Event, Trigger};
 use super::probe::Probe;
 use super::run::sample_of;
 use crate::Real;
 use crate::ode::State;
+use crate::ode::events::find::Side;
 use crate::particles::{Evaluation, ParticleSystem, SampleKind};
 
 /// The values of the functions of the `fired` events a moment `δ` along the flow of `state`

@@ -3,8 +3,9 @@
 //!
 //! After every accepted step the step's interpolant is taken as a polynomial
 //! ([`AdaptiveRk::dense_polynomial_into`]); the events are sampled on it where their proofs
-//! (or, without an enclosure, [`SAMPLES`](super::SAMPLES) evenly spaced points) say they must be
-//! ([`super::scan`]), and each sign change is located by Brent's method on the interpolant.
+//! (or, without an enclosure, [`SAMPLES`](super::SAMPLES) evenly spaced points) say they must be,
+//! and each sign change is located by Brent's method on the interpolant: the one event finder
+//! that the particles' loop uses too (`find.rs`).
 //! The first crossings are handled in time order: a non-terminal event is reported and the
 //! integration goes on; a terminal one ends it, after the step is redone from its start to end
 //! exactly at the located time, so that the state there is one the integrator reached, not an
@@ -13,7 +14,7 @@
 use std::ops::ControlFlow;
 
 use super::event::OdeEvent;
-use super::scan::Scanner;
+use super::scan::StepEvents;
 use crate::Real;
 use crate::ode::{AdaptiveError, AdaptiveRk, OdeSystem, State};
 
@@ -109,7 +110,7 @@ pub fn run_to_event<S: OdeSystem + ?Sized>(
     events: &[OdeEvent<'_>],
     on_progress: &mut dyn FnMut(Progress<'_>) -> ControlFlow<()>,
 ) -> Result<EventEnd, AdaptiveError> {
-    let mut scan = Scanner::new(events, state.t, &state.y);
+    let mut step = StepEvents::new(events, state);
     let mut before = state.clone();
     let mut hits: Vec<EventHit> = Vec::new();
     while state.t < t_end {
@@ -121,18 +122,8 @@ pub fn run_to_event<S: OdeSystem + ?Sized>(
             }
             continue;
         }
-        rk.dense_polynomial_into(sys, &mut scan.poly);
-        let terminal = scan.scan(events, state.t, &state.y);
-        hits.clear();
-        for k in 0..scan.firings.len() {
-            let (t, event) = scan.firings[k];
-            let y = if t == state.t {
-                state.y.clone()
-            } else {
-                scan.state_at(t).to_vec()
-            };
-            hits.push(EventHit { event, t, y });
-        }
+        rk.dense_polynomial_into(sys, &mut step.finder.poly);
+        let terminal = step.scan(state, &mut hits);
         let Some((t_star, event)) = terminal else {
             let (_, flow) = report(&hits, Real::INFINITY, on_progress);
             if flow.is_break() || on_progress(Progress::Step(state)).is_break() {

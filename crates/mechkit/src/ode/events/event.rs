@@ -12,6 +12,8 @@ use std::fmt;
 
 use mechkit_expr::interval::Jet;
 
+use super::find::Side;
+
 use crate::Real;
 
 /// Which zero crossings of an event function count.
@@ -36,6 +38,26 @@ impl Direction {
         }
     }
 
+    /// Whether a function going from side `from` to side `to` is a crossing in this
+    /// direction: arriving at zero counts, leaving a zero counted already does not, and
+    /// leaving a zero at the start counts only where the start's side says so
+    /// ([`Side::StartZero`]).
+    pub(crate) fn fires(self, from: Side, to: Side) -> bool {
+        let rising = matches!(
+            (from, to),
+            (Side::Neg, Side::Zero | Side::Pos) | (Side::StartZero, Side::Pos)
+        );
+        let falling = matches!(
+            (from, to),
+            (Side::Pos, Side::Zero | Side::Neg) | (Side::StartZero, Side::Neg)
+        );
+        match self {
+            Direction::Rising => rising,
+            Direction::Falling => falling,
+            Direction::Both => rising || falling,
+        }
+    }
+
     /// Looks a direction up by name (`rising`/`up`/`increasing`, `falling`/`down`/`decreasing`,
     /// `both`/`any`).
     pub fn from_name(name: &str) -> Option<Direction> {
@@ -45,36 +67,6 @@ impl Direction {
             "both" | "any" | "either" => Direction::Both,
             _ => return None,
         })
-    }
-}
-
-/// The side of zero an event function was last seen on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Side {
-    Pos,
-    Neg,
-    /// At zero since the start, or since it fired there.
-    Unknown,
-}
-
-impl Side {
-    /// The side of a value at the start of an integration.
-    pub fn of(g: Real) -> Side {
-        if g > 0.0 {
-            Side::Pos
-        } else if g < 0.0 {
-            Side::Neg
-        } else {
-            Side::Unknown
-        }
-    }
-
-    /// The side after a value `g` that did not fire: a zero (or NaN) keeps the old one.
-    pub fn after(self, g: Real) -> Side {
-        match Side::of(g) {
-            Side::Unknown => self,
-            side => side,
-        }
     }
 }
 
@@ -190,15 +182,10 @@ impl<'a> OdeEvent<'a> {
         self.bound.as_ref().and_then(|b| b(t, y))
     }
 
-    /// Whether the value `g` fires the event from `side`.
-    pub(super) fn fires(&self, side: Side, g: Real) -> bool {
-        let falling = side == Side::Pos && g <= 0.0;
-        let rising = side == Side::Neg && g >= 0.0;
-        match self.direction {
-            Direction::Falling => falling,
-            Direction::Rising => rising,
-            Direction::Both => falling || rising,
-        }
+    /// The side of the function's value `g` at the start of an integration: a zero there
+    /// is one already counted (leaving it is no crossing).
+    pub(super) fn initial_side(g: Real) -> Side {
+        Side::of(g).unwrap_or(Side::Unknown)
     }
 }
 
@@ -208,20 +195,18 @@ mod tests {
 
     #[test]
     fn crossing_rules() {
-        let both = OdeEvent::new(|_, _| 0.0);
-        let falling = OdeEvent::new(|_, _| 0.0).falling();
-        let rising = OdeEvent::new(|_, _| 0.0).rising();
+        let (both, falling, rising) = (Direction::Both, Direction::Falling, Direction::Rising);
+        let from_start = |g: Real| OdeEvent::initial_side(g);
         // arriving at zero counts
-        assert!(falling.fires(Side::Pos, 0.0) && both.fires(Side::Pos, 0.0));
-        assert!(rising.fires(Side::Neg, 0.0) && both.fires(Side::Neg, 0.0));
+        assert!(falling.fires(Side::Pos, Side::Zero) && both.fires(Side::Pos, Side::Zero));
+        assert!(rising.fires(Side::Neg, Side::Zero) && both.fires(Side::Neg, Side::Zero));
         // only in the direction asked for
-        assert!(!falling.fires(Side::Neg, 1.0) && !rising.fires(Side::Pos, -1.0));
+        assert!(!falling.fires(Side::Neg, Side::Pos) && !rising.fires(Side::Pos, Side::Neg));
         // leaving zero (at the start, or after firing there) does not
-        for e in [&both, &falling, &rising] {
-            assert!(!e.fires(Side::Unknown, 1.0) && !e.fires(Side::Unknown, -1.0));
+        for d in [both, falling, rising] {
+            assert!(!d.fires(from_start(0.0), Side::Pos) && !d.fires(from_start(0.0), Side::Neg));
         }
-        assert!(!both.fires(Side::Pos, Real::NAN));
-        assert_eq!(Side::Pos.after(0.0), Side::Pos);
-        assert_eq!(Side::Unknown.after(-2.0), Side::Neg);
+        assert_eq!(from_start(Real::NAN), Side::Unknown);
+        assert!(!both.fires(Side::Unknown, Side::Pos));
     }
 }

@@ -4,14 +4,17 @@
 //! method on the interpolant, reported in time order, and, for a terminal event, reached by
 //! integration ([`run_to_event`]).
 //!
-//! `event.rs`: [`OdeEvent`], [`Direction`] and the crossing rules; `scan.rs`: the sample points
-//! of a step (from [`StepProof`](crate::ode::StepProof)) and the first crossings; `driver.rs`:
-//! the loop.
+//! `find.rs`: the one event finder, which the particles' loop (`simulate`) uses too: the
+//! sample points of a step (from [`StepProof`](crate::ode::StepProof)) and the first firing
+//! after a time; `event.rs`: [`OdeEvent`], [`Direction`] and the crossing rules; `scan.rs`:
+//! the [`OdeEvent`]s of one step through the finder; `driver.rs`: the loop.
 
 mod driver;
 mod event;
+pub(crate) mod find;
 mod scan;
 
 pub use driver::{EventEnd, EventHit, Progress, run_to_event};
 pub use event::{Direction, OdeEvent};
+pub use find::FALLBACK_SAMPLES;
 pub use scan::SAMPLES;

@@ -1,15 +1,15 @@
-//! The events of one step, in time order: the points at which the scan must look (proven by
-//! `simulate/prove.rs`, or as densely as contacts ask), the scan from the last firing to the
-//! step's end, and each firing in turn until one cuts the step or none is left.
+//! The events of one step, in time order, through the one event finder
+//! ([`crate::ode::events::find`], with the particles' events as `simulate/prove.rs` gives
+//! them): the points at which the scan must look, the scan from the last firing to the step's
+//! end, and each firing in turn until one cuts the step or none is left.
 
 use crate::Real;
+use crate::ode::events::find::Fired;
 use crate::particles::SampleKind;
 use crate::simulate::observe::Observer;
-use crate::simulate::probe::{Step, event_values};
-use crate::simulate::prove::Proving;
+use crate::simulate::probe::Step;
+use crate::simulate::prove::{Proving, Sampling, ran_out_warning};
 use crate::simulate::report::SimulateError;
-use crate::simulate::run::sample_of;
-use crate::simulate::scan::{Fired, scan};
 use crate::simulate::stepping::Engine;
 
 use super::fire::AfterFiring;
@@ -64,55 +64,50 @@ impl Run<'_> {
         let (t_a, t_b) = (self.ends.t0, self.ends.t1);
         if self.any_provable {
             self.engine
-                .step_polynomial(&self.ws, &self.ends, &mut self.prover.poly);
+                .step_polynomial(&self.ws, &self.ends, &mut self.finder.poly);
         } else {
-            self.prover.poly.reset(t_a, t_b - t_a, 0, 1);
+            self.finder.poly.reset(t_a, t_b - t_a, 0, 1);
         }
-        let proving = Proving {
+        let mut proving = Proving {
             events: self.events,
             enabled: &self.book.enabled,
             sys: self.sys,
             work: matches!(self.engine, Engine::Adaptive { .. }),
-            default_interior: self.interior,
-            ends: (&self.ends.y0, &self.state.y),
+            ends: (&self.ends.y0, &self.state.y, t_b - t_a),
         };
-        self.prover
-            .points(&proving, &mut self.scan_points, &mut self.warnings);
+        let (events, warned, warnings) = (self.events, &mut self.warned, &mut self.warnings);
+        self.finder
+            .plan(&mut proving, t_b, self.interior, &mut |i| {
+                if !warned[i] {
+                    warned[i] = true;
+                    warnings.push(ran_out_warning(&events[i], t_a));
+                }
+            });
     }
 
     /// The first firing in the step after `t_scan` (where the event functions are `g_scan`
     /// and the sides `sides_scan`), if any.
     fn scan_from(&mut self, t_scan: Real) -> Option<Fired> {
-        let mut step = Step {
-            sys: self.sys,
-            ws: &self.ws,
-            engine: &mut self.engine,
-            ends: &self.ends,
-            ledger: &self.ledger,
+        let mut sampling = Sampling {
+            events: self.events,
+            enabled: &self.book.enabled,
+            step: Step {
+                sys: self.sys,
+                ws: &self.ws,
+                engine: &mut self.engine,
+                ends: &self.ends,
+                ledger: &self.ledger,
+            },
+            probe: &mut self.probe,
+            evaluations: &mut self.evaluations,
+            forces: self.forces_for_events,
+            steps: self.steps,
         };
-        let (events, sys, steps) = (self.events, self.sys, self.steps);
-        let (probe, evaluations) = (&mut self.probe, &mut self.evaluations);
-        let forces = self.forces_for_events;
-        let mut values = |t: Real, out: &mut [Real]| {
-            step.probe(probe, t, forces, evaluations);
-            let s = sample_of(
-                steps,
-                &probe.state,
-                &probe.eval,
-                &probe.work,
-                SampleKind::Event,
-            );
-            event_values(events, &s, sys, out);
-        };
-        scan(
-            events,
-            &self.book.enabled,
+        self.finder.first_firing(
+            &mut sampling,
             &mut self.sides_scan,
             (t_scan, &self.g_scan),
             (self.ends.t1, &self.g_b),
-            &self.scan_points,
-            &mut values,
-            &mut self.scan_buffers,
         )
     }
 }

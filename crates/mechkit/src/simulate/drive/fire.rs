@@ -4,15 +4,14 @@
 //! on.
 
 use crate::Real;
+use crate::ode::events::find::{Fired, Side};
 use crate::particles::SampleKind;
 use crate::simulate::book::EventBook;
-use crate::simulate::event::Side;
 use crate::simulate::observe::Observer;
 use crate::simulate::probe::{Step, emit, event_values};
 use crate::simulate::rearm::{sides_after_change, values_ahead};
 use crate::simulate::report::{SimulateError, StopReason};
 use crate::simulate::run::sample_of;
-use crate::simulate::scan::Fired;
 use crate::simulate::stepping::Engine;
 
 use super::run::Run;

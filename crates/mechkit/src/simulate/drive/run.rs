@@ -4,19 +4,18 @@
 
 use crate::Real;
 use crate::energy::EnergyLedger;
+use crate::ode::events::find::{Finder, Side};
 use crate::ode::{State, steps_to_cover};
 use crate::particles::{Evaluation, ParticleSystem, SampleKind};
 use crate::simulate::book::EventBook;
 use crate::simulate::diagnose::diagnose_evaluation;
-use crate::simulate::event::{Event, Side};
+use crate::simulate::event::Event;
 use crate::simulate::fused::Fused;
 use crate::simulate::halt::stop_before_step;
 use crate::simulate::observe::Observer;
 use crate::simulate::probe::{Grid, Probe, emit, event_values};
-use crate::simulate::prove::Prover;
 use crate::simulate::report::{Divergence, RunReport, SimulateError, StopReason};
 use crate::simulate::run::{Simulation, sample_of};
-use crate::simulate::scan::ScanBuffers;
 use crate::simulate::stepping::{Engine, StepEnds, Stepping, WorkSystem, step_budget};
 
 use super::events::StepEnd;
@@ -104,9 +103,10 @@ pub(super) struct Run<'r> {
     /// The scan's progress through the step: the event functions and sides at its last point.
     pub g_scan: Vec<Real>,
     pub sides_scan: Vec<Side>,
-    pub scan_buffers: ScanBuffers,
-    pub prover: Prover,
-    pub scan_points: Vec<Real>,
+    /// The one event finder: the step's interpolant, its sample points, the scan's buffers.
+    pub finder: Finder,
+    /// The events already warned of a step whose proof ran out of enclosures.
+    pub warned: Vec<bool>,
     /// The first step taken, a typical step for the Zeno watch.
     pub step_scale: Real,
     pub fused: Option<Fused>,
@@ -216,9 +216,8 @@ impl<'r> Run<'r> {
             interpolates: m > 0 || sim.interval.is_some() || sim.times.is_some(),
             g_scan: Vec::with_capacity(m),
             sides_scan: Vec::with_capacity(m),
-            scan_buffers: ScanBuffers::default(),
-            prover: Prover::default(),
-            scan_points: Vec::new(),
+            finder: Finder::default(),
+            warned: vec![false; m],
             step_scale: Real::NAN,
             fused: None,
             fused_steps: 0,
