@@ -31,9 +31,11 @@ const POWER_FORM_WIDTH: Real = 0.25;
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct StepPolynomial {
     /// Start of the step (s).
-    pub t0: Real,
+    t0: Real,
     /// Length of the step (s).
-    pub h: Real,
+    h: Real,
+    /// `1/h` (0 for an empty step): the enclosures' time derivatives.
+    inv_h: Real,
     /// Coefficients per component (`degree + 1`).
     width: usize,
     /// `coeffs[i * width + j] = c_ij`.
@@ -50,9 +52,20 @@ impl StepPolynomial {
         );
         self.t0 = t0;
         self.h = h;
+        self.inv_h = if h == 0.0 { 0.0 } else { 1.0 / h };
         self.width = width;
         self.coeffs.clear();
         self.coeffs.resize(n * width, 0.0);
+    }
+
+    /// Start of the step (s).
+    pub fn t0(&self) -> Real {
+        self.t0
+    }
+
+    /// Length of the step (s).
+    pub fn h(&self) -> Real {
+        self.h
     }
 
     /// Number of components.
@@ -193,7 +206,7 @@ impl StepPolynomial {
         let per_time = if self.h == 0.0 {
             Interval::point(0.0)
         } else {
-            let inv = 1.0 / self.h;
+            let inv = self.inv_h;
             let (a, b) = ((slope.0 - err_d) * inv, (slope.1 + err_d) * inv);
             // two roundings each (the reciprocal and the product): two ulps outwards
             outward(a.min(b).next_down(), a.max(b).next_up())
@@ -244,7 +257,7 @@ impl StepPolynomial {
             Interval::point(0.0)
         } else {
             // dy/dt = (dy/ds)/h: the quotient rounds once more (the margin's extra ulps)
-            let inv = 1.0 / self.h;
+            let inv = self.inv_h;
             widen(
                 slope * inv,
                 (r1 + e1) * margin * inv.abs() * margin + (slope * inv).abs() * 4.0 * Real::EPSILON,

@@ -46,8 +46,8 @@ impl<'a> StateJets<'a> {
 
     /// Time.
     pub fn time(&self) -> Jet {
-        let t0 = Interval::point(self.poly.t0);
-        let h = Interval::point(self.poly.h);
+        let t0 = Interval::point(self.poly.t0());
+        let h = Interval::point(self.poly.h());
         Jet {
             v: t0 + h * self.s,
             d: Interval::point(1.0),

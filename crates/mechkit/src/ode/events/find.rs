@@ -145,7 +145,7 @@ impl Finder {
         ran_out: &mut dyn FnMut(usize),
     ) {
         self.fractions.clear();
-        let (t0, h) = (self.poly.t0, self.poly.h);
+        let (t0, h) = (self.poly.t0(), self.poly.h());
         let mut uniform = 0;
         for i in 0..bounds.count() {
             if !bounds.enabled(i) {

@@ -60,7 +60,7 @@ impl<'e, 'a> StepEvents<'e, 'a> {
             y: &mut self.y,
         };
         self.finder.plan(&mut values, t1, SAMPLES - 1, &mut |_| {});
-        let (mut t_scan, mut g_scan) = (self.finder.poly.t0, self.start.clone());
+        let (mut t_scan, mut g_scan) = (self.finder.poly.t0(), self.start.clone());
         let mut terminal = None;
         while let Some(fired) = self.finder.first_firing(
             &mut values,
@@ -131,7 +131,7 @@ impl Bounds for Values<'_, '_, '_> {
         self.jets.clear();
         self.jets
             .extend((0..poly.len()).map(|k| poly.enclose(k, s)));
-        let (t0, h) = (Interval::point(poly.t0), Interval::point(poly.h));
+        let (t0, h) = (Interval::point(poly.t0()), Interval::point(poly.h()));
         let t = Jet::new(t0 + h * s, Interval::ONE);
         self.events[i].enclose(t, self.jets)
     }
