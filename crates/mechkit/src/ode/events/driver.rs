@@ -1,5 +1,6 @@
-//! The one event driver: an [`OdeSystem`] integrated by an [`AdaptiveRk`] until a terminal
-//! event or the end time, with every crossing of every event found inside the steps.
+//! An [`OdeSystem`] integrated by an [`AdaptiveRk`] until a terminal event or the end time,
+//! with every crossing of every event found inside the steps: a [`Model`] of the one
+//! event-aware loop ([`super::drive`]).
 //!
 //! After every accepted step the step's interpolant is taken as a polynomial
 //! ([`AdaptiveRk::dense_polynomial_into`]); the events are sampled on it where their proofs
@@ -13,7 +14,9 @@
 
 use std::ops::ControlFlow;
 
+use super::drive::{AfterFiring, Model, drive};
 use super::event::OdeEvent;
+use super::find::Fired;
 use super::scan::StepEvents;
 use crate::Real;
 use crate::ode::{AdaptiveError, AdaptiveRk, OdeSystem, State};
@@ -110,35 +113,119 @@ pub fn run_to_event<S: OdeSystem + ?Sized>(
     events: &[OdeEvent<'_>],
     on_progress: &mut dyn FnMut(Progress<'_>) -> ControlFlow<()>,
 ) -> Result<EventEnd, AdaptiveError> {
-    let mut step = StepEvents::new(events, state);
-    let mut before = state.clone();
-    let mut hits: Vec<EventHit> = Vec::new();
-    while state.t < t_end {
-        before.clone_from(state);
-        rk.step(sys, state, t_end)?;
-        if events.is_empty() {
-            if on_progress(Progress::Step(state)).is_break() {
-                return Ok(EventEnd::Halted);
-            }
-            continue;
+    let mut run = OdeRun {
+        step: StepEvents::new(events, state),
+        rk,
+        sys,
+        before: state.clone(),
+        state,
+        t_end,
+        hits: Vec::new(),
+        on_progress,
+        end: None,
+    };
+    drive(&mut run)?;
+    Ok(run.end.unwrap_or(EventEnd::TimeLimit))
+}
+
+/// A run of an [`OdeSystem`] with [`OdeEvent`]s on the one event-aware loop.
+struct OdeRun<'r, 'e, 'a, S: ?Sized> {
+    rk: &'r mut AdaptiveRk,
+    sys: &'r S,
+    state: &'r mut State,
+    t_end: Real,
+    step: StepEvents<'e, 'a>,
+    /// The state at the start of the step.
+    before: State,
+    /// The non-terminal crossings of the step so far.
+    hits: Vec<EventHit>,
+    on_progress: &'r mut dyn FnMut(Progress<'_>) -> ControlFlow<()>,
+    end: Option<EventEnd>,
+}
+
+impl<S: OdeSystem + ?Sized> Model for OdeRun<'_, '_, '_, S> {
+    type Error = AdaptiveError;
+
+    fn ended(&self) -> bool {
+        self.end.is_some()
+    }
+
+    fn stops_before_step(&mut self) -> bool {
+        if self.state.t >= self.t_end {
+            self.end = Some(EventEnd::TimeLimit);
         }
-        rk.dense_polynomial_into(sys, &mut step.finder.poly);
-        let terminal = step.scan(state, &mut hits);
-        let Some((t_star, event)) = terminal else {
-            let (_, flow) = report(&hits, Real::INFINITY, on_progress);
-            if flow.is_break() || on_progress(Progress::Step(state)).is_break() {
-                return Ok(EventEnd::Halted);
+        self.ended()
+    }
+
+    fn advance(&mut self) -> Result<bool, AdaptiveError> {
+        self.before.clone_from(self.state);
+        self.rk.step(self.sys, self.state, self.t_end)?;
+        self.hits.clear();
+        Ok(false)
+    }
+
+    fn any_enabled(&self) -> bool {
+        !self.step.is_empty()
+    }
+
+    fn plan(&mut self) {
+        self.rk
+            .dense_polynomial_into(self.sys, &mut self.step.finder.poly);
+        self.step.plan(self.state);
+    }
+
+    fn begin_scan(&mut self) -> Real {
+        self.step.begin_scan()
+    }
+
+    fn scan_from(&mut self, t_scan: Real) -> Option<Fired> {
+        self.step.scan_from(t_scan, self.state.t)
+    }
+
+    fn end_scan(&mut self) {}
+
+    fn fire(&mut self, fired: Fired) -> Result<AfterFiring, AdaptiveError> {
+        let t = fired.firing.t;
+        let y = self.step.state_at(t, self.state);
+        let mut terminal = None;
+        for &event in &fired.firing.events {
+            if self.step.is_terminal(event) {
+                terminal = terminal.or(Some(event));
+            } else {
+                self.hits.push(EventHit {
+                    event,
+                    t,
+                    y: y.clone(),
+                });
             }
-            continue;
-        };
-        return Ok(
-            match redo(rk, sys, state, &before, t_star, &hits, on_progress)? {
+        }
+        if let Some(event) = terminal {
+            let flow = redo(
+                self.rk,
+                self.sys,
+                self.state,
+                &self.before,
+                t,
+                &self.hits,
+                self.on_progress,
+            )?;
+            self.end = Some(match flow {
                 ControlFlow::Continue(()) => EventEnd::Terminal { event },
                 ControlFlow::Break(()) => EventEnd::Halted,
-            },
-        );
+            });
+            return Ok(AfterFiring::Cut);
+        }
+        Ok(self.step.recorded(fired, self.state.t))
     }
-    Ok(EventEnd::TimeLimit)
+
+    fn finish_step(&mut self, _event_at_end: bool) -> Result<(), AdaptiveError> {
+        self.step.end_step();
+        let (_, flow) = report(&self.hits, Real::INFINITY, self.on_progress);
+        if flow.is_break() || (self.on_progress)(Progress::Step(self.state)).is_break() {
+            self.end = Some(EventEnd::Halted);
+        }
+        Ok(())
+    }
 }
 
 /// Redoes the step from `before` to end exactly at `t_star`, reporting its steps and the

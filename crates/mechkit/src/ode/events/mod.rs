@@ -9,6 +9,7 @@
 //! after a time; `event.rs`: [`OdeEvent`], [`Direction`] and the crossing rules; `scan.rs`:
 //! the [`OdeEvent`]s of one step through the finder; `driver.rs`: the loop.
 
+pub(crate) mod drive;
 mod driver;
 mod event;
 pub(crate) mod find;

@@ -5,9 +5,9 @@
 
 use mechkit_expr::interval::{Interval, Jet};
 
-use super::driver::EventHit;
+use super::drive::AfterFiring;
 use super::event::OdeEvent;
-use super::find::{Bounds, Finder, Rules, Side};
+use super::find::{Bounds, Finder, Fired, Rules, Side};
 use crate::Real;
 use crate::ode::{State, StepPolynomial};
 
@@ -24,6 +24,8 @@ pub(super) struct StepEvents<'e, 'a> {
     start: Vec<Real>,
     /// … and at its end.
     end: Vec<Real>,
+    /// … and where the scan of the step has reached.
+    scan: Vec<Real>,
     /// Scratch: the jets of the state components, a state on the interpolant.
     jets: Vec<Jet>,
     y: Vec<Real>,
@@ -38,72 +40,91 @@ impl<'e, 'a> StepEvents<'e, 'a> {
             finder: Finder::default(),
             sides: start.iter().map(|g| OdeEvent::initial_side(*g)).collect(),
             end: vec![0.0; events.len()],
+            scan: Vec::new(),
             start,
             jets: Vec::new(),
             y: vec![0.0; state.y.len()],
         }
     }
 
-    /// Scans the step of the finder's interpolant, which ended at `state`: the crossings of
-    /// non-terminal events before the first terminal one (and at its time) go to `hits` in
-    /// time order, and the terminal one, `(t, event)`, is returned. Without one, the sides and
-    /// values move on to the step's end.
-    pub fn scan(&mut self, state: &State, hits: &mut Vec<EventHit>) -> Option<(Real, usize)> {
-        hits.clear();
-        let (t1, y1) = (state.t, &state.y[..]);
+    /// Whether there are no events.
+    pub fn is_empty(&self) -> bool {
+        self.events.is_empty()
+    }
+
+    /// Whether event `i` ends the integration.
+    pub fn is_terminal(&self, i: usize) -> bool {
+        self.events[i].is_terminal()
+    }
+
+    /// The event functions at the end of the step that ended at `state` (the finder's
+    /// interpolant filled), and the points at which they are sampled inside it.
+    pub fn plan(&mut self, state: &State) {
         for (g, e) in self.end.iter_mut().zip(self.events) {
-            *g = e.value(t1, y1);
+            *g = e.value(state.t, &state.y);
         }
         let mut values = Values {
             events: self.events,
             jets: &mut self.jets,
             y: &mut self.y,
         };
-        self.finder.plan(&mut values, t1, SAMPLES - 1, &mut |_| {});
-        let (mut t_scan, mut g_scan) = (self.finder.poly.t0(), self.start.clone());
-        let mut terminal = None;
-        while let Some(fired) = self.finder.first_firing(
+        self.finder
+            .plan(&mut values, state.t, SAMPLES - 1, &mut |_| {});
+    }
+
+    /// Starts the scan from the step's start; returns its time.
+    pub fn begin_scan(&mut self) -> Real {
+        self.scan.clone_from(&self.start);
+        self.finder.poly.t0()
+    }
+
+    /// The first firing after `t_scan` in the step that ends at `t1`.
+    pub fn scan_from(&mut self, t_scan: Real, t1: Real) -> Option<Fired> {
+        let mut values = Values {
+            events: self.events,
+            jets: &mut self.jets,
+            y: &mut self.y,
+        };
+        self.finder.first_firing(
             &mut values,
             &mut self.sides,
-            (t_scan, &g_scan),
+            (t_scan, &self.scan),
             (t1, &self.end),
-        ) {
-            let t = fired.firing.t;
-            let y = if t == t1 {
-                y1.to_vec()
-            } else {
-                let mut y = vec![0.0; y1.len()];
-                interpolate(&self.finder.poly, t, &mut y);
-                y
-            };
-            for &i in &fired.firing.events {
-                if self.events[i].is_terminal() {
-                    terminal = terminal.or(Some((t, i)));
-                } else {
-                    hits.push(EventHit {
-                        event: i,
-                        t,
-                        y: y.clone(),
-                    });
-                }
-            }
-            if terminal.is_some() {
-                return terminal;
-            }
-            for (i, (side, g)) in self.sides.iter_mut().zip(&fired.values).enumerate() {
-                *side = if fired.firing.events.contains(&i) {
-                    Side::Zero
-                } else {
-                    side.after(*g)
-                };
-            }
-            if t == t1 {
-                break;
-            }
-            (t_scan, g_scan) = (t, fired.values);
+        )
+    }
+
+    /// The state at time `t` of the step that ended at `state`.
+    pub fn state_at(&self, t: Real, state: &State) -> Vec<Real> {
+        if t == state.t {
+            return state.y.clone();
         }
+        let mut y = vec![0.0; state.y.len()];
+        interpolate(&self.finder.poly, t, &mut y);
+        y
+    }
+
+    /// A firing recorded (no terminal event in it) in the step that ends at `t1`: the fired
+    /// events are at zero, the others on the side of their values there, and the scan goes on
+    /// from its time.
+    pub fn recorded(&mut self, fired: Fired, t1: Real) -> AfterFiring {
+        let t = fired.firing.t;
+        for (i, (side, g)) in self.sides.iter_mut().zip(&fired.values).enumerate() {
+            *side = if fired.firing.events.contains(&i) {
+                Side::Zero
+            } else {
+                side.after(*g)
+            };
+        }
+        if t == t1 {
+            return AfterFiring::AtStepEnd;
+        }
+        self.scan = fired.values;
+        AfterFiring::ScanFrom(t)
+    }
+
+    /// The step's end becomes the start of the next.
+    pub fn end_step(&mut self) {
         std::mem::swap(&mut self.start, &mut self.end);
-        None
     }
 }
 

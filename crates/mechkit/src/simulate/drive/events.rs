@@ -1,9 +1,11 @@
-//! The events of one step, in time order, through the one event finder
-//! ([`crate::ode::events::find`], with the particles' events as `simulate/prove.rs` gives
-//! them): the points at which the scan must look, the scan from the last firing to the step's
-//! end, and each firing in turn until one cuts the step or none is left.
+//! The particles' run on the one event-aware loop ([`crate::ode::events::drive`]): the
+//! [`Model`] that hands the loop's turns to the `Run`, and the events of one step through the
+//! one event finder ([`crate::ode::events::find`], with the particles' events as
+//! `simulate/prove.rs` gives them): the points at which the scan must look, and the scan from
+//! the last firing to the step's end.
 
 use crate::Real;
+use crate::ode::events::drive::{AfterFiring, Model};
 use crate::ode::events::find::Fired;
 use crate::particles::SampleKind;
 use crate::simulate::observe::Observer;
@@ -12,55 +14,76 @@ use crate::simulate::prove::{Proving, Sampling, ran_out_warning};
 use crate::simulate::report::SimulateError;
 use crate::simulate::stepping::Engine;
 
-use super::fire::AfterFiring;
 use super::run::Run;
 
-/// How the events of a step leave it.
-pub(super) enum StepEnd {
-    /// A firing cut the step short: the run goes on from the event (or ends there).
-    Cut,
-    /// The step goes on to its end, whose sample is of this kind (an event recorded exactly
-    /// at the end makes it an event sample).
-    Finish(SampleKind),
+/// A particles' run with its observers, on the one event-aware loop.
+pub(super) struct Particles<'m, 'r, 'o> {
+    pub run: &'m mut Run<'r>,
+    pub observers: &'m mut [&'o mut dyn Observer],
+}
+
+impl Model for Particles<'_, '_, '_> {
+    type Error = SimulateError;
+
+    fn ended(&self) -> bool {
+        self.run.stop_reason.is_some()
+    }
+
+    fn stops_before_step(&mut self) -> bool {
+        self.run.stops_before_step(self.observers)
+    }
+
+    fn fast_forward(&mut self) -> bool {
+        self.run.fused_chunk(self.observers)
+    }
+
+    fn advance(&mut self) -> Result<bool, SimulateError> {
+        self.run.advance()
+    }
+
+    fn any_enabled(&self) -> bool {
+        self.run.book.enabled.iter().any(|e| *e)
+    }
+
+    fn plan(&mut self) {
+        self.run.prove_points();
+    }
+
+    fn begin_scan(&mut self) -> Real {
+        let run = &mut *self.run;
+        run.g_scan.clone_from(&run.g_a);
+        run.sides_scan.clone_from(&run.sides);
+        run.ends.t0
+    }
+
+    fn scan_from(&mut self, t_scan: Real) -> Option<Fired> {
+        self.run.scan_from(t_scan)
+    }
+
+    fn end_scan(&mut self) {
+        // the sides at the step's end (`sides_scan` is set afresh for the next step)
+        std::mem::swap(&mut self.run.sides, &mut self.run.sides_scan);
+    }
+
+    fn fire(&mut self, fired: Fired) -> Result<AfterFiring, SimulateError> {
+        self.run.fire(self.observers, fired)
+    }
+
+    fn finish_step(&mut self, event_at_end: bool) -> Result<(), SimulateError> {
+        let kind = if event_at_end {
+            SampleKind::Event
+        } else {
+            SampleKind::Step
+        };
+        self.run.finish_step(self.observers, kind)
+    }
 }
 
 impl Run<'_> {
-    /// Finds and handles the events of the step just taken, in time order.
-    pub fn events_in_step(
-        &mut self,
-        observers: &mut [&mut dyn Observer],
-    ) -> Result<StepEnd, SimulateError> {
-        if self.any_enabled() {
-            self.prove_points();
-        }
-        let mut t_scan = self.ends.t0;
-        self.g_scan.clone_from(&self.g_a);
-        self.sides_scan.clone_from(&self.sides);
-        // (no events: nothing to scan)
-        while self.any_enabled() {
-            let Some(fired) = self.scan_from(t_scan) else {
-                // the sides at the step's end (`sides_scan` is set afresh for the next step)
-                std::mem::swap(&mut self.sides, &mut self.sides_scan);
-                break;
-            };
-            match self.fire(observers, fired)? {
-                AfterFiring::Cut => return Ok(StepEnd::Cut),
-                AfterFiring::AtStepEnd => return Ok(StepEnd::Finish(SampleKind::Event)),
-                AfterFiring::ScanFrom(t) => t_scan = t,
-            }
-        }
-        Ok(StepEnd::Finish(SampleKind::Step))
-    }
-
-    /// Whether any event can still fire.
-    fn any_enabled(&self) -> bool {
-        self.book.enabled.iter().any(|e| *e)
-    }
-
     /// The times inside the step at which the event functions are sampled: those that prove
     /// no sign change is missed, and, for events that cannot be proven, evenly spaced ones
     /// (as many as contacts ask for).
-    fn prove_points(&mut self) {
+    pub fn prove_points(&mut self) {
         let (t_a, t_b) = (self.ends.t0, self.ends.t1);
         if self.any_provable {
             self.engine
@@ -87,7 +110,7 @@ impl Run<'_> {
 
     /// The first firing in the step after `t_scan` (where the event functions are `g_scan`
     /// and the sides `sides_scan`), if any.
-    fn scan_from(&mut self, t_scan: Real) -> Option<Fired> {
+    pub fn scan_from(&mut self, t_scan: Real) -> Option<Fired> {
         let mut sampling = Sampling {
             events: self.events,
             enabled: &self.book.enabled,

@@ -4,6 +4,7 @@
 //! on.
 
 use crate::Real;
+use crate::ode::events::drive::AfterFiring;
 use crate::ode::events::find::{Fired, Side};
 use crate::particles::SampleKind;
 use crate::simulate::book::EventBook;
@@ -15,16 +16,6 @@ use crate::simulate::run::sample_of;
 use crate::simulate::stepping::Engine;
 
 use super::run::Run;
-
-/// Where the scan goes after a firing.
-pub(super) enum AfterFiring {
-    /// The step is cut at the firing.
-    Cut,
-    /// The firing was recorded at the step's end: nothing is left to scan.
-    AtStepEnd,
-    /// The firing was recorded inside the step: the scan goes on from its time.
-    ScanFrom(Real),
-}
 
 impl Run<'_> {
     /// Handles the events that fire together at `fired.firing.t`.

@@ -18,7 +18,7 @@ use crate::simulate::report::{Divergence, RunReport, SimulateError, StopReason};
 use crate::simulate::run::{Simulation, sample_of};
 use crate::simulate::stepping::{Engine, StepEnds, Stepping, WorkSystem, step_budget};
 
-use super::events::StepEnd;
+use super::events::Particles;
 
 /// Runs `sim` from `initial`, passing every sample to `observers`.
 pub(in crate::simulate) fn drive(
@@ -27,22 +27,10 @@ pub(in crate::simulate) fn drive(
     observers: &mut [&mut dyn Observer],
 ) -> Result<RunReport, SimulateError> {
     let mut run = Run::start(sim, initial, observers)?;
-    while run.stop_reason.is_none() {
-        if run.stops_before_step(observers) {
-            break;
-        }
-        // the steps no observer looks at, in the compiled kernel
-        if run.fused_chunk(observers) {
-            continue;
-        }
-        if run.advance()? {
-            break;
-        }
-        match run.events_in_step(observers)? {
-            StepEnd::Cut => {}
-            StepEnd::Finish(kind) => run.finish_step(observers, kind)?,
-        }
-    }
+    crate::ode::events::drive::drive(&mut Particles {
+        run: &mut run,
+        observers,
+    })?;
     run.report(observers)
 }
 
@@ -245,7 +233,7 @@ impl<'r> Run<'r> {
     }
 
     /// Whether the run stops before its next step (setting the reason).
-    fn stops_before_step(&mut self, observers: &[&mut dyn Observer]) -> bool {
+    pub fn stops_before_step(&mut self, observers: &[&mut dyn Observer]) -> bool {
         self.stop_reason = stop_before_step(
             self.sim,
             observers,
