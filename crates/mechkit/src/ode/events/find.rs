@@ -99,6 +99,12 @@ pub(crate) trait Rules {
     fn fires(&self, i: usize, from: Side, to: Side) -> bool;
     /// Every event function at time `t` inside the step whose interpolant is `poly`.
     fn values(&mut self, poly: &StepPolynomial, t: Real, out: &mut [Real]);
+    /// Whether a change of side of event `i` between consecutive samples `g_prev` and `g` is
+    /// more than noise (a model that watches a quantity jittering at rounding level about
+    /// zero says no when both are); every change is, unless said otherwise.
+    fn significant(&self, _i: usize, _g_prev: Real, _g: Real) -> bool {
+        true
+    }
 }
 
 /// Events firing together at one instant.
@@ -216,7 +222,7 @@ impl Finder {
                     continue;
                 }
                 let to = sides[i].after(vals[i]);
-                if !rules.fires(i, sides[i], to) {
+                if !rules.fires(i, sides[i], to) || !rules.significant(i, prev[i], vals[i]) {
                     continue;
                 }
                 let te = if left_armed(sides[i], prev[i]) {

@@ -28,6 +28,7 @@ mod body;
 mod driver;
 mod equations;
 mod error;
+mod model;
 mod poinsot;
 mod record;
 mod run;

@@ -1,15 +1,19 @@
-//! The simulation: a chosen integrator over `[0, t_end]`, samples on a uniform grid by the
-//! interpolant of each step, the zero crossings of the intermediate axis' angular velocity
-//! located inside the step (Brent's method on the interpolant), the largest deviations of the
-//! conserved quantities at every step end, and the unwrapped precession angle.
+//! The simulation: a chosen integrator over `[0, t_end]` on the one event-aware loop
+//! (`model.rs`), samples on a uniform grid by the interpolant of each step, the zero crossings
+//! of the intermediate axis' angular velocity as events (none missed; Brent's method on the
+//! interpolant), the largest deviations of the conserved quantities at every step end, and the
+//! unwrapped precession angle.
 
 use super::body::{Attitude, SpinningBody};
 use super::driver::{Clock, Driver, Window};
 use super::equations::{Formulation, SpinEquations};
 use super::error::Free3dError;
+use super::model::SpinModel;
 use super::record::Record;
 use crate::Real;
 use crate::mass::Vec3;
+use crate::ode::events::drive::drive;
+use crate::ode::events::find::{Finder, Side};
 use crate::ode::{AdaptiveConfig, AdaptiveRk, ExplicitRk, State, Tableau, steps_to_cover};
 
 /// How the equations are integrated.
@@ -181,7 +185,7 @@ impl SpinningBody {
         }
         let start = self.attitude(start.q, self.omega_body(start))?;
         let eq = SpinEquations::new(self, options.formulation);
-        let mut state = State::new(0.0, eq.formulation().to_state(&start));
+        let state = State::new(0.0, eq.formulation().to_state(&start));
         let clock = |dt: Real| -> Result<Clock, Free3dError> {
             if !(dt > 0.0 && dt.is_finite()) {
                 return Err(Free3dError::Step { value: dt });
@@ -196,7 +200,7 @@ impl SpinningBody {
                 t_end,
             })
         };
-        let mut driver = match &options.integrator {
+        let driver = match &options.integrator {
             SpinIntegrator::Adaptive { tableau, config } => {
                 config.validate(7)?;
                 Driver::Adaptive(Box::new(AdaptiveRk::new(tableau.clone(), config.clone())?))
@@ -218,27 +222,38 @@ impl SpinningBody {
                 }
             }
         };
-        let mut evaluations = match driver {
+        let evaluations = match driver {
             Driver::Adaptive(_) => 0,
             _ => 1,
         };
-        let mut steps = 0;
-        let mut record = Record::new(&eq, &start, t_end, options.samples);
-        while state.t < t_end {
-            let t0 = state.t;
-            evaluations += driver.step(&eq, &mut state, t_end)?;
-            steps += 1;
-            record.after_step(&mut driver, &eq, t0, &state);
-            if options.renormalise {
-                let n = state.y[..4].iter().map(|v| v * v).sum::<Real>().sqrt();
-                if n != 1.0 {
-                    for v in &mut state.y[..4] {
-                        *v /= n;
-                    }
-                    evaluations += driver.rescaled(&eq, &state, 1.0 / n);
-                }
-            }
+        let record = Record::new(&eq, &start, t_end, options.samples);
+        let watch = record.watch;
+        let mut model = SpinModel {
+            eq: &eq,
+            driver,
+            state,
+            t_end,
+            record,
+            renormalise: options.renormalise,
+            steps: 0,
+            evaluations,
+            watch: None,
+            finder: Finder::default(),
+            side: [Side::Unknown],
+            g: (0.0, 0.0, 0.0),
+            t0: 0.0,
+            done: false,
         }
+        .watching(watch);
+        drive(&mut model)?;
+        let SpinModel {
+            driver,
+            state,
+            record,
+            steps,
+            evaluations,
+            ..
+        } = model;
         let rejected = match &driver {
             Driver::Adaptive(rk) => rk.stats().rejected,
             _ => 0,
