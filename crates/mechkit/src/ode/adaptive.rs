@@ -121,6 +121,16 @@ impl AdaptiveRk {
         self.fresh = true;
     }
 
+    /// Forgets the history as [`AdaptiveRk::reset`] does, but tries `h` first instead of
+    /// choosing a first step afresh (after a state change, the last step taken: a first-step
+    /// guess from a state near rest can fall below the smallest step).
+    pub fn reset_to_step(&mut self, h: Real) {
+        self.reset();
+        if h > 0.0 && h.is_finite() {
+            self.h = Some(h);
+        }
+    }
+
     /// Hands the integrator `f(t, y)` of the state the next step starts from.
     pub fn provide_derivative(&mut self, t: Real, dydt: &[Real]) {
         self.stages.resize(self.stage_count(), dydt.len());

@@ -51,7 +51,10 @@ pub use control::{
 };
 pub use euler::Euler;
 pub use euler_cromer::EulerCromer;
-pub use events::{Direction, EventEnd, EventHit, OdeEvent, Progress, run_to_event};
+pub use events::{
+    Direction, EventEnd, EventHit, Integrator, OdeEvent, Progress, RunError, run_events,
+    run_to_event,
+};
 pub use explicit_rk::ExplicitRk;
 pub use hermite::{hermite, hermite_derivative};
 pub use method::{Method, MethodKind};

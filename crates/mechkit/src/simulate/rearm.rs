@@ -8,12 +8,12 @@
 //! steps). The direction the function takes after the change is its rate along the new state's
 //! flow, `ġ ≈ (g(t + δ, y + δ ẏ) − g(t, y)) / δ`, with `δ = √ε · max(|t|, typical step)`.
 
-use super::event::{Direction, Event, Trigger};
+use super::event::{Event, Trigger};
 use super::probe::Probe;
 use super::run::sample_of;
 use crate::Real;
 use crate::ode::State;
-use crate::ode::events::find::Side;
+use crate::ode::events::find::{self, Side};
 use crate::particles::{Evaluation, ParticleSystem, SampleKind};
 
 /// The values of the functions of the `fired` events a moment `δ` along the flow of `state`
@@ -55,51 +55,26 @@ pub(super) fn values_ahead(
     }
 }
 
-/// The sides of the events right after a state change: `fired` fired, `before` are their sides
-/// just before the firing, `g_pre` their values at the event before the change, `g_post` after
-/// it and `g_ahead` a moment later along the flow. A fired event whose function the change
-/// turned back towards the side it came from, while leaving it where it was (at the located
-/// zero, to rounding: a bounce changes the velocity, not the height) or on that side, is armed
-/// on that side (its next arrival at zero fires); any other fired event is at zero (leaving it
-/// does not fire: a kick along, or a jump elsewhere), and the others keep their sides.
+/// The sides of the events right after a state change ([`sides_after_change`] of the one
+/// event finder, with the particles' events' origins: a stop condition is never armed).
 pub(super) fn sides_after_change(
     events: &[Event],
     fired: &[usize],
     before: &[Side],
-    (g_pre, g_post, g_ahead): (&[Real], &[Real], &[Real]),
+    values: (&[Real], &[Real], &[Real]),
     out: &mut [Side],
 ) {
-    for (i, e) in events.iter().enumerate() {
-        out[i] = if fired.contains(&i) {
-            let origin = match e.trigger {
-                Trigger::Crossing(Direction::Falling) => Side::Pos,
-                Trigger::Crossing(Direction::Rising) => Side::Neg,
-                Trigger::Crossing(Direction::Both) => before[i],
-                Trigger::Holds { .. } => Side::Zero,
-            };
-            let rate = g_ahead[i] - g_post[i];
-            let (turned_back, on_origin) = match origin {
-                Side::Pos => (rate > 0.0, g_post[i] > 0.0),
-                Side::Neg => (rate < 0.0, g_post[i] < 0.0),
-                _ => (false, false),
-            };
-            let in_place = g_post[i] == g_pre[i] || g_post[i] == 0.0;
-            if turned_back && (in_place || on_origin) {
-                origin
-            } else {
-                Side::Zero
-            }
-        } else if g_post[i] == 0.0 {
-            Side::Zero
-        } else {
-            before[i].after(g_post[i])
-        };
-    }
+    let origin = |i: usize| match events[i].trigger {
+        Trigger::Crossing(d) => d.origin(before[i]),
+        Trigger::Holds { .. } => Side::Zero,
+    };
+    find::sides_after_change(fired, &origin, before, values, out);
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ode::events::Direction;
 
     #[test]
     fn a_bounce_is_armed_again_and_a_kick_is_not() {

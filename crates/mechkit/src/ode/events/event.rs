@@ -58,6 +58,16 @@ impl Direction {
         }
     }
 
+    /// The side an event that fired comes from: positive for a falling one, negative for a
+    /// rising one, and for both the side it was on before (`before`).
+    pub(crate) fn origin(self, before: Side) -> Side {
+        match self {
+            Direction::Falling => Side::Pos,
+            Direction::Rising => Side::Neg,
+            Direction::Both => before,
+        }
+    }
+
     /// Looks a direction up by name (`rising`/`up`/`increasing`, `falling`/`down`/`decreasing`,
     /// `both`/`any`).
     pub fn from_name(name: &str) -> Option<Direction> {
@@ -72,6 +82,7 @@ impl Direction {
 
 type EventFn<'a> = dyn Fn(Real, &[Real]) -> Real + 'a;
 type BoundFn<'a> = dyn Fn(Jet, &[Jet]) -> Option<Jet> + 'a;
+type ActionFn<'a> = dyn Fn(Real, &mut [Real]) + 'a;
 
 /// An event of an [`OdeSystem`](crate::ode::OdeSystem), found by
 /// [`run_to_event`](super::run_to_event).
@@ -98,6 +109,7 @@ type BoundFn<'a> = dyn Fn(Jet, &[Jet]) -> Option<Jet> + 'a;
 pub struct OdeEvent<'a> {
     g: Box<EventFn<'a>>,
     bound: Option<Box<BoundFn<'a>>>,
+    action: Option<Box<ActionFn<'a>>>,
     direction: Direction,
     terminal: bool,
 }
@@ -106,6 +118,7 @@ impl fmt::Debug for OdeEvent<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("OdeEvent")
             .field("bounded", &self.bound.is_some())
+            .field("action", &self.action.is_some())
             .field("direction", &self.direction)
             .field("terminal", &self.terminal)
             .finish()
@@ -119,6 +132,7 @@ impl<'a> OdeEvent<'a> {
         Self {
             g: Box::new(g),
             bound: None,
+            action: None,
             direction: Direction::Both,
             terminal: false,
         }
@@ -148,6 +162,27 @@ impl<'a> OdeEvent<'a> {
     #[must_use]
     pub fn rising(self) -> Self {
         self.direction(Direction::Rising)
+    }
+
+    /// A change of the state where it fires, `action(t, y)` (a bounce: `y[1] *= -0.8`): the
+    /// step is cut there and the integration starts afresh from the changed state
+    /// ([`run_events`](super::run_events)).
+    #[must_use]
+    pub fn action(mut self, action: impl Fn(Real, &mut [Real]) + 'a) -> Self {
+        self.action = Some(Box::new(action));
+        self
+    }
+
+    /// Whether it changes the state where it fires.
+    pub fn has_action(&self) -> bool {
+        self.action.is_some()
+    }
+
+    /// Applies its action, if any, to the state `y` at time `t`.
+    pub fn apply(&self, t: Real, y: &mut [Real]) {
+        if let Some(action) = &self.action {
+            action(t, y);
+        }
     }
 
     /// The integration ends at the first crossing, exactly there.

@@ -71,6 +71,46 @@ impl Side {
     }
 }
 
+/// The sides of the events right after a state change: `fired` fired, `before` are the
+/// sides just before the firing, `g_pre` the values at the event before the change, `g_post`
+/// after it and `g_ahead` a moment later along the flow; `origin(i)` is the side fired event
+/// `i` comes from (positive for a falling event, negative for a rising one). A fired event
+/// whose function the change turned back towards its origin, while leaving it where it was
+/// (at the located zero, to rounding: a bounce changes the velocity, not the height) or on that
+/// side, is armed on that side: its next arrival at zero fires, however short the excursion
+/// ([`Finder::first_firing`] finds it, or fires at once when none can be resolved). Any other
+/// fired event is at zero (leaving it does not fire: a kick along, or a jump elsewhere), and
+/// the others keep their sides.
+pub(crate) fn sides_after_change(
+    fired: &[usize],
+    origin: &dyn Fn(usize) -> Side,
+    before: &[Side],
+    (g_pre, g_post, g_ahead): (&[Real], &[Real], &[Real]),
+    out: &mut [Side],
+) {
+    for (i, side) in out.iter_mut().enumerate() {
+        *side = if fired.contains(&i) {
+            let origin = origin(i);
+            let rate = g_ahead[i] - g_post[i];
+            let (turned_back, on_origin) = match origin {
+                Side::Pos => (rate > 0.0, g_post[i] > 0.0),
+                Side::Neg => (rate < 0.0, g_post[i] < 0.0),
+                _ => (false, false),
+            };
+            let in_place = g_post[i] == g_pre[i] || g_post[i] == 0.0;
+            if turned_back && (in_place || on_origin) {
+                origin
+            } else {
+                Side::Zero
+            }
+        } else if g_post[i] == 0.0 {
+            Side::Zero
+        } else {
+            before[i].after(g_post[i])
+        };
+    }
+}
+
 /// How the events of a step are bounded, for [`Finder::plan`].
 pub(crate) trait Bounds {
     /// Number of events.

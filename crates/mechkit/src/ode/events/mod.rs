@@ -15,7 +15,7 @@ mod event;
 pub(crate) mod find;
 mod scan;
 
-pub use driver::{EventEnd, EventHit, Progress, run_to_event};
+pub use driver::{EventEnd, EventHit, Integrator, Progress, RunError, run_events, run_to_event};
 pub use event::{Direction, OdeEvent};
 pub use find::FALLBACK_SAMPLES;
 pub use scan::SAMPLES;

@@ -7,7 +7,7 @@ use mechkit_expr::interval::{Interval, Jet};
 
 use super::drive::AfterFiring;
 use super::event::OdeEvent;
-use super::find::{Bounds, Finder, Fired, Rules, Side};
+use super::find::{Bounds, Finder, Fired, Rules, Side, sides_after_change};
 use crate::Real;
 use crate::ode::{State, StepPolynomial};
 
@@ -50,6 +50,44 @@ impl<'e, 'a> StepEvents<'e, 'a> {
     /// Whether there are no events.
     pub fn is_empty(&self) -> bool {
         self.events.is_empty()
+    }
+
+    /// Whether event `i` changes the state where it fires.
+    pub fn acts(&self, i: usize) -> bool {
+        self.events[i].has_action()
+    }
+
+    /// Applies event `i`'s action to the state `y` at time `t`.
+    pub fn act(&self, i: usize, t: Real, y: &mut [Real]) {
+        self.events[i].apply(t, y);
+    }
+
+    /// Every event function at `state`.
+    pub fn values_at(&self, state: &State) -> Vec<Real> {
+        self.events
+            .iter()
+            .map(|e| e.value(state.t, &state.y))
+            .collect()
+    }
+
+    /// After a state change by the `fired` events at the event (where the functions were
+    /// `g_pre`), to `state` (and `ahead` a moment along its flow): the events' sides
+    /// ([`sides_after_change`]: an event the change turned back is armed on the side it came
+    /// from) and values start afresh there.
+    pub fn changed(&mut self, fired: &[usize], g_pre: &[Real], state: &State, ahead: &State) {
+        let g_post = self.values_at(state);
+        let g_ahead = self.values_at(ahead);
+        let before = self.sides.clone();
+        let events = self.events;
+        let origin = |i: usize| events[i].crossing_direction().origin(before[i]);
+        sides_after_change(
+            fired,
+            &origin,
+            &before,
+            (g_pre, &g_post, &g_ahead),
+            &mut self.sides,
+        );
+        self.start = g_post;
     }
 
     /// Whether event `i` ends the integration.
