@@ -110,79 +110,9 @@ impl Fused {
         let kdt = b.mul(k1, dt_c);
         let t1 = b.add(origin_c, kdt);
         let h = b.sub(t1, t);
-        let x: Vec<Val> = (0..n).map(|i| b.get(layout.x(i))).collect();
-        let v: Vec<Val> = (0..n).map(|i| b.get(layout.v(i))).collect();
-        let a: Vec<Val> = (0..n).map(|i| b.get(layout.a(i))).collect();
-        let mut x1 = Vec::with_capacity(n);
-        let mut v1 = Vec::with_capacity(n);
-        for i in 0..n {
-            let dv = b.mul(h, a[i]);
-            if method == Method::EulerCromer {
-                // v += h a; q += h v (the new v)
-                let vi = b.add(v[i], dv);
-                let dx = b.mul(h, vi);
-                x1.push(b.add(x[i], dx));
-                v1.push(vi);
-            } else {
-                // y += h y': q += h v (the old v); v += h a
-                let dx = b.mul(h, v[i]);
-                x1.push(b.add(x[i], dx));
-                v1.push(b.add(v[i], dv));
-            }
-        }
-
-        // the evaluation at the step's end (ParticleSystem::evaluate, ForceSet's order)
-        let mut total: Vec<Option<Val>> = vec![None; n];
-        let mut power = Vec::with_capacity(nf);
-        let mut net = Vec::with_capacity(nf * dim);
-        for f in sys.forces().iter() {
-            let mut e = ForceEmitter::new(&mut b, dim, t1, &x1, &v1, sys.masses());
-            if !f.emit(&mut e) {
-                return None;
-            }
-            let scratch = e.into_forces();
-            power.push(sum(
-                &mut b,
-                scratch.iter().zip(&v1).map(|(s, v)| s.map(|s| (s, *v))),
-            ));
-            for (o, s) in total.iter_mut().zip(&scratch) {
-                *o = add(&mut b, *o, *s);
-            }
-            for c in 0..dim {
-                let mut acc = None;
-                for body in scratch.chunks_exact(dim) {
-                    acc = add(&mut b, acc, body[c]);
-                }
-                net.push(acc.unwrap_or_else(|| b.constant(0.0)));
-            }
-        }
-        let accel: Vec<Val> = total
-            .iter()
-            .zip(sys.inverse_masses())
-            .map(|(f, w)| {
-                let f = f.unwrap_or_else(|| b.constant(0.0));
-                let w = b.constant(*w);
-                b.mul(f, w)
-            })
-            .collect();
-
-        // the ledger: trapezoids of power and net force over the step
-        let half = b.constant(0.5);
-        let half_h = b.mul(half, h);
-        let trapezoid = |b: &mut KernelBuilder, acc: usize, last: usize, now: Val| {
-            let (sum_slot, last_val) = (b.get(acc), b.get(last));
-            let s = b.add(last_val, now);
-            let inc = b.mul(half_h, s);
-            let new = b.add(sum_slot, inc);
-            b.set(acc, new);
-            b.set(last, now);
-        };
-        for (i, p) in power.iter().enumerate() {
-            trapezoid(&mut b, layout.work(i), layout.power(i), *p);
-        }
-        for (i, f) in net.iter().enumerate() {
-            trapezoid(&mut b, layout.impulse(i), layout.net(i), *f);
-        }
+        let (x1, v1) = step(&mut b, &layout, method, h);
+        let (accel, power, net) = evaluation(&mut b, sys, t1, &x1, &v1)?;
+        ledger(&mut b, &layout, h, &power, &net);
         // the step range, branch-free (steps are positive)
         let (h_min, h_max) = (b.get(H_MIN), b.get(H_MAX));
         let h_min = b.min_nonnegative(h, h_min);
@@ -338,4 +268,99 @@ fn sum(b: &mut KernelBuilder, terms: impl Iterator<Item = Option<(Val, Val)>>) -
         acc = add(b, acc, Some(p));
     }
     acc.unwrap_or_else(|| b.constant(0.0))
+}
+
+/// One Euler or Euler-Cromer step of `h` in the kernel: the new positions and velocities.
+fn step(b: &mut KernelBuilder, layout: &Layout, method: Method, h: Val) -> (Vec<Val>, Vec<Val>) {
+    let n = layout.n;
+    let x: Vec<Val> = (0..n).map(|i| b.get(layout.x(i))).collect();
+    let v: Vec<Val> = (0..n).map(|i| b.get(layout.v(i))).collect();
+    let a: Vec<Val> = (0..n).map(|i| b.get(layout.a(i))).collect();
+    let mut x1 = Vec::with_capacity(n);
+    let mut v1 = Vec::with_capacity(n);
+    for i in 0..n {
+        let dv = b.mul(h, a[i]);
+        if method == Method::EulerCromer {
+            // v += h a; q += h v (the new v)
+            let vi = b.add(v[i], dv);
+            let dx = b.mul(h, vi);
+            x1.push(b.add(x[i], dx));
+            v1.push(vi);
+        } else {
+            // y += h y': q += h v (the old v); v += h a
+            let dx = b.mul(h, v[i]);
+            x1.push(b.add(x[i], dx));
+            v1.push(b.add(v[i], dv));
+        }
+    }
+    (x1, v1)
+}
+
+/// The evaluation at the step's end in the kernel (`ParticleSystem::evaluate`, `ForceSet`'s
+/// order): the accelerations, each force's power and its net force per component; `None`
+/// when a force cannot be emitted.
+#[allow(clippy::type_complexity)]
+fn evaluation(
+    b: &mut KernelBuilder,
+    sys: &ParticleSystem,
+    t1: Val,
+    x1: &[Val],
+    v1: &[Val],
+) -> Option<(Vec<Val>, Vec<Val>, Vec<Val>)> {
+    let dim = sys.dim();
+    let nf = sys.forces().len();
+    let mut total: Vec<Option<Val>> = vec![None; x1.len()];
+    let mut power = Vec::with_capacity(nf);
+    let mut net = Vec::with_capacity(nf * dim);
+    for f in sys.forces().iter() {
+        let mut e = ForceEmitter::new(b, dim, t1, x1, v1, sys.masses());
+        if !f.emit(&mut e) {
+            return None;
+        }
+        let scratch = e.into_forces();
+        power.push(sum(
+            b,
+            scratch.iter().zip(v1).map(|(s, v)| s.map(|s| (s, *v))),
+        ));
+        for (o, s) in total.iter_mut().zip(&scratch) {
+            *o = add(b, *o, *s);
+        }
+        for c in 0..dim {
+            let mut acc = None;
+            for body in scratch.chunks_exact(dim) {
+                acc = add(b, acc, body[c]);
+            }
+            net.push(acc.unwrap_or_else(|| b.constant(0.0)));
+        }
+    }
+    let accel: Vec<Val> = total
+        .iter()
+        .zip(sys.inverse_masses())
+        .map(|(f, w)| {
+            let f = f.unwrap_or_else(|| b.constant(0.0));
+            let w = b.constant(*w);
+            b.mul(f, w)
+        })
+        .collect();
+    Some((accel, power, net))
+}
+
+/// The ledger in the kernel: trapezoids of each force's power and net force over the step.
+fn ledger(b: &mut KernelBuilder, layout: &Layout, h: Val, power: &[Val], net: &[Val]) {
+    let half = b.constant(0.5);
+    let half_h = b.mul(half, h);
+    let trapezoid = |b: &mut KernelBuilder, acc: usize, last: usize, now: Val| {
+        let (sum_slot, last_val) = (b.get(acc), b.get(last));
+        let s = b.add(last_val, now);
+        let inc = b.mul(half_h, s);
+        let new = b.add(sum_slot, inc);
+        b.set(acc, new);
+        b.set(last, now);
+    };
+    for (i, p) in power.iter().enumerate() {
+        trapezoid(b, layout.work(i), layout.power(i), *p);
+    }
+    for (i, f) in net.iter().enumerate() {
+        trapezoid(b, layout.impulse(i), layout.net(i), *f);
+    }
 }
