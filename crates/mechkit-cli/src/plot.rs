@@ -1,5 +1,6 @@
 //! Renders plot data to SVG with plotters, using the bundled DejaVu Sans font (no system font
-//! libraries needed).
+//! libraries needed), and to PNG by rasterising that SVG with resvg, its text set in the same
+//! bundled font: the PNG shows exactly what the SVG does.
 
 use std::path::Path;
 use std::sync::Once;
@@ -11,6 +12,8 @@ use plotters::prelude::*;
 use plotters::style::FontStyle;
 
 mod bars;
+
+pub use crate::args::PlotFormat;
 
 static FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
@@ -90,19 +93,84 @@ fn equalize(x: (f64, f64), y: (f64, f64), width: f64, height: f64) -> ((f64, f64
     ((cx - hx, cx + hx), (cy - hy, cy + hy))
 }
 
-/// Draws `plot` into an SVG file at `path` (written atomically).
-pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
+/// The size of every plot in SVG pixels (at 96 dpi).
+const SIZE: (u32, u32) = (900, 600);
+
+/// Draws `plot` into the file at `path` (written atomically): PNG at `dpi` dots per inch when
+/// its name ends in `.png`, else SVG.
+pub fn render(plot: &PlotData, title: &str, path: &Path, dpi: u32) -> Result<()> {
+    let svg = svg_text(plot, title)?;
+    let is_png = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    let bytes = if is_png {
+        rasterise(&svg, dpi)?
+    } else {
+        svg.into_bytes()
+    };
+    write_atomic(path, &bytes).with_context(|| format!("cannot write {}", path.display()))
+}
+
+/// The PNG of the SVG text `svg` at `dpi` dots per inch (96: one pixel per SVG pixel), on a
+/// white background.
+fn rasterise(svg: &str, dpi: u32) -> Result<Vec<u8>> {
+    use resvg::{tiny_skia, usvg};
+    let mut options = usvg::Options::default();
+    options.fontdb_mut().load_font_data(FONT.to_vec());
+    options.fontdb_mut().set_sans_serif_family("DejaVu Sans");
+    options.font_family = "DejaVu Sans".into();
+    let tree = usvg::Tree::from_str(svg, &options).context("cannot read the plot's SVG")?;
+    let scale = dpi as f32 / 96.0;
+    let size = tree
+        .size()
+        .to_int_size()
+        .scale_by(scale)
+        .ok_or_else(|| anyhow!("a PNG at {dpi} dpi has no pixels; use --dpi 96 or more"))?;
+    let mut pixmap = tiny_skia::Pixmap::new(size.width(), size.height())
+        .ok_or_else(|| anyhow!("cannot allocate a {}x{} PNG", size.width(), size.height()))?;
+    pixmap.fill(tiny_skia::Color::WHITE);
+    let transform = tiny_skia::Transform::from_scale(scale, scale);
+    resvg::render(&tree, transform, &mut pixmap.as_mut());
+    encode_rgb(&pixmap, dpi).map_err(|e| anyhow!("cannot encode the PNG: {e}"))
+}
+
+/// The opaque `pixmap` as an RGB PNG (the alpha channel is 255 throughout: a white
+/// background) that records its resolution, `dpi`.
+fn encode_rgb(pixmap: &resvg::tiny_skia::Pixmap, dpi: u32) -> Result<Vec<u8>, png::EncodingError> {
+    let rgb: Vec<u8> = pixmap
+        .data()
+        .chunks_exact(4)
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect();
+    let mut out = Vec::new();
+    let mut encoder = png::Encoder::new(&mut out, pixmap.width(), pixmap.height());
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_compression(png::Compression::High);
+    let per_metre = (f64::from(dpi) / 0.0254).round() as u32;
+    encoder.set_pixel_dims(Some(png::PixelDimensions {
+        xppu: per_metre,
+        yppu: per_metre,
+        unit: png::Unit::Meter,
+    }));
+    let mut writer = encoder.write_header()?;
+    writer.write_image_data(&rgb)?;
+    writer.finish()?;
+    Ok(out)
+}
+
+/// The SVG text of `plot`.
+fn svg_text(plot: &PlotData, title: &str) -> Result<String> {
     register_font();
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(|e| anyhow!("{e}"))?;
         if !plot.bars.is_empty() {
             bars::draw(&root, plot, title)?;
             root.present().map_err(|e| anyhow!("{e}"))?;
             drop(root);
-            return write_atomic(path, svg.as_bytes())
-                .with_context(|| format!("cannot write {}", path.display()));
+            return Ok(svg);
         }
         let points = || plot.series.iter().flat_map(|s| s.points.iter());
         let marks = || plot.markers.iter().map(|m| m.at);
@@ -270,19 +338,20 @@ pub fn render_svg(plot: &PlotData, title: &str, path: &Path) -> Result<()> {
         }
         root.present().map_err(|e| anyhow!("{e}"))?;
     }
-    write_atomic(path, svg.as_bytes()).with_context(|| format!("cannot write {}", path.display()))
+    Ok(svg)
 }
 
-/// Draws a run's plots into `dir` as `<stem>.svg`, lists them in its summary and rewrites
-/// `summary.json` (what `mechkit run` and `mechkit gallery` write after a run).
+/// Draws a run's plots into `dir` as `<stem>.svg` (or `.png`), lists them in its summary and
+/// rewrites `summary.json` (what `mechkit run` and `mechkit gallery` write after a run).
 pub fn render_run(
     scenario: &mechkit::scenario::Scenario,
     out: &mut mechkit::scenario::RunOutput,
     dir: &Path,
+    format: PlotFormat,
 ) -> Result<()> {
     for p in &out.plots {
-        let name = format!("{}.svg", p.file_stem);
-        render_svg(p, &scenario.title, &dir.join(&name))?;
+        let name = format.file(&p.file_stem);
+        render(p, &scenario.title, &dir.join(&name), format.dpi)?;
         out.summary.files.plots.push(name);
     }
     scenario.write_summary(dir, &out.summary)?;

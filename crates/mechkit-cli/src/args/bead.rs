@@ -48,6 +48,9 @@ pub struct BeadArgs {
     /// Do not write the CSV and the plot.
     #[arg(long)]
     pub no_plots: bool,
+    /// Plot files: `--format svg|png` and `--dpi`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

@@ -64,6 +64,9 @@ pub struct FrictionArgs {
     /// Stick-slip: directory for stick_slip.csv and the x(t), v(t) and force plots.
     #[arg(long, short, requires = "spring_k")]
     pub out: Option<PathBuf>,
+    /// Plot files: `--format svg|png` and `--dpi`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

@@ -124,9 +124,12 @@ pub struct ImpulseArgs {
     /// Where to write t, F and the running impulse J(t) as CSV.
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Where to write the plot of J(t) (SVG).
+    /// Where to write the plot of J(t): SVG, or PNG when the name ends in .png.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Resolution of a PNG plot (a `--plot` path ending in .png) in dots per inch.
+    #[arg(long, default_value_t = 192, value_parser = clap::value_parser!(u32).range(24..=1200), allow_hyphen_values = true)]
+    pub dpi: u32,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,
@@ -157,6 +160,9 @@ pub struct DeriveArgs {
     /// Do not draw plots.
     #[arg(long)]
     pub no_plots: bool,
+    /// Plot files: `--format svg|png` and `--dpi`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,
@@ -190,9 +196,12 @@ pub struct WorkArgs {
     /// Where to write the cumulative integral as CSV (x, F, W).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Where to write the plot of W(x) (SVG).
+    /// Where to write the plot of W(x): SVG, or PNG when the name ends in .png.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Resolution of a PNG plot (a `--plot` path ending in .png) in dots per inch.
+    #[arg(long, default_value_t = 192, value_parser = clap::value_parser!(u32).range(24..=1200), allow_hyphen_values = true)]
+    pub dpi: u32,
     /// A force field instead of data: components separated by commas, functions of x, y (, z),
     /// e.g. "-k*x, -k*y".
     #[arg(long, allow_hyphen_values = true)]
@@ -244,6 +253,9 @@ pub struct PowerArgs {
     /// Do not draw plots.
     #[arg(long)]
     pub no_plots: bool,
+    /// Plot files: `--format svg|png` and `--dpi`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,
@@ -282,6 +294,9 @@ pub struct RocketArgs {
     /// Do not draw plots.
     #[arg(long)]
     pub no_plots: bool,
+    /// Plot files: `--format svg|png` and `--dpi`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,
@@ -325,12 +340,16 @@ pub struct PotentialArgs {
     /// Grid intervals used to find equilibria and turning points.
     #[arg(value_parser = super::whole_count, long, default_value_t = 2000, allow_hyphen_values = true)]
     pub samples: usize,
-    /// Where to write the energy diagram (SVG) [default: out/energy_diagram.svg].
+    /// Where to write the energy diagram: SVG, or PNG when the name ends in .png [default:
+    /// out/energy_diagram.svg].
     #[arg(long)]
     pub plot: Option<PathBuf>,
     /// Do not draw the diagram.
     #[arg(long, conflicts_with = "plot")]
     pub no_plot: bool,
+    /// Resolution of a PNG plot (a `--plot` path ending in .png) in dots per inch.
+    #[arg(long, default_value_t = 192, value_parser = clap::value_parser!(u32).range(24..=1200), allow_hyphen_values = true)]
+    pub dpi: u32,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

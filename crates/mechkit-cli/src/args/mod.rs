@@ -277,6 +277,9 @@ pub struct RunArgs {
     /// Do not draw plots.
     #[arg(long)]
     pub no_plots: bool,
+    /// Plot files: `--format svg|png` and `--dpi`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// Largest trajectory file to write, e.g. `10GB` or `500MB` (default: `[output] max_size`
     /// of the scenario, else 1 GB); the run stops cleanly with `output_limit` when it is
     /// reached.
@@ -358,6 +361,7 @@ mod negative_values {
         "file",
         "out",
         "plot",
+        "kind",
         "mark",
         "parts",
         "positions",
@@ -406,4 +410,44 @@ mod negative_values {
         }
         assert!(bad.is_empty(), "{} args: {bad:#?}", bad.len());
     }
+}
+
+/// How plots are written: `--format svg|png` and `--dpi` (flattened into every command that
+/// draws plots into a directory; where a command takes a plot's path, its extension decides).
+#[derive(clap::Args, Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PlotFormat {
+    /// Plot files: svg (vector, for documents) or png (raster, for slides).
+    #[arg(long = "format", value_enum, default_value_t = PlotKind::Svg)]
+    pub kind: PlotKind,
+    /// Resolution of PNG plots in dots per inch; 96 gives the SVG's own 900x600 pixels.
+    #[arg(long, default_value_t = 192, value_parser = clap::value_parser!(u32).range(24..=1200), allow_hyphen_values = true)]
+    pub dpi: u32,
+}
+
+impl Default for PlotFormat {
+    fn default() -> Self {
+        Self {
+            kind: PlotKind::Svg,
+            dpi: 192,
+        }
+    }
+}
+
+impl PlotFormat {
+    /// The file name of the plot `stem`: `stem.svg` or `stem.png`.
+    pub fn file(self, stem: &str) -> String {
+        match self.kind {
+            PlotKind::Svg => format!("{stem}.svg"),
+            PlotKind::Png => format!("{stem}.png"),
+        }
+    }
+}
+
+/// A plot file format.
+#[derive(clap::ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlotKind {
+    /// Scalable vector graphics.
+    Svg,
+    /// Portable network graphics, at `--dpi`.
+    Png,
 }

@@ -46,6 +46,9 @@ pub struct RollArgs {
     /// Directory for roll.csv and the plots of v and ωR, and of the energies.
     #[arg(long, short)]
     pub out: Option<PathBuf>,
+    /// Plot files: `--format svg|png` and `--dpi`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

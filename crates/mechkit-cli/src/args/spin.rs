@@ -61,6 +61,9 @@ pub struct SpinArgs {
     /// Directory for spin.csv and the plots (nothing is written without it).
     #[arg(long, short)]
     pub out: Option<PathBuf>,
+    /// Plot files: `--format svg|png` and `--dpi`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// Print JSON.
     #[arg(long)]
     pub json: bool,

@@ -33,6 +33,9 @@ pub struct SweepArgs {
     /// No overlay plot.
     #[arg(long, conflicts_with = "plot")]
     pub no_plot: bool,
+    /// Plot files: `--format svg|png` and `--dpi`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// Output directory [default: out/<file stem>].
     #[arg(long)]
     pub out: Option<PathBuf>,

@@ -17,7 +17,7 @@ use serde_json::{Value, json};
 use super::input::{params, quantity, show};
 use super::{Outcome, print};
 use crate::args::BeadArgs;
-use crate::plot::render_svg;
+use crate::plot::render;
 
 fn side(text: &str, circle: bool) -> Result<Side> {
     Ok(match text.trim().to_ascii_lowercase().as_str() {
@@ -109,16 +109,15 @@ pub fn bead(args: &BeadArgs) -> Result<Outcome> {
             .out
             .clone()
             .unwrap_or_else(|| PathBuf::from("out/bead"));
-        write_outputs(&model, &run, &dir)?;
+        write_outputs(&model, &run, &dir, args.plots)?;
         Some(dir)
     };
+    let plot_name = args.plots.file("path");
+    let files = files.as_deref().map(|d| (d, plot_name.as_str()));
     if args.json {
-        print(&format!(
-            "{:#}\n",
-            to_json(&model, start, &run, files.as_deref())
-        ))?;
+        print(&format!("{:#}\n", to_json(&model, start, &run, files)))?;
     } else {
-        print(&text(&model, start, &run, files.as_deref()))?;
+        print(&text(&model, start, &run, files))?;
     }
     Ok(Outcome::Success)
 }
@@ -145,7 +144,12 @@ fn side_name(s: Side, circle: bool) -> &'static str {
     }
 }
 
-fn to_json(model: &BeadOnCurve, start: Start, run: &BeadRun, files: Option<&Path>) -> Value {
+fn to_json(
+    model: &BeadOnCurve,
+    start: Start,
+    run: &BeadRun,
+    files: Option<(&Path, &str)>,
+) -> Value {
     let circle = model.curve.radius().is_some();
     let departure = run.departure.map_or(Value::Null, |d| {
         let mut v = json!({
@@ -179,14 +183,14 @@ fn to_json(model: &BeadOnCurve, start: Start, run: &BeadRun, files: Option<&Path
         "turning_times": run.turning_times,
         "t_end": run.samples.last().map_or(0.0, |s| s.t),
         "steps": run.stats.accepted,
-        "files": files.map(|d| json!({
+        "files": files.map(|(d, plot)| json!({
             "csv": d.join("path.csv").display().to_string(),
-            "plot": d.join("path.svg").display().to_string(),
+            "plot": d.join(plot).display().to_string(),
         })),
     })
 }
 
-fn text(model: &BeadOnCurve, start: Start, run: &BeadRun, files: Option<&Path>) -> String {
+fn text(model: &BeadOnCurve, start: Start, run: &BeadRun, files: Option<(&Path, &str)>) -> String {
     let circle = model.curve.radius().is_some();
     let mut out = format!(
         "{} on the {} of a {}, m = {} kg, g = {} m/s²\n",
@@ -253,13 +257,18 @@ fn text(model: &BeadOnCurve, start: Start, run: &BeadRun, files: Option<&Path>) 
         "energy drift on the curve {:.1e} J/kg; {} steps (dopri5)",
         run.energy_drift, run.stats.accepted
     );
-    if let Some(d) = files {
-        let _ = writeln!(out, "wrote {}/path.csv and path.svg", d.display());
+    if let Some((d, plot)) = files {
+        let _ = writeln!(out, "wrote {}/path.csv and {plot}", d.display());
     }
     out
 }
 
-fn write_outputs(model: &BeadOnCurve, run: &BeadRun, dir: &Path) -> Result<()> {
+fn write_outputs(
+    model: &BeadOnCurve,
+    run: &BeadRun,
+    dir: &Path,
+    format: crate::args::PlotFormat,
+) -> Result<()> {
     std::fs::create_dir_all(dir).map_err(|e| anyhow!("cannot create {}: {e}", dir.display()))?;
     let mut csv = String::from("t,x,y,vx,vy,normal_force,on_curve\n");
     for s in &run.samples {
@@ -353,5 +362,5 @@ fn write_outputs(model: &BeadOnCurve, run: &BeadRun, dir: &Path) -> Result<()> {
         side_name(model.side, model.curve.radius().is_some()),
         model.curve.describe()
     );
-    render_svg(&plot, &title, &dir.join("path.svg"))
+    render(&plot, &title, &dir.join(format.file("path")), format.dpi)
 }

@@ -13,7 +13,7 @@ use serde_json::json;
 
 use super::{Outcome, print};
 use crate::args::DeriveArgs;
-use crate::plot::render_svg;
+use crate::plot::render;
 
 /// One derived column.
 struct Derived {
@@ -91,7 +91,7 @@ pub fn derive(args: &DeriveArgs) -> Result<Outcome> {
     let plots = if args.no_plots {
         Vec::new()
     } else {
-        write_plots(&dir, &t_name, t, &derived, &args.file)?
+        write_plots(args.plots, &dir, &t_name, t, &derived, &args.file)?
     };
     let method = match how {
         Derivation::SavitzkyGolay(f) => {
@@ -212,6 +212,7 @@ fn csv_text(t_name: &str, t: &[f64], derived: &[Derived]) -> String {
 }
 
 fn write_plots(
+    format: crate::args::PlotFormat,
     dir: &Path,
     t_name: &str,
     t: &[f64],
@@ -244,8 +245,8 @@ fn write_plots(
                 t.iter().copied().zip(ys.iter().copied()).collect(),
             ));
         }
-        let path = dir.join(format!("{stem}.svg"));
-        render_svg(&plot, &title, &path)?;
+        let path = dir.join(format.file(stem));
+        render(&plot, &title, &path, format.dpi)?;
         paths.push(path);
     }
     Ok(paths)

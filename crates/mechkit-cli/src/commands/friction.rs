@@ -19,7 +19,7 @@ use serde_json::{Value, json};
 use super::input::{quantity, show};
 use super::{Outcome, print};
 use crate::args::FrictionArgs;
-use crate::plot::render_svg;
+use crate::plot::render;
 
 /// The most phases listed in the text report (all are in the JSON and the CSV).
 const TABLE_ROWS: usize = 24;
@@ -186,7 +186,7 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
             Err(e) => return Err(with_flag(e)),
         };
         if let Some(dir) = &args.out {
-            write_outputs(&block, &run, dir)?;
+            write_outputs(&block, &run, dir, args.plots)?;
         }
         j["stick_slip"] = stick_slip_json(&block, &run, args, &config);
         stick_slip_text(&mut text, &block, &run, args);
@@ -313,7 +313,7 @@ fn stick_slip_json(
         },
         "files": args.out.as_ref().map(|d| json!({
             "csv": d.join("stick_slip.csv").display().to_string(),
-            "plots": (["x(t).svg", "v(t).svg", "forces(t).svg"].map(|p| d.join(p).display().to_string())),
+            "plots": (["x(t)", "v(t)", "forces(t)"].map(|p| d.join(args.plots.file(p)).display().to_string())),
         })),
     })
 }
@@ -394,13 +394,21 @@ fn stick_slip_text(out: &mut String, block: &SpringBlock, run: &StickSlipRun, ar
     if let Some(d) = &args.out {
         let _ = writeln!(
             out,
-            "files: {}/stick_slip.csv, x(t).svg, v(t).svg, forces(t).svg",
-            d.display()
+            "files: {}/stick_slip.csv, {}",
+            d.display(),
+            ["x(t)", "v(t)", "forces(t)"]
+                .map(|p| args.plots.file(p))
+                .join(", ")
         );
     }
 }
 
-fn write_outputs(block: &SpringBlock, run: &StickSlipRun, dir: &Path) -> Result<()> {
+fn write_outputs(
+    block: &SpringBlock,
+    run: &StickSlipRun,
+    dir: &Path,
+    format: crate::args::PlotFormat,
+) -> Result<()> {
     std::fs::create_dir_all(dir)
         .map_err(|e| anyhow!("--out: cannot create {}: {e}", dir.display()))?;
     let mut csv =
@@ -467,8 +475,8 @@ fn write_outputs(block: &SpringBlock, run: &StickSlipRun, dir: &Path) -> Result<
     );
     for mut plot in plots {
         plot.bands.clone_from(&bands);
-        let path = dir.join(format!("{}.svg", plot.file_stem));
-        render_svg(&plot, &title, &path)?;
+        let path = dir.join(format.file(&plot.file_stem));
+        render(&plot, &title, &path, format.dpi)?;
     }
     Ok(())
 }

@@ -179,7 +179,8 @@ fn run_scenario(
     let scenario = Scenario::load(path)?;
     let mut out = scenario.run_to_dir(dir)?;
     if plots {
-        plot::render_run(&scenario, &mut out, dir)?;
+        // the report links SVG plots
+        plot::render_run(&scenario, &mut out, dir, plot::PlotFormat::default())?;
     }
     for (key, _) in case.expected_of(stem).unwrap_or_default() {
         if let Some(&v) = out.summary.observables.get(&key) {

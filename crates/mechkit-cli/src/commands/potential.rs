@@ -13,7 +13,7 @@ use serde_json::{Value, json};
 use super::input::{increasing_interval, params, quantity, show, split_top_level, value};
 use super::{Outcome, print};
 use crate::args::PotentialArgs;
-use crate::plot::render_svg;
+use crate::plot::render;
 
 pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
     let p = params(args.set.as_deref())?;
@@ -91,14 +91,17 @@ pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
             || format!("F = {}", args.force.as_deref().unwrap_or_default()),
             |u| format!("U = {u}"),
         );
-        render_svg(&figure(&diagram, x), &title, &path)?;
+        render(&figure(&diagram, x), &title, &path, args.dpi)?;
         if let Some(m) = &motion {
             let speed = speed_figure(m, x);
-            render_svg(
-                &speed,
-                &title,
-                &path.with_file_name(format!("{}_speed.svg", stem(&path))),
-            )?;
+            // next to the diagram, in its format
+            let ext = path.extension().map_or_else(
+                || "svg".into(),
+                |e| e.to_string_lossy().to_ascii_lowercase(),
+            );
+            let ext = if ext == "png" { "png" } else { "svg" };
+            let speed_path = path.with_file_name(format!("{}_speed.{ext}", stem(&path)));
+            render(&speed, &title, &speed_path, args.dpi)?;
         }
         Some(path)
     };

@@ -14,7 +14,7 @@ use mechkit::expr::units::Dimension;
 use super::input::{quantity, split_top_level};
 use super::{Outcome, print};
 use crate::args::PowerArgs;
-use crate::plot::render_svg;
+use crate::plot::render;
 
 pub fn power(args: &PowerArgs) -> Result<Outcome> {
     if let (Some(w), Some(t)) = (&args.work, &args.time) {
@@ -100,8 +100,18 @@ pub fn power(args: &PowerArgs) -> Result<Outcome> {
             "x(t)",
             ts.iter().map(|&t| (t, motion.position(t))).collect(),
         ));
-        render_svg(&v, &title, &dir.join("v(t).svg"))?;
-        render_svg(&x, &title, &dir.join("x(t).svg"))?;
+        render(
+            &v,
+            &title,
+            &dir.join(args.plots.file("v(t)")),
+            args.plots.dpi,
+        )?;
+        render(
+            &x,
+            &title,
+            &dir.join(args.plots.file("x(t)")),
+            args.plots.dpi,
+        )?;
         Some(dir)
     };
     if args.json {
@@ -134,7 +144,8 @@ pub fn power(args: &PowerArgs) -> Result<Outcome> {
             );
         }
         if let Some(d) = &plot {
-            let _ = writeln!(out, "plots: {}/v(t).svg, x(t).svg", d.display());
+            let [v, x] = ["v(t)", "x(t)"].map(|s| args.plots.file(s));
+            let _ = writeln!(out, "plots: {}/{v}, {x}", d.display());
         }
         print(&out)?;
     }

@@ -15,7 +15,7 @@ use serde_json::{Value, json};
 use super::input::{quantity, show};
 use super::{Outcome, print};
 use crate::args::RocketArgs;
-use crate::plot::render_svg;
+use crate::plot::render;
 
 /// A mass rate in kg/s (a plain number is taken in kg/s).
 fn mass_rate(text: &str) -> Result<f64> {
@@ -88,7 +88,7 @@ pub fn rocket(args: &RocketArgs) -> Result<Outcome> {
             .out
             .clone()
             .unwrap_or_else(|| PathBuf::from("out/rocket"));
-        plot(&rocket, &run, &dir)?;
+        plot(&rocket, &run, &dir, args.plots)?;
         Some(dir)
     };
     if args.json {
@@ -234,13 +234,19 @@ fn text(
         s.evaluations
     );
     if let Some(d) = plots {
-        let _ = writeln!(out, "plots: {}/v(t).svg, x(t).svg, m(t).svg", d.display());
+        let [v, x, m] = ["v(t)", "x(t)", "m(t)"].map(|s| args.plots.file(s));
+        let _ = writeln!(out, "plots: {}/{v}, {x}, {m}", d.display());
     }
     out
 }
 
 /// v(t), x(t) and m(t) of the simulation, with the drag-free closed forms dashed.
-fn plot(rocket: &Rocket, run: &RocketRun, dir: &Path) -> Result<()> {
+fn plot(
+    rocket: &Rocket,
+    run: &RocketRun,
+    dir: &Path,
+    format: crate::args::PlotFormat,
+) -> Result<()> {
     std::fs::create_dir_all(dir).map_err(|e| anyhow!("cannot create {}: {e}", dir.display()))?;
     let t_end = run.samples.last().map_or(0.0, |s| s.0);
     let grid: Vec<f64> = (0..=400).map(|i| t_end * f64::from(i) / 400.0).collect();
@@ -280,7 +286,7 @@ fn plot(rocket: &Rocket, run: &RocketRun, dir: &Path) -> Result<()> {
         if name != "m(t)" {
             data = data.with_series(Series::line(closed_label, closed).styled(LineStyle::Dashed));
         }
-        render_svg(&data, &title, &dir.join(format!("{name}.svg")))?;
+        render(&data, &title, &dir.join(format.file(name)), format.dpi)?;
     }
     Ok(())
 }

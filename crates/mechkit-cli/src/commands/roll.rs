@@ -18,7 +18,7 @@ use super::friction::{angle, coefficients, sig};
 use super::input::quantity;
 use super::{Outcome, print};
 use crate::args::RollArgs;
-use crate::plot::render_svg;
+use crate::plot::render;
 
 /// The flag behind a rolling error, for the message.
 fn flag(e: &RollingError) -> &'static str {
@@ -96,7 +96,7 @@ pub fn roll(args: &RollArgs) -> Result<Outcome> {
         Err(e) => bail!("{}: {e}", flag(&e)),
     };
     if let Some(dir) = &args.out {
-        write_outputs(&motion, &run, dir)?;
+        write_outputs(&motion, &run, dir, args.plots)?;
     }
     if args.json {
         print(&format!("{:#}\n", to_json(&motion, &run, args, &config)))?;
@@ -174,7 +174,7 @@ fn to_json(m: &RollingMotion, run: &RollingRun, args: &RollArgs, config: &Adapti
         },
         "files": args.out.as_ref().map(|d| json!({
             "csv": d.join("roll.csv").display().to_string(),
-            "plots": (["v(t).svg", "energy(t).svg"].map(|p| d.join(p).display().to_string())),
+            "plots": (["v(t)", "energy(t)"].map(|p| d.join(args.plots.file(p)).display().to_string())),
         })),
     })
 }
@@ -309,14 +309,20 @@ fn text(m: &RollingMotion, run: &RollingRun, args: &RollArgs) -> String {
     if let Some(d) = &args.out {
         let _ = writeln!(
             out,
-            "files: {}/roll.csv, v(t).svg, energy(t).svg",
-            d.display()
+            "files: {}/roll.csv, {}",
+            d.display(),
+            ["v(t)", "energy(t)"].map(|p| args.plots.file(p)).join(", ")
         );
     }
     out
 }
 
-fn write_outputs(m: &RollingMotion, run: &RollingRun, dir: &Path) -> Result<()> {
+fn write_outputs(
+    m: &RollingMotion,
+    run: &RollingRun,
+    dir: &Path,
+    format: crate::args::PlotFormat,
+) -> Result<()> {
     std::fs::create_dir_all(dir)
         .map_err(|e| anyhow!("--out: cannot create {}: {e}", dir.display()))?;
     let r = m.body.radius;
@@ -401,8 +407,8 @@ fn write_outputs(m: &RollingMotion, run: &RollingRun, dir: &Path) -> Result<()> 
     );
     for mut plot in plots {
         plot.bands.clone_from(&bands);
-        let path = dir.join(format!("{}.svg", plot.file_stem));
-        render_svg(&plot, &title, &path)?;
+        let path = dir.join(format.file(&plot.file_stem));
+        render(&plot, &title, &path, format.dpi)?;
     }
     Ok(())
 }

@@ -30,7 +30,7 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
     }
     let mut out = scenario.run_to_dir(&dir)?;
     if !args.no_plots {
-        plot::render_run(&scenario, &mut out, &dir)?;
+        plot::render_run(&scenario, &mut out, &dir, args.plots)?;
     }
     for w in &out.summary.warnings {
         eprintln!("warning: {w}");
@@ -130,11 +130,8 @@ fn compare(args: &RunArgs, scenario: &Scenario, names: &[String], dir: &Path) ->
         .with_context(|| format!("cannot write {}", dir.join("compare.json").display()))?;
     if !args.no_plots {
         for p in &cmp.plots {
-            plot::render_svg(
-                p,
-                &scenario.title,
-                &dir.join(format!("{}.svg", p.file_stem)),
-            )?;
+            let path = dir.join(args.plots.file(&p.file_stem));
+            plot::render(p, &scenario.title, &path, args.plots.dpi)?;
         }
     }
     if args.json {

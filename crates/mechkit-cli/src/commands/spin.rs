@@ -21,7 +21,7 @@ use super::body::{load, point, vec_json};
 use super::input::{quantity, show, split_top_level};
 use super::{Outcome, print};
 use crate::args::SpinArgs;
-use crate::plot::render_svg;
+use crate::plot::render;
 
 /// "a, b, c": exactly three quantities of dimension `dim` (plain numbers are SI).
 fn triple(text: &str, flag: &str, dim: Dimension) -> Result<Vec3> {
@@ -176,7 +176,7 @@ pub fn spin(args: &SpinArgs) -> Result<Outcome> {
         Err(e) => return Err(with_flag(e)),
     };
     let files = match &args.out {
-        Some(dir) => Some(write_files(&spinning, &run, dir)?),
+        Some(dir) => Some(write_files(&spinning, &run, dir, args.plots)?),
         None => None,
     };
     let summary = to_json(&spinning, &run, &options, t_max, files.as_ref());
@@ -358,7 +358,12 @@ fn text(j: &Value) -> String {
 }
 
 /// spin.csv and the plots; returns their paths.
-fn write_files(body: &SpinningBody, run: &SpinRun, dir: &Path) -> Result<Value> {
+fn write_files(
+    body: &SpinningBody,
+    run: &SpinRun,
+    dir: &Path,
+    format: crate::args::PlotFormat,
+) -> Result<Value> {
     std::fs::create_dir_all(dir).map_err(|e| anyhow!("cannot create {}: {e}", dir.display()))?;
     let top = body.pivot().is_some();
     let mut csv = String::from("t,qw,qx,qy,qz,w1,w2,w3,Lx,Ly,Lz,L,T,U,E");
@@ -413,25 +418,25 @@ fn write_files(body: &SpinningBody, run: &SpinRun, dir: &Path) -> Result<Value> 
             .styled(LineStyle::Dashed),
         );
     }
-    let mut plots = vec![("omega(t).svg", omega)];
+    let mut plots = vec![("omega(t)", omega)];
     if top {
         plots.push((
-            "nutation(t).svg",
+            "nutation(t)",
             PlotData::new("nutation(t)", "nutation", "t [s]", "θ [deg]").with_series(Series::line(
                 "θ",
                 series(&|s| s.attitude.euler_angles().1.to_degrees()),
             )),
         ));
         plots.push((
-            "precession(t).svg",
+            "precession(t)",
             PlotData::new("precession(t)", "precession", "t [s]", "φ [deg]")
                 .with_series(Series::line("φ", series(&|s| s.precession.to_degrees()))),
         ));
     }
     let mut names = Vec::new();
     for (name, data) in &plots {
-        let path = dir.join(name);
-        render_svg(data, &title, &path)?;
+        let path = dir.join(format.file(name));
+        render(data, &title, &path, format.dpi)?;
         names.push(path.display().to_string());
     }
     Ok(json!({"csv": csv_path.display().to_string(), "plots": names}))

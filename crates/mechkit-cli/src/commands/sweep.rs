@@ -91,10 +91,10 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
             Some(s) => format!("{}.part{}", overlay.file_stem, s.k),
             None => overlay.file_stem.clone(),
         };
-        let path = dir.join(format!("{stem}.svg"));
+        let path = dir.join(args.plots.file(&stem));
         let sets: Vec<&str> = grid.params.iter().map(|p| p.text.as_str()).collect();
         let title = format!("{} runs, {}", table.rows.len(), sets.join("; "));
-        plot::render_svg(&overlay, &title, &path)?;
+        plot::render(&overlay, &title, &path, args.plots.dpi)?;
         plot_path = Some(path);
     }
     let failed = table

@@ -17,7 +17,7 @@ use super::input::quantity;
 use super::work_field::field_work;
 use super::{Outcome, print};
 use crate::args::{ImpulseArgs, WorkArgs};
-use crate::plot::render_svg;
+use crate::plot::render;
 
 pub fn work(args: &WorkArgs) -> Result<Outcome> {
     match (&args.field, &args.file) {
@@ -42,6 +42,7 @@ pub fn impulse(args: &ImpulseArgs) -> Result<Outcome> {
         v0: args.v0.clone(),
         out: args.out.clone(),
         plot: args.plot.clone(),
+        dpi: args.dpi,
         field: None,
         path: None,
         param: None,
@@ -155,7 +156,7 @@ fn data_work(args: &WorkArgs, file: &Path, increasing_time: bool) -> Result<Outc
         let title = file
             .file_name()
             .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-        render_svg(&plot, &title, path)?;
+        render(&plot, &title, path, args.dpi)?;
     }
     let delta_v = mass.filter(|_| time).map(|m| w.total / m);
     if args.json {

@@ -41,6 +41,7 @@ mod gallery;
 mod interrupt;
 mod issue_011;
 mod issue_021;
+mod issue_022;
 mod limits;
 mod mass;
 mod md;
