@@ -195,7 +195,7 @@ fn stats(values: &[f64]) -> serde_json::Value {
 fn csv_text(t_name: &str, t: &[f64], derived: &[Derived]) -> String {
     let mut out = String::from(t_name);
     for d in derived {
-        let _ = write!(out, ",{0},d{0}/d{1},d2{0}/d{1}2", d.name, t_name);
+        let _ = write!(out, ",{0},d{0}_d{1},d2{0}_d{1}2", d.name, t_name);
     }
     out.push('\n');
     for (i, &ti) in t.iter().enumerate() {

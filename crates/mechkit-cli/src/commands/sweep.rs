@@ -9,7 +9,8 @@ use std::time::Instant;
 use anyhow::{Context as _, Result, bail};
 use indicatif::{ProgressBar, ProgressStyle};
 use mechkit::scenario::sweep::{
-    Parameter, Sampling, Shard, SweepGrid, SweepOptions, merge_parts, run_sweep,
+    Parameter, Sampling, Shard, SweepGrid, SweepOptions, SweepPart, manifest_name, merge_parts,
+    run_sweep,
 };
 use mechkit::scenario::write_atomic;
 use mechkit::simulate::Cancel;
@@ -85,6 +86,9 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
     let csv = dir.join(table.file_name());
     write_atomic(&csv, table.to_csv().as_bytes())
         .with_context(|| format!("cannot write {}", csv.display()))?;
+    let manifest = dir.join(table.manifest_file_name());
+    write_atomic(&manifest, table.manifest_json().as_bytes())
+        .with_context(|| format!("cannot write {}", manifest.display()))?;
     let mut plot_path = None;
     if let Some(overlay) = table.overlay(LEGEND) {
         let stem = match shard {
@@ -181,12 +185,27 @@ pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
     }
     let mut parts = Vec::new();
     for f in &files {
-        let text = std::fs::read_to_string(f).with_context(|| {
+        let csv = std::fs::read_to_string(f).with_context(|| {
             format!("cannot read {}\n  = hint: check the file name", f.display())
         })?;
-        parts.push((f.display().to_string(), text));
+        let name = f
+            .file_name()
+            .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+        let sidecar = f.with_file_name(manifest_name(&name));
+        let manifest = std::fs::read_to_string(&sidecar).with_context(|| {
+            format!(
+                "cannot read {}, the manifest of {}\n  = hint: keep each part's .manifest.json beside its CSV (mechkit sweep --shard writes both)",
+                sidecar.display(),
+                f.display()
+            )
+        })?;
+        parts.push(SweepPart {
+            name: f.display().to_string(),
+            csv,
+            manifest,
+        });
     }
-    let merged = merge_parts(&parts)?;
+    let (merged, manifest) = merge_parts(&parts)?;
     let out = args.out.clone().unwrap_or_else(|| {
         files[0]
             .parent()
@@ -195,7 +214,13 @@ pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
     });
     write_atomic(&out, merged.as_bytes())
         .with_context(|| format!("cannot write {}", out.display()))?;
-    let rows = merged.lines().count() - 2;
+    let out_name = out
+        .file_name()
+        .map_or_else(|| "sweep.csv".into(), |n| n.to_string_lossy().into_owned());
+    let manifest_path = out.with_file_name(manifest_name(&out_name));
+    write_atomic(&manifest_path, manifest.as_bytes())
+        .with_context(|| format!("cannot write {}", manifest_path.display()))?;
+    let rows = merged.lines().count() - 1;
     if args.json {
         let json = serde_json::json!({
             "parts": files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>(),

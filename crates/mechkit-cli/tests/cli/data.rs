@@ -110,7 +110,7 @@ fn derive_the_falling_tennis_ball() {
         "{j}"
     );
     let csv = Csv::parse(&dir.read("tb/derived.csv"));
-    assert_eq!(csv.header, ["t", "x", "dx/dt", "d2x/dt2"]);
+    assert_eq!(csv.header, ["t", "x", "dx_dt", "d2x_dt2"]);
     assert_eq!(csv.rows.len(), 2500);
     for plot in ["position", "velocity", "acceleration"] {
         assert!(dir.read(&format!("tb/{plot}.svg")).starts_with("<svg"));

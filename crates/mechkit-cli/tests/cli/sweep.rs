@@ -3,7 +3,7 @@
 //! the unsharded table byte for byte; the overlay plot; bad --set, --shard, --threads and
 //! incomplete merges exit 2 with the flag named.
 
-use crate::util::{Dir, examples, num};
+use crate::util::{Dir, at, examples, num};
 
 /// A ball thrown up at v0 under g = 10 m/s², 5 Verlet steps of 10 ms at most per run.
 const THROW: &str = r#"
@@ -58,18 +58,23 @@ fn thousand_runs_give_thousand_rows_and_do_not_depend_on_threads() {
     }
     assert_eq!(csv[0], csv[1], "1 and 2 threads give the same table");
     let lines: Vec<&str> = csv[0].lines().collect();
-    assert_eq!(lines.len(), 2 + 1000);
-    assert!(
-        lines[0].starts_with("# mechkit sweep of throw.toml"),
-        "{}",
-        lines[0]
-    );
-    assert!(lines[0].ends_with("; 1000 runs"), "{}", lines[0]);
     assert_eq!(
-        lines[1],
+        lines.len(),
+        1 + 1000,
+        "a plain CSV: the header, then the rows"
+    );
+    assert_eq!(
+        lines[0],
         "index,v0,stop_reason,t_end,steps,x_max,K_end,U_end,E_end,work_energy_residual"
     );
-    for (i, line) in lines[2..].iter().enumerate() {
+    // the sweep's identity is in the manifest beside it
+    let manifest = dir.read_json("t1/sweep.manifest.json");
+    let sweep = at(&manifest, "/sweep").as_str().unwrap();
+    assert!(sweep.starts_with("mechkit sweep of throw.toml"), "{sweep}");
+    assert!(sweep.ends_with("; 1000 runs"), "{sweep}");
+    assert_eq!(num(&manifest, "/runs"), 1000.0);
+    assert!(at(&manifest, "/shard").is_null());
+    for (i, line) in lines[1..].iter().enumerate() {
         let cells: Vec<&str> = line.split(',').collect();
         assert_eq!(cells[0], i.to_string());
         let v0: f64 = cells[1].parse().unwrap();
@@ -96,10 +101,17 @@ fn shards_merged_equal_the_unsharded_sweep() {
         run(&["--out", "parts", "--shard", k, "--no-plot"]);
     }
     let whole = dir.read("whole/sweep.csv");
-    assert_eq!(whole.lines().count(), 2 + 60);
+    assert_eq!(whole.lines().count(), 1 + 60);
     let part = dir.read("parts/sweep.part2.csv");
-    assert!(part.lines().nth(1).unwrap() == "# shard 2/3", "{part}");
-    assert_eq!(part.lines().count(), 3 + 20);
+    assert_eq!(part.lines().count(), 1 + 20);
+    let part_manifest = dir.read_json("parts/sweep.part2.manifest.json");
+    assert_eq!(
+        (
+            num(&part_manifest, "/shard/k"),
+            num(&part_manifest, "/shard/n")
+        ),
+        (2.0, 3.0)
+    );
 
     let j = dir.run(&["sweep-merge", "parts", "--json"]).json();
     assert_eq!(num(&j, "/rows"), 60.0);
@@ -107,6 +119,11 @@ fn shards_merged_equal_the_unsharded_sweep() {
         dir.read("parts/sweep.csv"),
         whole,
         "merged == unsharded, byte for byte"
+    );
+    assert_eq!(
+        dir.read("parts/sweep.manifest.json"),
+        dir.read("whole/sweep.manifest.json"),
+        "and so is its manifest"
     );
     // the overlay of the whole sweep has a curve per run
     let svg = dir.read("whole/sweep_v_x.svg");
@@ -140,7 +157,7 @@ fn the_example_sweep_runs() {
     assert!(out.stdout.contains("6 runs"), "{}", out.stdout);
     let csv = dir.read("o/sweep.csv");
     assert!(
-        csv.lines().nth(7).unwrap().starts_with("5,5,event,"),
+        csv.lines().nth(6).unwrap().starts_with("5,5,event,"),
         "{csv}"
     );
     assert!(dir.path().join("o/sweep_v_x.svg").exists());

@@ -4,7 +4,8 @@
 //! merged equal the unsharded table byte for byte; a diverging run is a row, not an abort.
 
 use mechkit::scenario::sweep::{
-    Parameter, Sampling, Shard, SweepError, SweepGrid, SweepOptions, merge_parts, run_sweep,
+    Parameter, Sampling, Shard, SweepError, SweepGrid, SweepOptions, SweepPart, merge_parts,
+    run_sweep,
 };
 
 /// A ball thrown up at `vup = 2*v0/2` (a constant of a constant, so the override must
@@ -60,13 +61,9 @@ fn thousand_runs_give_thousand_rows_with_their_values_and_exact_landings() {
     let table = run(&["v0=1 m/s:10 m/s:1000"], &SweepOptions::default()).unwrap();
     assert_eq!(table.rows.len(), 1000);
     let csv = table.to_csv();
+    assert_eq!(csv.lines().count(), 1 + 1000, "header, 1,000 rows");
     assert_eq!(
-        csv.lines().count(),
-        2 + 1000,
-        "manifest, header, 1,000 rows"
-    );
-    assert_eq!(
-        csv.lines().nth(1).unwrap(),
+        csv.lines().next().unwrap(),
         "index,v0,stop_reason,t_end,steps,t_land,x_max,K_end,U_end,E_end,work_energy_residual"
     );
     let mut worst = 0.0_f64;
@@ -97,7 +94,7 @@ fn table_does_not_depend_on_the_thread_count() {
             .install(|| run(&sets, &SweepOptions::default()).unwrap().to_csv())
     };
     let one = on(1);
-    assert_eq!(one.lines().count(), 2 + 120);
+    assert_eq!(one.lines().count(), 1 + 120);
     assert_eq!(one, on(2));
     assert_eq!(one, on(4));
 }
@@ -119,9 +116,20 @@ fn shards_merged_equal_the_unsharded_table_byte_for_byte() {
         .unwrap();
         assert_eq!(part.file_name(), format!("sweep.part{k}.csv"));
         assert!(part.rows.iter().all(|r| r.index % 3 == k - 1));
-        parts.push((part.file_name(), part.to_csv()));
+        assert_eq!(
+            part.manifest_file_name(),
+            format!("sweep.part{k}.manifest.json")
+        );
+        parts.push(SweepPart {
+            name: part.file_name(),
+            csv: part.to_csv(),
+            manifest: part.manifest_json(),
+        });
     }
-    assert_eq!(merge_parts(&parts).unwrap(), whole.to_csv());
+    assert_eq!(
+        merge_parts(&parts).unwrap(),
+        (whole.to_csv(), whole.manifest_json())
+    );
 
     // a missing part is named by its runs
     let err = merge_parts(&parts[..2]).unwrap_err().to_string();
@@ -139,7 +147,14 @@ fn shards_merged_equal_the_unsharded_table_byte_for_byte() {
         },
     )
     .unwrap();
-    let mixed = vec![parts[0].clone(), ("other.csv".into(), other.to_csv())];
+    let mixed = vec![
+        parts[0].clone(),
+        SweepPart {
+            name: "other.csv".into(),
+            csv: other.to_csv(),
+            manifest: other.manifest_json(),
+        },
+    ];
     let err = merge_parts(&mixed).unwrap_err();
     assert!(matches!(err, SweepError::Mismatch { .. }), "{err}");
     assert!(err.to_string().contains("other.csv"), "{err}");

@@ -48,4 +48,4 @@ pub use grid::{Sampling, Shard, SweepGrid};
 pub(crate) use param::unknown_override;
 pub use param::{ConstantOverride, MAX_RUNS, Parameter};
 pub use run::{SweepOptions, SweepRow, run_sweep};
-pub use table::{SweepTable, merge_parts};
+pub use table::{SweepPart, SweepTable, manifest_name, merge_parts};

@@ -1,12 +1,14 @@
-//! The sweep's table: one CSV row per run, under a manifest line that identifies the sweep
-//! (scenario text hash, `--set` values, sampling, number of runs), so parts written by shards
-//! can be checked and merged.
+//! The sweep's table: one CSV row per run (`sweep.csv`, plain: a header row, then the rows,
+//! so pandas, polars and numpy read it as it is), and beside it a manifest that identifies the
+//! sweep (`sweep.manifest.json`: the scenario's file name and text hash, the `--set` values,
+//! the sampling, the number of runs, and the shard of a part), so parts written by shards can
+//! be checked and merged.
 //!
 //! ```text
-//! # mechkit sweep of ball.toml (fnv1a 3c4b…) --set "v0=0:5:51" grid; 51 runs
-//! # shard 2/3                          (parts only)
-//! index,v0,stop_reason,t_end,steps,x_max,K_end,U_end,E_end,work_energy_residual
-//! 1,0.1,event:stop,…
+//! sweep.csv            index,v0,stop_reason,t_end,steps,x_max,K_end,U_end,E_end,work_energy_residual
+//!                      0,0.1,event:stop,…
+//! sweep.manifest.json  {"sweep": "mechkit sweep of ball.toml (fnv1a 3c4b…) --set \"v0=0:5:51\" grid; 51 runs",
+//!                       "runs": 51, "shard": null}
 //! ```
 
 use std::collections::BTreeMap;
@@ -17,7 +19,7 @@ use super::{Shard, SweepError, SweepGrid, SweepRow};
 use crate::figure::{PlotData, Series};
 use crate::scenario::push_number;
 
-const MAGIC: &str = "# mechkit sweep of ";
+const MAGIC: &str = "mechkit sweep of ";
 
 /// The rows of a sweep, or of one shard of it.
 #[derive(Debug, Clone, PartialEq)]
@@ -43,7 +45,7 @@ pub(crate) fn manifest(name: &str, text: &str, grid: &SweepGrid) -> String {
         .map_or_else(|| name.to_string(), |f| f.to_string_lossy().into_owned());
     format!(
         "{}{file} (fnv1a {:016x}) {}; {} runs",
-        &MAGIC[2..],
+        MAGIC,
         fnv1a(text.as_bytes()),
         grid.describe(),
         grid.len()
@@ -73,13 +75,9 @@ impl SweepTable {
         h
     }
 
-    /// The CSV text: manifest, shard line (parts only), header, one row per run. Numbers
-    /// are SI, printed to round-trip; an absent potential energy is an empty cell.
+    /// The CSV text: the header, then one row per run. Numbers are SI, printed to round-trip;
+    /// an absent potential energy is an empty cell.
     pub fn to_csv(&self) -> String {
-        let mut out = format!("# {}\n", self.manifest);
-        if let Some(s) = self.shard {
-            let _ = writeln!(out, "# shard {}/{}", s.k, s.n);
-        }
         let header: Vec<String> = self
             .header()
             .iter()
@@ -89,7 +87,7 @@ impl SweepTable {
                 s
             })
             .collect();
-        out.push_str(&header.join(","));
+        let mut out = header.join(",");
         out.push('\n');
         for r in &self.rows {
             out.push_str(&r.index.to_string());
@@ -119,12 +117,32 @@ impl SweepTable {
         out
     }
 
+    /// The manifest beside the CSV ([`SweepTable::manifest_file_name`]): the sweep's
+    /// identity, its number of runs, and the shard of a part (`null` for the whole).
+    pub fn manifest_json(&self) -> String {
+        let shard = self.shard.map_or(
+            serde_json::Value::Null,
+            |s| serde_json::json!({"k": s.k, "n": s.n}),
+        );
+        let json = serde_json::json!({
+            "sweep": self.manifest,
+            "runs": self.runs,
+            "shard": shard,
+        });
+        format!("{json:#}\n")
+    }
+
     /// The file name of this table: `sweep.csv`, or `sweep.partK.csv` for shard K.
     pub fn file_name(&self) -> String {
         match self.shard {
             Some(s) => format!("sweep.part{}.csv", s.k),
             None => "sweep.csv".into(),
         }
+    }
+
+    /// The file name of its manifest: `sweep.manifest.json`, or `sweep.partK.manifest.json`.
+    pub fn manifest_file_name(&self) -> String {
+        manifest_name(&self.file_name())
     }
 
     /// The recorded plots of all runs in one figure, each curve labelled by its parameter
@@ -176,54 +194,73 @@ fn short(v: f64) -> String {
     }
 }
 
-/// Joins the parts written by `mechkit sweep --shard K/N` (given as file name and text) into
-/// the table of the whole sweep, sorted by run index: byte for byte what the unsharded sweep
-/// writes. The parts must have the same manifest and header, and together hold every run
-/// exactly once.
-pub fn merge_parts(parts: &[(String, String)]) -> Result<String, SweepError> {
-    let Some((first_name, _)) = parts.first() else {
+/// The name of the manifest beside the CSV file `csv` (`sweep.part2.csv` →
+/// `sweep.part2.manifest.json`).
+pub fn manifest_name(csv: &str) -> String {
+    format!("{}.manifest.json", csv.strip_suffix(".csv").unwrap_or(csv))
+}
+
+/// One part of a sharded sweep, as read from its files.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepPart {
+    /// The CSV file's name (for messages).
+    pub name: String,
+    /// The CSV text.
+    pub csv: String,
+    /// The text of the manifest beside it ([`SweepTable::manifest_json`]).
+    pub manifest: String,
+}
+
+/// Merges the parts of one sharded sweep into the whole: its CSV text and its manifest
+/// (`shard` null). The parts must come from the same sweep (the same manifest line and header)
+/// and hold every run exactly once; rows come out in run order, byte for byte as the
+/// unsharded sweep writes them.
+pub fn merge_parts(parts: &[SweepPart]) -> Result<(String, String), SweepError> {
+    let Some(first) = parts.first() else {
         return Err(SweepError::Coverage(
             "no parts to merge\n  = hint: give the directory of the sweep.partK.csv files, or the files".into(),
         ));
     };
-    let mut manifest: Option<(&str, &str)> = None;
+    let mut sweep: Option<(String, &str)> = None;
     let mut rows: BTreeMap<usize, (&str, &str)> = BTreeMap::new();
     let mut duplicates = Vec::new();
     let mut runs = 0;
-    for (file, text) in parts {
+    for part in parts {
+        let file = &part.name;
         let not = |reason: &str| SweepError::NotATable {
             file: file.clone(),
             reason: reason.to_string(),
         };
-        let mut lines = text.lines();
-        let head = lines
-            .next()
-            .filter(|l| l.starts_with(MAGIC))
-            .ok_or_else(|| not("the first line is not a `# mechkit sweep of …` manifest"))?;
-        let mut header = lines.next().ok_or_else(|| not("no header row"))?;
-        if header.starts_with("# shard ") {
-            header = lines.next().ok_or_else(|| not("no header row"))?;
-        }
-        match manifest {
+        let manifest: serde_json::Value = serde_json::from_str(&part.manifest)
+            .map_err(|e| not(&format!("its manifest is not JSON: {e}")))?;
+        let identity = manifest
+            .get("sweep")
+            .and_then(serde_json::Value::as_str)
+            .filter(|m| m.starts_with(MAGIC))
+            .ok_or_else(|| not("its manifest has no `sweep` of `mechkit sweep of …`"))?
+            .to_string();
+        let n = manifest
+            .get("runs")
+            .and_then(serde_json::Value::as_u64)
+            .ok_or_else(|| not("its manifest has no number of `runs`"))?;
+        let mut lines = part.csv.lines();
+        let header = lines.next().ok_or_else(|| not("no header row"))?;
+        match &sweep {
             None => {
-                manifest = Some((head, header));
-                runs = head
-                    .rsplit_once("; ")
-                    .and_then(|(_, r)| r.strip_suffix(" runs"))
-                    .and_then(|r| r.parse::<usize>().ok())
-                    .ok_or_else(|| not("the manifest does not end in `; N runs`"))?;
+                runs = usize::try_from(n).map_err(|_| not("too many runs"))?;
+                sweep = Some((identity, header));
             }
             Some((m, h)) => {
-                let what = if m != head {
-                    "the manifest line"
-                } else if h != header {
+                let what = if *m != identity {
+                    "the manifest"
+                } else if *h != header {
                     "the header row"
                 } else {
                     ""
                 };
                 if !what.is_empty() {
                     return Err(SweepError::Mismatch {
-                        first: first_name.clone(),
+                        first: first.name.clone(),
                         file: file.clone(),
                         what: what.into(),
                     });
@@ -258,11 +295,12 @@ pub fn merge_parts(parts: &[(String, String)]) -> Result<String, SweepError> {
             if missing.len() > 10 { ", …" } else { "" }
         )));
     }
-    let (head, header) = manifest.expect("at least one part was read");
-    let mut out = format!("{head}\n{header}\n");
+    let (identity, header) = sweep.expect("at least one part was read");
+    let mut out = format!("{header}\n");
     for (_, line) in rows.values() {
         out.push_str(line);
         out.push('\n');
     }
-    Ok(out)
+    let whole = serde_json::json!({"sweep": identity, "runs": runs, "shard": null});
+    Ok((out, format!("{whole:#}\n")))
 }
