@@ -84,7 +84,7 @@ pub struct MdArgs {
     #[arg(value_parser = super::whole_count, long, default_value_t = 50, allow_hyphen_values = true)]
     pub thermo_every: usize,
     /// Write DIR/thermo.csv, DIR/rdf.csv and (with --xyz-every) DIR/trajectory.xyz.
-    #[arg(long)]
+    #[arg(long, short)]
     pub out: Option<PathBuf>,
     /// Extended-XYZ frame every this many steps (needs --out).
     #[arg(value_parser = super::whole_count, long, requires = "out", allow_hyphen_values = true)]

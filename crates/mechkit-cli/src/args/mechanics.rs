@@ -122,7 +122,7 @@ pub struct ImpulseArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub v0: Option<String>,
     /// Where to write t, F and the running impulse J(t) as CSV.
-    #[arg(long)]
+    #[arg(long, short)]
     pub out: Option<PathBuf>,
     /// Where to write the plot of J(t): SVG, or PNG when the name ends in .png.
     #[arg(long)]
@@ -194,7 +194,7 @@ pub struct WorkArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub v0: Option<String>,
     /// Where to write the cumulative integral as CSV (x, F, W).
-    #[arg(long)]
+    #[arg(long, short)]
     pub out: Option<PathBuf>,
     /// Where to write the plot of W(x): SVG, or PNG when the name ends in .png.
     #[arg(long)]

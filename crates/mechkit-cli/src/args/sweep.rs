@@ -37,7 +37,7 @@ pub struct SweepArgs {
     #[command(flatten)]
     pub plots: crate::args::PlotFormat,
     /// Output directory [default: out/<file stem>].
-    #[arg(long)]
+    #[arg(long, short)]
     pub out: Option<PathBuf>,
     /// No progress bar.
     #[arg(long, short)]
@@ -54,7 +54,7 @@ pub struct SweepMergeArgs {
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
     /// The merged table [default: sweep.csv beside the first part].
-    #[arg(long)]
+    #[arg(long, short)]
     pub out: Option<PathBuf>,
     /// Print what was done as JSON.
     #[arg(long)]

@@ -131,3 +131,28 @@ fn every_command_that_draws_plots_offers_png() {
     dir.run(&["run", "x.toml", "--format", "jpeg"])
         .assert_bad_input(&["--format", "png"]);
 }
+
+#[test]
+fn every_output_flag_has_the_short_form() {
+    let dir = Dir::new();
+    for cmd in [
+        "run",
+        "sweep",
+        "sweep-merge",
+        "md",
+        "work",
+        "impulse",
+        "derive",
+        "power",
+        "rocket",
+        "friction",
+        "roll",
+        "bead",
+        "spin",
+        "gallery",
+    ] {
+        let out = dir.run(&[cmd, "--help"]);
+        out.assert_code(0);
+        assert!(out.stdout.contains("-o, --out"), "{cmd} --help");
+    }
+}
