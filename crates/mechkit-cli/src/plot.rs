@@ -81,6 +81,64 @@ fn tick(v: f64, scale: f64) -> String {
     }
 }
 
+/// The parts of the polyline `points` inside `y0 ≤ y ≤ y1`, each a polyline: a segment that
+/// crosses a bound ends (or starts) on it, and a non-finite point breaks the line. Points are
+/// never moved onto the bound (a clamped curve would show a plateau that is not in the data).
+fn clip_to_band(points: &[(f64, f64)], (y0, y1): (f64, f64)) -> Vec<Vec<(f64, f64)>> {
+    let mut pieces: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut current: Vec<(f64, f64)> = Vec::new();
+    let flush = |current: &mut Vec<(f64, f64)>, pieces: &mut Vec<Vec<(f64, f64)>>| {
+        if !current.is_empty() {
+            pieces.push(std::mem::take(current));
+        }
+    };
+    let inside = |y: f64| (y0..=y1).contains(&y);
+    let mut previous: Option<(f64, f64)> = None;
+    for &p in points {
+        if !(p.0.is_finite() && p.1.is_finite()) {
+            flush(&mut current, &mut pieces);
+            previous = None;
+            continue;
+        }
+        let Some(a) = previous.replace(p) else {
+            if inside(p.1) {
+                current.push(p);
+            }
+            continue;
+        };
+        // the parameters t in [0, 1] of the segment a → p inside the band
+        let dy = p.1 - a.1;
+        let (t0, t1) = if dy == 0.0 {
+            if inside(a.1) { (0.0, 1.0) } else { (1.0, 0.0) }
+        } else {
+            let (ta, tb) = ((y0 - a.1) / dy, (y1 - a.1) / dy);
+            (ta.min(tb).max(0.0), ta.max(tb).min(1.0))
+        };
+        if t0 > t1 {
+            flush(&mut current, &mut pieces);
+            continue;
+        }
+        let at = |t: f64| {
+            if t == 1.0 {
+                p
+            } else {
+                (a.0 + t * (p.0 - a.0), a.1 + t * dy)
+            }
+        };
+        if t0 > 0.0 || current.is_empty() {
+            // entering the band: a new piece
+            flush(&mut current, &mut pieces);
+            current.push(if t0 == 0.0 { a } else { at(t0) });
+        }
+        current.push(at(t1));
+        if t1 < 1.0 {
+            flush(&mut current, &mut pieces);
+        }
+    }
+    flush(&mut current, &mut pieces);
+    pieces
+}
+
 /// Widens one of the ranges so that a unit has the same length on both axes.
 fn equalize(x: (f64, f64), y: (f64, f64), width: f64, height: f64) -> ((f64, f64), (f64, f64)) {
     let (dx, dy) = (x.1 - x.0, y.1 - y.0);
@@ -229,31 +287,27 @@ fn svg_text(plot: &PlotData, title: &str) -> Result<String> {
                 });
             }
         }
-        // keep points inside the shown range (a clipped potential would draw off the chart)
-        let clip = |(x, y): (f64, f64)| (x, y.clamp(y0, y1));
         for (i, s) in plot.series.iter().enumerate() {
             let color = PALETTE[i % PALETTE.len()];
-            let pts: Vec<(f64, f64)> = s
-                .points
-                .iter()
-                .copied()
-                .filter(|(x, y)| x.is_finite() && y.is_finite())
-                .map(clip)
-                .collect();
-            // a non-finite value breaks a line into pieces
-            let pieces: Vec<Vec<(f64, f64)>> = s
-                .points
-                .split(|(x, y)| !(x.is_finite() && y.is_finite()))
-                .filter(|piece| !piece.is_empty())
-                .map(|piece| piece.iter().copied().map(clip).collect())
-                .collect();
+            // the parts of the curve inside the shown range: a potential that leaves the chart
+            // is cut at its edge, not drawn along it
+            let pieces = clip_to_band(&s.points, (y0, y1));
+            let inside: Vec<(f64, f64)> = pieces.iter().flatten().copied().collect();
             let stroke = color.stroke_width(2);
             let anno = match s.style {
-                LineStyle::Dashed => chart
-                    .draw_series(DashedLineSeries::new(pts.iter().copied(), 8, 6, stroke))
-                    .map_err(|e| anyhow!("{e}"))?,
+                LineStyle::Dashed => {
+                    for piece in pieces.iter().skip(1) {
+                        chart
+                            .draw_series(DashedLineSeries::new(piece.iter().copied(), 8, 6, stroke))
+                            .map_err(|e| anyhow!("{e}"))?;
+                    }
+                    let first = pieces.first().cloned().unwrap_or_default();
+                    chart
+                        .draw_series(DashedLineSeries::new(first, 8, 6, stroke))
+                        .map_err(|e| anyhow!("{e}"))?
+                }
                 LineStyle::Markers => chart
-                    .draw_series(pts.iter().map(|&p| Circle::new(p, 3, color.filled())))
+                    .draw_series(inside.iter().map(|&p| Circle::new(p, 3, color.filled())))
                     .map_err(|e| anyhow!("{e}"))?,
                 _ => chart
                     .draw_series(
@@ -278,8 +332,15 @@ fn svg_text(plot: &PlotData, title: &str) -> Result<String> {
                         + Circle::new((10, 0), if markers { 3 } else { 0 }, color.filled())
                 });
             }
+            // the end of the curve, where it is shown
+            let last = s
+                .points
+                .iter()
+                .rev()
+                .find(|(x, y)| x.is_finite() && y.is_finite())
+                .filter(|(_, y)| (y0..=y1).contains(y));
             if s.style == LineStyle::Solid
-                && let Some(&last) = pts.last()
+                && let Some(&last) = last
             {
                 chart
                     .draw_series(std::iter::once(Circle::new(last, 4, color.filled())))
@@ -356,4 +417,39 @@ pub fn render_run(
     }
     scenario.write_summary(dir, &out.summary)?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::clip_to_band;
+
+    #[test]
+    fn a_curve_is_cut_at_the_band_not_clamped_onto_it() {
+        // up through y = 1 and back down: two pieces, the crossings on the bound
+        let pts = [(0.0, 0.0), (1.0, 2.0), (2.0, 0.0), (3.0, 0.5)];
+        let pieces = clip_to_band(&pts, (-1.0, 1.0));
+        assert_eq!(
+            pieces,
+            vec![
+                vec![(0.0, 0.0), (0.5, 1.0)],
+                vec![(1.5, 1.0), (2.0, 0.0), (3.0, 0.5)]
+            ]
+        );
+        // wholly outside: nothing; a NaN breaks the line
+        assert!(clip_to_band(&[(0.0, 5.0), (1.0, 6.0)], (0.0, 1.0)).is_empty());
+        let broken = clip_to_band(
+            &[
+                (0.0, 0.1),
+                (1.0, 0.2),
+                (2.0, f64::NAN),
+                (3.0, 0.3),
+                (4.0, 0.4),
+            ],
+            (0.0, 1.0),
+        );
+        assert_eq!(broken.len(), 2);
+        // a segment through the whole band from above to below
+        let through = clip_to_band(&[(0.0, 3.0), (4.0, -1.0)], (0.0, 2.0));
+        assert_eq!(through, vec![vec![(1.0, 2.0), (3.0, 0.0)]]);
+    }
 }
