@@ -139,6 +139,72 @@ fn clip_to_band(points: &[(f64, f64)], (y0, y1): (f64, f64)) -> Vec<Vec<(f64, f6
     pieces
 }
 
+/// The corner of the plotting area where the legend covers the least of the data: the
+/// legend's box is estimated from its entries (series with a label, the `markers` labels, the
+/// bands) and its longest label, and the curves' points (with their segments sampled) and the
+/// markers are counted in each corner's box; upper right wins ties, then upper left, lower
+/// right, lower left.
+fn legend_corner(
+    plot: &PlotData,
+    markers: &[&str],
+    ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
+) -> SeriesLabelPosition {
+    let mut labels: Vec<&str> = plot
+        .series
+        .iter()
+        .map(|s| s.label.as_str())
+        .filter(|l| !l.is_empty())
+        .chain(markers.iter().copied())
+        .collect();
+    for b in &plot.bands {
+        if !labels.contains(&b.label.as_str()) {
+            labels.push(&b.label);
+        }
+    }
+    let longest = labels.iter().map(|l| l.chars().count()).max().unwrap_or(0);
+    // the plotting area is about 790 x 490 pixels; an entry is about 20 pixels high and a
+    // character of the labels' font 8 wide
+    let w = ((40.0 + 8.0 * longest as f64) / 790.0).min(0.9);
+    let h = ((12.0 + 20.0 * labels.len() as f64) / 490.0).min(0.9);
+    let (sx, sy) = (x1 - x0, y1 - y0);
+    let mut points: Vec<(f64, f64)> = plot.markers.iter().map(|m| m.at).collect();
+    for s in &plot.series {
+        for pair in s.points.windows(2) {
+            let ((ax, ay), (bx, by)) = (pair[0], pair[1]);
+            for k in 0..8 {
+                let t = f64::from(k) / 8.0;
+                points.push((ax + t * (bx - ax), ay + t * (by - ay)));
+            }
+        }
+        points.extend(s.points.last());
+    }
+    let fractions: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|(x, y)| x.is_finite() && y.is_finite())
+        .map(|(x, y)| ((x - x0) / sx, (y - y0) / sy))
+        .collect();
+    let corners = [
+        (
+            SeriesLabelPosition::UpperRight,
+            (1.0 - w, 1.0),
+            (1.0 - h, 1.0),
+        ),
+        (SeriesLabelPosition::UpperLeft, (0.0, w), (1.0 - h, 1.0)),
+        (SeriesLabelPosition::LowerRight, (1.0 - w, 1.0), (0.0, h)),
+        (SeriesLabelPosition::LowerLeft, (0.0, w), (0.0, h)),
+    ];
+    let covered = |(fx, fy): ((f64, f64), (f64, f64))| {
+        fractions
+            .iter()
+            .filter(|(x, y)| (fx.0..=fx.1).contains(x) && (fy.0..=fy.1).contains(y))
+            .count()
+    };
+    corners
+        .into_iter()
+        .min_by_key(|&(_, fx, fy)| covered((fx, fy)))
+        .map_or(SeriesLabelPosition::UpperRight, |(p, _, _)| p)
+}
+
 /// Widens one of the ranges so that a unit has the same length on both axes.
 fn equalize(x: (f64, f64), y: (f64, f64), width: f64, height: f64) -> ((f64, f64), (f64, f64)) {
     let (dx, dy) = (x.1 - x.0, y.1 - y.0);
@@ -393,7 +459,7 @@ fn svg_text(plot: &PlotData, title: &str) -> Result<String> {
                 .background_style(WHITE.mix(0.85))
                 .border_style(BLACK.mix(0.3))
                 .label_font((FONT_FAMILY, LABEL_SIZE))
-                .position(SeriesLabelPosition::UpperRight)
+                .position(legend_corner(plot, &labelled, (xr, yr)))
                 .draw()
                 .map_err(|e| anyhow!("{e}"))?;
         }
@@ -421,7 +487,38 @@ pub fn render_run(
 
 #[cfg(test)]
 mod tests {
-    use super::clip_to_band;
+    use mechkit::figure::{PlotData, Series};
+    use plotters::prelude::SeriesLabelPosition;
+
+    use super::{clip_to_band, legend_corner};
+
+    #[test]
+    fn the_legend_goes_where_it_covers_no_data() {
+        // two curves rising to the upper right: the upper left is free
+        let rising = |k: f64| {
+            (0..=50)
+                .map(|i| (f64::from(i) / 50.0, k * f64::from(i) / 50.0))
+                .collect()
+        };
+        let plot = PlotData::new("y(x)", "y_x", "x", "y")
+            .with_series(Series::line("a", rising(1.0)))
+            .with_series(Series::line("b", rising(0.9)));
+        let corner = legend_corner(&plot, &[], ((0.0, 1.0), (0.0, 1.0)));
+        assert!(
+            matches!(corner, SeriesLabelPosition::UpperLeft),
+            "{corner:?}"
+        );
+        // a decaying curve from the upper left: the upper right is free, and preferred
+        let decaying = (0..=50)
+            .map(|i| (f64::from(i) / 50.0, (-5.0 * f64::from(i) / 50.0).exp()))
+            .collect();
+        let plot = PlotData::new("y(x)", "y_x", "x", "y").with_series(Series::line("c", decaying));
+        let corner = legend_corner(&plot, &["marker"], ((0.0, 1.0), (0.0, 1.0)));
+        assert!(
+            matches!(corner, SeriesLabelPosition::UpperRight),
+            "{corner:?}"
+        );
+    }
 
     #[test]
     fn a_curve_is_cut_at_the_band_not_clamped_onto_it() {
