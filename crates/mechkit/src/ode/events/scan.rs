@@ -1,7 +1,7 @@
-//! The events of one step of [`run_to_event`](super::run_to_event), through the one event
-//! finder ([`Finder`]): how an [`OdeEvent`] is evaluated on the step's interpolant and
-//! enclosed over a range of it, and the crossings of the step in time order, up to the first
-//! terminal one.
+//! The [`OdeEvent`]s of one step of [`run_events`](super::run_events), through the one event
+//! finder ([`Finder`]): how an event is evaluated on the step's interpolant and enclosed over
+//! a range of it, the first firing after a time, and the events' sides after a recorded firing
+//! or a state change.
 
 use mechkit_expr::interval::{Interval, Jet};
 
