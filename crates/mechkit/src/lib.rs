@@ -73,6 +73,7 @@
 
 pub mod calculus;
 pub mod collisions;
+pub mod csv;
 pub mod data;
 pub mod deriv;
 pub mod elliptic;

@@ -173,6 +173,18 @@ pub enum Command {
     Gallery(GalleryArgs),
 }
 
+/// The flags every command has: `--json` and `-q/--quiet`.
+#[derive(Debug, Clone, Copy, Default, clap::Args)]
+pub struct Report {
+    /// Print the result as JSON on stdout (instead of the text report).
+    #[arg(long)]
+    pub json: bool,
+    /// Quiet: no text report, progress bar or notes (the files asked for are still written,
+    /// --json still prints; warnings and errors still go to stderr).
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
 /// `mechkit diff`.
 #[derive(Debug, clap::Args)]
 pub struct DiffArgs {

@@ -102,6 +102,31 @@ pub fn dispatch(cli: Cli, cancel: &Cancel) -> anyhow::Result<Outcome> {
     }
 }
 
+/// Prints a command's result: its JSON with `--json`, else the text report unless `--quiet`.
+/// `value` is the library's result type; its JSON shape is defined there.
+pub fn report<T: serde::Serialize>(
+    flags: crate::args::Report,
+    value: &T,
+    text: impl FnOnce() -> String,
+) -> anyhow::Result<()> {
+    if flags.json {
+        let mut json = serde_json::to_string_pretty(value)?;
+        json.push('\n');
+        print(&json)?;
+    } else if !flags.quiet {
+        print(&text())?;
+    }
+    Ok(())
+}
+
+/// Prints a note for the user on stderr (where files went, what was skipped), unless
+/// `--quiet`. Warnings are not notes: they always print.
+pub fn note(flags: crate::args::Report, text: &str) {
+    if !flags.quiet {
+        eprintln!("{text}");
+    }
+}
+
 /// Writes to stdout. A closed pipe (`mechkit … | head`) is an `io::Error` of kind
 /// `BrokenPipe`, which `main` treats as a quiet success.
 pub fn print(text: &str) -> std::io::Result<()> {

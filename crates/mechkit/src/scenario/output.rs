@@ -13,25 +13,8 @@ use crate::Real;
 use crate::particles::{ParticleSystem, Sample, SampleKind};
 use crate::simulate::{Observer, ObserverError, StopReason};
 
-/// Writes `bytes` to `path` atomically: to a temporary file beside it, then renamed.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let tmp = temp_path(path);
-    {
-        let mut f = File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-    }
-    fs::rename(&tmp, path)
-}
-
-fn temp_path(path: &Path) -> PathBuf {
-    let mut name = path
-        .file_name()
-        .map(std::ffi::OsStr::to_os_string)
-        .unwrap_or_default();
-    name.push(".partial");
-    path.with_file_name(name)
-}
+pub use crate::csv::write_atomic;
+use crate::csv::partial_path as temp_path;
 
 /// How often a [`StreamFile`] hands its buffer to the operating system, at the least: a
 /// process killed outright loses at most about this much of its output.
@@ -173,16 +156,7 @@ pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
     cols
 }
 
-/// Appends `x` with the fewest digits that read back as the same number, in exponent form
-/// when that is shorter (`1.5e-9`, not `0.0000000015`).
-pub fn push_number(out: &mut String, x: Real) {
-    use std::fmt::Write as _;
-    if crate::error::in_exponent_form(x) {
-        let _ = write!(out, "{x:e}");
-    } else {
-        let _ = write!(out, "{x}");
-    }
-}
+pub use crate::csv::push_number;
 
 /// Which samples go to the trajectory file and the plots.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
