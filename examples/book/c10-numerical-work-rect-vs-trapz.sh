@@ -13,5 +13,5 @@ mechkit integrate "-F0*sin(2*pi*x/b)" --from 0 --to b/4 --set F0=1,b=1 --method 
 # and integrated as data, like the course's trapz over forcedata.d:
 mechkit work examples/data/forcedata.d --method left --json
 #> left_n100 = /work
-mechkit work examples/data/forcedata.d --method trapezoid --plot out/book/work-trapezoid.svg --json
+mechkit work examples/data/forcedata.d --method trapezoid -o out/book/work-trapezoid --json
 #> trapz_n100 = /work

@@ -40,10 +40,18 @@ def cases(binary, tmp):
     run(binary, ["derive", str(EXAMPLES / "data/fallingtennisball02.txt"), "--out", "derive",
                  "--no-plots"], tmp)
     yield "derived.csv", tmp / "derive/derived.csv"
-    run(binary, ["work", str(EXAMPLES / "data/forcedata.d"), "--out", "work.csv"], tmp)
-    yield "work --out", tmp / "work.csv"
-    run(binary, ["impulse", str(EXAMPLES / "data/baseballforce.d"), "--out", "impulse.csv"], tmp)
-    yield "impulse --out", tmp / "impulse.csv"
+    run(binary, ["work", str(EXAMPLES / "data/forcedata.d"), "--mass", "1", "--out", "work",
+                 "--no-plots"], tmp)
+    yield "work.csv", tmp / "work/work.csv"
+    run(binary, ["impulse", str(EXAMPLES / "data/baseballforce.d"), "--out", "impulse",
+                 "--no-plots"], tmp)
+    yield "impulse.csv", tmp / "impulse/impulse.csv"
+    run(binary, ["potential", "x^2", "--range=-1:1", "--mass", "1", "--x0", "0", "--v0", "1",
+                 "--out", "potential", "--no-plots"], tmp)
+    yield "potential.csv", tmp / "potential/potential.csv"
+    run(binary, ["power", "--power", "20 kW", "--mass", "200 kg", "--at", "5 s",
+                 "--out", "power", "--no-plots"], tmp)
+    yield "power.csv", tmp / "power/power.csv"
     run(binary, ["friction", "--mass", "1 kg", "--mu-s", "0.6", "--mu-d", "0.4",
                  "--spring-k", "100", "--belt-speed", "0.1 m/s", "--t-max", "3 s",
                  "--out", "friction"], tmp)

@@ -11,6 +11,7 @@
 mod args;
 mod commands;
 mod failure;
+mod gallery;
 mod plot;
 
 use std::process::ExitCode;

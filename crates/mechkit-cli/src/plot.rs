@@ -1,33 +1,40 @@
 //! Renders plot data to SVG with plotters, using the bundled DejaVu Sans font (no system font
 //! libraries needed), and to PNG by rasterising that SVG with resvg, its text set in the same
 //! bundled font: the PNG shows exactly what the SVG does.
+//!
+//! Plots are drawn on a canvas four times their size and written back at 900x600 with
+//! fractional coordinates (`svg.rs`), in the paper or the slides style (`style.rs`): curves
+//! (`chart.rs`) with linear or logarithmic vertical axes (`axes.rs`), coloured by a value
+//! with a colour bar (`colour.rs`), or bars (`bars.rs`).
 
 use std::path::Path;
 use std::sync::Once;
 
 use anyhow::{Context, Result, anyhow};
-use mechkit::figure::{LineStyle, MarkerShape, PlotData};
+use mechkit::figure::PlotData;
 use mechkit::scenario::write_atomic;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 
+mod axes;
 mod bars;
+mod chart;
+mod colour;
 mod layout;
 mod raster;
+mod style;
+mod svg;
+mod title;
 
-use layout::{clip_to_band, legend_corner};
 use raster::rasterise;
+use style::{CANVAS, FONT_FAMILY, Style};
 
 pub use crate::args::PlotFormat;
 
 static FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 
-/// The house style every chart shares: the registered font, its sizes, and the grid colour.
-const FONT_FAMILY: &str = "sans-serif";
-const CAPTION_SIZE: u32 = 22;
-const LABEL_SIZE: u32 = 14;
-const AXIS_DESC_SIZE: u32 = 16;
+/// The colour of the light grid lines every chart shares (the sizes are in `style.rs`).
 const GRID: RGBColor = RGBColor(235, 235, 235);
 
 const PALETTE: [RGBColor; 8] = [
@@ -98,207 +105,36 @@ fn equalize(x: (f64, f64), y: (f64, f64), width: f64, height: f64) -> ((f64, f64
     ((cx - hx, cx + hx), (cy - hy, cy + hy))
 }
 
-/// The size of every plot in SVG pixels (at 96 dpi).
-const SIZE: (u32, u32) = (900, 600);
-
-/// Draws `plot` into the file at `path` (written atomically): PNG at `dpi` dots per inch when
-/// its name ends in `.png`, else SVG.
-pub fn render(plot: &PlotData, title: &str, path: &Path, dpi: u32) -> Result<()> {
-    let svg = svg_text(plot, title)?;
+/// Draws `plot` into the file at `path` (written atomically): PNG at `format.dpi` dots per
+/// inch when its name ends in `.png`, else SVG; in `format.style`.
+pub fn render(plot: &PlotData, title: &str, path: &Path, format: PlotFormat) -> Result<()> {
+    let svg = svg_text(plot, title, Style::new(format.style))?;
     let is_png = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("png"));
     let bytes = if is_png {
-        rasterise(&svg, dpi)?
+        rasterise(&svg, format.dpi)?
     } else {
         svg.into_bytes()
     };
     write_atomic(path, &bytes).with_context(|| format!("cannot write {}", path.display()))
 }
 
-/// The SVG text of `plot`.
-fn svg_text(plot: &PlotData, title: &str) -> Result<String> {
+/// The SVG text of `plot`: drawn on the large canvas, written at the plot's size.
+fn svg_text(plot: &PlotData, title: &str, style: Style) -> Result<String> {
     register_font();
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, style.canvas()).into_drawing_area();
         root.fill(&WHITE).map_err(|e| anyhow!("{e}"))?;
-        if !plot.bars.is_empty() {
-            bars::draw(&root, plot, title)?;
-            root.present().map_err(|e| anyhow!("{e}"))?;
-            drop(root);
-            return Ok(svg);
-        }
-        let points = || plot.series.iter().flat_map(|s| s.points.iter());
-        let marks = || plot.markers.iter().map(|m| m.at);
-        let (mut xr, mut yr) = (
-            range(points().map(|p| p.0).chain(marks().map(|p| p.0))),
-            range(points().map(|p| p.1).chain(marks().map(|p| p.1))),
-        );
-        if let Some(limits) = plot.y_limits {
-            yr = limits;
-        }
-        if plot.equal_aspect {
-            // plotting area: 900 x 600 minus margins and label areas
-            (xr, yr) = equalize(
-                xr,
-                yr,
-                900.0 - 2.0 * 16.0 - 80.0,
-                600.0 - 2.0 * 16.0 - 48.0 - 30.0,
-            );
-        }
-        let ((x0, x1), (y0, y1)) = (xr, yr);
-        let (xs, ys) = (x0.abs().max(x1.abs()), y0.abs().max(y1.abs()));
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                format!("{title}: {}", plot.spec),
-                (FONT_FAMILY, CAPTION_SIZE),
-            )
-            .margin(16)
-            .x_label_area_size(48)
-            .y_label_area_size(80)
-            .build_cartesian_2d(x0..x1, y0..y1)
-            .map_err(|e| anyhow!("{e}"))?;
-        chart
-            .configure_mesh()
-            .x_label_formatter(&|v| tick(*v, xs))
-            .y_label_formatter(&|v| tick(*v, ys))
-            .x_desc(&plot.x_label)
-            .y_desc(&plot.y_label)
-            .label_style((FONT_FAMILY, LABEL_SIZE))
-            .axis_desc_style((FONT_FAMILY, AXIS_DESC_SIZE))
-            .light_line_style(GRID)
-            .draw()
-            .map_err(|e| anyhow!("{e}"))?;
-        let mut band_labels: Vec<&str> = Vec::new();
-        for band in &plot.bands {
-            let shade = RGBColor(120, 120, 120).mix(0.15);
-            let anno = chart
-                .draw_series(std::iter::once(Rectangle::new(
-                    [(band.from.max(x0), y0), (band.to.min(x1), y1)],
-                    shade.filled(),
-                )))
-                .map_err(|e| anyhow!("{e}"))?;
-            if !band_labels.contains(&band.label.as_str()) {
-                band_labels.push(&band.label);
-                anno.label(band.label.clone()).legend(move |(x, y)| {
-                    Rectangle::new([(x, y - 5), (x + 20, y + 5)], shade.filled())
-                });
-            }
-        }
-        for (i, s) in plot.series.iter().enumerate() {
-            let color = PALETTE[i % PALETTE.len()];
-            // the parts of the curve inside the shown range: a potential that leaves the chart
-            // is cut at its edge, not drawn along it
-            let pieces = clip_to_band(&s.points, (y0, y1));
-            let inside: Vec<(f64, f64)> = pieces.iter().flatten().copied().collect();
-            let stroke = color.stroke_width(2);
-            let anno = match s.style {
-                LineStyle::Dashed => {
-                    for piece in pieces.iter().skip(1) {
-                        chart
-                            .draw_series(DashedLineSeries::new(piece.iter().copied(), 8, 6, stroke))
-                            .map_err(|e| anyhow!("{e}"))?;
-                    }
-                    let first = pieces.first().cloned().unwrap_or_default();
-                    chart
-                        .draw_series(DashedLineSeries::new(first, 8, 6, stroke))
-                        .map_err(|e| anyhow!("{e}"))?
-                }
-                LineStyle::Markers => chart
-                    .draw_series(inside.iter().map(|&p| Circle::new(p, 3, color.filled())))
-                    .map_err(|e| anyhow!("{e}"))?,
-                _ => chart
-                    .draw_series(
-                        pieces
-                            .iter()
-                            .map(|piece| PathElement::new(piece.clone(), stroke)),
-                    )
-                    .map_err(|e| anyhow!("{e}"))?,
-            };
-            // an empty label keeps the curve out of the legend (a sweep's thinned legend)
-            if !s.label.is_empty() {
-                let markers = s.style == LineStyle::Markers;
-                anno.label(s.label.clone()).legend(move |(x, y)| {
-                    // a marker series shows its marker, a line its line
-                    let (from, to) = if markers {
-                        (x + 10, x + 10)
-                    } else {
-                        (x, x + 20)
-                    };
-                    EmptyElement::at((x, y))
-                        + PathElement::new(vec![(from - x, 0), (to - x, 0)], color.stroke_width(2))
-                        + Circle::new((10, 0), if markers { 3 } else { 0 }, color.filled())
-                });
-            }
-            // the end of the curve, where it is shown
-            let last = s
-                .points
-                .iter()
-                .rev()
-                .find(|(x, y)| x.is_finite() && y.is_finite())
-                .filter(|(_, y)| (y0..=y1).contains(y));
-            if s.style == LineStyle::Solid
-                && let Some(&last) = last
-            {
-                chart
-                    .draw_series(std::iter::once(Circle::new(last, 4, color.filled())))
-                    .map_err(|e| anyhow!("{e}"))?;
-            }
-        }
-        let mut labelled: Vec<&str> = Vec::new();
-        for m in &plot.markers {
-            let at = m.at;
-            if !(at.0.is_finite() && at.1.is_finite()) || at.1 < y0 || at.1 > y1 {
-                continue;
-            }
-            let red = RGBColor(214, 39, 40);
-            let anno = match m.shape {
-                MarkerShape::Filled => {
-                    chart.draw_series(std::iter::once(Circle::new(at, 6, BLACK.filled())))
-                }
-                MarkerShape::Open => {
-                    chart.draw_series(std::iter::once(Circle::new(at, 6, BLACK.stroke_width(2))))
-                }
-                MarkerShape::Cross => {
-                    chart.draw_series(std::iter::once(Cross::new(at, 6, BLACK.stroke_width(2))))
-                }
-                _ => chart.draw_series(std::iter::once(TriangleMarker::new(at, 7, red.filled()))),
-            }
-            .map_err(|e| anyhow!("{e}"))?;
-            if labelled.contains(&m.label.as_str()) {
-                continue;
-            }
-            labelled.push(&m.label);
-            let anno = anno.label(m.label.clone());
-            match m.shape {
-                MarkerShape::Filled => {
-                    anno.legend(|(x, y)| Circle::new((x + 10, y), 6, BLACK.filled()));
-                }
-                MarkerShape::Open => {
-                    anno.legend(|(x, y)| Circle::new((x + 10, y), 6, BLACK.stroke_width(2)));
-                }
-                MarkerShape::Cross => {
-                    anno.legend(|(x, y)| Cross::new((x + 10, y), 6, BLACK.stroke_width(2)));
-                }
-                _ => {
-                    anno.legend(move |(x, y)| TriangleMarker::new((x + 10, y), 7, red.filled()));
-                }
-            }
-        }
-        if plot.series.len() + labelled.len() + plot.bands.len() > 1 {
-            chart
-                .configure_series_labels()
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK.mix(0.3))
-                .label_font((FONT_FAMILY, LABEL_SIZE))
-                .position(legend_corner(plot, &labelled, (xr, yr)))
-                .draw()
-                .map_err(|e| anyhow!("{e}"))?;
+        if plot.bars.is_empty() {
+            chart::draw(&root, plot, title, style)?;
+        } else {
+            bars::draw(&root, plot, title, style)?;
         }
         root.present().map_err(|e| anyhow!("{e}"))?;
     }
-    Ok(svg)
+    Ok(svg::rescale(&svg, f64::from(CANVAS)))
 }
 
 /// Draws a run's plots into `dir` as `<stem>.svg` (or `.png`), lists them in its summary and
@@ -311,7 +147,7 @@ pub fn render_run(
 ) -> Result<()> {
     for p in &out.plots {
         let name = format.file(&p.file_stem);
-        render(p, &scenario.title, &dir.join(&name), format.dpi)?;
+        render(p, &scenario.title, &dir.join(&name), format)?;
         out.summary.files.plots.push(name);
     }
     scenario.write_summary(dir, &out.summary)?;

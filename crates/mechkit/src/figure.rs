@@ -1,5 +1,6 @@
-//! Plot data, ready to render: curves, marked points, shaded bands, bars. The library computes
-//! figures; drawing them (SVG) is the command line's job.
+//! Plot data, ready to render: curves, marked points, shaded bands, bars, the scale of the
+//! vertical axis, and a colour scale for a family of curves. The library computes figures;
+//! drawing them (SVG) is the command line's job.
 
 use crate::Real;
 
@@ -25,6 +26,10 @@ pub struct Series {
     pub points: Vec<(Real, Real)>,
     /// How it is drawn.
     pub style: LineStyle,
+    /// Its value on the plot's [`ColourScale`] (a sweep's parameter): with a colour scale, a
+    /// curve with a value is drawn in the scale's colour for it and is named by the colour
+    /// bar, not by a legend entry.
+    pub value: Option<Real>,
 }
 
 impl Series {
@@ -34,7 +39,15 @@ impl Series {
             label: label.into(),
             points,
             style: LineStyle::Solid,
+            value: None,
         }
+    }
+
+    /// The same curve with its value on the plot's colour scale.
+    #[must_use]
+    pub fn valued(mut self, value: Real) -> Self {
+        self.value = Some(value);
+        self
     }
 
     /// The same curve drawn with `style`.
@@ -105,6 +118,51 @@ pub struct Bar {
     pub kind: BarKind,
 }
 
+/// How an axis maps values to lengths.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum Scale {
+    /// Equal lengths for equal differences.
+    #[default]
+    Linear,
+    /// Equal lengths for equal ratios (decades), for values over many orders of magnitude
+    /// (errors). Only positive values can be shown: a curve is cut where it is zero or
+    /// negative.
+    Log,
+}
+
+/// A colour scale: a family of curves coloured by a value (a sweep's parameter, from `from`
+/// to `to`) through a perceptual colour map, named by a colour bar beside the plot.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ColourScale {
+    /// The bar's label, with the unit: `v0 [m/s]`.
+    pub label: String,
+    /// The value at the bottom of the bar (the first colour of the map).
+    pub from: Real,
+    /// The value at the top (the last colour).
+    pub to: Real,
+}
+
+impl ColourScale {
+    /// The position of `value` on the scale, 0 at `from` to 1 at `to`, clamped (0.5 for a
+    /// scale of one value).
+    ///
+    /// # Example
+    /// ```
+    /// use mechkit::figure::ColourScale;
+    /// let s = ColourScale { label: "v0 [m/s]".into(), from: 1.0, to: 5.0 };
+    /// assert_eq!(s.fraction(2.0), 0.25);
+    /// assert_eq!(s.fraction(9.0), 1.0);
+    /// ```
+    pub fn fraction(&self, value: Real) -> Real {
+        let span = self.to - self.from;
+        if span == 0.0 || !span.is_finite() || !value.is_finite() {
+            return 0.5;
+        }
+        ((value - self.from) / span).clamp(0.0, 1.0)
+    }
+}
+
 /// The data of one plot, ready to render.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlotData {
@@ -132,6 +190,10 @@ pub struct PlotData {
     /// Bars, left to right: a plot with bars is a bar chart, drawn with the labels along the
     /// horizontal axis instead of a scale.
     pub bars: Vec<Bar>,
+    /// The scale of the vertical axis.
+    pub y_scale: Scale,
+    /// The colour scale of the curves that have a value, if they are coloured by it.
+    pub colour_scale: Option<ColourScale>,
 }
 
 impl PlotData {
@@ -153,7 +215,23 @@ impl PlotData {
             bands: Vec::new(),
             y_limits: None,
             bars: Vec::new(),
+            y_scale: Scale::Linear,
+            colour_scale: None,
         }
+    }
+
+    /// The same plot with its vertical axis on `scale`.
+    #[must_use]
+    pub fn with_y_scale(mut self, scale: Scale) -> Self {
+        self.y_scale = scale;
+        self
+    }
+
+    /// The same plot with its valued curves coloured by `scale`.
+    #[must_use]
+    pub fn with_colour_scale(mut self, scale: ColourScale) -> Self {
+        self.colour_scale = Some(scale);
+        self
     }
 
     /// Adds a curve.

@@ -56,6 +56,7 @@
 //!   pulley, flywheels; `[[rigid_body]]` in scenarios), rolling and slipping on a slope, rigid
 //!   impacts, and free 3-D bodies and tops (quaternions, Euler's equations).
 //! - [`function`]: a formula with parameter values, evaluated as a function.
+//! - [`inputs`]: the inputs of the one-question calculations, named in their errors.
 //! - [`simulate`]: the run loop: stop conditions located between steps, observers, divergence
 //!   diagnosis.
 //! - [`roots`]: Brent's method; every root on an interval.
@@ -67,8 +68,6 @@
 //! - [`deriv`]: derivatives of sampled data (finite differences, Savitzky-Golay) and of
 //!   functions (Ridders' extrapolation).
 //! - [`scenario`] (feature `scenario`): TOML scenario files → model → run → summary.
-//! - [`gallery`] (feature `scenario`): the course's worked problems: the case file, scripts of
-//!   command-line calls that answer them, computed-against-expected checks and the report.
 //! - [`units`]: re-export of the unit system of `mechkit-expr`.
 
 pub mod calculus;
@@ -82,20 +81,21 @@ mod error;
 pub mod figure;
 pub mod forces;
 pub mod function;
-#[cfg(feature = "scenario")]
-pub mod gallery;
+pub mod inputs;
 pub mod mass;
 pub mod md;
 pub mod ode;
 pub mod particles;
 pub mod quad;
 pub mod relative;
+pub mod report;
 pub mod rigid;
 pub mod rocket;
 pub mod roots;
 #[cfg(feature = "scenario")]
 pub mod scenario;
 pub mod simulate;
+pub mod values;
 
 pub use error::Error;
 pub use mechkit_expr as expr;

@@ -43,6 +43,14 @@ pub enum RelativeError {
         /// The craft's speed relative to the medium.
         speed: Real,
     },
+    /// A velocity and a frame velocity of different dimensions.
+    #[error("{}", components_message(*velocity, *frame))]
+    Components {
+        /// The velocity's number of components.
+        velocity: usize,
+        /// The frame velocity's.
+        frame: usize,
+    },
     /// The craft can hold the track's line but is carried backwards along it.
     #[error(
         "on the track's line the ground speed would be {ground_speed} m/s: the current against the track is stronger than the craft can make up"
@@ -51,6 +59,23 @@ pub enum RelativeError {
         /// The (non-positive) ground speed along the track.
         ground_speed: Real,
     },
+}
+
+/// `1 component`, `2 components`.
+pub fn components(n: usize) -> String {
+    if n == 1 {
+        "1 component".to_string()
+    } else {
+        format!("{n} components")
+    }
+}
+
+fn components_message(velocity: usize, frame: usize) -> String {
+    format!(
+        "the velocity has {} and the frame's velocity {}: give both in the same dimensions",
+        components(velocity),
+        components(frame)
+    )
 }
 
 /// The velocity in frame `B` of a body moving with `v_in_a` in frame `A`, when `A` moves with
@@ -145,6 +170,172 @@ pub fn steer(speed: Real, current: [Real; 2], track: [Real; 2]) -> Result<Steeri
     })
 }
 
+/// The unit vector at `angle` (rad) counter-clockwise from +x (east); exact for the compass
+/// directions (`cos 90° = 0`, not 6e-17).
+pub fn direction(angle: Real) -> [Real; 2] {
+    let (s, c) = angle.sin_cos();
+    let clean = |x: Real| if x.abs() < 1e-15 { 0.0 } else { x };
+    [clean(c), clean(s)]
+}
+
+/// The bearing of `v` in degrees counter-clockwise from +x (east), in `[0, 360)`.
+pub fn bearing_deg(v: [Real; 2]) -> Real {
+    let a = v[1].atan2(v[0]).to_degrees();
+    if a < 0.0 { a + 360.0 } else { a }
+}
+
+/// The unit speeds are given in: its name and its size in m/s.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpeedUnit {
+    /// The name (`m/s`, `km/h`, `knot`).
+    pub name: String,
+    /// Its size in m/s.
+    pub size: Real,
+}
+
+impl Default for SpeedUnit {
+    /// m/s.
+    fn default() -> Self {
+        Self {
+            name: "m/s".to_string(),
+            size: 1.0,
+        }
+    }
+}
+
+/// A steering problem's answer as `mechkit relative` reports it, speeds in `unit`.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SteeringReport {
+    /// The unit of the speeds.
+    pub unit: String,
+    /// The craft's speed through the medium.
+    pub speed: Real,
+    /// The medium's velocity over the ground.
+    pub current: [Real; 2],
+    /// The unit vector of the heading.
+    pub heading: [Real; 2],
+    /// The heading's bearing (degrees counter-clockwise from east).
+    pub heading_deg: Real,
+    /// The correction into the current, from the track to the heading (degrees,
+    /// counter-clockwise positive).
+    pub correction_deg: Real,
+    /// The angle between the heading and upstream (degrees), without a current `None`.
+    pub angle_to_upstream_deg: Option<Real>,
+    /// The velocity over the ground.
+    pub ground_velocity: [Real; 2],
+    /// The speed over the ground.
+    pub ground_speed: Real,
+    /// The current along the track.
+    pub current_along_track: Real,
+    /// The current across it (positive: to the left).
+    pub current_across_track: Real,
+}
+
+/// Steers a craft of `speed` (m/s) through a medium moving at `current_speed` (m/s) towards
+/// the bearing `current_bearing` (rad from east) along the track at the bearing
+/// `track_bearing` ([`steer`]), the speeds reported in `unit`.
+///
+/// ```
+/// use mechkit::relative::{SpeedUnit, steering_report};
+/// let r = steering_report(2.0, 1.0, 0.0, 90f64.to_radians(), &SpeedUnit::default()).unwrap();
+/// assert!((r.heading_deg - 120.0).abs() < 1e-9);
+/// assert!((r.ground_speed - 3f64.sqrt()).abs() < 1e-12);
+/// ```
+pub fn steering_report(
+    speed: Real,
+    current_speed: Real,
+    current_bearing: Real,
+    track_bearing: Real,
+    unit: &SpeedUnit,
+) -> Result<SteeringReport, RelativeError> {
+    let current = direction(current_bearing).map(|x| x * current_speed);
+    let st = steer(speed, current, direction(track_bearing))?;
+    let upstream = st.angle_to_upstream.to_degrees();
+    let k = unit.size;
+    Ok(SteeringReport {
+        unit: unit.name.clone(),
+        speed: speed / k,
+        current: current.map(|x| x / k),
+        heading: st.heading,
+        heading_deg: bearing_deg(st.heading),
+        correction_deg: st.correction.to_degrees(),
+        angle_to_upstream_deg: upstream.is_finite().then_some(upstream),
+        ground_velocity: st.ground_velocity.map(|x| x / k),
+        ground_speed: st.ground_speed / k,
+        current_along_track: st.along / k,
+        current_across_track: st.across / k,
+    })
+}
+
+/// Which frame a transformed velocity is in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Frame {
+    /// Over the ground: the velocity was measured in a frame moving with `u`, `v + u`.
+    Ground,
+    /// As an observer moving with `u` sees a velocity measured on the ground, `v − u`.
+    Observer,
+}
+
+/// A velocity in another frame, as `mechkit relative` reports it, in `unit`.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct VelocityReport {
+    /// The unit of the speeds.
+    pub unit: String,
+    /// The velocity (1 to 3 components).
+    pub velocity: Vec<Real>,
+    /// Its size.
+    pub speed: Real,
+    /// `ground` or `observer`.
+    pub frame: &'static str,
+    /// Its bearing in the plane (degrees from +x), with two or more components.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub angle_deg: Option<Real>,
+}
+
+/// The velocity `v` (m/s, 1 to 3 components) in `frame`, the frame's velocity `u` (m/s),
+/// reported in `unit`.
+///
+/// ```
+/// use mechkit::relative::{Frame, SpeedUnit, transform};
+/// // rain falling at 8 m/s seen from a car at 15 m/s
+/// let r = transform(&[0.0, -8.0], &[15.0, 0.0], Frame::Observer, &SpeedUnit::default()).unwrap();
+/// assert_eq!(r.velocity, [-15.0, -8.0]);
+/// assert_eq!(r.speed, 17.0);
+/// ```
+pub fn transform(
+    v: &[Real],
+    u: &[Real],
+    frame: Frame,
+    unit: &SpeedUnit,
+) -> Result<VelocityReport, RelativeError> {
+    if v.len() != u.len() || !(1..=3).contains(&v.len()) {
+        return Err(RelativeError::Components {
+            velocity: v.len(),
+            frame: u.len(),
+        });
+    }
+    let (mut a, mut b) = ([0.0; 3], [0.0; 3]);
+    a[..v.len()].copy_from_slice(v);
+    b[..u.len()].copy_from_slice(u);
+    let r = match frame {
+        Frame::Ground => velocity_in_b(a, b),
+        Frame::Observer => velocity_in_a(a, b),
+    };
+    let r = &r[..v.len()];
+    Ok(VelocityReport {
+        unit: unit.name.clone(),
+        velocity: r.iter().map(|x| x / unit.size).collect(),
+        speed: r.iter().map(|x| x * x).sum::<Real>().sqrt() / unit.size,
+        frame: match frame {
+            Frame::Ground => "ground",
+            Frame::Observer => "observer",
+        },
+        angle_deg: (r.len() >= 2).then(|| bearing_deg([r[0], r[1]])),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -199,6 +390,33 @@ mod tests {
             steer(0.0, [0.0, 0.0], [0.0, 1.0]),
             Err(RelativeError::Speed(0.0))
         );
+    }
+
+    #[test]
+    fn reports_convert_units_and_count_components() {
+        let kmh = SpeedUnit {
+            name: "km/h".to_string(),
+            size: 1.0 / 3.6,
+        };
+        let r = steering_report(300.0 / 3.6, 60.0 / 3.6, 0.0, 90f64.to_radians(), &kmh).unwrap();
+        assert!((r.ground_speed - (300.0f64.powi(2) - 60.0f64.powi(2)).sqrt()).abs() < 1e-9);
+        assert!((r.current_across_track + 60.0).abs() < 1e-12);
+        assert_eq!(direction(90f64.to_radians()), [0.0, 1.0]);
+        assert_eq!(bearing_deg([0.0, -1.0]), 270.0);
+        let e = transform(&[1.0], &[1.0, 2.0], Frame::Ground, &kmh).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "the velocity has 1 component and the frame's velocity 2 components: give both in the same dimensions"
+        );
+        let back = transform(
+            &[-15.0, -8.0],
+            &[15.0, 0.0],
+            Frame::Ground,
+            &SpeedUnit::default(),
+        )
+        .unwrap();
+        assert_eq!(back.velocity, [0.0, -8.0]);
+        assert_eq!(back.angle_deg, Some(270.0));
     }
 
     #[test]

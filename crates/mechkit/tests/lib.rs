@@ -1,6 +1,5 @@
 //! Integration tests of the mechkit library, one module per area (as in nalgebra's tests).
 
-mod book;
 mod collisions;
 mod data;
 mod deriv;

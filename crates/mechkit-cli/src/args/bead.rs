@@ -27,7 +27,7 @@ pub struct BeadArgs {
     #[arg(long, allow_hyphen_values = true, default_value = "0")]
     pub speed: String,
     /// Instead of --speed: the height above the start from which the body was released at
-    /// rest, v = sqrt(2 g h) towards increasing x (use --speed for the other direction).
+    /// rest, v = √(2 g h) towards increasing x (use --speed for the other direction).
     #[arg(long, allow_hyphen_values = true, conflicts_with = "speed")]
     pub drop_height: Option<String>,
     /// Mass (only the normal force depends on it).
@@ -42,16 +42,17 @@ pub struct BeadArgs {
     /// Relative tolerance of the integration (Dormand-Prince 5(4)).
     #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub rtol: f64,
-    /// Output directory for path.csv and path.svg [default: out/bead].
+    /// Directory for path.csv (with its units, path.units.json) and the plot path.svg
+    /// (nothing is written without it).
     #[arg(long, short)]
     pub out: Option<PathBuf>,
-    /// Do not write the CSV and the plot.
+    /// Do not draw the plot (with --out, only the CSV).
     #[arg(long)]
     pub no_plots: bool,
     /// Plot files: `--format svg|png` and `--dpi`.
     #[command(flatten)]
     pub plots: crate::args::PlotFormat,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

@@ -61,13 +61,17 @@ pub struct FrictionArgs {
     /// Relative tolerance of the simulation (DOP853); atol is 1000 times smaller.
     #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub rtol: f64,
-    /// Stick-slip: directory for stick_slip.csv and the x(t), v(t) and force plots.
+    /// Stick-slip: directory for stick_slip.csv (with its units, stick_slip.units.json) and
+    /// the plots x_t, v_t and forces_t (nothing is written without it).
     #[arg(long, short, requires = "spring_k")]
     pub out: Option<PathBuf>,
+    /// Do not draw plots (with --out, only the CSV).
+    #[arg(long)]
+    pub no_plots: bool,
     /// Plot files: `--format svg|png` and `--dpi`.
     #[command(flatten)]
     pub plots: crate::args::PlotFormat,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

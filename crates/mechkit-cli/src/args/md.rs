@@ -83,7 +83,8 @@ pub struct MdArgs {
     /// Thermo output every this many steps.
     #[arg(value_parser = super::whole_count, long, default_value_t = 50, allow_hyphen_values = true)]
     pub thermo_every: usize,
-    /// Write DIR/thermo.csv, DIR/rdf.csv and (with --xyz-every) DIR/trajectory.xyz.
+    /// Write DIR/thermo.csv, DIR/rdf.csv (each with its units sidecar NAME.units.json, in
+    /// reduced units) and (with --xyz-every) DIR/trajectory.xyz; without it nothing is written.
     #[arg(long, short)]
     pub out: Option<PathBuf>,
     /// Extended-XYZ frame every this many steps (needs --out).
@@ -93,7 +94,7 @@ pub struct MdArgs {
     /// message when thermo.csv or trajectory.xyz would pass it.
     #[arg(long, value_name = "SIZE", allow_hyphen_values = true)]
     pub max_output: Option<String>,
-    /// Print the result as JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet` (no report, no progress bar).
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

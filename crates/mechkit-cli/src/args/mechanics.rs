@@ -38,9 +38,9 @@ pub struct CollideArgs {
     /// h = v²/(2g).
     #[arg(long, allow_hyphen_values = true)]
     pub g: Option<String>,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit com`.
@@ -96,9 +96,9 @@ pub struct ComArgs {
     /// Also express the centre of mass in this length, e.g. "6371 km" (Earth radii) or "pm".
     #[arg(long = "in")]
     pub unit: Option<String>,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit impulse`.
@@ -121,18 +121,19 @@ pub struct ImpulseArgs {
     /// Its velocity before (default 0).
     #[arg(long, allow_hyphen_values = true)]
     pub v0: Option<String>,
-    /// Where to write t, F and the running impulse J(t) as CSV.
+    /// Output directory: impulse.csv (t, F and the running impulse J) with its units sidecar,
+    /// and the plot J_t.svg (J_t.png with --format png). Nothing is written without it.
     #[arg(long, short)]
     pub out: Option<PathBuf>,
-    /// Where to write the plot of J(t): SVG, or PNG when the name ends in .png.
+    /// Do not draw the plot.
     #[arg(long)]
-    pub plot: Option<PathBuf>,
-    /// Resolution of a PNG plot (a `--plot` path ending in .png) in dots per inch.
-    #[arg(long, default_value_t = 192, value_parser = clap::value_parser!(u32).range(24..=1200), allow_hyphen_values = true)]
-    pub dpi: u32,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    pub no_plots: bool,
+    /// Plot files: `--format svg|png`, `--dpi` and `--style`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit derive`.
@@ -154,18 +155,19 @@ pub struct DeriveArgs {
     /// time steps only).
     #[arg(long, allow_hyphen_values = true)]
     pub smooth: Option<String>,
-    /// Output directory for derived.csv and the plots [default: out/<file name>].
+    /// Output directory: derived.csv with its units sidecar, and the plots x_t, v_t and a_t.
+    /// Nothing is written without it.
     #[arg(long, short)]
     pub out: Option<PathBuf>,
     /// Do not draw plots.
     #[arg(long)]
     pub no_plots: bool,
-    /// Plot files: `--format svg|png` and `--dpi`.
+    /// Plot files: `--format svg|png`, `--dpi` and `--style`.
     #[command(flatten)]
     pub plots: crate::args::PlotFormat,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit work`.
@@ -193,15 +195,17 @@ pub struct WorkArgs {
     /// Start speed for v(x) (default 0).
     #[arg(long, allow_hyphen_values = true)]
     pub v0: Option<String>,
-    /// Where to write the cumulative integral as CSV (x, F, W).
+    /// Output directory: work.csv (x, F, the running work W, and v with --mass; impulse.csv
+    /// for time data) with its units sidecar, and the plot W_x.svg (W_x.png with --format
+    /// png). Nothing is written without it.
     #[arg(long, short)]
     pub out: Option<PathBuf>,
-    /// Where to write the plot of W(x): SVG, or PNG when the name ends in .png.
+    /// Do not draw the plot.
     #[arg(long)]
-    pub plot: Option<PathBuf>,
-    /// Resolution of a PNG plot (a `--plot` path ending in .png) in dots per inch.
-    #[arg(long, default_value_t = 192, value_parser = clap::value_parser!(u32).range(24..=1200), allow_hyphen_values = true)]
-    pub dpi: u32,
+    pub no_plots: bool,
+    /// Plot files: `--format svg|png`, `--dpi` and `--style`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
     /// A force field instead of data: components separated by commas, functions of x, y (, z),
     /// e.g. "-k*x, -k*y".
     #[arg(long, allow_hyphen_values = true)]
@@ -218,9 +222,9 @@ pub struct WorkArgs {
     /// Values of the other names in --field and --path, e.g. "k=2,m=1 kg".
     #[arg(long, allow_hyphen_values = true)]
     pub set: Option<String>,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit power`.
@@ -247,18 +251,19 @@ pub struct PowerArgs {
     /// ... over this time.
     #[arg(long, requires = "work", allow_hyphen_values = true)]
     pub time: Option<String>,
-    /// Directory for the v(t) and x(t) plots [default: out/power].
+    /// Output directory: power.csv (t, v, a, x, W up to the last time asked) with its units
+    /// sidecar, and the plots v_t and x_t. Nothing is written without it.
     #[arg(long, short)]
     pub out: Option<PathBuf>,
     /// Do not draw plots.
     #[arg(long)]
     pub no_plots: bool,
-    /// Plot files: `--format svg|png` and `--dpi`.
+    /// Plot files: `--format svg|png`, `--dpi` and `--style`.
     #[command(flatten)]
     pub plots: crate::args::PlotFormat,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit rocket`.
@@ -288,18 +293,19 @@ pub struct RocketArgs {
     /// Relative tolerance of the simulation (Dormand-Prince 5(4)); atol is 1000 times smaller.
     #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub rtol: f64,
-    /// Directory for the v(t), x(t) and m(t) plots [default: out/rocket].
+    /// Directory for rocket.csv (t, x, v, m; with its units, rocket.units.json) and the plots
+    /// v_t, x_t and m_t (nothing is written without it).
     #[arg(long, short)]
     pub out: Option<PathBuf>,
-    /// Do not draw plots.
+    /// Do not draw plots (with --out, only the CSV).
     #[arg(long)]
     pub no_plots: bool,
     /// Plot files: `--format svg|png` and `--dpi`.
     #[command(flatten)]
     pub plots: crate::args::PlotFormat,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit potential`.
@@ -315,10 +321,12 @@ pub struct PotentialArgs {
     /// F = -∇U is reported, and its values at --at points).
     #[arg(long, default_value = "x")]
     pub var: String,
-    /// The range A:B to analyse and plot, increasing, e.g. -1:2.
+    /// The range A:B to analyse and plot, increasing, e.g. -1:2 (with units, e.g. "3 Å:10 Å",
+    /// the axis is labelled in metres).
     #[arg(long, allow_hyphen_values = true)]
     pub range: Option<String>,
-    /// Values of the other names, e.g. "U0=1 eV,a=3.4 Å".
+    /// Values of the other names, e.g. "U0=1 eV,a=3.4 Å" (with units, the diagram's axes show
+    /// them where the formula's unit follows).
     #[arg(long, allow_hyphen_values = true)]
     pub set: Option<String>,
     /// A total energy: turning points and allowed/forbidden regions.
@@ -330,7 +338,7 @@ pub struct PotentialArgs {
     /// Start position of the body.
     #[arg(long, allow_hyphen_values = true)]
     pub x0: Option<String>,
-    /// Start speed of the body (default 0).
+    /// Start velocity of the body (default 0; its sign is the direction).
     #[arg(long, allow_hyphen_values = true)]
     pub v0: Option<String>,
     /// Also report U, F (and v) at these points, comma-separated (in 2-D/3-D: points separated
@@ -340,19 +348,20 @@ pub struct PotentialArgs {
     /// Grid intervals used to find equilibria and turning points.
     #[arg(value_parser = super::whole_count, long, default_value_t = 2000, allow_hyphen_values = true)]
     pub samples: usize,
-    /// Where to write the energy diagram: SVG, or PNG when the name ends in .png [default:
-    /// out/energy_diagram.svg].
+    /// Output directory: the energy diagram U_x.svg (x the variable; U_x.png with --format
+    /// png), v_x.svg with a released body, and potential.csv (x, U, F and v on the grid) with
+    /// its units sidecar. Nothing is written without it.
+    #[arg(long, short)]
+    pub out: Option<PathBuf>,
+    /// Do not draw plots.
     #[arg(long)]
-    pub plot: Option<PathBuf>,
-    /// Do not draw the diagram.
-    #[arg(long, conflicts_with = "plot")]
-    pub no_plot: bool,
-    /// Resolution of a PNG plot (a `--plot` path ending in .png) in dots per inch.
-    #[arg(long, default_value_t = 192, value_parser = clap::value_parser!(u32).range(24..=1200), allow_hyphen_values = true)]
-    pub dpi: u32,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    pub no_plots: bool,
+    /// Plot files: `--format svg|png`, `--dpi` and `--style`.
+    #[command(flatten)]
+    pub plots: crate::args::PlotFormat,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit inertia`.
@@ -373,7 +382,7 @@ pub struct InertiaArgs {
     /// Express moments of inertia in this unit, e.g. "g*cm^2" or "u*pm^2".
     #[arg(long = "in")]
     pub unit: Option<String>,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

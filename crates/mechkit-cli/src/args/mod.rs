@@ -49,7 +49,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit units "60 km/h" --to m/s
   mechkit potential "U0*((a/r)^12-(b/r)^6)" --var r --range 0.8:3 --set U0=1,a=1,b=1 --energy=-0.1
   mechkit derive examples/data/fallingtennisball02.txt --smooth 21:2
-  mechkit work examples/data/forcedata.d --plot out/work.svg
+  mechkit work examples/data/forcedata.d -o out/work
   mechkit work --field "y, -x" --path "cos(s), sin(s)" --param s=0:2*pi
   mechkit collide --m1 "0.2 kg" --v1 "15 m/s" --m2 "1.5 kg" --v2 0 --restitution 0
   mechkit impulse examples/data/baseballforce.d --mass "0.145 kg"
@@ -204,9 +204,9 @@ pub struct DiffArgs {
     /// Values of the other names, e.g. "F0=1,b=2" (needed with --at).
     #[arg(long, allow_hyphen_values = true)]
     pub set: Option<String>,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit integrate`.
@@ -235,9 +235,9 @@ pub struct IntegrateArgs {
     /// Numbers of intervals for --method, comma-separated.
     #[arg(value_parser = whole_count, long, value_delimiter = ',', default_value = "10", requires = "method", allow_hyphen_values = true)]
     pub n: Vec<usize>,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit solve`.
@@ -253,12 +253,13 @@ pub struct SolveArgs {
     /// Search interval for a numerical solution, "A:B".
     #[arg(long = "in", allow_hyphen_values = true)]
     pub interval: Option<String>,
-    /// Values of the other names, e.g. "m=2,g=9.81".
+    /// Values of the other names (numbers, quantities or formulas), e.g. "m=2,g=9.81" or
+    /// "th=pi/6"; with a linear system, its solution is also evaluated with them.
     #[arg(long, allow_hyphen_values = true)]
     pub set: Option<String>,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit units`.
@@ -270,9 +271,9 @@ pub struct UnitsArgs {
     /// The unit to convert to, e.g. "m/s".
     #[arg(long)]
     pub to: Option<String>,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit run`.
@@ -424,8 +425,9 @@ mod negative_values {
     }
 }
 
-/// How plots are written: `--format svg|png` and `--dpi` (flattened into every command that
-/// draws plots into a directory; where a command takes a plot's path, its extension decides).
+/// How plots are written: `--format svg|png`, `--dpi` and `--style paper|slides` (flattened
+/// into every command that draws plots into a directory; where a command takes a plot's path,
+/// its extension decides the format).
 #[derive(clap::Args, Debug, Clone, Copy, PartialEq, Eq)]
 pub struct PlotFormat {
     /// Plot files: svg (vector, for documents) or png (raster, for slides).
@@ -434,6 +436,9 @@ pub struct PlotFormat {
     /// Resolution of PNG plots in dots per inch; 96 gives the SVG's own 900x600 pixels.
     #[arg(long, default_value_t = 192, value_parser = clap::value_parser!(u32).range(24..=1200), allow_hyphen_values = true)]
     pub dpi: u32,
+    /// Look of the plots: paper, or slides (larger type, thicker lines, larger markers).
+    #[arg(long, value_enum, default_value_t = PlotStyle::Paper, allow_hyphen_values = true)]
+    pub style: PlotStyle,
 }
 
 impl Default for PlotFormat {
@@ -441,6 +446,7 @@ impl Default for PlotFormat {
         Self {
             kind: PlotKind::Svg,
             dpi: 192,
+            style: PlotStyle::Paper,
         }
     }
 }
@@ -462,4 +468,15 @@ pub enum PlotKind {
     Svg,
     /// Portable network graphics, at `--dpi`.
     Png,
+}
+
+/// The look of a plot: the sizes of its type, lines and markers.
+#[derive(clap::ValueEnum, Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PlotStyle {
+    /// For documents, read close up.
+    #[default]
+    Paper,
+    /// For slides, read from the back of a room: type about 1.6 times larger, lines and
+    /// markers thicker.
+    Slides,
 }

@@ -39,7 +39,7 @@ pub struct RelativeArgs {
     /// Unit of the speeds in the output, e.g. "km/h" [default: m/s].
     #[arg(long = "in", value_name = "UNIT")]
     pub unit: Option<String>,
-    /// Print the result as JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

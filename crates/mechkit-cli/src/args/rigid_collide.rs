@@ -74,7 +74,7 @@ pub struct RigidCollideArgs {
     /// Coefficient of restitution from 0 to 1, or elastic (1) or perfectly-inelastic (0).
     #[arg(long, short = 'e', allow_hyphen_values = true)]
     pub restitution: String,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

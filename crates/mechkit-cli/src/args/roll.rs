@@ -43,13 +43,17 @@ pub struct RollArgs {
     /// Relative tolerance of the simulation (DOP853); atol is 1000 times smaller.
     #[arg(long, default_value_t = 1e-10, allow_hyphen_values = true)]
     pub rtol: f64,
-    /// Directory for roll.csv and the plots of v and ωR, and of the energies.
+    /// Directory for roll.csv (with its units, roll.units.json) and the plots v_t (v and ωR)
+    /// and energy_t (nothing is written without it).
     #[arg(long, short)]
     pub out: Option<PathBuf>,
+    /// Do not draw plots (with --out, only the CSV).
+    #[arg(long)]
+    pub no_plots: bool,
     /// Plot files: `--format svg|png` and `--dpi`.
     #[command(flatten)]
     pub plots: crate::args::PlotFormat,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

@@ -2,8 +2,9 @@
 
 /// `mechkit rotation`. One question per call, chosen by the flags given:
 /// a formula (`--theta` or `--omega` with `--at`), uniform angular acceleration (`--omega0`,
-/// `--omega1`, `--time`), circular motion (`--radius` with `--speed`, `--angular-speed` or
-/// `--period`), or a point of a body turning in 3-D (`--omega-vector`, `--point`).
+/// `--omega1`, `--time`), circular motion (`--radius` with `--speed`, `--angular-speed`,
+/// `--period` or `--centripetal`, or `--speed` with `--centripetal`), or a point of a body
+/// turning in 3-D (`--omega-vector`, `--point`).
 #[derive(Debug, clap::Args)]
 pub struct RotationArgs {
     /// θ(t) as a formula of t, e.g. "c1*t/t1 + c2*(t/t2)^2": ω and α by symbolic derivatives.
@@ -38,14 +39,10 @@ pub struct RotationArgs {
     /// the rolling condition of a wheel of radius R.
     #[arg(long, allow_hyphen_values = true, conflicts_with_all = ["angular_speed", "period"])]
     pub speed: Option<String>,
-    /// The centripetal acceleration allowed, e.g. "0.1 gn" (standard gravity) or "1 m/s^2", with --speed instead of
-    /// --radius: the smallest circle is R = v²/a.
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        requires = "speed",
-        conflicts_with = "radius"
-    )]
+    /// The centripetal acceleration, e.g. "9.81 m/s^2" or "0.1 gn" (standard gravity): with
+    /// --radius, ω = √(a/R) (in rad/s and rpm), the period and v; with --speed instead of
+    /// --radius, the acceleration allowed: the smallest circle is R = v²/a.
+    #[arg(long, allow_hyphen_values = true, conflicts_with_all = ["angular_speed", "period"])]
     pub centripetal: Option<String>,
     /// An angle turned on the circle, e.g. "90 deg": the time it takes (θ/ω) and the arc (θR).
     #[arg(long, allow_hyphen_values = true)]
@@ -73,7 +70,7 @@ pub struct RotationArgs {
     /// The point "x, y, z" of the body (m): v = ω × r, a = α × r + ω × (ω × r).
     #[arg(long, allow_hyphen_values = true, requires = "omega_vector")]
     pub point: Option<String>,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

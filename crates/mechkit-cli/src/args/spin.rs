@@ -58,13 +58,17 @@ pub struct SpinArgs {
     /// Number of output intervals (CSV rows and plot points).
     #[arg(value_parser = super::whole_count, long, default_value_t = 2000, allow_hyphen_values = true)]
     pub samples: usize,
-    /// Directory for spin.csv and the plots (nothing is written without it).
+    /// Directory for spin.csv (with its units, spin.units.json) and the plots omega_t, and for
+    /// a top nutation_t and precession_t (nothing is written without it).
     #[arg(long, short)]
     pub out: Option<PathBuf>,
+    /// Do not draw plots (with --out, only the CSV).
+    #[arg(long)]
+    pub no_plots: bool,
     /// Plot files: `--format svg|png` and `--dpi`.
     #[command(flatten)]
     pub plots: crate::args::PlotFormat,
-    /// Print JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

@@ -59,7 +59,7 @@ pub struct TerminalArgs {
     /// Radius of a round body (area πr²), e.g. "3.3 cm".
     #[arg(long, allow_hyphen_values = true, requires = "density")]
     pub radius: Option<String>,
-    /// Print the result as JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

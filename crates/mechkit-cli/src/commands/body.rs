@@ -1,53 +1,35 @@
-//! Body files on the command line: loading (with an optional total mass), points typed as
-//! "x, y, z" with units, and the parts as JSON and text.
+//! Body files on the command line: loading (with an optional total mass) into the library's
+//! `BodySummary`, points typed as "x, y, z" with units, and the parts and vectors as text.
 
 use std::fmt::Write as _;
 use std::path::Path;
 
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
-use mechkit::mass::{MassProperties, Vec3};
+use mechkit::mass::{BodySummary, MassError, MassInput, PartSummary, Vec3};
 use mechkit::scenario::BodyFile;
-use serde_json::{Value, json};
 
 use super::input::{quantity, show, split_top_level};
 
-/// A loaded body: the whole and its parts (body frame), rescaled to `--total-mass`.
-pub struct Loaded {
-    pub title: String,
-    pub whole: MassProperties,
-    /// (name, shape, hole, properties)
-    pub parts: Vec<(String, &'static str, bool, MassProperties)>,
+/// A body file's whole and its parts (body frame), rescaled to `--total-mass`.
+pub fn load(path: &Path, total_mass: Option<&str>) -> Result<BodySummary> {
+    let file = BodyFile::load(path)?;
+    let total_mass = match total_mass {
+        Some(m) => Some(quantity(m, "--total-mass", Dimension::MASS)?),
+        None => None,
+    };
+    file.body
+        .summary(&file.title, total_mass)
+        .map_err(|e| mass_error(&e, path))
 }
 
-pub fn load(path: &Path, total_mass: Option<&str>) -> Result<Loaded> {
-    let file = BodyFile::load(path)?;
-    let mut parts: Vec<MassProperties> = file
-        .body
-        .part_properties()
-        .map_err(|e| anyhow!("{}: {e}", path.display()))?;
-    let mut whole = MassProperties::sum(&parts).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-    if let Some(m) = total_mass {
-        let m = quantity(m, "--total-mass", Dimension::MASS)?;
-        if !(m.is_finite() && m > 0.0) {
-            bail!("--total-mass must be a positive mass, e.g. \"2 kg\"");
-        }
-        let factor = m / whole.mass;
-        whole = whole.scaled(factor);
-        parts = parts.iter().map(|p| p.scaled(factor)).collect();
+/// A library error with the flag of the input it is about, else the file's name.
+pub fn mass_error(e: &MassError, path: &Path) -> anyhow::Error {
+    match e.input() {
+        Some(MassInput::TotalMass) => anyhow!("--total-mass: {e}"),
+        Some(MassInput::Axis) => anyhow!("--axis: {e}"),
+        _ => anyhow!("{}: {e}", path.display()),
     }
-    let parts = file
-        .body
-        .parts()
-        .iter()
-        .zip(parts)
-        .map(|(p, props)| (p.name.clone(), p.shape.name(), p.hole, props))
-        .collect();
-    Ok(Loaded {
-        title: file.title,
-        whole,
-        parts,
-    })
 }
 
 /// "x, y[, z]" with units of `dim`, padded with zeros.
@@ -71,44 +53,28 @@ pub fn point(text: &str, flag: &str, dim: Dimension) -> Result<Vec3> {
     Ok(p)
 }
 
-pub fn vec_json(v: &Vec3) -> Value {
-    json!([v.x + 0.0, v.y + 0.0, v.z + 0.0])
-}
-
-pub fn vec_text(v: &Vec3) -> String {
+/// A vector for the text report: `(x, y, z)`.
+pub fn vec_text(v: &[f64; 3]) -> String {
     format!(
         "({}, {}, {})",
-        show(v.x + 0.0),
-        show(v.y + 0.0),
-        show(v.z + 0.0)
+        show(v[0] + 0.0),
+        show(v[1] + 0.0),
+        show(v[2] + 0.0)
     )
 }
 
-pub fn parts_json(loaded: &Loaded) -> Value {
-    loaded
-        .parts
-        .iter()
-        .map(|(name, shape, hole, p)| {
-            json!({
-                "name": name,
-                "shape": shape,
-                "hole": hole,
-                "mass": p.mass,
-                "centre_of_mass": vec_json(&p.centre_of_mass),
-            })
-        })
-        .collect()
-}
-
-pub fn parts_text(loaded: &Loaded) -> String {
+/// The parts for the text report (nothing for a body of one part).
+pub fn parts_text(parts: &[PartSummary]) -> String {
     let mut out = String::new();
-    if loaded.parts.len() > 1 {
+    if parts.len() > 1 {
         out.push_str("parts:\n");
-        for (name, shape, hole, p) in &loaded.parts {
+        for p in parts {
             let _ = writeln!(
                 out,
-                "  {name} ({shape}{}): mass {} kg, centre of mass {} m",
-                if *hole { ", hole" } else { "" },
+                "  {} ({}{}): mass {} kg, centre of mass {} m",
+                p.name,
+                p.shape,
+                if p.hole { ", hole" } else { "" },
                 show(p.mass),
                 vec_text(&p.centre_of_mass)
             );

@@ -5,13 +5,12 @@ use std::fmt::Write as _;
 
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
-use mechkit::mass::PointMasses;
 use mechkit::mass::image::FileFormat;
-use serde_json::json;
+use mechkit::mass::{PointMassInput, PointMasses};
 
-use super::body::{load, parts_json, parts_text, point, vec_json, vec_text};
+use super::body::{load, parts_text, point, vec_text};
 use super::input::{output_unit, quantity, show, split_top_level};
-use super::{Outcome, print};
+use super::{Outcome, report};
 use crate::args::ComArgs;
 
 fn vector(text: &str, flag: &str, dim: Dimension) -> Result<Vec<f64>> {
@@ -21,8 +20,8 @@ fn vector(text: &str, flag: &str, dim: Dimension) -> Result<Vec<f64>> {
         .collect()
 }
 
-fn fmt(v: &[f64], scale: f64) -> String {
-    let parts: Vec<String> = v.iter().map(|x| show(x / scale + 0.0)).collect();
+fn fmt(v: &[f64]) -> String {
+    let parts: Vec<String> = v.iter().map(|x| show(x + 0.0)).collect();
     if parts.len() == 1 {
         parts[0].clone()
     } else {
@@ -62,7 +61,6 @@ fn body_file(args: &ComArgs, file: &std::path::Path) -> Result<Outcome> {
         }
     }
     let body = load(file, args.total_mass.as_deref())?;
-    let p = &body.whole;
     let (scale, unit) = output_unit(
         args.unit.as_deref(),
         Dimension::LENGTH,
@@ -73,44 +71,34 @@ fn body_file(args: &ComArgs, file: &std::path::Path) -> Result<Outcome> {
         Some(a) => Some(point(a, "--about", Dimension::LENGTH)?),
         None => None,
     };
-    if args.json {
-        let j = json!({
-            "source": "body",
-            "title": body.title,
-            "total_mass": p.mass,
-            "centre_of_mass": vec_json(&p.centre_of_mass),
-            "centre_of_mass_in_unit": vec_json(&(p.centre_of_mass / scale)),
-            "unit": unit,
-            "about": about.map(|a| json!({
-                "point": vec_json(&a),
-                "distance": (p.centre_of_mass - a).norm(),
-            })),
-            "parts": parts_json(&body),
-        });
-        print(&format!("{j:#}\n"))?;
-    } else {
-        let mut out = format!("{}\ntotal mass {} kg\n", body.title, show(p.mass));
+    let result = body.centre_of_mass(&unit, scale, about);
+    report(args.report, &result, || {
+        let mut out = format!(
+            "{}\ntotal mass {} kg\n",
+            result.title,
+            show(result.total_mass)
+        );
         let _ = writeln!(
             out,
             "centre of mass at {} {}",
-            vec_text(&(p.centre_of_mass / scale)),
+            vec_text(&result.centre_of_mass_in_unit),
             if args.unit.is_some() {
                 format!("(in units of {unit})")
             } else {
                 "m".into()
             }
         );
-        if let Some(a) = about {
+        if let Some(a) = &result.about {
             let _ = writeln!(
                 out,
                 "distance from {} m: {} m",
-                vec_text(&a),
-                show((p.centre_of_mass - a).norm())
+                vec_text(&a.point),
+                show(a.distance)
             );
         }
-        out.push_str(&parts_text(&body));
-        print(&out)?;
-    }
+        out.push_str(&parts_text(&result.parts));
+        out
+    })?;
     Ok(Outcome::Success)
 }
 
@@ -211,22 +199,15 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
         .iter()
         .map(|p| vector(p, "--at", Dimension::LENGTH))
         .collect::<Result<_>>()?;
-    let dim = positions[0].len();
-    if !(1..=3).contains(&dim) || positions.iter().any(|p| p.len() != dim) {
-        bail!("every --at needs the same number of coordinates, 1 to 3 (e.g. \"1 m, 2 m\")");
-    }
-    let velocities = if args.velocity.is_empty() {
+    let velocities: Option<Vec<Vec<f64>>> = if args.velocity.is_empty() {
         None
     } else {
-        let v: Vec<Vec<f64>> = args
-            .velocity
-            .iter()
-            .map(|p| vector(p, "--velocity", Dimension::VELOCITY))
-            .collect::<Result<_>>()?;
-        if v.iter().any(|x| x.len() != dim) {
-            bail!("every --velocity needs {dim} components, like the positions");
-        }
-        Some(v.concat())
+        Some(
+            args.velocity
+                .iter()
+                .map(|p| vector(p, "--velocity", Dimension::VELOCITY))
+                .collect::<Result<_>>()?,
+        )
     };
     let (scale, unit) = output_unit(
         args.unit.as_deref(),
@@ -234,29 +215,20 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
         ("m", "a positive length", "\"6371 km\" or \"pm\""),
         true,
     )?;
-    let points = PointMasses::new(dim, masses, positions.concat(), velocities)
-        .map_err(|e| anyhow!("--mass: {e}"))?;
-    let s = points.summary();
-    if args.json {
-        let j = json!({
-            "total_mass": s.total_mass,
-            "centre_of_mass": s.centre_of_mass,
-            "centre_of_mass_in_unit": s.centre_of_mass.iter().map(|x| x / scale).collect::<Vec<_>>(),
-            "unit": unit,
-            "cm_velocity": s.cm_velocity,
-            "momentum": s.momentum,
-            "cm_frame_velocities": s.cm_frame_velocities,
-            "kinetic": s.kinetic,
-            "kinetic_cm": s.kinetic_cm,
-            "kinetic_internal": s.kinetic_internal,
-        });
-        print(&format!("{j:#}\n"))?;
-    } else {
+    let points = PointMasses::from_bodies(&masses, &positions, velocities.as_deref()).map_err(
+        |e| match e.input() {
+            Some(PointMassInput::Position) => anyhow!("--at: {e}"),
+            Some(PointMassInput::Velocity) => anyhow!("--velocity: {e}"),
+            _ => anyhow!("--mass: {e}"),
+        },
+    )?;
+    let s = points.report(&unit, scale);
+    report(args.report, &s, || {
         let mut out = format!("total mass {} kg\n", show(s.total_mass));
         let _ = writeln!(
             out,
             "centre of mass at {} {}",
-            fmt(&s.centre_of_mass, scale),
+            fmt(&s.centre_of_mass_in_unit),
             if args.unit.is_some() {
                 format!("(in units of {unit})")
             } else {
@@ -267,8 +239,8 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
             let _ = writeln!(
                 out,
                 "centre-of-mass velocity {} m/s, momentum P = M V = {} kg·m/s",
-                fmt(v, 1.0),
-                fmt(p, 1.0)
+                fmt(v),
+                fmt(p)
             );
             let _ = writeln!(
                 out,
@@ -278,8 +250,8 @@ pub fn com(args: &ComArgs) -> Result<Outcome> {
                 show(s.kinetic_internal.unwrap_or(0.0))
             );
         }
-        print(&out)?;
-    }
+        out
+    })?;
     Ok(Outcome::Success)
 }
 

@@ -2,19 +2,17 @@
 //! the course's method (the pixels with `R+G+B < 1.5` are the body).
 
 use std::fmt::Write as _;
-use std::path::Path;
 
 use anyhow::{Context, Result, anyhow, bail};
+use mechkit::csv::write_atomic;
 use mechkit::expr::units::{Dimension, Quantity};
 use mechkit::mass::image::{
-    Channel, Density, ImageError, PixelBody, PixelFrame, Raster, Selection, marked_png,
+    Channel, Density, ImageError, ImageOptions, ImageReport, PixelBody, Raster, Selection,
+    marked_png,
 };
-use mechkit::mass::{MassProperties, Vec3};
-use mechkit::scenario::write_atomic;
-use serde_json::{Value, json};
 
 use super::input::{quantity, show, split_top_level};
-use super::{Outcome, print};
+use super::{Outcome, report};
 use crate::args::ComArgs;
 
 /// A number of pixels: `"240"`, `"240 px"`, `"240 pixels"`.
@@ -117,19 +115,6 @@ fn reject_point_mass_flags(args: &ComArgs) -> Result<()> {
     Ok(())
 }
 
-/// Everything measured, in the units of the output.
-struct Measured<'a> {
-    file: &'a Path,
-    raster: &'a Raster,
-    selection: Selection,
-    body: PixelBody,
-    frame: PixelFrame,
-    scaled: bool,
-    mass_given: bool,
-    props: MassProperties,
-    about: Option<([f64; 2], f64)>,
-}
-
 pub fn com_image(args: &ComArgs) -> Result<Outcome> {
     let file = args
         .file
@@ -164,30 +149,34 @@ pub fn com_image(args: &ComArgs) -> Result<Outcome> {
     let origin = match &args.origin {
         Some(text) => {
             let [x, y] = pair(text, "--origin", "200, 400")?;
-            [pixels(x, "--origin")?, pixels(y, "--origin")?]
+            Some([pixels(x, "--origin")?, pixels(y, "--origin")?])
         }
-        None => [0.0, raster.height() as f64],
+        None => None,
     };
-    let frame = PixelFrame::new(size.unwrap_or(1.0), origin).map_err(|e| anyhow!("{e}"))?;
+    let about = match &args.about {
+        Some(text) => {
+            let [x, y] = pair(text, "--about", "0, 0")?;
+            Some([
+                coordinate(x, size.is_some())?,
+                coordinate(y, size.is_some())?,
+            ])
+        }
+        None => None,
+    };
     let body = PixelBody::measure(&raster, &selection).map_err(|e| {
         let e = image_error(e);
         anyhow!("{}: {e}", file.display())
     })?;
-    let props = body
-        .mass_properties(&frame, total_mass)
-        .map_err(|e| anyhow!("{e}"))?;
-    let about = match &args.about {
-        Some(text) => {
-            let [x, y] = pair(text, "--about", "0, 0")?;
-            let p = [
-                coordinate(x, size.is_some())?,
-                coordinate(y, size.is_some())?,
-            ];
-            let zz = props.inertia_about(&Vec3::new(p[0], p[1], 0.0))[(2, 2)];
-            Some((p, zz))
-        }
-        None => None,
+    let options = ImageOptions {
+        selection,
+        pixel_size: size,
+        origin,
+        total_mass,
+        about,
     };
+    let mut result = body
+        .report(&file.display().to_string(), &options)
+        .map_err(|e| anyhow!("{e}"))?;
     if let Some(out) = &args.mark {
         if !out
             .extension()
@@ -198,80 +187,32 @@ pub fn com_image(args: &ComArgs) -> Result<Outcome> {
         let png = marked_png(&raster, &selection, &body).map_err(|e| anyhow!("--mark: {e}"))?;
         write_atomic(out, &png)
             .with_context(|| format!("--mark: cannot write {}", out.display()))?;
+        result.mark = Some(out.display().to_string());
     }
-    let m = Measured {
-        file,
-        raster: &raster,
-        selection,
-        body,
-        frame,
-        scaled: size.is_some(),
-        mass_given: total_mass.is_some(),
-        props,
-        about,
-    };
-    if args.json {
-        print(&format!("{:#}\n", to_json(&m, args.mark.as_deref())))?;
-    } else {
-        print(&to_text(&m, args.mark.as_deref()))?;
-    }
+    report(args.report, &result, || to_text(&result))?;
     Ok(Outcome::Success)
 }
 
-fn to_json(m: &Measured, mark: Option<&Path>) -> Value {
-    let i = &m.props.inertia;
-    let [x, y] = [m.props.centre_of_mass.x, m.props.centre_of_mass.y];
-    json!({
-        "source": "image",
-        "file": m.file.display().to_string(),
-        "width": m.raster.width(),
-        "height": m.raster.height(),
-        "channel": m.selection.channel.name(),
-        "threshold": m.selection.threshold,
-        "inverted": m.selection.invert,
-        "density": match m.selection.density {
-            Density::Darkness => "darkness",
-            _ => "uniform",
-        },
-        "selected_pixels": m.body.count,
-        "fraction": m.body.fraction(),
-        "weight": m.body.weight,
-        "pixel_centre_of_mass": m.body.centre,
-        "origin_pixel": m.frame.origin,
-        "pixel_size": m.scaled.then_some(m.frame.pixel_size),
-        "unit": if m.scaled { "m" } else { "px" },
-        "centre_of_mass": [x + 0.0, y + 0.0],
-        "area": m.body.area(m.frame.pixel_size),
-        "mass": m.mass_given.then_some(m.props.mass),
-        "inertia_cm": {
-            "xx": i[(0, 0)], "yy": i[(1, 1)], "zz": i[(2, 2)], "xy": i[(0, 1)] + 0.0,
-        },
-        "radius_of_gyration": (i[(2, 2)] / m.props.mass).sqrt(),
-        "about": m.about.map(|(p, zz)| json!({ "point": p, "zz": zz })),
-        "mark": mark.map(|p| p.display().to_string()),
-    })
-}
-
-fn to_text(m: &Measured, mark: Option<&Path>) -> String {
-    let len = if m.scaled { "m" } else { "px" };
-    let inertia_unit = if m.mass_given {
+fn to_text(m: &ImageReport) -> String {
+    let len = m.unit;
+    let inertia_unit = if m.mass.is_some() {
         format!("kg·{len}²")
     } else {
         format!("{len}⁴")
     };
     let pt = |p: [f64; 2]| format!("({}, {})", show(p[0] + 0.0), show(p[1] + 0.0));
-    let i = &m.props.inertia;
+    let i = &m.inertia_cm;
     let mut out = String::new();
     let _ = writeln!(
         out,
         "{}: {} × {} pixels; the body is {}: {} pixels ({} % of the image){}",
-        m.file.display(),
-        m.raster.width(),
-        m.raster.height(),
-        m.selection,
-        m.body.count,
-        show((1e4 * m.body.fraction()).round() / 100.0),
-        if m.selection.density == Density::Darkness {
+        m.file,
+        m.width,
+        m.height,
+        m.rule,
+        m.selected_pixels,
+        show((1e4 * m.fraction).round() / 100.0),
+        if m.density == "darkness" {
             ", density from the shade"
         } else {
             ""
@@ -280,52 +221,49 @@ fn to_text(m: &Measured, mark: Option<&Path>) -> String {
     let _ = writeln!(
         out,
         "centre of mass in pixels (x right, y down from the top-left corner): {}",
-        pt(m.body.centre)
+        pt(m.pixel_centre_of_mass)
     );
     let _ = writeln!(
         out,
         "centre of mass {} {len} (y up, origin at pixel {}{})",
-        pt([m.props.centre_of_mass.x, m.props.centre_of_mass.y]),
-        pt(m.frame.origin),
-        if m.scaled {
-            format!(", pixel size {} m", show(m.frame.pixel_size))
-        } else {
-            String::new()
-        }
+        pt(m.centre_of_mass),
+        pt(m.origin_pixel),
+        m.pixel_size
+            .map_or(String::new(), |s| format!(", pixel size {} m", show(s)))
     );
     let _ = writeln!(
         out,
         "area {} {len}²; mass {}",
-        show(m.body.area(m.frame.pixel_size)),
-        if m.mass_given {
-            format!("{} kg", show(m.props.mass))
-        } else {
-            format!("not given: density 1 per {len}², so the moments below are of the area")
+        show(m.area),
+        match m.mass {
+            Some(mass) => format!("{} kg", show(mass)),
+            None =>
+                format!("not given: density 1 per {len}², so the moments below are of the area"),
         }
     );
     let _ = writeln!(
         out,
         "moment of inertia about the centre of mass, axis perpendicular to the image: I_zz = {} {inertia_unit} (radius of gyration {} {len})",
-        show(i[(2, 2)]),
-        show((i[(2, 2)] / m.props.mass).sqrt())
+        show(i.zz),
+        show(m.radius_of_gyration)
     );
     let _ = writeln!(
         out,
         "  in the plane: I_xx = {}, I_yy = {}, I_xy = {} {inertia_unit}",
-        show(i[(0, 0)]),
-        show(i[(1, 1)]),
-        show(i[(0, 1)] + 0.0)
+        show(i.xx),
+        show(i.yy),
+        show(i.xy + 0.0)
     );
-    if let Some((p, zz)) = m.about {
+    if let Some(a) = &m.about {
         let _ = writeln!(
             out,
             "about {} {len}: I_zz = {} {inertia_unit}",
-            pt(p),
-            show(zz)
+            pt(a.point),
+            show(a.zz)
         );
     }
-    if let Some(path) = mark {
-        let _ = writeln!(out, "marked image written to {}", path.display());
+    if let Some(path) = &m.mark {
+        let _ = writeln!(out, "marked image written to {path}");
     }
     out
 }

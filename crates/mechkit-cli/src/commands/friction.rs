@@ -1,25 +1,23 @@
 //! `mechkit friction`: a block on a flat or inclined surface with Coulomb friction (normal
-//! force, static bound, sliding friction, marginal angle, whether it slides and how fast), and
-//! with `--spring-k` the stick-slip spring-block model: the phases with their closed-form
-//! switch times, the energy ledger, `stick_slip.csv` and plots.
+//! force, static bound, sliding friction, marginal angle, whether it slides and how fast,
+//! `Incline::report`), and with `--spring-k` the stick-slip spring-block model
+//! (`SpringBlock::report`): the phases with their closed-form switch times, the energy ledger;
+//! `stick_slip.csv` and plots with `-o`.
 
 use std::fmt::Write as _;
-use std::path::Path;
 
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
-use mechkit::figure::{Band, LineStyle, PlotData, Series};
-use mechkit::ode::AdaptiveConfig;
+use mechkit::report::Files;
+use mechkit::rigid::Input;
 use mechkit::rigid::friction::{
-    Coulomb, FrictionError, Incline, InclineReport, PhaseEnd, Regime, SpringBlock, StickSlipRun,
+    Coulomb, FrictionError, FrictionReport, Incline, SpringBlock, StickSlipReport,
 };
-use mechkit::scenario::{push_number, write_atomic};
-use serde_json::{Value, json};
 
 use super::input::{quantity, show};
-use super::{Outcome, print};
+use super::outputs::{create_dir, write_plots, write_table};
+use super::{Outcome, note, report};
 use crate::args::FrictionArgs;
-use crate::plot::render;
 
 /// The most phases listed in the text report (all are in the JSON and the CSV).
 const TABLE_ROWS: usize = 24;
@@ -43,10 +41,8 @@ pub(super) fn coefficients(
         ),
         _ => bail!("give the friction coefficients: --mu-s and --mu-d, or --mu for both"),
     };
-    let c = Coulomb::new(s, d).map_err(|e| match &e {
-        FrictionError::Coefficient {
-            which: "static", ..
-        } => anyhow!("{}: {e}", flags.0),
+    let c = Coulomb::new(s, d).map_err(|e| match e.input() {
+        Some(Input::StaticFriction) => anyhow!("{}: {e}", flags.0),
         _ => anyhow!("{}: {e}", flags.1),
     })?;
     if let Some(w) = c.warning() {
@@ -97,20 +93,23 @@ fn optional(text: Option<&str>, flag: &str, dim: Dimension, default: f64) -> Res
     text.map_or(Ok(default), |t| quantity(t, flag, dim))
 }
 
-/// The flag behind a friction error, for the message.
-fn flag(e: &FrictionError) -> &'static str {
-    match e {
-        FrictionError::NotPositive { what, .. } if what.contains("mass") => "--mass",
-        FrictionError::NotPositive { what, .. } if what.contains("spring") => "--spring-k",
-        FrictionError::NotPositive { .. } => "--t-max",
-        FrictionError::NoContact { .. } => "--normal-load",
-        FrictionError::Angle { .. } => "--angle",
-        FrictionError::Invalid { what, .. } if what.starts_with('g') => "--g",
-        FrictionError::Invalid { what, .. } if what.contains("belt") => "--belt-speed",
-        FrictionError::Invalid { what, .. } if what.contains("anchor") => "--anchor-speed",
-        FrictionError::Invalid { what, .. } if what.contains("x0") => "--x0",
-        FrictionError::Invalid { what, .. } if what.contains("v0") => "--v0",
-        FrictionError::Invalid { .. } => "--push",
+/// The flag of an input of `mechkit friction`.
+fn flag(input: Option<Input>, args: &FrictionArgs) -> &'static str {
+    match input {
+        Some(Input::Mass) => "--mass",
+        Some(Input::SpringConstant) => "--spring-k",
+        Some(Input::Duration) => "--t-max",
+        Some(Input::NormalLoad) => "--normal-load",
+        Some(Input::Angle) => "--angle",
+        Some(Input::Gravity) => "--g",
+        Some(Input::BeltSpeed) => "--belt-speed",
+        Some(Input::AnchorSpeed) => "--anchor-speed",
+        Some(Input::StartPosition) => "--x0",
+        Some(Input::StartSpeed) => "--v0",
+        Some(Input::Push) => "--push",
+        Some(Input::StaticFriction) if args.mu.is_none() => "--mu-s",
+        Some(Input::DynamicFriction) if args.mu.is_none() => "--mu-d",
+        Some(Input::StaticFriction | Input::DynamicFriction) => "--mu",
         _ => "--rtol",
     }
 }
@@ -124,8 +123,8 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
     let mass = quantity(&args.mass, "--mass", Dimension::MASS)?;
     let g = optional(args.g.as_deref(), "--g", Dimension::ACCELERATION, 9.81)?;
     let alpha = angle(args.angle.as_deref(), "--angle")?;
-    let with_flag = |e: FrictionError| anyhow!("{}: {e}", flag(&e));
-    let incline = Incline::new(mass, alpha, c)
+    let with_flag = |e: FrictionError| anyhow!("{}: {e}", flag(e.input(), args));
+    let mut result = Incline::new(mass, alpha, c)
         .map_err(with_flag)?
         .with_gravity(g)
         .with_loads(
@@ -136,20 +135,10 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
                 0.0,
             )?,
             optional(args.push.as_deref(), "--push", Dimension::FORCE, 0.0)?,
-        );
-    let report = incline.at_rest().map_err(with_flag)?;
-    let mut j = json!({
-        "mass": mass, "g": g, "angle_deg": alpha.to_degrees(),
-        "mu_static": c.mu_static, "mu_dynamic": c.mu_dynamic,
-        "warnings": c.warning().map(|w| vec![w.to_string()]).unwrap_or_default(),
-        "normal_force": report.normal, "driving_force": report.driving,
-        "max_static_friction": report.max_static, "dynamic_friction": report.dynamic,
-        "marginal_angle_deg": report.marginal_angle.to_degrees(),
-        "slides": report.slides, "friction": report.friction,
-        "acceleration": report.acceleration,
-        "stick_slip": Value::Null,
-    });
-    let mut text = incline_text(&incline, &report);
+        )
+        .report()
+        .map_err(with_flag)?;
+    let mut wrote = None;
     if let Some(k_text) = &args.spring_k {
         if alpha != 0.0 || args.normal_load.is_some() || args.push.is_some() {
             bail!(
@@ -175,9 +164,7 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
                 opt(&args.x0, "--x0", Dimension::LENGTH)?,
                 opt(&args.v0, "--v0", Dimension::VELOCITY)?,
             );
-        let config = AdaptiveConfig::from_rtol(args.rtol).sampled_over(t_max);
-        config.validate(2).map_err(|e| anyhow!("--rtol: {e}"))?;
-        let run = match block.simulate(t_max, &config) {
+        let mut run = match block.report(t_max, args.rtol) {
             Ok(run) => run,
             Err(e @ (FrictionError::Integrate(_) | FrictionError::TooManyPhases { .. })) => {
                 eprintln!("error: the simulation failed: {e}");
@@ -186,22 +173,37 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
             Err(e) => return Err(with_flag(e)),
         };
         if let Some(dir) = &args.out {
-            write_outputs(&block, &run, dir, args.plots)?;
+            create_dir(dir)?;
+            let csv = write_table(dir, StickSlipReport::TABLE, &run.table())?;
+            let plots = if args.no_plots {
+                Vec::new()
+            } else {
+                write_plots(dir, &run.plots(), &title(&run), args.plots)?
+            };
+            wrote = Some(super::roll::written(&csv, &plots));
+            run.files = Some(Files {
+                csv: Some(csv),
+                plots,
+            });
         }
-        j["stick_slip"] = stick_slip_json(&block, &run, args, &config);
-        stick_slip_text(&mut text, &block, &run, args);
+        result.stick_slip = Some(run);
     }
-    if args.json {
-        print(&format!("{j:#}\n"))?;
-    } else {
-        print(&text)?;
+    report(args.report, &result, || {
+        let mut text = incline_text(&result);
+        if let Some(run) = &result.stick_slip {
+            stick_slip_text(&mut text, run, args);
+        }
+        text
+    })?;
+    if let Some(w) = &wrote {
+        note(args.report, w);
     }
     Ok(Outcome::Success)
 }
 
-fn incline_text(incline: &Incline, r: &InclineReport) -> String {
-    let c = incline.friction;
-    let deg = incline.angle.to_degrees();
+fn incline_text(r: &FrictionReport) -> String {
+    let incline: &Incline = &r.incline;
+    let deg = r.angle_deg;
     let surface = if deg == 0.0 {
         "a flat surface".to_string()
     } else {
@@ -209,10 +211,10 @@ fn incline_text(incline: &Incline, r: &InclineReport) -> String {
     };
     let mut out = format!(
         "block: m = {} kg on {surface}, g = {} m/s², μs = {}, μd = {}\n",
-        sig(incline.mass),
-        sig(incline.g),
-        sig(c.mu_static),
-        sig(c.mu_dynamic)
+        sig(r.mass),
+        sig(r.g),
+        sig(r.mu_static),
+        sig(r.mu_dynamic)
     );
     let extra = if incline.extra_normal == 0.0 {
         String::new()
@@ -220,13 +222,21 @@ fn incline_text(incline: &Incline, r: &InclineReport) -> String {
         format!(" + {} N", sig(incline.extra_normal))
     };
     let rows = [
-        (format!("normal force N = m g cos α{extra}"), r.normal, "N"),
-        ("pull along the slope".to_string(), r.driving, "N"),
-        ("max static friction μs N".to_string(), r.max_static, "N"),
-        ("dynamic friction μd N".to_string(), r.dynamic, "N"),
+        (
+            format!("normal force N = m g cos α{extra}"),
+            r.normal_force,
+            "N",
+        ),
+        ("pull along the slope".to_string(), r.driving_force, "N"),
+        (
+            "max static friction μs N".to_string(),
+            r.max_static_friction,
+            "N",
+        ),
+        ("dynamic friction μd N".to_string(), r.dynamic_friction, "N"),
         (
             "marginal angle atan μs".to_string(),
-            r.marginal_angle.to_degrees(),
+            r.marginal_angle_deg,
             "°",
         ),
     ];
@@ -250,221 +260,84 @@ fn incline_text(incline: &Incline, r: &InclineReport) -> String {
     out
 }
 
-/// The closed-form end of a phase, for comparison.
-fn closed_end(block: &SpringBlock, p: &mechkit::rigid::friction::Phase) -> Option<f64> {
-    match p.regime {
-        Regime::Stick => block.exact_stick_end(p.start.0, p.start.1),
-        Regime::Slip { direction } => block.exact_slip_end(p.start, direction),
-    }
-}
-
-fn regime_name(r: Regime) -> &'static str {
-    match r {
-        Regime::Stick => "stick",
-        Regime::Slip { direction } if direction > 0.0 => "slip+",
-        Regime::Slip { .. } => "slip-",
-    }
-}
-
-fn stick_slip_json(
-    block: &SpringBlock,
-    run: &StickSlipRun,
-    args: &FrictionArgs,
-    config: &AdaptiveConfig,
-) -> Value {
-    let phases: Vec<Value> = run
-        .phases
-        .iter()
-        .map(|p| {
-            let end = (p.ended == PhaseEnd::Switch).then_some(p.end.0);
-            json!({
-                "regime": regime_name(p.regime),
-                "t_start": p.start.0, "t_end": p.end.0,
-                "x_start": p.start.1, "x_end": p.end.1,
-                "ended_by": if end.is_some() { "switch" } else { "t_max" },
-                "t_end_closed_form": end.and(closed_end(block, p)),
-                "slip_distance": p.slip_distance,
-            })
-        })
-        .collect();
-    let b = &run.balance;
-    let spring = b.potential.as_ref().expect("the spring has a potential");
-    let count = |f: fn(&Regime) -> bool| run.phases.iter().filter(|p| f(&p.regime)).count();
-    json!({
-        "spring_k": block.k, "belt_speed": block.belt_speed,
-        "anchor_speed": block.anchor_speed, "x0": block.x0, "v0": block.v0,
-        "omega": block.omega(), "stick_bound": block.stick_bound(),
-        "dynamic_friction": block.friction.dynamic(block.normal()),
-        "phases": phases,
-        "stick_phases": count(|r| *r == Regime::Stick),
-        "slip_phases": count(|r| *r != Regime::Stick),
-        "energy": {
-            "kinetic": {"start": b.kinetic.start, "end": b.kinetic.end},
-            "spring": {"start": spring.start, "end": spring.end},
-            "heat": run.heat(), "work_friction": run.work_friction(),
-            "work_belt": run.work_belt(), "work_anchor": run.work_anchor(),
-            "residual": b.residual(),
-        },
-        "simulation": {
-            "method": "dop853", "rtol": config.rtol.as_scalar(),
-            "atol": config.atol.as_scalar(), "h_max": config.h_max,
-            "steps": run.stats.accepted, "rejected": run.stats.rejected,
-            "evaluations": run.stats.evaluations, "samples": run.samples.len(),
-        },
-        "files": args.out.as_ref().map(|d| json!({
-            "csv": d.join("stick_slip.csv").display().to_string(),
-            "plots": (["x(t)", "v(t)", "forces(t)"].map(|p| d.join(args.plots.file(p)).display().to_string())),
-        })),
-    })
-}
-
-fn stick_slip_text(out: &mut String, block: &SpringBlock, run: &StickSlipRun, args: &FrictionArgs) {
+fn stick_slip_text(out: &mut String, r: &StickSlipReport, args: &FrictionArgs) {
     let _ = writeln!(
         out,
         "stick-slip: k = {} N/m, belt u = {} m/s, anchor w = {} m/s, x0 = {} m, v0 = {} m/s; Ω = √(k/m) = {} rad/s",
-        sig(block.k),
-        sig(block.belt_speed),
-        sig(block.anchor_speed),
-        sig(block.x0),
-        sig(block.v0),
-        sig(block.omega())
+        sig(r.spring_k),
+        sig(r.belt_speed),
+        sig(r.anchor_speed),
+        sig(r.x0),
+        sig(r.v0),
+        sig(r.omega)
     );
     let _ = writeln!(
         out,
         "  sticks while |k (x - w t)| ≤ μs N = {} N; slips with friction μd N = {} N against v - u",
-        sig(block.stick_bound()),
-        sig(block.friction.dynamic(block.normal()))
+        sig(r.stick_bound),
+        sig(r.dynamic_friction)
     );
     let _ = writeln!(
         out,
         "  {:<4} {:<6} {:>14} {:>14} {:>14} {:>10} {:>14}",
         "#", "regime", "t start [s]", "t end [s]", "closed form", "diff", "slid [m]"
     );
-    for (i, p) in run.phases.iter().enumerate().take(TABLE_ROWS) {
-        let (closed, diff) = match (p.ended, closed_end(block, p)) {
-            (PhaseEnd::Switch, Some(t)) => (format!("{t:.9}"), format!("{:+.1e}", p.end.0 - t)),
-            (PhaseEnd::TimeLimit, _) => ("(t_max)".to_string(), String::new()),
+    for (i, p) in r.phases.iter().enumerate().take(TABLE_ROWS) {
+        let (closed, diff) = match (p.ended_by, p.t_end_closed_form) {
+            ("switch", Some(t)) => (format!("{t:.9}"), format!("{:+.1e}", p.t_end - t)),
+            ("t_max", _) => ("(t_max)".to_string(), String::new()),
             _ => ("-".to_string(), String::new()),
         };
-        let slid = match p.regime {
-            Regime::Stick => String::new(),
-            Regime::Slip { .. } => format!("{:.6e}", p.slip_distance),
+        let slid = if p.regime == "stick" {
+            String::new()
+        } else {
+            format!("{:.6e}", p.slip_distance)
         };
         let _ = writeln!(
             out,
             "  {:<4} {:<6} {:>14.9} {:>14.9} {closed:>14} {diff:>10} {slid:>14}",
             i + 1,
-            regime_name(p.regime),
-            p.start.0,
-            p.end.0
+            p.regime,
+            p.t_start,
+            p.t_end
         );
     }
-    if run.phases.len() > TABLE_ROWS {
+    if r.phases.len() > TABLE_ROWS {
         let _ = writeln!(
             out,
             "  … {} more phases (all in --json and the CSV)",
-            run.phases.len() - TABLE_ROWS
+            r.phases.len() - TABLE_ROWS
         );
     }
-    let b = &run.balance;
-    let spring = b.potential.as_ref().expect("the spring has a potential");
+    let e = &r.energy;
     let _ = writeln!(
         out,
         "energy: K {} → {} J, spring {} → {} J, heat {} J, work of the belt {} J, of the anchor {} J, of friction on the block {} J",
-        sig(b.kinetic.start),
-        sig(b.kinetic.end),
-        sig(spring.start),
-        sig(spring.end),
-        sig(run.heat()),
-        sig(run.work_belt()),
-        sig(run.work_anchor()),
-        sig(run.work_friction())
+        sig(e.kinetic.start),
+        sig(e.kinetic.end),
+        sig(e.spring.start),
+        sig(e.spring.end),
+        sig(e.heat),
+        sig(e.work_belt),
+        sig(e.work_anchor),
+        sig(e.work_friction)
     );
     let _ = writeln!(
         out,
         "  K + U + heat - W_belt - W_anchor is constant to {:.1e} J",
-        b.residual()
+        e.residual
     );
-    let s = run.stats;
+    let s = &r.simulation;
     let _ = writeln!(
         out,
         "simulation: dop853 at rtol {:e}: {} steps ({} rejected), {} evaluations; switches located inside the steps",
-        args.rtol, s.accepted, s.rejected, s.evaluations
+        args.rtol, s.steps, s.rejected, s.evaluations
     );
-    if let Some(d) = &args.out {
-        let _ = writeln!(
-            out,
-            "files: {}/stick_slip.csv, {}",
-            d.display(),
-            ["x(t)", "v(t)", "forces(t)"]
-                .map(|p| args.plots.file(p))
-                .join(", ")
-        );
-    }
 }
 
-fn write_outputs(
-    block: &SpringBlock,
-    run: &StickSlipRun,
-    dir: &Path,
-    format: crate::args::PlotFormat,
-) -> Result<()> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| anyhow!("--out: cannot create {}: {e}", dir.display()))?;
-    let mut csv =
-        String::from("t,x,v,anchor,spring_force,friction,stuck,heat,work_belt,work_anchor\n");
-    for s in &run.samples {
-        for (i, v) in [s.t, s.x, s.v, block.anchor(s.t), s.spring_force, s.friction]
-            .into_iter()
-            .enumerate()
-        {
-            if i > 0 {
-                csv.push(',');
-            }
-            push_number(&mut csv, v);
-        }
-        csv.push_str(if s.stuck { ",1" } else { ",0" });
-        for v in [s.heat, s.work_belt, s.work_anchor] {
-            csv.push(',');
-            push_number(&mut csv, v);
-        }
-        csv.push('\n');
-    }
-    let path = dir.join("stick_slip.csv");
-    write_atomic(&path, csv.as_bytes())
-        .map_err(|e| anyhow!("cannot write {}: {e}", path.display()))?;
-    let bands: Vec<Band> = run
-        .phases
-        .iter()
-        .filter(|p| p.regime == Regime::Stick)
-        .map(|p| Band {
-            from: p.start.0,
-            to: p.end.0,
-            label: "stick".to_string(),
-        })
-        .collect();
-    let curve = |f: &dyn Fn(&mechkit::rigid::friction::StickSlipSample) -> f64| -> Vec<(f64, f64)> {
-        run.samples.iter().map(|s| (s.t, f(s))).collect()
-    };
-    let t_end = run.samples.last().map_or(0.0, |s| s.t);
-    let flat = |y: f64| vec![(0.0, y), (t_end, y)];
-    let bound = block.stick_bound();
-    let plots = [
-        PlotData::new("x(t)", "x(t)", "t [s]", "x [m]")
-            .with_series(Series::line("block", curve(&|s| s.x)))
-            .with_series(
-                Series::line("anchor", curve(&|s| block.anchor(s.t))).styled(LineStyle::Dashed),
-            ),
-        PlotData::new("v(t)", "v(t)", "t [s]", "v [m/s]")
-            .with_series(Series::line("block", curve(&|s| s.v)))
-            .with_series(Series::line("belt", flat(block.belt_speed)).styled(LineStyle::Dashed)),
-        PlotData::new("forces(t)", "forces(t)", "t [s]", "F [N]")
-            .with_series(Series::line("spring", curve(&|s| s.spring_force)))
-            .with_series(Series::line("friction", curve(&|s| s.friction)))
-            .with_series(Series::line("±μs N", flat(bound)).styled(LineStyle::Dashed))
-            .with_series(Series::line("±μs N", flat(-bound)).styled(LineStyle::Dashed)),
-    ];
-    let title = format!(
+fn title(r: &StickSlipReport) -> String {
+    let block = &r.block;
+    format!(
         "stick-slip: m = {} kg, k = {} N/m, μs = {}, μd = {}, u = {} m/s, w = {} m/s",
         sig(block.mass),
         sig(block.k),
@@ -472,11 +345,5 @@ fn write_outputs(
         sig(block.friction.mu_dynamic),
         sig(block.belt_speed),
         sig(block.anchor_speed)
-    );
-    for mut plot in plots {
-        plot.bands.clone_from(&bands);
-        let path = dir.join(format.file(&plot.file_stem));
-        render(&plot, &title, &path, format.dpi)?;
-    }
-    Ok(())
+    )
 }

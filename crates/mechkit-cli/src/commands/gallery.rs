@@ -5,14 +5,74 @@ use std::fmt::Write as _;
 use std::path::{Component, Path, PathBuf};
 
 use anyhow::{Context as _, Result, anyhow, bail};
-use mechkit::gallery::{Case, CaseRun, report};
 use mechkit::scenario::write_atomic;
 use rayon::prelude::*;
-use serde_json::{Value, json};
+use serde::Serialize;
 
 use super::gallery_run::{self, Bundle};
-use super::{Outcome, print};
-use crate::args::GalleryArgs;
+use super::{Outcome, note};
+use crate::args::{GalleryArgs, PlotFormat};
+use crate::gallery::report::{self, MarkerError};
+use crate::gallery::{Case, CaseRun, Check, case_of};
+
+/// A case as `--list --json` prints it.
+#[derive(Serialize)]
+struct Listed<'c> {
+    id: &'c str,
+    chapter: u32,
+    topic: &'c str,
+    asked: &'c str,
+    /// The files that reproduce it, `<stem>.toml` or `<stem>.sh`.
+    files: Vec<String>,
+}
+
+/// One file run, as `--json` prints it.
+#[derive(Serialize)]
+struct RunJson<'r> {
+    stem: &'r str,
+    file: &'r str,
+    checks: &'r [Check],
+    /// Its plots, under `--out` (none without it).
+    plots: Vec<String>,
+    error: Option<&'r str>,
+}
+
+/// Where the runs' files go: `--out DIR`, or a scratch folder removed on drop.
+struct Outputs {
+    dir: PathBuf,
+    kept: bool,
+}
+
+impl Outputs {
+    fn new(out: Option<&Path>) -> Self {
+        match out {
+            Some(dir) => Self {
+                dir: dir.to_path_buf(),
+                kept: true,
+            },
+            None => Self {
+                dir: scratch("mechkit-gallery-run"),
+                kept: false,
+            },
+        }
+    }
+}
+
+impl Drop for Outputs {
+    fn drop(&mut self) {
+        if !self.kept {
+            let _ = std::fs::remove_dir_all(&self.dir);
+        }
+    }
+}
+
+/// A new folder name under the temporary directory.
+fn scratch(prefix: &str) -> PathBuf {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos());
+    std::env::temp_dir().join(format!("{prefix}-{}-{nanos}", std::process::id()))
+}
 
 pub fn gallery(args: &GalleryArgs) -> Result<Outcome> {
     let bundle = match &args.root {
@@ -21,7 +81,7 @@ pub fn gallery(args: &GalleryArgs) -> Result<Outcome> {
     };
     let cases = bundle.cases()?;
     let files = bundle.files()?;
-    if let Some(report) = &args.report {
+    if let Some(report) = &args.report_file {
         return write_report(args, &bundle, &cases, &files, report);
     }
     let chosen: Vec<(String, &str)> = match (&args.case, args.all) {
@@ -40,21 +100,22 @@ pub fn gallery(args: &GalleryArgs) -> Result<Outcome> {
         (None, true) => files.clone(),
         (None, false) => return list(args, &cases, &files),
     };
-    let out = args
-        .out
-        .clone()
-        .unwrap_or_else(|| PathBuf::from("out/gallery"));
-    let runs = run_all(&bundle, &cases, &chosen, &out, !args.no_plots);
+    // without --out the cases run in a scratch folder, and no plots are drawn for nothing
+    let outputs = Outputs::new(args.out.as_deref());
+    let plots = (outputs.kept && !args.no_plots).then_some(args.plots);
+    let runs = run_all(&bundle, &cases, &chosen, &outputs.dir, plots);
     let failed = runs
         .iter()
         .any(|r| r.error.is_some() || r.checks.iter().any(|c| !c.pass));
-    if args.json {
-        print(&format!("{:#}\n", runs_json(&runs, &out)))?;
-    } else if args.case.is_some() {
-        print(&describe(&cases, &runs, &out))?;
-    } else {
-        print(&summary_lines(&runs, &out))?;
-    }
+    let kept = args.out.as_deref();
+    let json: Vec<RunJson> = runs.iter().map(|r| run_json(r, kept)).collect();
+    super::report(args.report, &json, || {
+        if args.case.is_some() {
+            describe(&cases, &runs, kept)
+        } else {
+            summary_lines(&runs, kept)
+        }
+    })?;
     Ok(if failed {
         Outcome::ComputationFailed
     } else {
@@ -94,42 +155,45 @@ fn list(args: &GalleryArgs, cases: &[Case], files: &[(String, &str)]) -> Result<
             .map(|(stem, ext)| format!("{stem}.{ext}"))
             .collect()
     };
-    if args.json {
-        let list: Vec<Value> = cases
-            .iter()
-            .map(|c| {
-                json!({"id": c.id, "chapter": c.chapter, "topic": c.topic, "asked": c.asked,
-                       "files": files_of(c)})
-            })
-            .collect();
-        print(&format!("{:#}\n", Value::Array(list)))?;
-        return Ok(Outcome::Success);
-    }
-    let width = cases.iter().map(|c| c.id.len()).max().unwrap_or(0);
-    let mut text = String::new();
-    for c in cases {
-        let kinds: Vec<String> = files_of(c)
-            .iter()
-            .map(|f| f.rsplit('.').next().unwrap_or("").to_string())
-            .collect();
-        let _ = writeln!(text, "{:<width$}  {:<9} {}", c.id, kinds.join("+"), c.topic);
-    }
-    let _ = writeln!(
-        text,
-        "\n{} cases; `mechkit gallery ID` runs one, `--all` runs them all",
-        cases.len()
-    );
-    print(&text)?;
+    let listed: Vec<Listed> = cases
+        .iter()
+        .map(|c| Listed {
+            id: &c.id,
+            chapter: c.chapter,
+            topic: &c.topic,
+            asked: &c.asked,
+            files: files_of(c),
+        })
+        .collect();
+    super::report(args.report, &listed, || {
+        let width = cases.iter().map(|c| c.id.len()).max().unwrap_or(0);
+        let mut text = String::new();
+        for c in &listed {
+            let kinds: Vec<&str> = c
+                .files
+                .iter()
+                .map(|f| f.rsplit('.').next().unwrap_or(""))
+                .collect();
+            let _ = writeln!(text, "{:<width$}  {:<9} {}", c.id, kinds.join("+"), c.topic);
+        }
+        let _ = writeln!(
+            text,
+            "\n{} cases; `mechkit gallery ID` runs one, `--all` runs them all",
+            cases.len()
+        );
+        text
+    })?;
     Ok(Outcome::Success)
 }
 
-/// Runs the chosen files (in parallel), each into `out/<stem>`.
+/// Runs the chosen files (in parallel), each into `out/<stem>`, drawing the scenarios' plots
+/// in `plots` (none for `None`).
 fn run_all(
     bundle: &Bundle,
     cases: &[Case],
     chosen: &[(String, &str)],
     out: &Path,
-    plots: bool,
+    plots: Option<PlotFormat>,
 ) -> Vec<CaseRun> {
     // the files of one stem (a scenario and a script) share its folder: they run in turn
     let mut stems: Vec<(&str, Vec<&str>)> = Vec::new();
@@ -141,54 +205,41 @@ fn run_all(
     }
     let runs: Vec<Vec<CaseRun>> = stems
         .par_iter()
-        .map(
-            |(stem, exts)| match mechkit::gallery::case_of(cases, stem) {
-                Some(case) => {
-                    gallery_run::run_stem(bundle, case, stem, exts, &out.join(stem), plots)
-                }
-                None => exts
-                    .iter()
-                    .map(|ext| CaseRun {
-                        error: Some("no case of this name in cases.jsonl".into()),
-                        ..gallery_run::not_run(stem, ext)
-                    })
-                    .collect(),
-            },
-        )
+        .map(|(stem, exts)| match case_of(cases, stem) {
+            Some(case) => gallery_run::run_stem(bundle, case, stem, exts, &out.join(stem), plots),
+            None => exts
+                .iter()
+                .map(|ext| CaseRun {
+                    error: Some("no case of this name in cases.jsonl".into()),
+                    ..gallery_run::not_run(stem, ext)
+                })
+                .collect(),
+        })
         .collect();
     runs.into_iter().flatten().collect()
 }
 
-fn runs_json(runs: &[CaseRun], out: &Path) -> Value {
-    let runs: Vec<Value> = runs
-        .iter()
-        .map(|r| {
-            let checks: Vec<Value> = r
-                .checks
-                .iter()
-                .map(|c| {
-                    json!({"key": c.key, "expected": c.expected, "computed": c.computed,
-                           "tolerance": c.tolerance, "error": c.error, "pass": c.pass,
-                           "note": c.note})
-                })
-                .collect();
-            let plots: Vec<String> = r
-                .plots
+/// A run as `--json` prints it: its plots as paths under `--out` (none without it).
+fn run_json<'r>(r: &'r CaseRun, out: Option<&Path>) -> RunJson<'r> {
+    RunJson {
+        stem: &r.stem,
+        file: &r.file,
+        checks: &r.checks,
+        plots: out.map_or_else(Vec::new, |out| {
+            r.plots
                 .iter()
                 .map(|p| out.join(&r.stem).join(p).display().to_string())
-                .collect();
-            json!({"stem": r.stem, "file": r.file, "checks": checks, "plots": plots,
-                   "error": r.error})
-        })
-        .collect();
-    Value::Array(runs)
+                .collect()
+        }),
+        error: r.error.as_deref(),
+    }
 }
 
-/// One case in full: the question, each value against the book's, the outputs.
-fn describe(cases: &[Case], runs: &[CaseRun], out: &Path) -> String {
+/// One case in full: the question, each value against the book's, the outputs kept.
+fn describe(cases: &[Case], runs: &[CaseRun], out: Option<&Path>) -> String {
     let mut text = String::new();
     for run in runs {
-        let case = mechkit::gallery::case_of(cases, &run.stem);
+        let case = case_of(cases, &run.stem);
         if let Some(case) = case {
             let _ = writeln!(
                 text,
@@ -221,16 +272,18 @@ fn describe(cases: &[Case], runs: &[CaseRun], out: &Path) -> String {
         if let Some(e) = &run.error {
             let _ = writeln!(text, "  error: {e}");
         }
-        let dir = out.join(&run.stem);
-        let _ = writeln!(text, "  outputs: {}", dir.display());
-        for p in &run.plots {
-            let _ = writeln!(text, "  plot: {}", dir.join(p).display());
+        if let Some(out) = out {
+            let dir = out.join(&run.stem);
+            let _ = writeln!(text, "  outputs: {}", dir.display());
+            for p in &run.plots {
+                let _ = writeln!(text, "  plot: {}", dir.join(p).display());
+            }
         }
     }
     text
 }
 
-fn summary_lines(runs: &[CaseRun], out: &Path) -> String {
+fn summary_lines(runs: &[CaseRun], out: Option<&Path>) -> String {
     let mut text = String::new();
     let (mut passed, mut total) = (0, 0);
     for r in runs {
@@ -252,11 +305,50 @@ fn summary_lines(runs: &[CaseRun], out: &Path) -> String {
     }
     let _ = writeln!(
         text,
-        "\n{passed} of {total} values pass in {} files; outputs in {}",
+        "\n{passed} of {total} values pass in {} files{}",
         runs.len(),
-        out.display()
+        out.map_or(String::new(), |o| format!("; outputs in {}", o.display()))
     );
     text
+}
+
+/// What `--report` did, as `--json` prints it.
+#[derive(Serialize)]
+struct ReportJson<'p> {
+    /// The report file.
+    file: &'p Path,
+    /// Expected values that pass, of `total`.
+    passed: usize,
+    /// Expected values of every case.
+    total: usize,
+    /// `written`, or with `--check` `current` (a stale file fails with exit 1).
+    status: &'static str,
+    /// Whether the marker lines were added (the file had neither, or did not exist).
+    markers_added: bool,
+}
+
+/// The report file's text with its marker lines, and whether they were added: a file with
+/// neither marker (or no file) gets both at its end; a file with one of them only is an
+/// error that spells both out.
+fn marked_document(path: &Path) -> Result<(String, bool)> {
+    let document = match std::fs::read_to_string(path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => String::new(),
+        Err(e) => {
+            return Err(e)
+                .with_context(|| format!("cannot read the report file {}", path.display()));
+        }
+    };
+    match report::splice(&document, "") {
+        Ok(_) => Ok((document, false)),
+        Err(MarkerError::Missing) => Ok((report::add_markers(&document), true)),
+        Err(e) => bail!(
+            "{}: {e}\n  = hint: the table goes between the two lines\n      {}\n      {}\n    (a file with neither gets both added at its end)",
+            path.display(),
+            report::BEGIN,
+            report::END
+        ),
+    }
 }
 
 /// `--report FILE [--check]`: run every case and put the table between the markers of FILE.
@@ -267,34 +359,37 @@ fn write_report(
     files: &[(String, &str)],
     path: &Path,
 ) -> Result<Outcome> {
-    let document = std::fs::read_to_string(path)
-        .with_context(|| format!("cannot read the report file {}", path.display()))?;
     // the markers are checked before the cases run
-    let unmarked = |e: String| {
-        anyhow!(
-            "{}: {e}\n  = hint: put the two lines\n      {}\n      {}\n    where the table should go",
+    if args.check && !path.exists() {
+        bail!(
+            "cannot read the report file {}: no such file",
+            path.display()
+        );
+    }
+    let (document, markers_added) = marked_document(path)?;
+    if args.check && markers_added {
+        eprintln!(
+            "error: {} has no validation table: no lines\n      {}\n      {}\n  = hint: run `mechkit gallery --report {}`, which adds them with the table",
             path.display(),
             report::BEGIN,
-            report::END
-        )
-    };
-    report::splice(&document, "").map_err(unmarked)?;
+            report::END,
+            path.display()
+        );
+        return Ok(Outcome::ComputationFailed);
+    }
     let report_dir = absolute(path.parent().unwrap_or(Path::new("")))?;
     let out = args
         .out
         .clone()
         .unwrap_or_else(|| report_dir.join("gallery"));
     // the cases run in a scratch folder; the report keeps their plots only (--check none)
-    let scratch =
-        std::env::temp_dir().join(format!("mechkit-gallery-report-{}", std::process::id()));
-    let mut runs = run_all(bundle, cases, files, &scratch, !args.no_plots);
-    let kept = if args.check {
-        Ok(())
-    } else {
-        keep_plots(&runs, &scratch, &out)
-    };
-    let _ = std::fs::remove_dir_all(&scratch);
-    kept?;
+    let scratch = Outputs::new(None);
+    let plots = (!args.no_plots).then_some(args.plots);
+    let mut runs = run_all(bundle, cases, files, &scratch.dir, plots);
+    if !args.check {
+        keep_plots(&runs, &scratch.dir, &out)?;
+    }
+    drop(scratch);
     let out_link = relative(&report_dir, &absolute(&out)?);
     // the case files are linked where they are: in the checkout the command runs from, or
     // under --root
@@ -318,7 +413,7 @@ fn write_report(
     }
     let rows = report::checks(cases, &runs);
     let section = report::render(cases, &runs, &rows);
-    let updated = report::splice(&document, &section).map_err(unmarked)?;
+    let updated = report::splice(&document, &section).map_err(|e| anyhow!("{e}"))?;
     let failing = rows.iter().filter(|(c, _)| !c.pass).count();
     if args.check {
         if updated != document {
@@ -338,14 +433,32 @@ fn write_report(
     } else {
         write_atomic(path, updated.as_bytes())
             .with_context(|| format!("cannot write {}", path.display()))?;
+        if markers_added {
+            note(
+                args.report,
+                &format!(
+                    "{} had no gallery marker lines: added them at its end, with the table between them",
+                    path.display()
+                ),
+            );
+        }
     }
-    print(&format!(
-        "{} of {} expected values pass; {} {}\n",
-        rows.len() - failing,
-        rows.len(),
-        path.display(),
-        if args.check { "is current" } else { "written" }
-    ))?;
+    let summary = ReportJson {
+        file: path,
+        passed: rows.len() - failing,
+        total: rows.len(),
+        status: if args.check { "current" } else { "written" },
+        markers_added,
+    };
+    super::report(args.report, &summary, || {
+        format!(
+            "{} of {} expected values pass; {} {}\n",
+            summary.passed,
+            summary.total,
+            path.display(),
+            if args.check { "is current" } else { "written" }
+        )
+    })?;
     Ok(if failing > 0 {
         Outcome::ComputationFailed
     } else {

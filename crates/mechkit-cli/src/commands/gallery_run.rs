@@ -6,11 +6,11 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use anyhow::{Context as _, Result, anyhow, bail};
-use mechkit::gallery::{Case, CaseRun, Check, Script};
 use mechkit::scenario::Scenario;
 use serde_json::Value;
 
-use crate::plot;
+use crate::gallery::{Case, CaseRun, Check, Script};
+use crate::plot::{self, PlotFormat};
 
 mod bundle {
     include!(concat!(env!("OUT_DIR"), "/gallery_bundle.rs"));
@@ -126,15 +126,15 @@ pub fn not_run(stem: &str, ext: &str) -> CaseRun {
 }
 
 /// Runs the files of one stem (`examples/book/<stem>.toml` and/or `.sh`) of `case`, writing
-/// their outputs into `dir` (emptied first). The SVG files written are the first run's
-/// `plots`, as paths under `dir`.
+/// their outputs into `dir` (emptied first), a scenario's plots in `plots` (none for `None`).
+/// The plot files written (SVG and PNG) are the first run's `plots`, as paths under `dir`.
 pub fn run_stem(
     bundle: &Bundle,
     case: &Case,
     stem: &str,
     exts: &[&str],
     dir: &Path,
-    plots: bool,
+    plots: Option<PlotFormat>,
 ) -> Vec<CaseRun> {
     let mut runs: Vec<CaseRun> = exts.iter().map(|ext| not_run(stem, ext)).collect();
     if dir.exists()
@@ -155,11 +155,11 @@ pub fn run_stem(
             run.error = Some(format!("{e:#}"));
         }
     }
-    let mut svgs = Vec::new();
-    collect_svgs(dir, &mut svgs);
-    svgs.sort();
+    let mut pictures = Vec::new();
+    collect_plots(dir, &mut pictures);
+    pictures.sort();
     if let Some(first) = runs.first_mut() {
-        first.plots = svgs
+        first.plots = pictures
             .iter()
             .filter_map(|p| p.strip_prefix(dir).ok())
             .map(|p| p.to_string_lossy().replace('\\', "/"))
@@ -173,14 +173,13 @@ fn run_scenario(
     case: &Case,
     stem: &str,
     dir: &Path,
-    plots: bool,
+    plots: Option<PlotFormat>,
     checks: &mut Vec<Check>,
 ) -> Result<()> {
     let scenario = Scenario::load(path)?;
     let mut out = scenario.run_to_dir(dir)?;
-    if plots {
-        // the report links SVG plots
-        plot::render_run(&scenario, &mut out, dir, plot::PlotFormat::default())?;
+    if let Some(format) = plots {
+        plot::render_run(&scenario, &mut out, dir, format)?;
     }
     for (key, _) in case.expected_of(stem).unwrap_or_default() {
         if let Some(&v) = out.summary.observables.get(&key) {
@@ -253,15 +252,16 @@ fn local_path(bundle: &Bundle, word: &str) -> String {
     }
 }
 
-fn collect_svgs(dir: &Path, into: &mut Vec<PathBuf>) {
+/// The plot files (SVG and PNG) under `dir`, at any depth.
+fn collect_plots(dir: &Path, into: &mut Vec<PathBuf>) {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return;
     };
     for entry in entries.flatten() {
         let path = entry.path();
         if path.is_dir() {
-            collect_svgs(&path, into);
-        } else if path.extension().is_some_and(|e| e == "svg") {
+            collect_plots(&path, into);
+        } else if path.extension().is_some_and(|e| e == "svg" || e == "png") {
             into.push(path);
         }
     }

@@ -1,42 +1,37 @@
 //! `mechkit md`: the Lennard-Jones melt and its relatives (a pair, a spring chain, soft
-//! spheres), through `mechkit::md`.
+//! spheres), through `mechkit::md`: the run is `Md::run_observed`, its result an `MdReport`;
+//! here the files are streamed and the progress drawn.
 
 use std::fmt::Write as _;
+use std::io::IsTerminal as _;
 use std::path::Path;
-use std::time::Instant;
 
-use anyhow::{Context, Result, anyhow, bail};
-use mechkit::md::{Md, MdConfig, PairPotential, Thermo};
-use mechkit::scenario::{
-    DEFAULT_MAX_OUTPUT, StreamFile, output_limit_message, parse_size, write_atomic,
-};
+use anyhow::{Context, Result, anyhow};
+use indicatif::{ProgressBar, ProgressStyle};
+use mechkit::csv::{self, header_line, push_row, units_file_name, write_atomic};
+use mechkit::md::{Md, MdConfig, MdObserver, MdReport, MdStop, PairPotential, RunPlan, Thermo};
+use mechkit::scenario::{DEFAULT_MAX_OUTPUT, StreamFile, output_limit_message, parse_size};
 use mechkit::simulate::Cancel;
-use serde_json::json;
 
 use super::Outcome;
-use super::md_setup::{Potential, Setup, flag, setup};
+use super::md_setup::{Potential, Setup, setup, with_flag};
 use crate::args::MdArgs;
-
-fn thermo_json(t: &Thermo, n: f64) -> serde_json::Value {
-    json!({
-        "step": t.step, "t": t.t, "temperature": t.temperature,
-        "potential_per_atom": t.potential / n, "total_per_atom": t.total / n,
-        "kinetic_per_atom": t.kinetic / n, "pressure": t.pressure,
-    })
-}
 
 const LIMIT_HINT: &str =
     "raise the limit with --max-output 10GB, or write fewer frames with a larger --xyz-every";
 
-/// The files written during the run: `thermo.csv` and, with `--xyz-every`,
-/// `trajectory.xyz`, streamed (see [`StreamFile`]).
+/// Bins of `rdf.csv`.
+const RDF_BINS: usize = 100;
+
+/// The files written during the run: `thermo.csv` (with its units sidecar) and, with
+/// `--xyz-every`, `trajectory.xyz`, streamed (see [`StreamFile`]).
 struct Streams {
     thermo: StreamFile,
     xyz: Option<StreamFile>,
 }
 
 impl Streams {
-    fn create(dir: &Path, xyz: bool, limit: u64) -> Result<Self> {
+    fn create(dir: &Path, dim: usize, xyz: bool, limit: u64) -> Result<Self> {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("--out: cannot create {}", dir.display()))?;
         let open = |name: &str| {
@@ -44,8 +39,12 @@ impl Streams {
             StreamFile::create(&path, limit)
                 .with_context(|| format!("cannot write {}", path.display()))
         };
+        let columns = Thermo::columns(dim);
+        let units = dir.join(units_file_name("thermo"));
+        write_atomic(&units, csv::units_json(&columns).as_bytes())
+            .with_context(|| format!("cannot write {}", units.display()))?;
         let mut thermo = open("thermo.csv")?;
-        let header = format!("{}\n", Thermo::CSV_HEADER);
+        let header = header_line(columns.iter().map(|c| c.name.as_str()));
         append(&mut thermo, header.as_bytes())?;
         Ok(Self {
             thermo,
@@ -57,22 +56,8 @@ impl Streams {
         })
     }
 
-    fn thermo(&mut self, row: &Thermo) -> Result<()> {
-        append(&mut self.thermo, format!("{}\n", row.csv_row()).as_bytes())
-    }
-
-    fn frame<P: PairPotential>(&mut self, md: &Md<P>) -> Result<()> {
-        if let Some(xyz) = &mut self.xyz {
-            let mut buf = Vec::new();
-            md.write_xyz_frame(&mut buf, "Ar")
-                .context("cannot format an XYZ frame")?;
-            append(xyz, &buf)?;
-        }
-        Ok(())
-    }
-
     /// The file that reached its limit, if one did.
-    fn full(&self) -> Option<&Path> {
+    fn full_file(&self) -> Option<&Path> {
         std::iter::once(&self.thermo)
             .chain(&self.xyz)
             .find(|f| f.is_full())
@@ -95,21 +80,69 @@ fn append(file: &mut StreamFile, bytes: &[u8]) -> Result<()> {
         .with_context(|| format!("cannot write {}", file.partial_path().display()))
 }
 
+/// What the run hands out: rows and frames to the files (with `--out`), steps to the bar.
+struct Observer {
+    files: Option<Streams>,
+    bar: ProgressBar,
+}
+
+impl<P: PairPotential> MdObserver<P> for Observer {
+    type Error = anyhow::Error;
+
+    fn thermo(&mut self, row: &Thermo) -> Result<()> {
+        if let Some(f) = &mut self.files {
+            let mut line = String::new();
+            push_row(&mut line, &row.values());
+            append(&mut f.thermo, line.as_bytes())?;
+        }
+        Ok(())
+    }
+
+    fn frame(&mut self, md: &Md<P>) -> Result<()> {
+        if let Some(xyz) = self.files.as_mut().and_then(|f| f.xyz.as_mut()) {
+            let mut buf = Vec::new();
+            md.write_xyz_frame(&mut buf, "Ar")
+                .context("cannot format an XYZ frame")?;
+            append(xyz, &buf)?;
+        }
+        Ok(())
+    }
+
+    fn step(&mut self, done: usize) {
+        self.bar.set_position(done as u64);
+    }
+
+    fn full(&self) -> bool {
+        self.files.as_ref().is_some_and(|f| f.full_file().is_some())
+    }
+}
+
+/// A progress bar on a terminal for a run of `steps` steps; hidden with `-q` or when stderr
+/// is not a terminal.
+fn progress(args: &MdArgs) -> ProgressBar {
+    if args.report.quiet || !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    ProgressBar::new(args.steps as u64).with_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} steps {per_sec} eta {eta}")
+            .expect("the template is valid"),
+    )
+}
+
 /// Runs `mechkit md`; `cancel` (Ctrl-C) ends it after the current step.
 pub fn md(args: &MdArgs, cancel: &Cancel) -> Result<Outcome> {
-    if args.thermo_every == 0 || args.xyz_every == Some(0) {
-        bail!("--thermo-every and --xyz-every must be at least 1 (a step count)");
-    }
+    let plan = RunPlan::new(args.steps, args.thermo_every, args.xyz_every).map_err(with_flag)?;
     let (s, potential) = setup(args)?;
     match potential {
-        Potential::Lj(p) => run(args, s, p, cancel),
-        Potential::Soft(p) => run(args, s, p, cancel),
-        Potential::Spring(p) => run(args, s, p, cancel),
+        Potential::Lj(p) => run(args, &plan, s, p, cancel),
+        Potential::Soft(p) => run(args, &plan, s, p, cancel),
+        Potential::Spring(p) => run(args, &plan, s, p, cancel),
     }
 }
 
 fn run<P: PairPotential>(
     args: &MdArgs,
+    plan: &RunPlan,
     s: Setup,
     potential: P,
     cancel: &Cancel,
@@ -121,141 +154,75 @@ fn run<P: PairPotential>(
         threads: args.threads,
     };
     let cutoff = potential.cutoff();
-    let mut md = Md::new(s.sim_box, potential, s.x, s.v, config)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", flag(&e)))?;
-    let n = md.len() as f64;
+    let dim = s.sim_box.dim();
+    let mut md = Md::new(s.sim_box, potential, s.x, s.v, config).map_err(with_flag)?;
     let limit = match &args.max_output {
         Some(size) => parse_size(size).map_err(|e| anyhow!("--max-output: {e}"))?,
         None => DEFAULT_MAX_OUTPUT,
     };
-    let mut files = match &args.out {
-        Some(dir) => Some(Streams::create(dir, args.xyz_every.is_some(), limit)?),
+    let files = match &args.out {
+        Some(dir) => Some(Streams::create(dir, dim, args.xyz_every.is_some(), limit)?),
         None => None,
     };
-    let mut rows = vec![md.thermo()];
-    if let Some(f) = &mut files {
-        f.thermo(&rows[0])?;
-        f.frame(&md)?;
-    }
-    let start = Instant::now();
-    let mut failure = None;
-    let mut interrupted = false;
-    let mut full = None;
-    for step in 1..=args.steps {
-        if cancel.is_cancelled() {
-            // Ctrl-C: the thermo row of the state reached, then the outputs as usual
-            interrupted = true;
-            break;
-        }
-        if let Some(f) = &files
-            && let Some(path) = f.full()
-        {
-            full = Some(output_limit_message(
-                path,
-                limit,
-                &format!("step {}", md.steps()),
-                LIMIT_HINT,
-            ));
-            break;
-        }
-        if let Err(e) = md.run(1) {
-            failure = Some(e);
-            break;
-        }
-        if step % args.thermo_every == 0 || step == args.steps {
-            rows.push(md.thermo());
-            if let Some(f) = &mut files {
-                f.thermo(rows.last().expect("a row was pushed"))?;
-            }
-        }
-        if let Some(f) = &mut files
-            && args.xyz_every.is_some_and(|k| step % k == 0)
-        {
-            f.frame(&md)?;
-        }
-    }
-    if full.is_none()
-        && let Some(path) = files.as_ref().and_then(Streams::full)
-    {
-        full = Some(output_limit_message(
-            path,
-            limit,
-            &format!("step {}", md.steps()),
-            LIMIT_HINT,
-        ));
-    }
-    if (interrupted || full.is_some() || failure.is_some())
-        && rows.last().is_none_or(|r| r.step != md.steps())
-    {
-        rows.push(md.thermo());
-        if let Some(f) = &mut files {
-            f.thermo(rows.last().expect("a row was pushed"))?;
-        }
-    }
-    let seconds = start.elapsed().as_secs_f64();
-    let rate = n * md.steps() as f64 / seconds.max(1e-12);
-    if let (Some(f), Some(dir)) = (files, &args.out) {
+    let mut observer = Observer {
+        files,
+        bar: progress(args),
+    };
+    let result = md.run_observed(plan, cancel, &mut observer);
+    observer.bar.finish_and_clear();
+    let run = result?;
+    let full = observer
+        .files
+        .as_ref()
+        .and_then(Streams::full_file)
+        .map(|path| output_limit_message(path, limit, &format!("step {}", md.steps()), LIMIT_HINT));
+    if let (Some(f), Some(dir)) = (observer.files, &args.out) {
         f.finish()?;
-        let mut rdf = String::from("r,g\n");
-        for (r, g) in md.radial_distribution(100, cutoff + args.skin) {
-            let _ = writeln!(rdf, "{r},{g}");
-        }
-        let path = dir.join("rdf.csv");
-        write_atomic(&path, rdf.as_bytes())
-            .with_context(|| format!("cannot write {}", path.display()))?;
+        md.rdf_table(RDF_BINS, cutoff + args.skin)
+            .write(dir, "rdf")
+            .with_context(|| format!("cannot write {}", dir.join("rdf.csv").display()))?;
     }
-    let last = md.thermo();
-    if args.json {
-        let body = json!({
-            "atoms": md.len(), "start": s.origin, "potential": args.potential,
-            "steps": md.steps(),
-            "threads": args.threads, "seconds": seconds, "atom_steps_per_second": rate,
-            "list_builds": md.rebuilds(),
-            "energy_change_per_atom": (last.total - rows[0].total) / n,
-            "msd": md.mean_square_displacement(),
-            "thermo": rows.iter().map(|t| thermo_json(t, n)).collect::<Vec<_>>(),
-        });
-        println!("{}", serde_json::to_string_pretty(&body)?);
-    } else {
-        println!(
-            "{} atoms ({}), {} potential; per-atom energies",
-            md.len(),
-            s.origin,
-            args.potential
-        );
-        println!("  Step         Temp       E_pair       TotEng        Press");
-        for t in &rows {
-            println!(
-                "{:>6} {:>12.7} {:>12.7} {:>12.7} {:>12.7}",
-                t.step,
-                t.temperature,
-                t.potential / n,
-                t.total / n,
-                t.pressure
+    let report = md.report(&run, &s.origin, &args.potential);
+    super::report(args.report, &report, || text(&report))?;
+    match &report.stop {
+        MdStop::Diverged(e) => {
+            eprintln!("error: {e}");
+            Ok(Outcome::ComputationFailed)
+        }
+        MdStop::Full => {
+            let message = full.unwrap_or_else(|| "an output reached its size limit".into());
+            eprintln!("error: {message}");
+            Ok(Outcome::ComputationFailed)
+        }
+        MdStop::Cancelled => {
+            eprintln!(
+                "interrupted after {} steps: the outputs hold the run up to there",
+                report.steps
             );
+            Ok(Outcome::Interrupted)
         }
-        println!(
-            "{} steps on {} thread(s) in {seconds:.3} s: {rate:.3e} atom-steps/s, {} list builds, msd {:.4}",
-            md.steps(),
-            args.threads,
-            md.rebuilds(),
-            md.mean_square_displacement()
+        MdStop::Completed => Ok(Outcome::Success),
+    }
+}
+
+/// The text report: the thermo rows as LAMMPS prints them, then the run's cost.
+fn text(r: &MdReport) -> String {
+    let mut out = format!(
+        "{} atoms ({}), {} potential; per-atom energies\n",
+        r.atoms, r.start, r.potential
+    );
+    out.push_str("  Step         Temp       E_pair       TotEng        Press\n");
+    for t in &r.thermo {
+        let _ = writeln!(
+            out,
+            "{:>6} {:>12.7} {:>12.7} {:>12.7} {:>12.7}",
+            t.step, t.temperature, t.potential_per_atom, t.total_per_atom, t.pressure
         );
     }
-    if let Some(e) = failure {
-        eprintln!("error: {e}");
-        return Ok(Outcome::ComputationFailed);
-    }
-    if let Some(message) = full {
-        eprintln!("error: {message}");
-        return Ok(Outcome::ComputationFailed);
-    }
-    if interrupted {
-        eprintln!(
-            "interrupted after {} steps: the outputs hold the run up to there",
-            md.steps()
-        );
-        return Ok(Outcome::Interrupted);
-    }
-    Ok(Outcome::Success)
+    let _ = writeln!(
+        out,
+        "{} steps on {} thread(s) in {:.3} s: {:.3e} atom-steps/s, {} list builds, msd {:.4}",
+        r.steps, r.threads, r.seconds, r.atom_steps_per_second, r.list_builds, r.msd
+    );
+    out
 }

@@ -3,7 +3,8 @@
 
 use anyhow::{Context, Result, anyhow, bail};
 use mechkit::md::{
-    AtomsFile, Lattice, LennardJones, LinearSpring, MdError, SimBox, SoftSphere, maxwell_boltzmann,
+    AtomsFile, Lattice, LennardJones, LinearSpring, MdError, MdInput, SimBox, SoftSphere,
+    maxwell_boltzmann,
 };
 
 use crate::args::MdArgs;
@@ -42,38 +43,41 @@ pub struct Setup {
     pub origin: String,
 }
 
-/// The flag behind a library error, to say where the input went wrong.
+/// The flag of an input of `mechkit md`.
+fn input_flag(input: MdInput) -> &'static str {
+    match input {
+        MdInput::Density => "--density",
+        MdInput::Temperature => "--temperature",
+        MdInput::TimeStep => "--dt",
+        MdInput::Skin => "--skin",
+        MdInput::Threads => "--threads",
+        MdInput::Cutoff => "--cutoff",
+        MdInput::Mass => "--mass",
+        MdInput::Epsilon => "--epsilon",
+        MdInput::Sigma => "--sigma",
+        MdInput::SpringConstant => "--k",
+        MdInput::RestLength => "--rest-length",
+        MdInput::BoxLength => "--box",
+        MdInput::ThermoEvery => "--thermo-every",
+        MdInput::FrameEvery => "--xyz-every",
+        _ => "--cells (or --positions)",
+    }
+}
+
+/// The flag behind a library error, to say where the input went wrong: from the input the
+/// error names ([`MdError::input`]).
 pub fn flag(e: &MdError) -> &'static str {
-    match e {
-        MdError::NotPositive { name, .. } => match *name {
-            "the density" => "--density",
-            "the temperature" => "--temperature",
-            "the time step dt" => "--dt",
-            "the skin" => "--skin",
-            "the number of threads" => "--threads",
-            "the cut-off" => "--cutoff",
-            "the mass" => "--mass",
-            "epsilon" => "--epsilon",
-            "sigma" => "--sigma",
-            "k" => "--k",
-            "the rest length" => "--rest-length",
-            "a box length" => "--box",
-            _ => "input",
-        },
-        MdError::NoCells { .. } => "--cells",
-        MdError::TooMany { what, .. } => match *what {
-            "the number of threads" => "--threads",
-            _ => "--cells (or --positions)",
-        },
-        MdError::TooFewParticles { .. } => "--cells (or --positions)",
-        MdError::BoxTooSmall { .. } => "--cells or --box (or --cutoff, --skin)",
-        _ => "input",
+    match (e, e.input()) {
+        (MdError::BoxTooSmall { .. }, _) => "--cells or --box (or --cutoff, --skin)",
+        (MdError::NoCells { .. }, _) => "--cells",
+        (_, Some(input)) => input_flag(input),
+        (_, None) => "input",
     }
 }
 
 /// The library error with the flag behind it.
 #[allow(clippy::needless_pass_by_value)] // the shape `map_err` wants
-fn with_flag(e: MdError) -> anyhow::Error {
+pub fn with_flag(e: MdError) -> anyhow::Error {
     anyhow!("{}: {e}", flag(&e))
 }
 
@@ -104,6 +108,11 @@ fn read_atoms(flag: &str, path: &std::path::Path) -> Result<AtomsFile> {
         }
         e => anyhow!("{flag}: {}: {e}", path.display()),
     })
+}
+
+/// `n` and the noun, singular for one: `1 length`, `2 lengths`.
+fn count(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
 }
 
 /// The starting state and the potential from the flags.
@@ -143,20 +152,12 @@ pub fn setup(args: &MdArgs) -> Result<(Setup, Potential)> {
             "--box: a periodic box needs its edge lengths: give --box L (every axis) or one \
              length per axis, e.g. --box 10,10,10; or --boundary open"
         ),
-        [] => std::array::from_fn(|a| {
-            let (lo, hi) = atoms
-                .vectors
-                .iter()
-                .fold((f64::MAX, f64::MIN), |(lo, hi), p| {
-                    (lo.min(p[a]), hi.max(p[a]))
-                });
-            hi - lo + 2.0 * potential.cutoff()
-        }),
+        [] => atoms.extent_with_margin(potential.cutoff()),
         [l] => [*l; 3],
         ls if ls.len() == dim => std::array::from_fn(|a| ls.get(a).copied().unwrap_or(0.0)),
         ls => bail!(
-            "--box: {} lengths for {dim}-D positions; give 1 or {dim}",
-            ls.len()
+            "--box: {} for {dim}-D positions; give 1 or {dim}",
+            count(ls.len(), "length", "lengths")
         ),
     };
     let sim_box = SimBox::new(dim, lengths, [periodic; 3]).map_err(with_flag)?;
@@ -165,11 +166,19 @@ pub fn setup(args: &MdArgs) -> Result<(Setup, Potential)> {
         let v = read_atoms("--velocities", vpath)?;
         if v.vectors.len() != n || v.dim != dim {
             bail!(
-                "--velocities: {} has {} {}-D velocities for {n} {dim}-D positions; give one \
-                 velocity per particle, in the order of --positions and with as many components",
+                "--velocities: {} has {} for {}; give one velocity per particle, in the order \
+                 of --positions and with as many components",
                 vpath.display(),
-                v.vectors.len(),
-                v.dim
+                count(
+                    v.vectors.len(),
+                    &format!("{}-D velocity", v.dim),
+                    &format!("{}-D velocities", v.dim)
+                ),
+                count(
+                    n,
+                    &format!("{dim}-D position"),
+                    &format!("{dim}-D positions")
+                ),
             );
         }
         v.vectors

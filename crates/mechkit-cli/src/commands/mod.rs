@@ -15,6 +15,7 @@ mod inertia;
 mod input;
 mod md;
 mod md_setup;
+mod outputs;
 mod potential;
 mod power;
 mod relative;

@@ -1,19 +1,47 @@
 //! `mechkit potential`: the force from a potential (or the potential from a force), the
-//! equilibria with their stability, turning points for an energy, and the energy diagram.
+//! equilibria with their stability, turning points for an energy, and the energy diagram
+//! (`mechkit::energy::analyse_potential`); in 2-D and 3-D the force `F = -∇U`
+//! (`mechkit::energy::potential_field`).
 
 use std::fmt::Write as _;
-use std::path::PathBuf;
+use std::path::Path;
 
 use anyhow::{Result, anyhow, bail};
-use mechkit::energy::{Diagram, ForceField, Motion, Origin, Potential, Stability};
-use mechkit::expr::units::Dimension;
-use mechkit::figure::{Band, LineStyle, Marker, MarkerShape, PlotData, Series};
-use serde_json::{Value, json};
+use mechkit::calculus::CalculusError;
+use mechkit::energy::{
+    AxisUnits, Bound, FieldForce, Given, Motion, Origin, PotentialAnalysis, PotentialQuestion,
+    Release, analyse_potential, potential_field,
+};
+use mechkit::expr::units::{Dimension, Quantity};
+use mechkit::inputs::Input;
 
 use super::input::{increasing_interval, params, quantity, show, split_top_level, value};
-use super::{Outcome, print};
+use super::outputs::{create_dir, write_plots, write_table};
+use super::{Outcome, note, report};
 use crate::args::PotentialArgs;
-use crate::plot::render;
+
+/// The flag of an input of `potential`.
+fn flag(input: Input) -> &'static str {
+    match input {
+        Input::Range => "--range",
+        Input::Energy => "--energy",
+        Input::Mass => "--mass",
+        Input::StartPosition => "--x0",
+        Input::StartSpeed => "--v0",
+        Input::At => "--at",
+        Input::Variable => "--var",
+        Input::Force => "--force",
+        Input::Params => "--set",
+        _ => "the potential",
+    }
+}
+
+fn check<T>(r: Result<T, CalculusError>) -> Result<T> {
+    r.map_err(|e| match e {
+        CalculusError::Input(e) => anyhow!("{}: {}", flag(e.input), e.message),
+        other => anyhow!("{other}"),
+    })
+}
 
 pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
     let p = params(args.set.as_deref())?;
@@ -24,244 +52,158 @@ pub fn potential(args: &PotentialArgs) -> Result<Outcome> {
         bail!("give the range to analyse, e.g. --range 0.8:3 or --range -1:2");
     };
     let (a, b) = increasing_interval(range, "--range", &p)?;
-    if !(a.is_finite() && b.is_finite()) {
-        bail!(
-            "--range {range}: a diagram samples its range, so both ends must be finite (for the speed far away use a large end, e.g. --range 0.01:1e9, or --at 1e15)"
-        );
-    }
-    let (a, b) = (a.min(b), a.max(b));
-    let x = args.var.as_str();
-    let pot = match (&args.potential, &args.force) {
-        (Some(u), None) => Potential::from_potential(u, x, &p),
-        (None, Some(f)) => Potential::from_force(f, x, &p, a),
+    let given = match (&args.potential, &args.force) {
+        (Some(u), None) => Given::Potential(u),
+        (None, Some(f)) => Given::Force(f),
         (Some(_), Some(_)) => bail!("give either a potential U or --force F, not both"),
         (None, None) => bail!(
             "give a potential, e.g. mechkit potential \"k*x^2/2\" --range -1:1 --set k=1, or a force with --force"
         ),
-    }
-    .map_err(|e| anyhow!("{e}"))?;
-    let samples = args.samples.max(10);
-    let motion = match (&args.mass, &args.x0, &args.v0) {
+    };
+    let release = match (&args.mass, &args.x0, &args.v0) {
         (None, None, None) => None,
         (Some(m), Some(x0), v0) => {
             if args.energy.is_some() {
                 bail!("--energy and --mass/--x0/--v0 both set the energy: give one of them");
             }
-            let m = quantity(m, "--mass", Dimension::MASS)?;
-            if m.is_nan() || m <= 0.0 {
-                bail!("--mass must be positive, not {m}");
-            }
-            let x0 = value(x0, "--x0", &p)?;
-            if !(a..=b).contains(&x0) {
-                bail!("--x0 {x0} is outside --range {a}:{b}");
-            }
-            let v0 = v0.as_deref().map_or(Ok(0.0), |v| value(v, "--v0", &p))?;
-            Some(pot.motion(m, x0, v0.abs(), a, b, samples))
+            Some(Release {
+                mass: quantity(m, "--mass", Dimension::MASS)?,
+                x0: value(x0, "--x0", &p)?,
+                v0: v0.as_deref().map_or(Ok(0.0), |v| value(v, "--v0", &p))?,
+            })
         }
         _ => bail!("the motion needs --mass and --x0 (and --v0, default 0)"),
     };
-    let energy = args
-        .energy
-        .as_deref()
-        .map(|e| value(e, "--energy", &p))
-        .transpose()?;
-    let diagram = match &motion {
-        Some(m) => m.diagram.clone(),
-        None => pot.diagram(a, b, energy, samples),
-    };
-    let at: Vec<f64> = match &args.at {
+    let at = match &args.at {
         Some(list) => split_top_level(list, ',')
             .into_iter()
             .map(|v| value(v, "--at", &p))
             .collect::<Result<_>>()?,
         None => Vec::new(),
     };
-    let plot_path = if args.no_plot {
-        None
-    } else {
-        let path = args
-            .plot
-            .clone()
-            .unwrap_or_else(|| PathBuf::from("out/energy_diagram.svg"));
-        if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-            std::fs::create_dir_all(dir)
-                .map_err(|e| anyhow!("cannot create {}: {e}", dir.display()))?;
-        }
-        let title = args.potential.as_deref().map_or_else(
-            || format!("F = {}", args.force.as_deref().unwrap_or_default()),
-            |u| format!("U = {u}"),
-        );
-        render(&figure(&diagram, x), &title, &path, args.dpi)?;
-        if let Some(m) = &motion {
-            let speed = speed_figure(m, x);
-            // next to the diagram, in its format
-            let ext = path.extension().map_or_else(
-                || "svg".into(),
-                |e| e.to_string_lossy().to_ascii_lowercase(),
-            );
-            let ext = if ext == "png" { "png" } else { "svg" };
-            let speed_path = path.with_file_name(format!("{}_speed.{ext}", stem(&path)));
-            render(&speed, &title, &speed_path, args.dpi)?;
-        }
-        Some(path)
+    let question = PotentialQuestion {
+        given,
+        var: &args.var,
+        range: (a, b),
+        params: &p,
+        energy: args
+            .energy
+            .as_deref()
+            .map(|e| value(e, "--energy", &p))
+            .transpose()?,
+        release,
+        at,
+        samples: args.samples,
+        units: axis_units(args, given),
     };
-    let points: Vec<Value> = at
-        .iter()
-        .map(|&v| {
-            json!({
-                "x": v,
-                "potential": finite(pot.potential(v)),
-                "force": finite(pot.force(v)),
-                "speed": motion.as_ref().map(|m| finite(m.speed_at(&pot, v))),
-            })
-        })
-        .collect();
-    if args.json {
-        // the positions of each kind, for a reader that wants the stable ones only
-        let by_stability: serde_json::Map<String, serde_json::Value> =
-            ["stable", "unstable", "neutral"]
-                .into_iter()
-                .map(|kind| {
-                    let xs: Vec<f64> = diagram
-                        .equilibria
-                        .iter()
-                        .filter(|e| e.stability.name() == kind)
-                        .map(|e| e.x)
-                        .collect();
-                    (kind.to_string(), json!(xs))
-                })
-                .collect();
-        let j = json!({
-            "var": x,
-            "range": [a, b],
-            "parameters": p.iter().map(|(k, v)| (k.clone(), json!(v))).collect::<serde_json::Map<_, _>>(),
-            "potential": pot.potential_formula().map(ToString::to_string),
-            "potential_origin": origin_name(pot.origin()),
-            "force": pot.force_formula().to_string(),
-            "curvature": pot.curvature_formula().to_string(),
-            "equilibria": diagram.equilibria.iter().map(|e| json!({
-                "x": e.x, "potential": e.potential, "curvature": e.curvature,
-                "stability": e.stability.name(), "barrier": e.barrier,
-            })).collect::<Vec<_>>(),
-            "by_stability": by_stability,
-            "singularities": diagram.singularities,
-            "energy": diagram.energy.as_ref().map(|c| json!({
-                "value": c.energy,
-                "turning_points": c.turning_points,
-                "regions": c.regions.iter().map(|r| json!({"from": r.from, "to": r.to, "allowed": r.allowed})).collect::<Vec<_>>(),
-            })),
-            "motion": motion.as_ref().map(|m| json!({
-                "mass": m.mass, "x0": m.x0, "v0": m.v0, "energy": m.energy,
-                "left_turn": m.left_turn, "right_turn": m.right_turn,
-            })),
-            "at": points,
-            "plot": plot_path.as_ref().map(|p| p.display().to_string()),
-        });
-        print(&format!("{j:#}\n"))?;
-    } else {
-        print(&text(
-            &pot,
-            &diagram,
-            motion.as_ref(),
-            &at,
-            x,
-            (a, b),
-            plot_path.as_ref(),
-        ))?;
+    let mut analysis = check(analyse_potential(&question))?;
+    if let Some(dir) = &args.out {
+        write_files(args, dir, &mut analysis)?;
     }
+    report(args.report, &analysis, || text(&analysis))?;
     Ok(Outcome::Success)
+}
+
+/// The units of the axes: what the range and the `--set` values were given in (a bare number
+/// has no unit we know).
+fn axis_units(args: &PotentialArgs, given: Given<'_>) -> AxisUnits {
+    let dim = |text: &str| {
+        Quantity::parse(text.trim())
+            .ok()
+            .map(|q| q.dim)
+            .filter(|d| !d.is_none())
+    };
+    let range_dim = args
+        .range
+        .as_deref()
+        .and_then(|r| split_top_level(r, ':').into_iter().find_map(dim));
+    let set: Vec<(String, Option<Dimension>)> = args
+        .set
+        .as_deref()
+        .map(|s| {
+            split_top_level(s, ',')
+                .into_iter()
+                .filter_map(|item| item.split_once('='))
+                .map(|(k, v)| (k.trim().to_string(), dim(v)))
+                .collect()
+        })
+        .unwrap_or_default();
+    let dims = |name: &str| {
+        if name == args.var {
+            return range_dim;
+        }
+        set.iter().find(|(k, _)| k == name).and_then(|(_, d)| *d)
+    };
+    AxisUnits::infer(given, &args.var, &dims)
+}
+
+/// With `-o DIR`: the table, the diagram `U_x`, and the speed `v_x` with a released body.
+fn write_files(args: &PotentialArgs, dir: &Path, a: &mut PotentialAnalysis) -> Result<()> {
+    create_dir(dir)?;
+    let csv = write_table(dir, "potential", &a.table())?;
+    note(args.report, &format!("wrote {csv}"));
+    a.csv = Some(csv);
+    if args.no_plots {
+        return Ok(());
+    }
+    let title = match (&args.potential, &args.force) {
+        (Some(u), _) => format!("U = {u}"),
+        (None, f) => format!("F = {}", f.as_deref().unwrap_or_default()),
+    };
+    let plots: Vec<_> = std::iter::once(a.diagram_plot())
+        .chain(a.speed_plot())
+        .collect();
+    let mut paths = write_plots(dir, &plots, &title, args.plots)?.into_iter();
+    a.plot = paths.next();
+    a.speed_plot = paths.next();
+    for path in a.plot.iter().chain(&a.speed_plot) {
+        note(args.report, &format!("wrote {path}"));
+    }
+    Ok(())
 }
 
 /// `F = -∇U` of a potential of 2 or 3 coordinates.
 fn gradient(args: &PotentialArgs, p: &[(String, f64)]) -> Result<Outcome> {
     let vars: Vec<&str> = args.var.split(',').map(str::trim).collect();
-    let expected = &["x", "y", "z"][..vars.len().min(3)];
-    if vars.len() > 3 || vars != expected {
-        bail!(
-            "--var for a potential field is x,y or x,y,z, not `{}`",
-            args.var
-        );
-    }
     let Some(u) = &args.potential else {
         bail!("a field from --force has no single formula to take the gradient of: give U(x, y)");
     };
-    let field = ForceField::from_potential(u, vars.len(), p).map_err(|e| anyhow!("{e}"))?;
-    let components: Vec<String> = field.formulas().iter().map(ToString::to_string).collect();
     let points: Vec<Vec<f64>> = match &args.at {
         Some(list) => split_top_level(list, ';')
             .into_iter()
             .map(|pt| {
-                let c = split_top_level(pt, ',')
+                split_top_level(pt, ',')
                     .into_iter()
                     .map(|v| value(v, "--at", p))
-                    .collect::<Result<Vec<f64>>>()?;
-                if c.len() == vars.len() {
-                    Ok(c)
-                } else {
-                    bail!("--at `{pt}`: a point needs {} coordinates", vars.len())
-                }
+                    .collect::<Result<Vec<f64>>>()
             })
             .collect::<Result<_>>()?,
         None => Vec::new(),
     };
-    let forces: Vec<Vec<f64>> = points
-        .iter()
-        .map(|r| {
-            let mut f = vec![0.0; vars.len()];
-            field.at(r, &mut f);
-            // -0.0 prints as 0
-            f.iter().map(|v| v + 0.0).collect()
-        })
-        .collect();
-    if args.json {
-        let j = json!({
-            "potential": u,
-            "vars": vars,
-            "force": components,
-            "at": points.iter().zip(&forces).map(|(r, f)| json!({"r": r, "force": f})).collect::<Vec<_>>(),
-        });
-        print(&format!("{j:#}\n"))?;
-    } else {
-        let mut out = format!("U = {u}\nF = -∇U = ({})\n", components.join(", "));
-        for (r, f) in points.iter().zip(&forces) {
-            let _ = writeln!(out, "at ({}): F = ({})", join(r), join(f));
-        }
-        print(&out)?;
-    }
+    let field = check(potential_field(u, &vars, p, &points))?;
+    report(args.report, &field, || gradient_text(&field))?;
     Ok(Outcome::Success)
 }
 
-fn finite(v: f64) -> Option<f64> {
-    v.is_finite().then_some(v)
-}
-
-fn stem(path: &std::path::Path) -> String {
-    path.file_stem().map_or_else(
-        || "energy_diagram".into(),
-        |s| s.to_string_lossy().into_owned(),
-    )
-}
-
-fn origin_name(o: Origin) -> &'static str {
-    match o {
-        Origin::Given => "given",
-        Origin::Symbolic => "symbolic integral of the force",
-        _ => "numeric integral of the force (U = 0 at the range start)",
+fn gradient_text(f: &FieldForce) -> String {
+    let components: Vec<String> = f.force.iter().map(ToString::to_string).collect();
+    let mut out = format!(
+        "U = {}\nF = -∇U = ({})\n",
+        f.potential,
+        components.join(", ")
+    );
+    for point in &f.at {
+        let _ = writeln!(out, "at ({}): F = ({})", join(&point.r), join(&point.force));
     }
+    out
 }
 
-fn text(
-    pot: &Potential,
-    d: &Diagram,
-    motion: Option<&Motion>,
-    at: &[f64],
-    x: &str,
-    (a, b): (f64, f64),
-    plot: Option<&PathBuf>,
-) -> String {
+fn text(a: &PotentialAnalysis) -> String {
+    let x = &a.var;
+    let (lo, hi) = a.range;
     let mut out = String::new();
-    match pot.potential_formula() {
-        Some(u) if pot.origin() == Origin::Given => {
+    match &a.potential {
+        Some(u) if a.potential_origin == Origin::Given => {
             let _ = writeln!(out, "U({x}) = {u}");
         }
         Some(u) => {
@@ -270,17 +212,17 @@ fn text(
         None => {
             let _ = writeln!(
                 out,
-                "U({x}) = -∫F d{x}: no closed form, computed by quadrature with U({a}) = 0"
+                "U({x}) = -∫F d{x}: no closed form, computed by quadrature with U({lo}) = 0"
             );
         }
     }
-    let _ = writeln!(out, "F({x}) = {}", pot.force_formula());
-    let _ = writeln!(out, "U''({x}) = {}", pot.curvature_formula());
-    if d.equilibria.is_empty() {
-        let _ = writeln!(out, "no equilibrium (F = 0) for {x} in [{a}, {b}]");
+    let _ = writeln!(out, "F({x}) = {}", a.force);
+    let _ = writeln!(out, "U''({x}) = {}", a.curvature);
+    if a.equilibria.is_empty() {
+        let _ = writeln!(out, "no equilibrium (F = 0) for {x} in [{lo}, {hi}]");
     } else {
-        let _ = writeln!(out, "equilibria in [{a}, {b}]:");
-        for e in &d.equilibria {
+        let _ = writeln!(out, "equilibria in [{lo}, {hi}]:");
+        for e in &a.equilibria {
             let _ = write!(
                 out,
                 "  {x} = {:<22} {:<9} U = {:<12.6} U'' = {:.6}",
@@ -295,16 +237,16 @@ fn text(
             out.push('\n');
         }
     }
-    for s in &d.singularities {
+    for s in &a.singularities {
         let _ = writeln!(
             out,
             "singular near {x} = {s}: U or F is infinite or undefined there"
         );
     }
-    if let Some(c) = &d.energy {
+    if let Some(c) = &a.energy {
         let _ = writeln!(out, "with E = {}:", c.energy);
         if c.turning_points.is_empty() {
-            let _ = writeln!(out, "  no turning point in the range");
+            let _ = writeln!(out, "  no turning point in [{lo}, {hi}]");
         } else {
             let list: Vec<String> = c.turning_points.iter().map(|t| format!("{t}")).collect();
             let _ = writeln!(out, "  turning points {x} = {}", list.join(", "));
@@ -319,147 +261,77 @@ fn text(
             );
         }
     }
-    if let Some(m) = motion {
-        let side = |t: Option<f64>, edge: &str| {
-            t.map_or_else(
-                || format!("none inside the range (reaches {edge})"),
-                |v| v.to_string(),
-            )
-        };
-        let _ = writeln!(
-            out,
-            "released at {x} = {} with speed {} (m = {}): E = {}\n  turns at {} (below) and {} (above)",
-            m.x0,
-            m.v0,
-            m.mass,
-            m.energy,
-            side(m.left_turn, "the range start or a singular point"),
-            side(m.right_turn, "the range end or a singular point"),
-        );
+    if let Some(m) = &a.motion {
+        out.push_str(&motion_text(a, m));
     }
-    for &v in at {
+    for v in &a.at {
         let _ = write!(
             out,
             "at {x} = {}: U = {}, F = {}",
-            show(v),
-            show(pot.potential(v)),
-            show(pot.force(v))
+            show(v.x),
+            v.potential.map_or_else(|| "undefined".into(), show),
+            v.force.map_or_else(|| "undefined".into(), show),
         );
-        if let Some(m) = motion {
-            let _ = write!(out, ", v = {}", show(m.speed_at(pot, v)));
+        if a.motion.is_some() {
+            let speed = v
+                .speed
+                .map_or_else(|| "none (U > E: it cannot get there)".into(), show);
+            let _ = write!(out, ", v = {speed}");
         }
         out.push('\n');
-    }
-    if let Some(p) = plot {
-        let _ = writeln!(out, "energy diagram: {}", p.display());
     }
     out
 }
 
-/// U(x) with the energy line, equilibria, turning points, forbidden regions and singular
-/// points, on a vertical range that shows the wells rather than a divergence at the edge.
-fn figure(d: &Diagram, x: &str) -> PlotData {
-    // a NaN at each singular point breaks the curve there
-    let mut curve: Vec<(f64, f64)> =
-        d.x.iter()
-            .copied()
-            .zip(d.potential.iter().copied())
-            .collect();
-    for &s in &d.singularities {
-        let k = curve.partition_point(|p| p.0 < s);
-        curve.insert(k, (s, f64::NAN));
-    }
-    let mut plot = PlotData::new("energy diagram", "energy_diagram", x.to_string(), "U [J]")
-        .with_series(Series::line(format!("U({x})"), curve));
-    let (lo, hi) = (d.x[0], d.x[d.x.len() - 1]);
-    for e in &d.equilibria {
-        let (shape, label) = match e.stability {
-            Stability::Stable => (MarkerShape::Filled, "stable equilibrium"),
-            Stability::Unstable => (MarkerShape::Open, "unstable equilibrium"),
-            _ => (MarkerShape::Cross, "neutral equilibrium"),
-        };
-        plot.markers.push(Marker {
-            at: (e.x, e.potential),
-            label: label.into(),
-            shape,
-        });
-    }
-    let mut core: Vec<f64> = d.equilibria.iter().map(|e| e.potential).collect();
-    if let Some(c) = &d.energy {
-        plot.series.push(
-            Series::line(
-                format!("E = {:.6}", c.energy),
-                vec![(lo, c.energy), (hi, c.energy)],
+/// Where the released body goes, in words: its turning points, or where it leaves the range
+/// or meets a singular point, and in which direction.
+fn motion_text(a: &PotentialAnalysis, m: &Motion) -> String {
+    let x = &a.var;
+    let mut out = format!(
+        "released at {x} = {} with velocity {} (m = {}): E = {}\n",
+        m.x0, m.v0, m.mass, m.energy
+    );
+    let end = |b: Bound, side: &str| match b {
+        Bound::TurningPoint { x: t } => format!("turns at {x} = {t} ({side})"),
+        Bound::SingularPoint { x: s } => {
+            format!("reaches the singular point at {x} = {s} ({side}), where U or F is infinite")
+        }
+        _ => format!("leaves the range at {x} = {} moving {side}", b.x()),
+    };
+    let turns = |b: Bound| matches!(b, Bound::TurningPoint { .. });
+    let sentence = match (turns(m.left), turns(m.right)) {
+        (true, true) => format!(
+            "  turns at {x} = {} (left) and {x} = {} (right): it oscillates between them\n",
+            m.left.x(),
+            m.right.x()
+        ),
+        (true, false) => format!(
+            "  {}, then {}\n",
+            end(m.left, "left"),
+            end(m.right, "right")
+        ),
+        (false, true) => format!(
+            "  {}, then {}\n",
+            end(m.right, "right"),
+            end(m.left, "left")
+        ),
+        (false, false) => {
+            // no turning point: the body keeps the direction it starts with
+            let right = m.moves_right_first(&a.model);
+            let (lo, hi) = (m.left.x(), m.right.x());
+            let (bound, side) = if right {
+                (m.right, "right")
+            } else {
+                (m.left, "left")
+            };
+            format!(
+                "  no turning point in [{lo}, {hi}]: the body {}\n",
+                end(bound, side)
             )
-            .styled(LineStyle::Dashed),
-        );
-        for &t in &c.turning_points {
-            plot.markers.push(Marker {
-                at: (t, c.energy),
-                label: "turning point".into(),
-                shape: MarkerShape::Triangle,
-            });
         }
-        for r in c.regions.iter().filter(|r| !r.allowed) {
-            plot.bands.push(Band {
-                from: r.from,
-                to: r.to,
-                label: "forbidden (U > E)".into(),
-            });
-        }
-        core.push(c.energy);
-    }
-    plot.y_limits = y_limits(&d.potential, &core);
-    if let Some((y0, _)) = plot.y_limits {
-        for &s in &d.singularities {
-            plot.markers.push(Marker {
-                at: (s, y0),
-                label: "singular point".into(),
-                shape: MarkerShape::Cross,
-            });
-        }
-    }
-    plot
-}
-
-/// The vertical range: the equilibria and the energy line, and the bulk of the curve (its 5th
-/// to 95th percentile), so that a curve running off to infinity (a 1/r^12 wall, a pole) is cut
-/// instead of flattening the wells.
-fn y_limits(u: &[f64], core: &[f64]) -> Option<(f64, f64)> {
-    let mut finite: Vec<f64> = u.iter().copied().filter(|v| v.is_finite()).collect();
-    if finite.is_empty() {
-        return None;
-    }
-    finite.sort_by(f64::total_cmp);
-    let pick = |q: f64| finite[((finite.len() - 1) as f64 * q).round() as usize];
-    let (umin, umax) = (finite[0], finite[finite.len() - 1]);
-    let lo = core.iter().copied().fold(pick(0.05), f64::min);
-    let hi = core.iter().copied().fold(pick(0.95), f64::max);
-    let span = (hi - lo)
-        .max(1e-12 * hi.abs().max(lo.abs()))
-        .max(f64::MIN_POSITIVE);
-    Some((
-        (lo - 0.15 * span).max(umin - 0.05 * span),
-        (hi + 0.15 * span).min(umax + 0.05 * span),
-    ))
-}
-
-fn speed_figure(m: &Motion, x: &str) -> PlotData {
-    PlotData::new(
-        format!("speed from the work-energy theorem, m = {}", m.mass),
-        "speed",
-        x.to_string(),
-        "v [m/s]",
-    )
-    .with_series(Series::line(
-        format!("v({x})"),
-        m.diagram
-            .x
-            .iter()
-            .copied()
-            .zip(m.speed.iter().copied())
-            .collect(),
-    ))
+    };
+    out.push_str(&sentence);
+    out
 }
 
 /// Coordinates for the terminal: `1, 2.5` (not the `Debug` form `[1.0, 2.5]`).

@@ -1,27 +1,30 @@
 //! `mechkit relative`: steering through a moving medium and the Galilean transformation of
-//! velocities, through `mechkit::relative`.
+//! velocities, through `mechkit::relative` (`steering_report`, `transform`).
 
 use std::fmt::Write as _;
 
 use anyhow::{Result, anyhow, bail};
-use mechkit::relative::{RelativeError, steer, velocity_in_a, velocity_in_b};
+use mechkit::relative::{
+    Frame, RelativeError, SpeedUnit, SteeringReport, VelocityReport, components, steering_report,
+    transform,
+};
 use mechkit::units::Dimension;
-use serde_json::{Value, json};
 
 use super::input::{output_unit, quantity, show, split_top_level};
-use super::{Outcome, print};
+use super::{Outcome, report};
 use crate::args::RelativeArgs;
 
 pub fn relative(args: &RelativeArgs) -> Result<Outcome> {
-    let (scale, unit) = output_unit(
+    let (size, name) = output_unit(
         args.unit.as_deref(),
         Dimension::VELOCITY,
         ("m/s", "a unit of speed", "--in km/h or --in knot"),
         false,
     )?;
-    let (body, text) = if args.speed.is_some() {
-        match steering(args, scale, &unit)? {
-            Ok(found) => found,
+    let unit = SpeedUnit { name, size };
+    if args.speed.is_some() {
+        match steering(args, &unit)? {
+            Ok(result) => report(args.report, &result, || steering_text(&result))?,
             Err(e) => {
                 // a well-posed question without an answer: the computation fails
                 eprintln!("error: {e}");
@@ -29,16 +32,12 @@ pub fn relative(args: &RelativeArgs) -> Result<Outcome> {
             }
         }
     } else if let Some(v) = &args.velocity {
-        transform(args, v, scale, &unit)?
+        let result = velocity(args, v, &unit)?;
+        report(args.report, &result, || velocity_text(&result))?;
     } else {
         bail!(
             "say what to compute: --speed with --current and --track (the heading through a wind or a current), or --velocity with --frame-velocity or --relative-to (a velocity in another frame)"
         );
-    };
-    if args.json {
-        print(&format!("{body:#}\n"))?;
-    } else {
-        print(&text)?;
     }
     Ok(Outcome::Success)
 }
@@ -69,13 +68,6 @@ fn direction(text: &str, flag: &str) -> Result<f64> {
     Ok(angle)
 }
 
-fn unit_vector(angle: f64) -> [f64; 2] {
-    // exact for the compass directions
-    let (s, c) = angle.sin_cos();
-    let clean = |x: f64| if x.abs() < 1e-15 { 0.0 } else { x };
-    [clean(c), clean(s)]
-}
-
 fn speed(text: &str, flag: &str) -> Result<f64> {
     let v = quantity(text, flag, Dimension::VELOCITY)?;
     if !v.is_finite() {
@@ -84,18 +76,11 @@ fn speed(text: &str, flag: &str) -> Result<f64> {
     Ok(v)
 }
 
-/// Bearing in degrees counter-clockwise from east, in [0, 360).
-fn angle_of(v: [f64; 2]) -> f64 {
-    let a = v[1].atan2(v[0]).to_degrees();
-    if a < 0.0 { a + 360.0 } else { a }
-}
-
 /// The steering answer, or why there is none (the outer error is bad input).
 fn steering(
     args: &RelativeArgs,
-    scale: f64,
-    unit: &str,
-) -> Result<Result<(Value, String), RelativeError>> {
+    unit: &SpeedUnit,
+) -> Result<Result<SteeringReport, RelativeError>> {
     let s = speed(args.speed.as_deref().unwrap_or_default(), "--speed")?;
     let c = speed(args.current.as_deref().unwrap_or_default(), "--current")?;
     let c_dir = match &args.current_direction {
@@ -103,39 +88,24 @@ fn steering(
         None => 0.0,
     };
     let track = direction(args.track.as_deref().unwrap_or_default(), "--track")?;
-    let current = unit_vector(c_dir).map(|x| x * c);
-    let st = match steer(s, current, unit_vector(track)) {
-        Ok(st) => st,
-        Err(e) => return Ok(Err(e)),
-    };
-    let heading_deg = angle_of(st.heading);
-    let upstream = st.angle_to_upstream.to_degrees();
-    let body = json!({
-        "unit": unit,
-        "speed": s / scale,
-        "current": current.map(|x| x / scale),
-        "heading": st.heading,
-        "heading_deg": heading_deg,
-        "correction_deg": st.correction.to_degrees(),
-        "angle_to_upstream_deg": if upstream.is_finite() { json!(upstream) } else { Value::Null },
-        "ground_velocity": st.ground_velocity.map(|x| x / scale),
-        "ground_speed": st.ground_speed / scale,
-        "current_along_track": st.along / scale,
-        "current_across_track": st.across / scale,
-    });
+    Ok(steering_report(s, c, c_dir, track, unit))
+}
+
+fn steering_text(r: &SteeringReport) -> String {
+    let unit = &r.unit;
     let mut text = String::new();
     let _ = writeln!(
         text,
         "heading {} deg from east ({} deg {} of the track)",
-        show(round(heading_deg)),
-        show(round(st.correction.to_degrees().abs())),
-        if st.correction >= 0.0 {
+        show(round(r.heading_deg)),
+        show(round(r.correction_deg.abs())),
+        if r.correction_deg >= 0.0 {
             "left"
         } else {
             "right"
         }
     );
-    if upstream.is_finite() {
+    if let Some(upstream) = r.angle_to_upstream_deg {
         let _ = writeln!(
             text,
             "  angle between the heading and upstream: {} deg",
@@ -145,11 +115,11 @@ fn steering(
     let _ = writeln!(
         text,
         "ground speed {} {unit} along the track (current: {} {unit} along, {} {unit} across)",
-        show(round(st.ground_speed / scale)),
-        show(round(st.along / scale)),
-        show(round(st.across / scale))
+        show(round(r.ground_speed)),
+        show(round(r.current_along_track)),
+        show(round(r.current_across_track))
     );
-    Ok(Ok((body, text)))
+    text
 }
 
 fn round(x: f64) -> f64 {
@@ -178,58 +148,44 @@ fn vector(text: &str, flag: &str) -> Result<Vec<f64>> {
         .collect()
 }
 
-fn transform(args: &RelativeArgs, v_text: &str, scale: f64, unit: &str) -> Result<(Value, String)> {
+fn velocity(args: &RelativeArgs, v_text: &str, unit: &SpeedUnit) -> Result<VelocityReport> {
     let v = vector(v_text, "--velocity")?;
-    let (u_text, flag, forward) = match (&args.frame_velocity, &args.relative_to) {
-        (Some(u), _) => (u, "--frame-velocity", true),
-        (None, Some(u)) => (u, "--relative-to", false),
+    let (u_text, flag, frame) = match (&args.frame_velocity, &args.relative_to) {
+        (Some(u), _) => (u, "--frame-velocity", Frame::Ground),
+        (None, Some(u)) => (u, "--relative-to", Frame::Observer),
         (None, None) => bail!(
             "--velocity needs --frame-velocity (it was measured in a moving frame: the result is over the ground) or --relative-to (an observer's velocity: the result is as the observer sees it)"
         ),
     };
     let u = vector(u_text, flag)?;
-    if u.len() != v.len() {
-        bail!(
-            "--velocity has {} components and {flag} {}: give both in the same dimensions",
-            v.len(),
-            u.len()
-        );
-    }
-    let mut a = [0.0; 3];
-    let mut b = [0.0; 3];
-    a[..v.len()].copy_from_slice(&v);
-    b[..u.len()].copy_from_slice(&u);
-    let r = if forward {
-        velocity_in_b(a, b)
-    } else {
-        velocity_in_a(a, b)
-    };
-    let r = &r[..v.len()];
-    let magnitude = r.iter().map(|x| x * x).sum::<f64>().sqrt();
-    let scaled: Vec<f64> = r.iter().map(|x| x / scale).collect();
-    let mut body = json!({
-        "unit": unit,
-        "velocity": scaled,
-        "speed": magnitude / scale,
-        "frame": if forward { "ground" } else { "observer" },
-    });
-    let words: Vec<String> = scaled.iter().map(|&x| show(round(x))).collect();
+    transform(&v, &u, frame, unit).map_err(|e| match e {
+        RelativeError::Components { velocity, frame } => anyhow!(
+            "--velocity has {} and {flag} {}: give both in the same dimensions",
+            components(velocity),
+            components(frame)
+        ),
+        e => anyhow!("{flag}: {e}"),
+    })
+}
+
+fn velocity_text(r: &VelocityReport) -> String {
+    let unit = &r.unit;
+    let ground = r.frame == "ground";
+    let words: Vec<String> = r.velocity.iter().map(|&x| show(round(x))).collect();
     let mut text = format!(
         "velocity {} ({}): ({}) {unit}, speed {} {unit}",
-        if forward {
+        if ground {
             "over the ground"
         } else {
             "relative to the observer"
         },
-        if forward { "v + u" } else { "v − u" },
+        if ground { "v + u" } else { "v − u" },
         words.join(", "),
-        show(round(magnitude / scale))
+        show(round(r.speed))
     );
-    if r.len() >= 2 {
-        let angle = angle_of([r[0], r[1]]);
-        body["angle_deg"] = json!(angle);
+    if let Some(angle) = r.angle_deg {
         let _ = write!(text, ", direction {} deg from +x", show(round(angle)));
     }
     text.push('\n');
-    Ok((body, text))
+    text
 }

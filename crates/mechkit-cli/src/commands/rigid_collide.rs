@@ -1,19 +1,19 @@
 //! `mechkit rigid-collide`: a hinged body (a rod, a body file, or a given moment of inertia)
-//! struck by a block, with restitution; the release from an angle gives ω₀ by energy
-//! conservation.
+//! struck by a block, with restitution, through `mechkit::rigid::impact::hinged_report`; the
+//! release from an angle gives ω₀ by energy conservation (`PivotedBody::released`).
 
 use std::fmt::Write as _;
 
 use anyhow::{Result, anyhow, bail};
 use mechkit::collisions::Restitution;
 use mechkit::expr::units::Dimension;
+use mechkit::rigid::Input;
 use mechkit::rigid::impact::{
-    Contact, HingedImpact, ImpactError, Particle, PivotedBody, hinged_impact, release_omega,
+    Contact, HingedReport, ImpactError, Particle, PivotedBody, hinged_report,
 };
-use serde_json::{Value, json};
 
 use super::input::{quantity, show, split_top_level};
-use super::{Outcome, print};
+use super::{Outcome, report};
 use crate::args::RigidCollideArgs;
 
 /// "vx" or "vx, vy" (or "x, y") with units of `dim`.
@@ -39,21 +39,32 @@ pub(super) fn restitution(text: &str) -> Result<f64> {
         .map_err(|e| anyhow!("--restitution: {e}"))
 }
 
-fn flag_of(e: &ImpactError) -> &'static str {
-    match e {
-        ImpactError::ZeroInertia { .. } | ImpactError::ParallelAxis { .. } => "--inertia",
-        ImpactError::Normal { .. } => "--normal",
-        ImpactError::Separating { .. } => "--block-velocity",
-        ImpactError::Value { what, .. } if what.contains("particle") => "--block-mass",
-        ImpactError::Value { what, .. } if what.contains("length") => "--length",
-        ImpactError::Value { what, .. } if what.contains("pivot") => "--pivot-at",
+/// The flag of an input of `mechkit rigid-collide`.
+pub(super) fn flag(input: Option<Input>, args: &RigidCollideArgs) -> &'static str {
+    match input {
+        Some(Input::Inertia) => "--inertia",
+        Some(Input::Normal) => "--normal",
+        Some(Input::BlockMass) => "--block-mass",
+        Some(Input::BlockVelocity) | None => "--block-velocity",
+        Some(Input::Length) => "--length",
+        Some(Input::Pivot) if args.rod => "--pivot-at",
+        Some(Input::Pivot) => "--pivot",
+        Some(Input::CentreOfMass) => "--cm-distance",
+        Some(Input::ReleaseAngle) => "--release-angle",
+        Some(Input::Gravity) => "--g",
+        Some(Input::AngularVelocity) => "--omega",
+        Some(Input::ContactPoint) => "--hit-at",
+        Some(Input::Restitution) => "--restitution",
+        Some(Input::Tilt) => "--tilt",
+        Some(Input::Velocity) => "--velocity",
         _ => "--mass",
     }
 }
 
-/// The hinged body (at rest) and the default contact point (the lower end of a rod).
+/// The hinged body (at rest), the default contact point (the lower end of a rod), and the
+/// body in words.
 fn hinged(args: &RigidCollideArgs) -> Result<(PivotedBody, Option<[f64; 2]>, String)> {
-    let err = |e: ImpactError| anyhow!("{}: {e}", flag_of(&e));
+    let err = |e: ImpactError| anyhow!("{}: {e}", flag(e.input(), args));
     let mass = || -> Result<f64> {
         let m = args
             .mass
@@ -72,8 +83,7 @@ fn hinged(args: &RigidCollideArgs) -> Result<(PivotedBody, Option<[f64; 2]>, Str
             "centre" | "center" | "middle" => 0.5 * l,
             other => quantity(other, "--pivot-at", Dimension::LENGTH)?,
         };
-        let rod = PivotedBody::rod(mass()?, l, 0.5 * l - from_top, 0.0).map_err(err)?;
-        let lower_end = [0.0, -(l - from_top)];
+        let (rod, lower_end) = PivotedBody::hinged_rod(mass()?, l, from_top).map_err(err)?;
         let place = if from_top == 0.0 {
             "at its top end".to_string()
         } else {
@@ -126,24 +136,25 @@ pub fn rigid_collide(args: &RigidCollideArgs) -> Result<Outcome> {
     if args.landing {
         return super::rigid_landing::landing(args);
     }
+    let err = |e: ImpactError| anyhow!("{}: {e}", flag(e.input(), args));
     let (body, default_hit, what) = hinged(args)?;
-    let g = quantity(&args.g, "--g", Dimension::ACCELERATION)?;
-    let (omega, release) = match (&args.omega, &args.release_angle) {
-        (Some(w), _) => (quantity(w, "--omega", Dimension::FREQUENCY)?, None),
+    let (body, release) = match (&args.omega, &args.release_angle) {
+        (Some(w), _) => (
+            PivotedBody {
+                omega: quantity(w, "--omega", Dimension::FREQUENCY)?,
+                ..body
+            },
+            None,
+        ),
         (None, Some(a)) => {
             let theta0 = quantity(a, "--release-angle", Dimension::NONE)?;
-            if body.cm_distance() == 0.0 {
-                bail!(
-                    "--release-angle: the centre of mass is at the pivot, so gravity does no work on the swing; give --omega"
-                );
-            }
-            (release_omega(&body, g, theta0), Some(theta0))
+            let g = quantity(&args.g, "--g", Dimension::ACCELERATION)?;
+            (body.released(g, theta0).map_err(err)?, Some(theta0))
         }
         (None, None) => {
             bail!("give --omega (the body's angular velocity at the impact) or --release-angle")
         }
     };
-    let body = PivotedBody { omega, ..body };
     let point = match &args.hit_at {
         Some(text) if text.contains(',') => planar(text, "--hit-at", Dimension::LENGTH)?,
         Some(text) => [0.0, -quantity(text, "--hit-at", Dimension::LENGTH)?],
@@ -151,7 +162,6 @@ pub fn rigid_collide(args: &RigidCollideArgs) -> Result<Outcome> {
             anyhow!("give --hit-at: the distance of the contact below the pivot, or \"x, y\"")
         })?,
     };
-    let normal = planar(&args.normal, "--normal", Dimension::NONE)?;
     let block = Particle {
         mass: quantity(
             args.block_mass.as_deref().unwrap_or_default(),
@@ -166,85 +176,37 @@ pub fn rigid_collide(args: &RigidCollideArgs) -> Result<Outcome> {
     };
     let contact = Contact {
         point,
-        normal,
+        normal: planar(&args.normal, "--normal", Dimension::NONE)?,
         restitution: restitution(&args.restitution)?,
     };
-    let warnings = body.warnings(point);
-    for w in &warnings {
+    let result = hinged_report(&body, &block, &contact, release).map_err(err)?;
+    for w in &result.warnings {
         eprintln!("warning: {w}");
     }
-    let r = hinged_impact(&body, &block, &contact).map_err(|e| anyhow!("{}: {e}", flag_of(&e)))?;
-    if args.json {
-        print(&format!(
-            "{:#}\n",
-            to_json(&body, &block, &contact, &r, release, &warnings)
-        ))?;
-    } else {
-        print(&text(&what, &body, &block, &contact, &r, release))?;
-    }
+    report(args.report, &result, || text(&what, &result))?;
     Ok(Outcome::Success)
 }
 
-fn to_json(
-    body: &PivotedBody,
-    block: &Particle,
-    c: &Contact,
-    r: &HingedImpact,
-    release: Option<f64>,
-    warnings: &[String],
-) -> Value {
-    let (k0, k1) = r.kinetic;
-    let (l0, l1) = r.angular_momentum;
-    json!({
-        "body": {
-            "inertia": body.inertia, "mass": body.mass, "cm_distance": body.cm_distance(),
-            "centre_of_percussion": body.centre_of_percussion(),
-        },
-        "release_angle": release,
-        "omega0": body.omega,
-        "omega_after": r.omega_after,
-        "contact": {"point": c.point, "normal": c.normal, "restitution": c.restitution},
-        "block": {"mass": block.mass, "velocity_before": block.velocity, "velocity_after": r.velocity_after},
-        "impulse": r.impulse,
-        "hinge_impulse": r.hinge_impulse,
-        "effective_mass": r.effective_mass,
-        "normal_speed": {"before": r.normal_speed_before, "after": r.normal_speed_after},
-        "kinetic_energy": {
-            "before": k0, "after": k1, "change": k1 - k0, "change_closed_form": r.kinetic_change_exact,
-            "ratio": if k0 > 0.0 { Value::from(k1 / k0) } else { Value::Null },
-        },
-        "angular_momentum_about_pivot": {"before": l0, "after": l1, "difference": l1 - l0},
-        "momentum": {"before": r.momentum.0, "after": r.momentum.1},
-        "warnings": warnings,
-    })
-}
-
-fn text(
-    what: &str,
-    body: &PivotedBody,
-    block: &Particle,
-    c: &Contact,
-    r: &HingedImpact,
-    release: Option<f64>,
-) -> String {
+fn text(what: &str, r: &HingedReport) -> String {
     let v2 = |v: [f64; 2]| format!("({}, {})", show(v[0]), show(v[1]));
     let mut out = format!("hinged {what}\n");
-    if let Some(theta0) = release {
+    if let Some(theta0) = r.release_angle {
         let _ = writeln!(
             out,
             "released from rest at {} rad: ω₀ = sqrt(2 M g d (1 − cos θ₀)/I_O) = {} rad/s",
             show(theta0),
-            show(body.omega)
+            show(r.omega0)
         );
     } else {
-        let _ = writeln!(out, "ω before = {} rad/s", show(body.omega));
+        let _ = writeln!(out, "ω before = {} rad/s", show(r.omega0));
     }
+    let (c, b) = (&r.contact, &r.block);
     let _ = writeln!(
         out,
         "block {} kg at {} m with velocity {} m/s, normal {}, e = {}",
-        show(block.mass),
+        show(b.mass),
         v2(c.point),
-        v2(block.velocity),
+        v2(b.velocity_before),
         v2(c.normal),
         show(c.restitution)
     );
@@ -252,7 +214,7 @@ fn text(
         out,
         "after: ω = {} rad/s, block velocity {} m/s",
         show(r.omega_after),
-        v2(r.velocity_after)
+        v2(b.velocity_after)
     );
     let _ = writeln!(
         out,
@@ -261,24 +223,24 @@ fn text(
         show(r.effective_mass),
         v2(r.hinge_impulse)
     );
-    let (k0, k1) = r.kinetic;
+    let k = &r.kinetic_energy;
     let _ = writeln!(
         out,
         "kinetic energy {} J → {} J (ΔK = {} J; closed form −½(1 − e²) m_eff u² = {} J)",
-        show(k0),
-        show(k1),
-        show(k1 - k0),
-        show(r.kinetic_change_exact + 0.0)
+        show(k.before),
+        show(k.after),
+        show(k.change),
+        show(k.change_closed_form + 0.0)
     );
-    let (l0, l1) = r.angular_momentum;
+    let l = &r.angular_momentum_about_pivot;
     let _ = writeln!(
         out,
         "angular momentum about the pivot {} → {} kg m²/s (difference {:.1e})",
-        show(l0),
-        show(l1),
-        l1 - l0
+        show(l.before),
+        show(l.after),
+        l.difference
     );
-    if let Some(cp) = body.centre_of_percussion() {
+    if let Some(cp) = r.body.centre_of_percussion {
         let _ = writeln!(
             out,
             "centre of percussion {} m from the pivot (a blow there leaves no hinge impulse)",

@@ -1,56 +1,81 @@
 //! `mechkit rotation`: angular kinematics from a formula, uniform angular acceleration,
-//! circular motion, and a point of a body turning in 3-D.
+//! circular motion, and a point of a body turning in 3-D, through
+//! `mechkit::rigid::rotation` (the result is a `RotationReport`).
 
 use std::fmt::Write as _;
 
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
 use mechkit::mass::Vec3;
-use mechkit::rigid::kinematics::{
-    AngularMotion, CircularMotion, Given, KinematicsError, UniformAngularAcceleration,
-    distance_from_axis, point_acceleration, point_velocity,
+use mechkit::rigid::Input;
+use mechkit::rigid::kinematics::{AngularMotion, KinematicsError, UniformAngularAcceleration};
+use mechkit::rigid::rotation::{
+    CircleGiven, CircleQuestion, CircleReport, FormulaReport, PointReport, RotationReport,
+    UniformReport, circle, point_motion,
 };
-use serde_json::{Value, json};
 
-use super::body::{point, vec_json, vec_text};
+use super::body::point;
 use super::input::{params, quantity, show, split_top_level, value};
-use super::{Outcome, print};
+use super::{Outcome, report};
 use crate::args::RotationArgs;
 
 fn angular_acceleration() -> Dimension {
     Dimension::FREQUENCY / Dimension::TIME
 }
 
+/// The flag of an input of `mechkit rotation`.
+fn flag(input: Option<Input>) -> &'static str {
+    match input {
+        Some(Input::Period) => "--period",
+        Some(Input::Speed) => "--speed",
+        Some(Input::Latitude) => "--latitude",
+        Some(Input::AngularAcceleration) => "--alpha",
+        Some(Input::Centripetal) => "--centripetal",
+        Some(Input::Turn) => "--turn",
+        Some(Input::AngularSpeed) => "--angular-speed",
+        Some(Input::InitialAngularVelocity) => "--omega0",
+        Some(Input::FinalAngularVelocity) => "--omega1",
+        Some(Input::Time) => "--time",
+        Some(Input::InitialAngle) => "--theta0",
+        _ => "--radius",
+    }
+}
+
+fn with_flag(e: &KinematicsError) -> anyhow::Error {
+    anyhow!("{}: {e}", flag(e.input()))
+}
+
 pub fn rotation(args: &RotationArgs) -> Result<Outcome> {
-    let (body, text) = if args.theta.is_some() || args.omega.is_some() {
-        formula(args)?
+    let result = if args.theta.is_some() || args.omega.is_some() {
+        RotationReport::Formula(formula(args)?)
     } else if args.omega0.is_some() {
-        uniform(args)?
+        RotationReport::Uniform(uniform(args)?)
     } else if args.omega_vector.is_some() {
-        vector(args)?
+        RotationReport::Point(vector(args)?)
     } else if args.radius.is_some()
         || args.period.is_some()
         || args.angular_speed.is_some()
         || args.centripetal.is_some()
         || args.speed.is_some()
     {
-        circle(args)?
+        RotationReport::Circle(circle_motion(args)?)
     } else {
         bail!(
             "say what to compute: --theta or --omega (a formula, with --at), --omega0 --omega1 \
-             --time (uniform angular acceleration), --radius with --speed, --angular-speed or \
-             --period (circular motion), or --omega-vector with --point (3-D)"
+             --time (uniform angular acceleration), --radius with --speed, --angular-speed, \
+             --period or --centripetal (circular motion), or --omega-vector with --point (3-D)"
         );
     };
-    if args.json {
-        print(&format!("{body:#}\n"))?;
-    } else {
-        print(&text)?;
-    }
+    report(args.report, &result, || match &result {
+        RotationReport::Formula(f) => formula_text(f),
+        RotationReport::Uniform(u) => uniform_text(u),
+        RotationReport::Circle(c) => circle_text(c),
+        RotationReport::Point(p) => point_text(p),
+    })?;
     Ok(Outcome::Success)
 }
 
-fn formula(args: &RotationArgs) -> Result<(Value, String)> {
+fn formula(args: &RotationArgs) -> Result<FormulaReport> {
     let p = params(args.set.as_deref())?;
     let motion = match (&args.theta, &args.omega) {
         (Some(theta), _) => {
@@ -61,8 +86,10 @@ fn formula(args: &RotationArgs) -> Result<(Value, String)> {
                 .theta0
                 .as_deref()
                 .map_or(Ok(0.0), |t| quantity(t, "--theta0", Dimension::NONE))?;
-            AngularMotion::from_angular_velocity(omega, &p, theta0)
-                .map_err(|e| anyhow!("--omega: {e}"))?
+            AngularMotion::from_angular_velocity(omega, &p, theta0).map_err(|e| match e {
+                KinematicsError::Formula(_) => anyhow!("--omega: {e}"),
+                e => with_flag(&e),
+            })?
         }
         (None, None) => unreachable!("checked by the caller"),
     };
@@ -80,40 +107,15 @@ fn formula(args: &RotationArgs) -> Result<(Value, String)> {
             .collect::<Result<Vec<f64>>>()?,
         None => Vec::new(),
     };
-    let theta_text = match motion.theta_formula() {
-        Some(f) if motion.given() == Given::AngularVelocity && motion.theta0() != 0.0 => {
-            format!("{} + {f}", show(motion.theta0()))
-        }
-        Some(f) => f.to_string(),
-        None => format!(
-            "{} + ∫₀ᵗ ω dt (no closed form: adaptive quadrature)",
-            show(motion.theta0())
-        ),
-    };
-    let states: Vec<_> = times.iter().map(|&t| motion.at(t)).collect();
-    let given = match motion.given() {
-        Given::Angle => "theta",
-        Given::AngularVelocity => "omega",
-    };
-    let body = json!({
-        "mode": "formula",
-        "given": given,
-        "theta": theta_text,
-        "theta_closed_form": motion.theta_formula().is_some(),
-        "omega": motion.omega_formula().to_string(),
-        "alpha": motion.alpha_formula().to_string(),
-        "at": states.iter().map(|s| json!({
-            "t": s.t, "theta": s.theta, "omega": s.omega, "alpha": s.alpha,
-            "omega_numeric": s.omega_numeric, "alpha_numeric": s.alpha_numeric,
-            "agree": s.agree,
-        })).collect::<Vec<_>>(),
-    });
+    Ok(motion.report(&times))
+}
+
+fn formula_text(f: &FormulaReport) -> String {
     let mut text = format!(
-        "θ(t) = {theta_text}\nω(t) = dθ/dt = {}\nα(t) = dω/dt = {}\n",
-        motion.omega_formula(),
-        motion.alpha_formula()
+        "θ(t) = {}\nω(t) = dθ/dt = {}\nα(t) = dω/dt = {}\n",
+        f.theta, f.omega, f.alpha
     );
-    for s in &states {
+    for s in &f.at {
         let _ = writeln!(
             text,
             "t = {} s: θ = {} rad, ω = {} rad/s, α = {} rad/s²",
@@ -130,159 +132,139 @@ fn formula(args: &RotationArgs) -> Result<(Value, String)> {
             if s.agree { "agree" } else { "DISAGREE" }
         );
     }
-    if states.is_empty() {
+    if f.at.is_empty() {
         text.push_str("(give --at \"1 s\" to evaluate them)\n");
     }
-    Ok((body, text))
+    text
 }
 
-fn uniform(args: &RotationArgs) -> Result<(Value, String)> {
+fn uniform(args: &RotationArgs) -> Result<UniformReport> {
     let get =
         |v: &Option<String>, flag: &str, dim| quantity(v.as_deref().unwrap_or_default(), flag, dim);
     let w0 = get(&args.omega0, "--omega0", Dimension::FREQUENCY)?;
     let w1 = get(&args.omega1, "--omega1", Dimension::FREQUENCY)?;
     let t = get(&args.time, "--time", Dimension::TIME)?;
-    let u = UniformAngularAcceleration::new(w0, w1, t).map_err(|e| anyhow!("--time: {e}"))?;
-    let body = json!({
-        "mode": "uniform",
-        "omega0": w0, "omega1": w1, "time": t,
-        "alpha": u.alpha(), "angle": u.angle(), "revolutions": u.revolutions(),
-    });
-    let text = format!(
+    let u = UniformAngularAcceleration::new(w0, w1, t).map_err(|e| with_flag(&e))?;
+    Ok(u.report())
+}
+
+fn uniform_text(u: &UniformReport) -> String {
+    format!(
         "ω₀ = {} rad/s, ω₁ = {} rad/s in t = {} s\nα = (ω₁ − ω₀)/t = {} rad/s²\n\
          Δθ = (ω₀ + ω₁) t/2 = {} rad = {} revolutions\n",
-        show(w0),
-        show(w1),
-        show(t),
-        show(u.alpha()),
-        show(u.angle()),
-        show(u.revolutions())
-    );
-    Ok((body, text))
+        show(u.omega0),
+        show(u.omega1),
+        show(u.time),
+        show(u.alpha),
+        show(u.angle),
+        show(u.revolutions)
+    )
 }
 
-fn flag_of(e: &KinematicsError) -> &'static str {
-    match e {
-        KinematicsError::Value { what, .. } => match *what {
-            "the radius" => "--radius",
-            "the period" => "--period",
-            "the speed" => "--speed",
-            "the latitude" => "--latitude",
-            "α" => "--alpha",
-            _ => "--angular-speed",
-        },
-        _ => "--radius",
-    }
-}
-
-fn circle(args: &RotationArgs) -> Result<(Value, String)> {
-    let mut radius = args
-        .radius
-        .as_deref()
-        .map(|r| quantity(r, "--radius", Dimension::LENGTH))
-        .transpose()?;
-    if let (Some(a), Some(v)) = (&args.centripetal, &args.speed) {
-        let a = quantity(a, "--centripetal", Dimension::ACCELERATION)?;
-        let v = quantity(v, "--speed", Dimension::VELOCITY)?;
-        if !(a > 0.0 && a.is_finite()) {
-            bail!("--centripetal must be a positive acceleration, e.g. \"0.1 gn\" or \"1 m/s^2\"");
+/// The question from the flags: what fixes the motion, checked to be one of the pairs the
+/// circle takes (the library checks the values).
+fn circle_question(args: &RotationArgs) -> Result<CircleQuestion> {
+    let q = |text: &Option<String>, flag: &str, dim| {
+        text.as_deref().map(|t| quantity(t, flag, dim)).transpose()
+    };
+    let radius = q(&args.radius, "--radius", Dimension::LENGTH)?;
+    let speed = q(&args.speed, "--speed", Dimension::VELOCITY)?;
+    let centripetal = q(&args.centripetal, "--centripetal", Dimension::ACCELERATION)?;
+    let given = match (speed, centripetal) {
+        (Some(_), Some(_)) if radius.is_some() => {
+            bail!("--radius, --speed and --centripetal over-determine the circle: give two of them")
         }
-        radius = Some(v * v / a);
-    }
-    if args.speed.is_some() && radius.is_none() {
-        bail!(
+        (Some(speed), Some(centripetal)) => CircleGiven::SpeedAndCentripetal { speed, centripetal },
+        (Some(_), None) if radius.is_none() => bail!(
             "--speed needs --radius, or --centripetal (the acceleration allowed) for the smallest radius"
-        );
-    }
-    let err = |e: KinematicsError| anyhow!("{}: {e}", flag_of(&e));
-    let motion = if let Some(v) = &args.speed {
-        let v = quantity(v, "--speed", Dimension::VELOCITY)?;
-        CircularMotion::from_speed(v, radius.unwrap_or_default()).map_err(err)?
-    } else if let Some(w) = &args.angular_speed {
-        let w = quantity(w, "--angular-speed", Dimension::FREQUENCY)?;
-        CircularMotion::new(radius.unwrap_or_default(), w).map_err(err)?
-    } else if let Some(t) = &args.period {
-        let t = quantity(t, "--period", Dimension::TIME)?;
-        CircularMotion::from_period(t, radius.unwrap_or_default()).map_err(err)?
-    } else {
-        bail!("--radius needs the motion: --speed, --angular-speed or --period");
-    };
-    let motion = match &args.alpha {
-        Some(a) => motion
-            .with_alpha(quantity(a, "--alpha", angular_acceleration())?)
-            .map_err(err)?,
-        None => motion,
-    };
-    let (mut body, mut text) = if radius.is_some() {
-        let c = &motion;
-        (
-            json!({
-                "mode": "circle", "radius": c.radius, "omega": c.omega, "period": c.period(),
-                "speed": c.speed(), "alpha": c.alpha, "centripetal": c.centripetal(),
-                "tangential": c.tangential(), "acceleration": c.acceleration(),
-            }),
-            format!(
-                "circle of radius R = {} m: ω = {} rad/s (period {} s), v = ωR = {} m/s\n\
-                 α = {} rad/s², a_t = αR = {} m/s², a_c = ω²R = v²/R = {} m/s², |a| = {} m/s²\n",
-                show(c.radius),
-                show(c.omega),
-                show(c.period()),
-                show(c.speed()),
-                show(c.alpha),
-                show(c.tangential()),
-                show(c.centripetal()),
-                show(c.acceleration())
-            ),
-        )
-    } else {
-        (
-            json!({"mode": "circle", "omega": motion.omega, "period": motion.period()}),
-            format!(
-                "ω = 2π/T = {} rad/s (period {} s); give --radius for speeds and accelerations\n",
-                show(motion.omega),
-                show(motion.period())
-            ),
-        )
-    };
-    if let Some(turn) = &args.turn {
-        let angle = quantity(turn, "--turn", Dimension::NONE)?;
-        if motion.omega == 0.0 {
-            bail!("--turn: the body does not turn (ω = 0)");
+        ),
+        (Some(v), None) => CircleGiven::Speed(v),
+        (None, Some(_)) if radius.is_none() => bail!(
+            "--centripetal needs --radius (ω = √(a/R)) or --speed (the smallest circle R = v²/a)"
+        ),
+        (None, Some(a)) => CircleGiven::Centripetal(a),
+        (None, None) => {
+            if let Some(w) = q(&args.angular_speed, "--angular-speed", Dimension::FREQUENCY)? {
+                CircleGiven::AngularSpeed(w)
+            } else if let Some(t) = q(&args.period, "--period", Dimension::TIME)? {
+                CircleGiven::Period(t)
+            } else {
+                bail!(
+                    "--radius needs the motion: --speed, --angular-speed, --period or --centripetal"
+                )
+            }
         }
-        let time = (angle / motion.omega).abs();
-        body["turn"] =
-            json!({"angle": angle, "time": time, "arc": radius.map(|r| angle.abs() * r)});
-        let arc = radius.map_or_else(String::new, |r| {
-            format!(", along an arc of {} m", show(angle.abs() * r))
-        });
+    };
+    Ok(CircleQuestion {
+        given,
+        radius,
+        alpha: q(&args.alpha, "--alpha", angular_acceleration())?,
+        turn: q(&args.turn, "--turn", Dimension::NONE)?,
+        latitude: q(&args.latitude, "--latitude", Dimension::NONE)?,
+    })
+}
+
+fn circle_motion(args: &RotationArgs) -> Result<CircleReport> {
+    circle(&circle_question(args)?).map_err(|e| with_flag(&e))
+}
+
+fn circle_text(c: &CircleReport) -> String {
+    let omega = format!("ω = {} rad/s = {} rpm", show(c.omega), show(c.omega_rpm));
+    let mut text = match c.radius {
+        Some(r) => {
+            let opt = |x: Option<f64>| show(x.unwrap_or(f64::NAN));
+            let limit = if c.smallest_radius {
+                format!(
+                    "smallest circle for a_c ≤ {} m/s²: R = v²/a_c = {} m\n",
+                    opt(c.centripetal),
+                    show(r)
+                )
+            } else {
+                String::new()
+            };
+            format!(
+                "{limit}circle of radius R = {} m: {omega} (period {} s), v = ωR = {} m/s\n\
+                 α = {} rad/s², a_t = αR = {} m/s², a_c = ω²R = v²/R = {} m/s², |a| = {} m/s²\n",
+                show(r),
+                show(c.period),
+                opt(c.speed),
+                opt(c.alpha),
+                opt(c.tangential),
+                opt(c.centripetal),
+                opt(c.acceleration)
+            )
+        }
+        None => format!(
+            "{omega} (period T = 2π/ω = {} s); give --radius for speeds and accelerations\n",
+            show(c.period)
+        ),
+    };
+    if let Some(t) = &c.turn {
+        let arc = t
+            .arc
+            .map_or_else(String::new, |a| format!(", along an arc of {} m", show(a)));
         let _ = writeln!(
             text,
             "turning through {} rad ({}°) takes θ/ω = {} s{arc}",
-            show(angle),
-            show(angle.to_degrees()),
-            show(time)
+            show(t.angle),
+            show(t.angle.to_degrees()),
+            show(t.time)
         );
     }
-    if let Some(lat) = &args.latitude {
-        let lambda = quantity(lat, "--latitude", Dimension::NONE)?;
-        let at = motion.at_latitude(lambda).map_err(err)?;
-        body["latitude"] = json!({
-            "latitude": lambda, "radius": at.radius, "speed": at.speed(),
-            "centripetal": at.centripetal(), "tangential": at.tangential(),
-        });
+    if let Some(l) = &c.latitude {
         let _ = writeln!(
             text,
             "at latitude {}°: radius R cos λ = {} m, v = {} m/s, a_c = {} m/s²",
-            show(lambda.to_degrees()),
-            show(at.radius),
-            show(at.speed()),
-            show(at.centripetal())
+            show(l.latitude.to_degrees()),
+            show(l.radius),
+            show(l.speed),
+            show(l.centripetal)
         );
     }
-    Ok((body, text))
+    text
 }
 
-fn vector(args: &RotationArgs) -> Result<(Value, String)> {
+fn vector(args: &RotationArgs) -> Result<PointReport> {
     let omega = point(
         args.omega_vector.as_deref().unwrap_or_default(),
         "--omega-vector",
@@ -297,29 +279,25 @@ fn vector(args: &RotationArgs) -> Result<(Value, String)> {
         "--point",
         Dimension::LENGTH,
     )?;
-    let v = point_velocity(&omega, &r);
-    let a = point_acceleration(&alpha, &omega, &r);
-    let rho = distance_from_axis(&omega, &r);
-    let body = json!({
-        "mode": "point", "omega": vec_json(&omega), "alpha": vec_json(&alpha),
-        "point": vec_json(&r), "velocity": vec_json(&v), "speed": v.norm(),
-        "distance_from_axis": rho,
-        "acceleration": {
-            "tangential": vec_json(&a.tangential), "centripetal": vec_json(&a.centripetal),
-            "total": vec_json(&a.total()),
-        },
-    });
-    let text = format!(
+    Ok(point_motion(&omega, &alpha, &r))
+}
+
+fn triple(v: [f64; 3]) -> String {
+    format!("({}, {}, {})", show(v[0]), show(v[1]), show(v[2]))
+}
+
+fn point_text(p: &PointReport) -> String {
+    let a = &p.acceleration;
+    format!(
         "ω = {} rad/s, r = {} m (distance from the axis {} m)\nv = ω × r = {} m/s (|v| = {} m/s)\n\
          a = α × r + ω × (ω × r) = {} + {} = {} m/s²\n",
-        vec_text(&omega),
-        vec_text(&r),
-        show(rho),
-        vec_text(&v),
-        show(v.norm()),
-        vec_text(&a.tangential),
-        vec_text(&a.centripetal),
-        vec_text(&a.total())
-    );
-    Ok((body, text))
+        triple(p.omega),
+        triple(p.point),
+        show(p.distance_from_axis),
+        triple(p.velocity),
+        show(p.speed),
+        triple(a.tangential),
+        triple(a.centripetal),
+        triple(a.total)
+    )
 }

@@ -131,7 +131,7 @@ fn compare(args: &RunArgs, scenario: &Scenario, names: &[String], dir: &Path) ->
     if !args.no_plots {
         for p in &cmp.plots {
             let path = dir.join(args.plots.file(&p.file_stem));
-            plot::render(p, &scenario.title, &path, args.plots.dpi)?;
+            plot::render(p, &scenario.title, &path, args.plots)?;
         }
     }
     if args.json {

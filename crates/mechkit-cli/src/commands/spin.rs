@@ -1,27 +1,26 @@
-//! `mechkit spin`: a free rigid body in 3-D or a heavy top. The run's conservation of |L| and
-//! E, the flip period of ω about the intermediate axis against the elliptic-function period,
-//! the top's nutation and precession; spin.csv and plots of ω(t) (and θ(t), φ(t)).
+//! `mechkit spin`: a free rigid body in 3-D or a heavy top, through `SpinningBody::report`:
+//! the run's conservation of |L| and E, the flip period of ω about the intermediate axis
+//! against the elliptic-function period, the top's nutation and precession; spin.csv and the
+//! plots with `-o`.
 
 use std::fmt::Write as _;
-use std::path::Path;
 
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
-use mechkit::figure::{LineStyle, PlotData, Series};
-use mechkit::mass::{Mat3, Vec3};
+use mechkit::mass::Vec3;
 use mechkit::ode::{AdaptiveConfig, Tableau};
+use mechkit::report::Files;
+use mechkit::rigid::Input;
 use mechkit::rigid::free3d::{
-    Formulation, Free3dError, FreeBody, Orientation, Poinsot, SpinIntegrator, SpinOptions, SpinRun,
+    Formulation, Free3dError, FreeBody, Orientation, SpinIntegrator, SpinOptions, SpinReport,
     SpinningBody,
 };
-use mechkit::scenario::{push_number, write_atomic};
-use serde_json::{Value, json};
 
-use super::body::{load, point, vec_json};
+use super::body::{load, point};
 use super::input::{quantity, show, split_top_level};
-use super::{Outcome, print};
+use super::outputs::{create_dir, write_plots, write_table};
+use super::{Outcome, note, report};
 use crate::args::SpinArgs;
-use crate::plot::render;
 
 /// "a, b, c": exactly three quantities of dimension `dim` (plain numbers are SI).
 fn triple(text: &str, flag: &str, dim: Dimension) -> Result<Vec3> {
@@ -42,19 +41,21 @@ fn triple(text: &str, flag: &str, dim: Dimension) -> Result<Vec3> {
     Ok(v)
 }
 
-/// The flag behind a library error.
-fn flag(e: &Free3dError, args: &SpinArgs) -> String {
-    match e {
-        Free3dError::Moment { .. } | Free3dError::Triangle { .. } => args
+/// The flag of an input of `mechkit spin` (the body file's name for its moments).
+fn flag(input: Option<Input>, args: &SpinArgs) -> String {
+    match input {
+        Some(Input::Inertia) => args
             .file
             .as_ref()
             .map_or_else(|| "--moments".to_string(), |f| f.display().to_string()),
-        Free3dError::Mass { .. } => "--mass".into(),
-        Free3dError::Gravity { .. } => "--g".into(),
-        Free3dError::NonFinite { .. } => "--omega".into(),
-        Free3dError::Duration { .. } => "--t-max".into(),
-        Free3dError::Step { .. } | Free3dError::TooManySteps { .. } => "--dt".into(),
-        Free3dError::SplittingOffAxis { .. } => "--method".into(),
+        Some(Input::Mass) => "--mass".into(),
+        Some(Input::Gravity) => "--g".into(),
+        Some(Input::AngularVelocity) => "--omega".into(),
+        Some(Input::Pivot) => "--pivot".into(),
+        Some(Input::Orientation) => "--tilt".into(),
+        Some(Input::Duration) => "--t-max".into(),
+        Some(Input::Step) => "--dt".into(),
+        Some(Input::Method) => "--method".into(),
         _ => "--rtol".into(),
     }
 }
@@ -62,7 +63,7 @@ fn flag(e: &Free3dError, args: &SpinArgs) -> String {
 /// The body (principal frame), the rotation from the principal frame to the body's
 /// coordinates, and the centre of mass in those coordinates.
 fn body(args: &SpinArgs) -> Result<(FreeBody, Orientation, Vec3)> {
-    let with_flag = |e: Free3dError| anyhow!("{}: {e}", flag(&e, args));
+    let with_flag = |e: Free3dError| anyhow!("{}: {e}", flag(e.input(), args));
     if let Some(file) = &args.file {
         let loaded = load(file, args.mass.as_deref())?;
         let (body, axes) = FreeBody::from_mass_properties(&loaded.whole).map_err(with_flag)?;
@@ -109,7 +110,7 @@ fn integrator(args: &SpinArgs) -> Result<SpinIntegrator> {
 
 pub fn spin(args: &SpinArgs) -> Result<Outcome> {
     let (free, axes, cm) = body(args)?;
-    let with_flag = |e: Free3dError| anyhow!("{}: {e}", flag(&e, args));
+    let with_flag = |e: Free3dError| anyhow!("{}: {e}", flag(e.input(), args));
     let omega = triple(&args.omega, "--omega", Dimension::FREQUENCY).map_err(|e| {
         anyhow!(
             "{}",
@@ -167,277 +168,100 @@ pub fn spin(args: &SpinArgs) -> Result<Outcome> {
         renormalise: true,
         samples: args.samples.max(1),
     };
-    let run = match spinning.simulate(&start, t_max, &options) {
-        Ok(run) => run,
+    let mut result = match spinning.report(&start, t_max, &options) {
+        Ok(r) => r,
         Err(Free3dError::Integrate(e)) => {
             eprintln!("error: the simulation failed: {e}");
             return Ok(Outcome::ComputationFailed);
         }
         Err(e) => return Err(with_flag(e)),
     };
-    let files = match &args.out {
-        Some(dir) => Some(write_files(&spinning, &run, dir, args.plots)?),
-        None => None,
-    };
-    let summary = to_json(&spinning, &run, &options, t_max, files.as_ref());
-    if args.json {
-        print(&format!("{summary:#}\n"))?;
-    } else {
-        print(&text(&summary))?;
+    let mut wrote = None;
+    if let Some(dir) = &args.out {
+        create_dir(dir)?;
+        let csv = write_table(dir, SpinReport::TABLE, &result.table())?;
+        let plots = if args.no_plots {
+            Vec::new()
+        } else {
+            let m = result.moments;
+            let title = format!("I = ({}, {}, {}) kg·m²", show(m[0]), show(m[1]), show(m[2]));
+            write_plots(dir, &result.plots(), &title, args.plots)?
+        };
+        wrote = Some(super::roll::written(&csv, &plots));
+        result.files = Some(Files {
+            csv: Some(csv),
+            plots,
+        });
+    }
+    report(args.report, &result, || text(&result))?;
+    if let Some(w) = &wrote {
+        note(args.report, w);
     }
     Ok(Outcome::Success)
 }
 
-fn tensor_json(m: &Mat3) -> Value {
-    (0..3)
-        .map(|r| (0..3).map(|c| m[(r, c)] + 0.0).collect::<Vec<_>>())
-        .collect()
-}
-
-fn to_json(
-    body: &SpinningBody,
-    run: &SpinRun,
-    options: &SpinOptions,
-    t_max: f64,
-    files: Option<&Value>,
-) -> Value {
-    let first = &run.samples[0];
-    let last = &run.samples[run.samples.len() - 1];
-    let c = run.conservation;
-    let flip = body.pivot().is_none().then(|| {
-        let exact = Poinsot::new(body.body().moments(), first.omega_body);
-        let measured = run.crossing_period();
-        let reference = exact.map(|p| p.period());
-        let deviation = exact.map(|p| {
-            run.samples
-                .iter()
-                .map(|s| (s.omega_body - p.omega(s.t)).norm())
-                .fold(0.0, f64::max)
-        });
-        json!({
-            "axis": body.body().intermediate_axis() + 1,
-            "zeros": run.crossings.len(),
-            "zero_times": run.crossings.iter().map(|z| z.t).collect::<Vec<_>>(),
-            "period": {
-                "simulated": measured,
-                "elliptic": reference,
-                "relative_difference": measured.zip(reference).map(|(m, r)| (m - r) / r),
-            },
-            "parameter_m": exact.map(|p| p.parameter()),
-            "one_minus_m": exact.map(|p| p.complementary_parameter()),
-            "omega_max_deviation": deviation,
-        })
-    });
-    let top = body.pivot().map(|(d, g)| {
-        let thetas: Vec<f64> = run.samples.iter().map(|s| s.attitude.euler_angles().1).collect();
-        let (lo, hi) = thetas
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &t| (a.min(t), b.max(t)));
-        let theta0 = thetas[0];
-        let spin = first.omega_body.z;
-        let steady = body.steady_precession(theta0, spin);
-        json!({
-            "cm_offset": vec_json(&d), "g": g,
-            "inertia_about_pivot": tensor_json(body.inertia()),
-            "nutation_deg": {"start": theta0.to_degrees(), "min": lo.to_degrees(), "max": hi.to_degrees()},
-            "precession_rate": {
-                "mean": (last.precession - first.precession) / (last.t - first.t),
-                "steady_slow": steady.map(|s| s.0),
-                "steady_fast": steady.map(|s| s.1),
-                "fast_top": body.fast_top_precession(spin),
-            },
-        })
-    });
-    let step = match &options.integrator {
-        SpinIntegrator::Adaptive { config, .. } => {
-            json!({"rtol": config.rtol.as_scalar(), "atol": config.atol.as_scalar()})
-        }
-        SpinIntegrator::Fixed { dt, .. } | SpinIntegrator::Splitting { dt } => json!({"dt": dt}),
-    };
-    let b = body.body();
-    json!({
-        "moments": b.moments(), "mass": b.mass(),
-        "omega0": vec_json(&first.omega_body),
-        "t_max": t_max,
-        "integrator": {
-            "method": options.integrator.name(), "frame": options.formulation.name(),
-            "step": step, "steps": run.steps, "rejected": run.rejected,
-            "evaluations": run.evaluations,
-        },
-        "angular_momentum": {
-            "start": vec_json(&first.attitude.l), "end": vec_json(&run.end.l),
-            "norm": first.attitude.l.norm(),
-        },
-        "energy": {
-            "start": first.kinetic + first.potential, "end": last.kinetic + last.potential,
-            "kinetic_start": first.kinetic,
-        },
-        "conservation": {
-            "angular_momentum_norm": c.l_norm, "energy": c.energy, "l_z": c.l_z, "l_3": c.l_3,
-            "quaternion_norm": c.quaternion_norm,
-        },
-        "flip": flip,
-        "top": top,
-        "files": files,
-    })
-}
-
-fn text(j: &Value) -> String {
-    let num = |p: &str| j.pointer(p).and_then(Value::as_f64);
-    let f = |p: &str| num(p).map_or_else(|| "-".to_string(), show);
-    let e = |p: &str| num(p).map_or_else(|| "-".to_string(), |x| format!("{x:.2e}"));
+fn text(r: &SpinReport) -> String {
+    let e = |x: f64| format!("{x:.2e}");
+    let opt = |x: Option<f64>| x.map_or_else(|| "-".to_string(), show);
+    let opt_e = |x: Option<f64>| x.map_or_else(|| "-".to_string(), e);
     let mut out = String::new();
+    let (m, w) = (r.moments, r.omega0);
     let _ = writeln!(
         out,
         "body: I = ({}, {}, {}) kg*m^2, m = {} kg; ω0 = ({}, {}, {}) rad/s (principal axes)",
-        f("/moments/0"),
-        f("/moments/1"),
-        f("/moments/2"),
-        f("/mass"),
-        f("/omega0/0"),
-        f("/omega0/1"),
-        f("/omega0/2")
+        show(m[0]),
+        show(m[1]),
+        show(m[2]),
+        show(r.mass),
+        show(w[0]),
+        show(w[1]),
+        show(w[2])
     );
+    let i = &r.integrator;
     let _ = writeln!(
         out,
         "integrated to t = {} s with {} (L in the {} frame): {} steps, {} evaluations",
-        f("/t_max"),
-        j["integrator"]["method"].as_str().unwrap_or("?"),
-        j["integrator"]["frame"].as_str().unwrap_or("?"),
-        j["integrator"]["steps"],
-        j["integrator"]["evaluations"]
+        show(r.t_max),
+        i.method,
+        i.frame,
+        i.steps,
+        i.evaluations
     );
-    let kept = if j["top"].is_null() {
-        format!(
-            "|L| {}, E {}",
-            e("/conservation/angular_momentum_norm"),
-            e("/conservation/energy")
-        )
+    let c = &r.conservation;
+    let kept = if r.top.is_none() {
+        format!("|L| {}, E {}", e(c.l_norm), e(c.energy))
     } else {
-        format!(
-            "E {}, L_z {}, L_3 {}",
-            e("/conservation/energy"),
-            e("/conservation/l_z"),
-            e("/conservation/l_3")
-        )
+        format!("E {}, L_z {}, L_3 {}", e(c.energy), e(c.l_z), e(c.l_3))
     };
     let _ = writeln!(
         out,
         "conservation (largest relative deviation): {kept}; ||q| - 1| {} before renormalising",
-        e("/conservation/quaternion_norm")
+        e(c.quaternion_norm)
     );
-    if !j["flip"].is_null() {
+    if let Some(f) = &r.flip {
         let _ = writeln!(
             out,
             "ω about the intermediate axis I{}: {} zeros; period {} s simulated, 4K(m)/λ = {} s (m = 1 - {}), relative difference {}; max |ω - ω_elliptic| = {} rad/s",
-            j["flip"]["axis"],
-            j["flip"]["zeros"],
-            f("/flip/period/simulated"),
-            f("/flip/period/elliptic"),
-            e("/flip/one_minus_m"),
-            e("/flip/period/relative_difference"),
-            e("/flip/omega_max_deviation")
+            f.axis,
+            f.zeros,
+            opt(f.period.simulated),
+            opt(f.period.elliptic),
+            opt_e(f.one_minus_m),
+            opt_e(f.period.relative_difference),
+            opt_e(f.omega_max_deviation)
         );
     }
-    if !j["top"].is_null() {
+    if let Some(t) = &r.top {
         let _ = writeln!(
             out,
             "top: nutation θ from {}° to {}° (start {}°); mean precession {} rad/s, steady (slow root) {} rad/s, fast-top m g ℓ/(J3 ω3) {} rad/s",
-            f("/top/nutation_deg/min"),
-            f("/top/nutation_deg/max"),
-            f("/top/nutation_deg/start"),
-            f("/top/precession_rate/mean"),
-            f("/top/precession_rate/steady_slow"),
-            f("/top/precession_rate/fast_top")
+            show(t.nutation_deg.min),
+            show(t.nutation_deg.max),
+            show(t.nutation_deg.start),
+            show(t.precession_rate.mean),
+            opt(t.precession_rate.steady_slow),
+            opt(t.precession_rate.fast_top)
         );
-    }
-    if let Some(csv) = j.pointer("/files/csv").and_then(Value::as_str) {
-        let _ = writeln!(out, "wrote {csv} and the plots");
     }
     out
-}
-
-/// spin.csv and the plots; returns their paths.
-fn write_files(
-    body: &SpinningBody,
-    run: &SpinRun,
-    dir: &Path,
-    format: crate::args::PlotFormat,
-) -> Result<Value> {
-    std::fs::create_dir_all(dir).map_err(|e| anyhow!("cannot create {}: {e}", dir.display()))?;
-    let top = body.pivot().is_some();
-    let mut csv = String::from("t,qw,qx,qy,qz,w1,w2,w3,Lx,Ly,Lz,L,T,U,E");
-    csv.push_str(if top { ",theta,phi\n" } else { "\n" });
-    for s in &run.samples {
-        let q = s.attitude.q.quaternion();
-        let l = s.attitude.l;
-        let mut row = vec![s.t, q.w, q.i, q.j, q.k];
-        row.extend(s.omega_body.iter());
-        row.extend([
-            l.x,
-            l.y,
-            l.z,
-            l.norm(),
-            s.kinetic,
-            s.potential,
-            s.kinetic + s.potential,
-        ]);
-        if top {
-            row.extend([s.attitude.euler_angles().1, s.precession]);
-        }
-        for (k, x) in row.iter().enumerate() {
-            if k > 0 {
-                csv.push(',');
-            }
-            push_number(&mut csv, *x);
-        }
-        csv.push('\n');
-    }
-    let csv_path = dir.join("spin.csv");
-    write_atomic(&csv_path, csv.as_bytes())
-        .map_err(|e| anyhow!("cannot write {}: {e}", csv_path.display()))?;
-    let series = |f: &dyn Fn(&mechkit::rigid::free3d::SpinSample) -> f64| -> Vec<(f64, f64)> {
-        run.samples.iter().map(|s| (s.t, f(s))).collect()
-    };
-    let m = body.body().moments();
-    let title = format!("I = ({}, {}, {}) kg·m²", show(m[0]), show(m[1]), show(m[2]));
-    let mut omega = PlotData::new("omega(t)", "ω in the body frame", "t [s]", "ω [rad/s]");
-    for k in 0..3 {
-        omega = omega.with_series(Series::line(
-            format!("ω{}", k + 1),
-            series(&|s| s.omega_body[k]),
-        ));
-    }
-    if let Some(exact) = Poinsot::new(m, run.samples[0].omega_body).filter(|_| !top) {
-        let axis = body.body().intermediate_axis();
-        omega = omega.with_series(
-            Series::line(
-                format!("ω{} elliptic", axis + 1),
-                series(&|s| exact.omega(s.t)[axis]),
-            )
-            .styled(LineStyle::Dashed),
-        );
-    }
-    let mut plots = vec![("omega(t)", omega)];
-    if top {
-        plots.push((
-            "nutation(t)",
-            PlotData::new("nutation(t)", "nutation", "t [s]", "θ [deg]").with_series(Series::line(
-                "θ",
-                series(&|s| s.attitude.euler_angles().1.to_degrees()),
-            )),
-        ));
-        plots.push((
-            "precession(t)",
-            PlotData::new("precession(t)", "precession", "t [s]", "φ [deg]")
-                .with_series(Series::line("φ", series(&|s| s.precession.to_degrees()))),
-        ));
-    }
-    let mut names = Vec::new();
-    for (name, data) in &plots {
-        let path = dir.join(format.file(name));
-        render(data, &title, &path, format.dpi)?;
-        names.push(path.display().to_string());
-    }
-    Ok(json!({"csv": csv_path.display().to_string(), "plots": names}))
 }

@@ -98,7 +98,7 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
         let path = dir.join(args.plots.file(&stem));
         let sets: Vec<&str> = grid.params.iter().map(|p| p.text.as_str()).collect();
         let title = format!("{} runs, {}", table.rows.len(), sets.join("; "));
-        plot::render(&overlay, &title, &path, args.plots.dpi)?;
+        plot::render(&overlay, &title, &path, args.plots)?;
         plot_path = Some(path);
     }
     let failed = table

@@ -1,41 +1,50 @@
 //! `mechkit work --field F --path r(s)`: the work of a force field along a curve, the curl,
-//! a potential when there is one, and the verdict on whether the field is conservative.
+//! a potential when there is one, and the verdict on whether the field is conservative
+//! (`mechkit::energy::ForceField::work_report`).
 
 use std::fmt::Write as _;
 
 use anyhow::{Result, anyhow, bail};
-use mechkit::energy::{ForceField, Path};
-use mechkit::function::Function;
-use mechkit::quad::Tolerance;
-use serde_json::json;
+use mechkit::calculus::CalculusError;
+use mechkit::energy::{FieldWork, ForceField, Path};
+use mechkit::inputs::{Input, count};
 
 use super::input::{interval, params, split_top_level, value};
-use super::{Outcome, print};
+use super::{Outcome, report};
 use crate::args::WorkArgs;
+
+/// The flag of an input of `work --field`.
+fn flag(input: Input) -> &'static str {
+    match input {
+        Input::Path => "--path",
+        Input::PathParameter => "--param",
+        Input::Through => "--through",
+        Input::Params => "--set",
+        _ => "--field",
+    }
+}
+
+/// A library error as the command line says it: formulas name the flag they came from.
+fn check<T>(r: Result<T, CalculusError>, formula_flag: &str) -> Result<T> {
+    r.map_err(|e| match e {
+        CalculusError::Input(e) => anyhow!("{}: {}", flag(e.input), e.message),
+        other => anyhow!("{formula_flag}: {other}"),
+    })
+}
 
 pub fn field_work(args: &WorkArgs, field: &str) -> Result<Outcome> {
     let p = params(args.set.as_deref())?;
     let components = split_top_level(field, ',');
-    let f = ForceField::parse(&components, &p).map_err(|e| anyhow!("--field: {e}"))?;
+    let f = check(ForceField::parse(&components, &p), "--field")?;
     let n = f.dim();
     let path = match (&args.path, &args.through) {
         (Some(curve), None) => {
             let Some((var, range)) = args.param.as_deref().and_then(|t| t.split_once('=')) else {
                 bail!("--path needs the parameter and its range, e.g. --param s=0:1 (or s=0:2*pi)");
             };
-            let var = var.trim();
-            let (from, to) = interval(range.trim(), "--param", &p)?;
+            let range = interval(range.trim(), "--param", &p)?;
             let parts = split_top_level(curve, ',');
-            let components = parts
-                .iter()
-                .map(|c| Function::parse(c, &[var], &p))
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(|e| anyhow!("--path: {e}"))?;
-            Path::Parametric {
-                components,
-                from,
-                to,
-            }
+            check(Path::parametric(&parts, var.trim(), range, &p), "--path")?
         }
         (None, Some(points)) => {
             let points = split_top_level(points, ';')
@@ -50,7 +59,8 @@ pub fn field_work(args: &WorkArgs, field: &str) -> Result<Outcome> {
                 .collect::<Result<Vec<_>>>()?;
             if let Some(bad) = points.iter().find(|q| q.len() != n) {
                 bail!(
-                    "--through: every point needs {n} coordinates like the field (points separated by `;`, coordinates by `,`), but one has {}",
+                    "--through: every point needs {} like the field (points separated by `;`, coordinates by `,`), but one has {}",
+                    count(n, "coordinate"),
                     bad.len()
                 );
             }
@@ -63,59 +73,39 @@ pub fn field_work(args: &WorkArgs, field: &str) -> Result<Outcome> {
             "--field needs a path: --path \"cos(s), sin(s)\" --param s=0:2*pi, or --through \"0,0; 1,0; 1,1\""
         ),
     };
-    let w = f
-        .work_along(
-            &path,
-            Tolerance {
-                abs: 1e-12,
-                rel: 1e-12,
-            },
-        )
-        .map_err(|e| anyhow!("{e}"))?;
-    let curl: Vec<String> = f.curl().iter().map(ToString::to_string).collect();
-    let conservative = f.is_conservative();
-    let potential = f.potential();
-    if args.json {
-        let j = json!({
-            "field": f.formulas().iter().map(ToString::to_string).collect::<Vec<_>>(),
-            "work": w.work,
-            "error": w.error,
-            "closed": w.closed,
-            "length": w.length,
-            "curl": curl,
-            "conservative": conservative,
-            "potential": potential.as_ref().map(ToString::to_string),
-        });
-        print(&format!("{j:#}\n"))?;
-    } else {
-        let mut out = format!(
-            "W = ∫F·dr = {} ± {:.1e} along a path of length {}{}\n",
-            w.work,
-            w.error,
-            w.length,
-            if w.closed { " (closed)" } else { "" }
-        );
-        let _ = writeln!(out, "curl F = {}", curl.join(", "));
-        let _ = match conservative {
-            Some(true) => writeln!(
-                out,
-                "the curl is zero: F is conservative, the work depends only on the end points{}",
-                if w.closed {
-                    " (and is zero around this loop)"
-                } else {
-                    ""
-                }
-            ),
-            Some(false) => writeln!(
-                out,
-                "the curl is not zero: F is not conservative, the work depends on the path"
-            ),
-            None => writeln!(out, "whether the curl vanishes could not be decided"),
-        };
-        if let Some(u) = &potential {
-            let _ = writeln!(out, "potential U = {u} (F = -∇U)");
-        }
-        print(&out)?;
-    }
+    let w = check(f.work_report(&path), "--field")?;
+    report(args.report, &w, || text(&w))?;
     Ok(Outcome::Success)
+}
+
+fn text(w: &FieldWork) -> String {
+    let mut out = format!(
+        "W = ∫F·dr = {} ± {:.1e} along a path of length {}{}\n",
+        w.work,
+        w.error,
+        w.length,
+        if w.closed { " (closed)" } else { "" }
+    );
+    let curl: Vec<String> = w.curl.iter().map(ToString::to_string).collect();
+    let _ = writeln!(out, "curl F = {}", curl.join(", "));
+    let _ = match w.conservative {
+        Some(true) => writeln!(
+            out,
+            "the curl is zero: F is conservative, the work depends only on the end points{}",
+            if w.closed {
+                " (and is zero around this loop)"
+            } else {
+                ""
+            }
+        ),
+        Some(false) => writeln!(
+            out,
+            "the curl is not zero: F is not conservative, the work depends on the path"
+        ),
+        None => writeln!(out, "whether the curl vanishes could not be decided"),
+    };
+    if let Some(u) = &w.potential {
+        let _ = writeln!(out, "potential U = {u} (F = -∇U)");
+    }
+    out
 }

@@ -7,7 +7,9 @@ use mechkit::figure::{BarKind, PlotData};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::{AXIS_DESC_SIZE, CAPTION_SIZE, FONT_FAMILY, GRID, LABEL_SIZE, PALETTE, tick};
+use super::style::Style;
+use super::title::titled;
+use super::{GRID, PALETTE, tick};
 
 const GAIN: RGBColor = RGBColor(44, 160, 44);
 const LOSS: RGBColor = RGBColor(214, 39, 40);
@@ -17,6 +19,7 @@ pub(super) fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, plotters::coord::Shift>,
     plot: &PlotData,
     title: &str,
+    style: Style,
 ) -> Result<()>
 where
     DB::ErrorType: 'static,
@@ -34,14 +37,17 @@ where
     let (y0, y1) = (if lo < 0.0 { lo - pad } else { 0.0 }, hi + pad);
     let scale = y0.abs().max(y1.abs());
     let labels: Vec<String> = bars.iter().map(|b| b.label.clone()).collect();
-    let mut chart = ChartBuilder::on(root)
-        .caption(
-            format!("{title}: {}", plot.spec),
-            (FONT_FAMILY, CAPTION_SIZE),
-        )
-        .margin(16)
-        .x_label_area_size(48)
-        .y_label_area_size(80)
+    let m = style.px(16.0);
+    let area = titled(
+        &root.margin(m, m, m, m),
+        &format!("{title}: {}", plot.spec),
+        style,
+    )?;
+    let (x_area, y_area) = style.label_areas();
+    let mut chart = ChartBuilder::on(&area)
+        .x_label_area_size(x_area)
+        .y_label_area_size(y_area)
+        .margin_right(style.px(8.0))
         .build_cartesian_2d((0..n.saturating_sub(1)).into_segmented(), y0..y1)
         .map_err(|e| anyhow!("{e}"))?;
     chart
@@ -52,19 +58,23 @@ where
             SegmentValue::CenterOf(i) => labels.get(*i).cloned().unwrap_or_default(),
             _ => String::new(),
         })
+        .y_labels(style.labels())
         .y_label_formatter(&|v| tick(*v, scale))
         .x_desc(&plot.x_label)
         .y_desc(&plot.y_label)
-        .label_style((FONT_FAMILY, LABEL_SIZE))
-        .axis_desc_style((FONT_FAMILY, AXIS_DESC_SIZE))
-        .light_line_style(GRID)
+        .label_style(style.label())
+        .axis_desc_style(style.axis_desc())
+        .axis_style(BLACK.stroke_width(style.frame(1.0)))
+        .bold_line_style(BLACK.mix(0.2).stroke_width(style.frame(1.0)))
+        .light_line_style(GRID.stroke_width(style.frame(1.0)))
+        .set_all_tick_mark_size(style.px(5.0))
         .draw()
         .map_err(|e| anyhow!("{e}"))?;
     if y0 < 0.0 {
         chart
             .draw_series(std::iter::once(PathElement::new(
                 vec![(SegmentValue::Exact(0), 0.0), (SegmentValue::Exact(n), 0.0)],
-                BLACK.stroke_width(1),
+                BLACK.stroke_width(style.frame(1.0)),
             )))
             .map_err(|e| anyhow!("{e}"))?;
     }
@@ -77,7 +87,7 @@ where
                     (SegmentValue::CenterOf(i), level(i)),
                     (SegmentValue::CenterOf(i + 1), level(i)),
                 ],
-                RGBColor(120, 120, 120).stroke_width(1),
+                RGBColor(120, 120, 120).stroke_width(style.frame(1.0)),
             )
         }))
         .map_err(|e| anyhow!("{e}"))?;
@@ -95,13 +105,19 @@ where
                 ],
                 color.mix(0.85).filled(),
             );
-            r.set_margin(0, 0, 14, 14);
+            let side = style.px(14.0) as u32;
+            r.set_margin(0, 0, side, side);
             r
         }))
         .map_err(|e| anyhow!("{e}"))?;
-    let above = TextStyle::from((FONT_FAMILY, LABEL_SIZE).into_font())
-        .pos(Pos::new(HPos::Center, VPos::Bottom));
+    let above =
+        TextStyle::from(style.label().into_font()).pos(Pos::new(HPos::Center, VPos::Bottom));
     let below = above.pos(Pos::new(HPos::Center, VPos::Top));
+    let gap = style.px(4.0);
+    // the height of a value's line in the chart's units: a loss that ends closer than that
+    // to the bottom has its value written above it, clear of the labels under the axis
+    let (_, h) = chart.plotting_area().dim_in_pixel();
+    let line = (style.label().1 * 1.2 + f64::from(gap)) * (y1 - y0) / f64::from(h.max(1));
     chart
         .draw_series(bars.iter().enumerate().map(|(i, b)| {
             let value = b.to - b.from;
@@ -112,12 +128,14 @@ where
             };
             let text = format!("{sign}{} J", significant(value));
             // written a few pixels beyond the end the bar grows toward
-            let (y, style, dy) = if b.to >= b.from {
-                (b.to, above.clone(), -4)
+            let (y, font, dy) = if b.to >= b.from {
+                (b.to, above.clone(), -gap)
+            } else if b.to - y0 >= line {
+                (b.to, below.clone(), gap)
             } else {
-                (b.to, below.clone(), 4)
+                (b.from, above.clone(), -gap)
             };
-            EmptyElement::at((SegmentValue::CenterOf(i), y)) + Text::new(text, (0, dy), style)
+            EmptyElement::at((SegmentValue::CenterOf(i), y)) + Text::new(text, (0, dy), font)
         }))
         .map_err(|e| anyhow!("{e}"))?;
     Ok(())

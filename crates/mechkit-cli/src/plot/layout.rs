@@ -1,8 +1,14 @@
 //! Where things go on a chart: the parts of a curve inside the shown range, and the corner
 //! for the legend.
 
-use mechkit::figure::PlotData;
+use mechkit::figure::{PlotData, Series};
 use plotters::prelude::SeriesLabelPosition;
+
+/// Whether the curve `s` of `plot` has a legend entry: it has a label, and is not named by a
+/// colour bar instead (a value on the plot's colour scale).
+pub(super) fn in_legend(plot: &PlotData, s: &Series) -> bool {
+    !s.label.is_empty() && (plot.colour_scale.is_none() || s.value.is_none())
+}
 
 /// The parts of the polyline `points` inside `y0 ≤ y ≤ y1`, each a polyline: a segment that
 /// crosses a bound ends (or starts) on it, and a non-finite point breaks the line. Points are
@@ -63,20 +69,24 @@ pub(super) fn clip_to_band(points: &[(f64, f64)], (y0, y1): (f64, f64)) -> Vec<V
 }
 
 /// The corner of the plotting area where the legend covers the least of the data: the
-/// legend's box is estimated from its entries (series with a label, the `markers` labels, the
-/// bands) and its longest label, and the curves' points (with their segments sampled) and the
-/// markers are counted in each corner's box; upper right wins ties, then upper left, lower
-/// right, lower left.
+/// legend's box is estimated from its entries (series with a legend entry, the `markers`
+/// labels, the bands), its longest label and the type's size (`text`, the style's factor on
+/// it, in a plotting area of `area` plot pixels), and the curves' points (with their segments
+/// sampled) and the markers are counted in each corner's box; upper right wins ties, then
+/// upper left, lower right, lower left. On a `log` vertical axis the points are placed by
+/// their logarithm.
 pub(super) fn legend_corner(
     plot: &PlotData,
     markers: &[&str],
     ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
+    log: bool,
+    (text, (width, height)): (f64, (f64, f64)),
 ) -> SeriesLabelPosition {
     let mut labels: Vec<&str> = plot
         .series
         .iter()
+        .filter(|s| in_legend(plot, s))
         .map(|s| s.label.as_str())
-        .filter(|l| !l.is_empty())
         .chain(markers.iter().copied())
         .collect();
     for b in &plot.bands {
@@ -85,10 +95,11 @@ pub(super) fn legend_corner(
         }
     }
     let longest = labels.iter().map(|l| l.chars().count()).max().unwrap_or(0);
-    // the plotting area is about 790 x 490 pixels; an entry is about 20 pixels high and a
-    // character of the labels' font 8 wide
-    let w = ((40.0 + 8.0 * longest as f64) / 790.0).min(0.9);
-    let h = ((12.0 + 20.0 * labels.len() as f64) / 490.0).min(0.9);
+    // on paper an entry is about 20 pixels high and a character of the labels' font 8 wide
+    let w = (text * (40.0 + 8.0 * longest as f64) / width).min(0.9);
+    let h = (text * (12.0 + 20.0 * labels.len() as f64) / height).min(0.9);
+    let map = |y: f64| if log { y.log10() } else { y };
+    let (y0, y1) = (map(y0), map(y1));
     let (sx, sy) = (x1 - x0, y1 - y0);
     let mut points: Vec<(f64, f64)> = plot.markers.iter().map(|m| m.at).collect();
     for s in &plot.series {
@@ -104,7 +115,8 @@ pub(super) fn legend_corner(
     let fractions: Vec<(f64, f64)> = points
         .iter()
         .filter(|(x, y)| x.is_finite() && y.is_finite())
-        .map(|(x, y)| ((x - x0) / sx, (y - y0) / sy))
+        .map(|&(x, y)| ((x - x0) / sx, (map(y) - y0) / sy))
+        .filter(|(x, y)| x.is_finite() && y.is_finite())
         .collect();
     let corners = [
         (
@@ -135,6 +147,9 @@ mod tests {
 
     use super::{clip_to_band, legend_corner};
 
+    /// The paper style's type in its plotting area.
+    const PAPER: (f64, (f64, f64)) = (1.0, (790.0, 490.0));
+
     #[test]
     fn the_legend_goes_where_it_covers_no_data() {
         // two curves rising to the upper right: the upper left is free
@@ -146,7 +161,7 @@ mod tests {
         let plot = PlotData::new("y(x)", "y_x", "x", "y")
             .with_series(Series::line("a", rising(1.0)))
             .with_series(Series::line("b", rising(0.9)));
-        let corner = legend_corner(&plot, &[], ((0.0, 1.0), (0.0, 1.0)));
+        let corner = legend_corner(&plot, &[], ((0.0, 1.0), (0.0, 1.0)), false, PAPER);
         assert!(
             matches!(corner, SeriesLabelPosition::UpperLeft),
             "{corner:?}"
@@ -156,7 +171,7 @@ mod tests {
             .map(|i| (f64::from(i) / 50.0, (-5.0 * f64::from(i) / 50.0).exp()))
             .collect();
         let plot = PlotData::new("y(x)", "y_x", "x", "y").with_series(Series::line("c", decaying));
-        let corner = legend_corner(&plot, &["marker"], ((0.0, 1.0), (0.0, 1.0)));
+        let corner = legend_corner(&plot, &["marker"], ((0.0, 1.0), (0.0, 1.0)), false, PAPER);
         assert!(
             matches!(corner, SeriesLabelPosition::UpperRight),
             "{corner:?}"

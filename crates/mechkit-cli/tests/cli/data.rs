@@ -35,20 +35,23 @@ fn work_of_a_spring_from_a_csv_with_a_header() {
             "x",
             "--f",
             "F",
-            "--out",
-            "w.csv",
-            "--plot",
-            "w.svg",
+            "-o",
+            "w",
             "--json",
         ],
     );
     // W = k(x0-L0)²/2 - k(x1-L0)²/2 = 2 - 0.5 = 1.5 J, exact for trapezoids of a linear force
     assert!((num(&j, "/work") - 1.5).abs() < 1e-12, "{j}");
     assert_eq!(j["of"], "position");
-    let csv = Csv::parse(&dir.read("w.csv"));
-    assert_eq!(csv.header, ["x [m]", "F [N]", "W"]);
+    // issue 22: plain column names, their units in the sidecar, the plot W_x in the directory
+    let csv = Csv::parse(&dir.read("w/work.csv"));
+    assert_eq!(csv.header, ["x", "F", "W"]);
     assert!((csv.rows[30][2] - 1.5).abs() < 1e-12);
-    assert!(dir.read("w.svg").starts_with("<svg"));
+    assert_eq!(
+        dir.read_json("w/work.units.json"),
+        serde_json::json!({"x": "m", "F": "N", "W": "J"})
+    );
+    assert!(dir.read("w/W_x.svg").starts_with("<svg"));
 }
 
 #[test]
@@ -112,7 +115,8 @@ fn derive_the_falling_tennis_ball() {
     let csv = Csv::parse(&dir.read("tb/derived.csv"));
     assert_eq!(csv.header, ["t", "x", "dx_dt", "d2x_dt2"]);
     assert_eq!(csv.rows.len(), 2500);
-    for plot in ["position", "velocity", "acceleration"] {
+    // issue 22: plots named <y>_<x>
+    for plot in ["x_t", "v_t", "a_t"] {
         assert!(dir.read(&format!("tb/{plot}.svg")).starts_with("<svg"));
     }
     // forward differences, the course's loop, without plots

@@ -25,8 +25,8 @@ fn lennard_jones_diagram_with_an_energy() {
             "--set",
             "U0=1,a=1,b=1",
             "--energy=-0.1",
-            "--plot",
-            "lj.svg",
+            "-o",
+            "lj",
             "--json",
         ],
     );
@@ -35,7 +35,7 @@ fn lennard_jones_diagram_with_an_energy() {
     assert_eq!(j["equilibria"].as_array().unwrap().len(), 1);
     assert_eq!(j["energy"]["turning_points"].as_array().unwrap().len(), 2);
     assert_eq!(at(&j, "/energy/regions/1/allowed"), true);
-    let svg = dir.read("lj.svg");
+    let svg = dir.read("lj/U_r.svg");
     assert!(svg.starts_with("<svg") && svg.contains("stable equilibrium"));
     assert!(svg.contains("turning point") && svg.contains("forbidden"));
 }
@@ -56,8 +56,8 @@ fn force_given_energy_from_a_release() {
         "0",
         "--v0",
         "0.5",
-        "--plot",
-        "d.svg",
+        "-o",
+        "d",
     ]);
     out.assert_code(0);
     for needle in [
@@ -68,19 +68,17 @@ fn force_given_energy_from_a_release() {
     ] {
         assert!(out.stdout.contains(needle), "{needle}: {}", out.stdout);
     }
-    // the speed plot is written next to the diagram
-    assert!(dir.read("d_speed.svg").starts_with("<svg"));
+    // the diagram and the speed plot are written into the directory
+    assert!(dir.read("d/U_x.svg").starts_with("<svg"));
+    assert!(dir.read("d/v_x.svg").starts_with("<svg"));
 }
 
 #[test]
 fn no_equilibrium_is_an_empty_list_and_a_pole_is_reported() {
     let dir = Dir::new();
-    let j = json(
-        &dir,
-        &["potential", "2*x", "--range=-1:2", "--no-plot", "--json"],
-    );
+    let j = json(&dir, &["potential", "2*x", "--range=-1:2", "--json"]);
     assert_eq!(j["equilibria"], serde_json::json!([]));
-    let out = dir.run(&["potential", "1/x", "--range", "-1:2", "--no-plot"]);
+    let out = dir.run(&["potential", "1/x", "--range", "-1:2"]);
     out.assert_code(0);
     assert!(out.stdout.contains("no equilibrium"), "{}", out.stdout);
     assert!(out.stdout.contains("singular near x = 0"), "{}", out.stdout);
@@ -156,7 +154,7 @@ fn constant_power_and_average_power() {
     );
     assert!((num(&j, "/at/0/v") - 1000f64.sqrt()).abs() < 1e-12);
     assert!((num(&j, "/until_speed/t") - 200.0 * 1600.0 / 40e3).abs() < 1e-12);
-    assert!(dir.read("p/v(t).svg").starts_with("<svg"));
+    assert!(dir.read("p/v_t.svg").starts_with("<svg"));
     let j = json(
         &dir,
         &["power", "--work", "70.53 kJ", "--time", "24 h", "--json"],

@@ -102,7 +102,7 @@ fn earthquake_model_switches_at_closed_form_times_with_csv_and_plots() {
         }
     }
     assert_eq!(csv.rows.last().unwrap()[t], 8.0);
-    for plot in ["x(t)", "v(t)", "forces(t)"] {
+    for plot in ["x_t", "v_t", "forces_t"] {
         assert!(
             dir.read(&format!("quake/{plot}.svg")).starts_with("<svg"),
             "{plot}"

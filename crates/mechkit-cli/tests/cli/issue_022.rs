@@ -88,21 +88,23 @@ fn a_run_draws_its_plots_as_png_at_the_resolution_asked() {
 }
 
 #[test]
-fn a_plot_path_ending_in_png_is_a_png() {
+fn a_potential_diagram_as_png() {
     let dir = Dir::new();
     dir.run(&[
         "potential",
         "4*(x^-12 - x^-6)",
         "--range",
         "0.95:3",
-        "--plot",
-        "lj.png",
+        "-o",
+        "lj",
+        "--format",
+        "png",
         "--dpi",
         "120",
     ])
     .assert_code(0);
-    assert_eq!(png_info(&dir.path().join("lj.png")), (1125, 750, 120));
-    assert!(has_ink(&dir.path().join("lj.png")));
+    assert_eq!(png_info(&dir.path().join("lj/U_x.png")), (1125, 750, 120));
+    assert!(has_ink(&dir.path().join("lj/U_x.png")));
 }
 
 #[test]

@@ -166,7 +166,7 @@ fn bad_particle_files_name_the_flag_and_line() {
         "--velocities",
         "v.csv",
     ])
-    .assert_bad_input(&["--velocities", "1 3-D velocities for 2 2-D"]);
+    .assert_bad_input(&["--velocities", "1 3-D velocity for 2 2-D positions"]);
     dir.run(&["md", "--positions", "missing.csv", "--boundary", "open"])
         .assert_bad_input(&["--positions", "missing.csv"]);
     dir.run(&["md", "--potential", "morse"])

@@ -53,7 +53,7 @@ fn gravity_and_coast_with_plots() {
     assert!((apex - (x1 + v1 * v1 / (2.0 * 9.81))).abs() < 1e-8 * apex);
     assert!((num(&j, "/apex/t/simulated") - (60.0 + v1 / 9.81)).abs() < 1e-8);
     assert_eq!(at(&j, "/lifts_off"), true);
-    for name in ["v(t)", "x(t)", "m(t)"] {
+    for name in ["v_t", "x_t", "m_t"] {
         assert!(
             dir.read(&format!("plots/{name}.svg")).starts_with("<svg"),
             "{name}"

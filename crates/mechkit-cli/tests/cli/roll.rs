@@ -57,7 +57,7 @@ fn sphere_with_backspin_on_a_slope_rolls_at_the_closed_form() {
             assert!((row[cf] + mu * n).abs() < 1e-14);
         }
     }
-    for plot in ["v(t)", "energy(t)"] {
+    for plot in ["v_t", "energy_t"] {
         assert!(
             dir.read(&format!("ball/{plot}.svg")).starts_with("<svg"),
             "{plot}"

@@ -131,7 +131,18 @@ fn numeric(s: &Sym) -> Option<f64> {
 pub fn solve_linear(eqs: &[Sym], unknowns: &[&str]) -> Result<Vec<Sym>, String> {
     let n = unknowns.len();
     if eqs.len() != n {
-        return Err(format!("{} equations for {n} unknowns", eqs.len()));
+        let plural = |k: usize, noun: &str| {
+            if k == 1 {
+                format!("1 {noun}")
+            } else {
+                format!("{k} {noun}s")
+            }
+        };
+        return Err(format!(
+            "{} for {}: give one equation per unknown",
+            plural(eqs.len(), "equation"),
+            plural(n, "unknown")
+        ));
     }
     let mut a = vec![vec![Sym::zero(); n]; n];
     let mut rhs = Vec::with_capacity(n);

@@ -8,6 +8,7 @@ use super::column::{self, ColumnRef};
 use super::format::{self, Cell, Separator};
 use super::order::{Order, check_abscissa};
 use crate::Real;
+use mechkit_expr::units::Unit;
 
 /// Columns of finite numbers read from a data file.
 ///
@@ -237,6 +238,45 @@ impl Table {
         match &self.names {
             Some(names) => names[index].clone(),
             None => format!("column {}", index + 1),
+        }
+    }
+
+    /// The unit the header gives column `index` (0-based), as in `t [s]`; `None` without a
+    /// header or a unit mechkit knows.
+    ///
+    /// # Panics
+    /// If `index >= self.width()`.
+    pub fn unit(&self, index: usize) -> Option<String> {
+        assert!(index < self.width(), "column {index} of {}", self.width());
+        self.names
+            .as_ref()
+            .and_then(|names| super::header_unit(&names[index]))
+    }
+
+    /// Column `index` (0-based) in SI with its SI unit (`ms` read as seconds: `s`), when the
+    /// header gives its unit; else the values as written, without a unit (taken as SI by the
+    /// calculations, but not known).
+    ///
+    /// ```
+    /// use mechkit::data::Table;
+    /// let t = Table::parse("t [ms], x\n0, 1\n5, 2\n", "f.csv").unwrap();
+    /// assert_eq!(t.si(0), (vec![0.0, 0.005], Some("s".to_string())));
+    /// assert_eq!(t.si(1), (vec![1.0, 2.0], None));
+    /// ```
+    ///
+    /// # Panics
+    /// If `index >= self.width()`.
+    pub fn si(&self, index: usize) -> (Vec<Real>, Option<String>) {
+        let values = &self.columns[index];
+        match self.unit(index).and_then(|u| Unit::parse(&u).ok()) {
+            Some(u) if u.factor > 0.0 && u.factor.is_finite() => {
+                let si = u
+                    .dim
+                    .derived_symbol()
+                    .map_or_else(|| u.dim.to_string(), str::to_string);
+                (values.iter().map(|v| v * u.factor).collect(), Some(si))
+            }
+            _ => (values.clone(), None),
         }
     }
 

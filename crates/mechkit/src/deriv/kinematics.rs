@@ -17,6 +17,26 @@ pub enum Derivation {
     SavitzkyGolay(SavitzkyGolay),
 }
 
+impl Derivation {
+    /// The method in words: the scheme's name (`central`), or `savitzky-golay window 21 order
+    /// 2`.
+    ///
+    /// ```
+    /// use mechkit::deriv::{Derivation, Difference, SavitzkyGolay};
+    /// assert_eq!(Derivation::Differences(Difference::Forward).describe(), "forward");
+    /// let sg = Derivation::SavitzkyGolay(SavitzkyGolay::new(21, 2).unwrap());
+    /// assert_eq!(sg.describe(), "savitzky-golay window 21 order 2");
+    /// ```
+    pub fn describe(&self) -> String {
+        match self {
+            Derivation::Differences(d) => d.name().to_string(),
+            Derivation::SavitzkyGolay(f) => {
+                format!("savitzky-golay window {} order {}", f.window(), f.order())
+            }
+        }
+    }
+}
+
 /// `v(t)` and `a(t)` at the sample times.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Kinematics {

@@ -6,7 +6,9 @@
 //!   grids) is the better default.
 //! - Noisy samples on a uniform grid: [`SavitzkyGolay`] filters smooth and differentiate by
 //!   local least-squares polynomials ([`uniform_step`] tells whether the grid is uniform).
-//! - Positions in time: [`kinematics`] gives velocity and acceleration either way.
+//! - Positions in time: [`kinematics`] gives velocity and acceleration either way; for the
+//!   columns of a data file, [`derive_motion`] (what `mechkit derive` answers) adds units,
+//!   summaries, the table and the plots.
 //! - Functions: [`central`] differences, and [`derivative`] by Ridders' extrapolation with an
 //!   error estimate.
 //!
@@ -50,6 +52,7 @@
 //! `~4ε/h²` in `x''`. Measured data usually needs smoothing (a wider window) before a second
 //! derivative means anything.
 
+mod derived;
 mod difference;
 mod error;
 mod kinematics;
@@ -57,6 +60,9 @@ mod polyfit;
 mod richardson;
 mod savitzky_golay;
 
+pub use derived::{
+    DeriveError, DeriveQuestion, DerivedColumn, DerivedMotion, DerivedUnits, derive_motion,
+};
 pub(crate) use difference::check_samples;
 pub use difference::{Difference, differentiate, differentiate_into, second_derivative};
 pub use error::DerivError;

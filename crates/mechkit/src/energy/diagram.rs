@@ -15,6 +15,8 @@ use crate::roots::{brent_with_values, find_all};
 
 /// Whether a small displacement from an equilibrium grows or is restored.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
 #[non_exhaustive]
 pub enum Stability {
     /// A minimum of `U` (`U'' > 0`, or higher-order minimum): restoring.
@@ -38,6 +40,7 @@ impl Stability {
 
 /// A point where `F = 0`.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Equilibrium {
     /// Where.
     pub x: Real,
@@ -54,6 +57,7 @@ pub struct Equilibrium {
 
 /// A stretch of the range between boundaries (turning points, singular points, range ends).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Region {
     /// Start.
     pub from: Real,
@@ -63,10 +67,12 @@ pub struct Region {
     pub allowed: bool,
 }
 
-/// What a total energy `E` allows.
+/// What a total energy `E` allows (serialized with `E` as `value`).
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct EnergyCut {
     /// `E`.
+    #[cfg_attr(feature = "serde", serde(rename = "value"))]
     pub energy: Real,
     /// Where `U = E`, ascending.
     pub turning_points: Vec<Real>,

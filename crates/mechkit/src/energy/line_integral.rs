@@ -7,6 +7,7 @@ use mechkit_expr::Sym;
 use crate::Real;
 use crate::calculus::{CalculusError, Params};
 use crate::function::Function;
+use crate::inputs::{Input, InputError, count};
 use crate::quad::{QuadError, Tolerance, integrate};
 
 const AXES: [&str; 3] = ["x", "y", "z"];
@@ -46,14 +47,45 @@ pub struct PathWork {
     pub length: Real,
 }
 
+impl Path {
+    /// The curve `r(s)`: one formula per component (`"cos(s)"`, `"sin(s)"`) of the parameter
+    /// `var`, with `params` for the other names, for `var` from `from` to `to`.
+    ///
+    /// ```
+    /// use mechkit::energy::Path;
+    /// let circle = Path::parametric(&["cos(s)", "sin(s)"], "s", (0.0, 1.0), &[]).unwrap();
+    /// assert!(matches!(circle, Path::Parametric { .. }));
+    /// ```
+    pub fn parametric(
+        components: &[&str],
+        var: &str,
+        (from, to): (Real, Real),
+        params: &Params,
+    ) -> Result<Self, CalculusError> {
+        let components = components
+            .iter()
+            .map(|c| Function::parse(c, &[var], params))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Path::Parametric {
+            components,
+            from,
+            to,
+        })
+    }
+}
+
 impl ForceField {
     /// Parses one formula per component (2 or 3), functions of `x`, `y` (and `z`).
     pub fn parse(components: &[&str], params: &Params) -> Result<Self, CalculusError> {
         if !(2..=3).contains(&components.len()) {
-            return Err(CalculusError::Invalid(format!(
-                "a force field has 2 or 3 components (Fx, Fy[, Fz]), not {}",
-                components.len()
-            )));
+            return Err(InputError::new(
+                Input::Field,
+                format!(
+                    "a force field has 2 or 3 components (Fx, Fy[, Fz]), not {}",
+                    components.len()
+                ),
+            )
+            .into());
         }
         let vars = &AXES[..components.len()];
         let components = components
@@ -196,11 +228,15 @@ impl ForceField {
                 to,
             } => {
                 if components.len() != n {
-                    return Err(CalculusError::Invalid(format!(
-                        "the path has {} components but the field has {n}: give the path one \
-                         component per coordinate of the field, e.g. `cos(s), sin(s)` in 2-D",
-                        components.len()
-                    )));
+                    return Err(InputError::new(
+                        Input::Path,
+                        format!(
+                            "the path has {} but the field has {n}: give the path one \
+                             component per coordinate of the field, e.g. `cos(s), sin(s)` in 2-D",
+                            count(components.len(), "component")
+                        ),
+                    )
+                    .into());
                 }
                 let var = components[0].vars()[0].clone();
                 let tangent: Vec<Function> = components.iter().map(|c| c.diff(&var)).collect();
@@ -231,9 +267,14 @@ impl ForceField {
             }
             Path::Polyline(points) => {
                 if points.len() < 2 || points.iter().any(|p| p.len() != n) {
-                    return Err(CalculusError::Invalid(format!(
-                        "a path of straight segments needs at least 2 points of {n} coordinates"
-                    )));
+                    return Err(InputError::new(
+                        Input::Through,
+                        format!(
+                            "a path of straight segments needs at least 2 points of {}",
+                            count(n, "coordinate")
+                        ),
+                    )
+                    .into());
                 }
                 let (mut work, mut error, mut length) = (0.0, 0.0, 0.0);
                 for seg in points.windows(2) {

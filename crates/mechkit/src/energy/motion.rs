@@ -6,8 +6,45 @@ use super::diagram::{Diagram, Region};
 use super::potential::Potential;
 use crate::Real;
 
+/// What ends the motion on one side of the start: a turning point, the end of the range
+/// analysed (the body leaves it), or a singular point of the potential.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(tag = "kind", rename_all = "snake_case"))]
+#[non_exhaustive]
+pub enum Bound {
+    /// `U = E` here: the body stops and turns back.
+    TurningPoint {
+        /// Where.
+        x: Real,
+    },
+    /// The body reaches the end of the range with speed left: it leaves the range.
+    RangeEnd {
+        /// The end of the range.
+        x: Real,
+    },
+    /// The body reaches a point where `U` or `F` is infinite or undefined.
+    SingularPoint {
+        /// Where.
+        x: Real,
+    },
+}
+
+impl Bound {
+    /// Where the bound is.
+    pub fn x(self) -> Real {
+        match self {
+            Bound::TurningPoint { x } | Bound::RangeEnd { x } | Bound::SingularPoint { x } => x,
+        }
+    }
+}
+
 /// Where a body can go, and how fast, with the energy it starts with.
+///
+/// Serialized as `{mass, x0, v0, energy, left_turn, right_turn, left, right}`, each bound as
+/// `{kind: "turning_point" | "range_end" | "singular_point", x}`.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Motion {
     /// Mass.
     pub mass: Real,
@@ -18,16 +55,32 @@ pub struct Motion {
     /// `E = ½mv0² + U(x0)`.
     pub energy: Real,
     /// The diagram with this energy (its `energy` field is set).
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub diagram: Diagram,
     /// `v(x)` at the diagram's grid points, NaN where forbidden.
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub speed: Vec<Real>,
     /// The turning point below `x0`, if the motion is bounded on that side inside the range.
     pub left_turn: Option<Real>,
     /// The turning point above `x0`.
     pub right_turn: Option<Real>,
+    /// What bounds the motion below `x0`.
+    pub left: Bound,
+    /// What bounds the motion above `x0`.
+    pub right: Bound,
 }
 
 impl Motion {
+    /// Whether the body first moves towards larger `x`: the direction of `v0`, or at rest the
+    /// direction of the force at `x0` (`false` when there is none: it stays).
+    pub fn moves_right_first(&self, p: &Potential) -> bool {
+        match self.v0.partial_cmp(&0.0) {
+            Some(std::cmp::Ordering::Greater) => true,
+            Some(std::cmp::Ordering::Less) => false,
+            _ => p.force(self.x0) > 0.0,
+        }
+    }
+
     /// `v(x) = sqrt(2(E - U(x))/m)`, NaN where `U(x) > E`.
     pub fn speed_at(&self, p: &Potential, x: Real) -> Real {
         let u = p.potential_between(self.x0, x, p.potential(self.x0));
@@ -74,15 +127,25 @@ impl Potential {
                 }
             })
             .collect();
-        let (mut left_turn, mut right_turn) = (None, None);
+        let (lo, hi) = (from.min(to), from.max(to));
+        let (mut left, mut right) = (Bound::RangeEnd { x: lo }, Bound::RangeEnd { x: hi });
         if let Some(cut) = &diagram.energy {
             let here: Option<&Region> = cut.regions.iter().find(|r| (r.from..=r.to).contains(&x0));
             if let Some(r) = here {
-                let is_turn = |x: Real| cut.turning_points.contains(&x);
-                left_turn = is_turn(r.from).then_some(r.from);
-                right_turn = is_turn(r.to).then_some(r.to);
+                let bound = |x: Real| {
+                    if cut.turning_points.contains(&x) {
+                        Bound::TurningPoint { x }
+                    } else if diagram.singularities.contains(&x) {
+                        Bound::SingularPoint { x }
+                    } else {
+                        Bound::RangeEnd { x }
+                    }
+                };
+                (left, right) = (bound(r.from), bound(r.to));
             }
         }
+        let turn = |b: Bound| matches!(b, Bound::TurningPoint { .. }).then(|| b.x());
+        let (left_turn, right_turn) = (turn(left), turn(right));
         Motion {
             mass,
             x0,
@@ -92,6 +155,8 @@ impl Potential {
             speed,
             left_turn,
             right_turn,
+            left,
+            right,
         }
     }
 }

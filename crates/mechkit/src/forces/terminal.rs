@@ -27,6 +27,23 @@ pub enum DragLaw {
 }
 
 impl DragLaw {
+    /// The coefficient's symbol: `D` (quadratic) or `b` (linear).
+    pub fn symbol(self) -> &'static str {
+        match self {
+            DragLaw::Linear => "b",
+            DragLaw::Quadratic => "D",
+        }
+    }
+
+    /// The units of the drag per unit weight, per unit mass, and of the coefficient:
+    /// `(s^2/m^2, 1/m, kg/m)` quadratic, `(s/m, 1/s, kg/s)` linear.
+    pub fn units(self) -> (&'static str, &'static str, &'static str) {
+        match self {
+            DragLaw::Quadratic => ("s^2/m^2", "1/m", "kg/m"),
+            DragLaw::Linear => ("s/m", "1/s", "kg/s"),
+        }
+    }
+
     /// Parses `linear` or `quadratic`.
     pub fn parse(text: &str) -> Option<DragLaw> {
         match text {
@@ -65,6 +82,14 @@ pub enum TerminalError {
     /// The times do not increase.
     #[error("the times must increase (sample {0})")]
     Unordered(usize),
+    /// No sample at or after the time the fit should start from.
+    #[error("no sample at or after t = {from} s (the data end at t = {last} s)")]
+    NothingAfter {
+        /// The time asked for (s).
+        from: Real,
+        /// The last sample's time (s).
+        last: Real,
+    },
 }
 
 /// The drag that balances the weight at a terminal speed.
@@ -137,6 +162,7 @@ fn positive(what: &'static str, value: Real) -> Result<(), TerminalError> {
 /// A straight line fitted through position samples: the steady speed and how well a line
 /// describes them.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SteadyFit {
     /// The slope (m/s): the velocity, signed.
     pub velocity: Real,
@@ -182,6 +208,152 @@ pub fn steady_fit(t: &[Real], x: &[Real], from: usize) -> Result<SteadyFit, Term
     })
 }
 
+/// [`steady_fit`] from the first sample at or after the time `from` (s), or through the
+/// second half of the samples without it.
+pub fn steady_fit_from(
+    t: &[Real],
+    x: &[Real],
+    from: Option<Real>,
+) -> Result<SteadyFit, TerminalError> {
+    let start = match from {
+        Some(t0) => t
+            .iter()
+            .position(|&ti| ti >= t0)
+            .ok_or(TerminalError::NothingAfter {
+                from: t0,
+                last: t.last().copied().unwrap_or(Real::NAN),
+            })?,
+        None => t.len() / 2,
+    };
+    steady_fit(t, x, start)
+}
+
+impl SteadyFit {
+    /// A warning when the two halves of the fitted part fall at speeds more than 5% apart:
+    /// the body was still accelerating there.
+    pub fn unsteady_warning(&self) -> Option<String> {
+        let (a, b) = self.half_slopes;
+        let spread = (a - b).abs() / a.abs().max(b.abs());
+        (spread > 0.05).then(|| {
+            format!(
+                "the speed is not steady in the fitted part: its halves fall at {} and {} m/s ({:.0}% apart); fit a later part with --from",
+                number(a),
+                number(b),
+                100.0 * spread
+            )
+        })
+    }
+}
+
+/// The written form of a number: the shortest text that reads back as it.
+fn number(x: Real) -> String {
+    let mut s = String::new();
+    crate::csv::push_number(&mut s, x);
+    s
+}
+
+/// The frontal area of a body: given, or of a round body of a radius (π r²).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Area {
+    /// The area (m²).
+    Given(Real),
+    /// The radius of a round body (m).
+    Radius(Real),
+}
+
+impl Area {
+    /// The area (m²).
+    pub fn value(self) -> Real {
+        match self {
+            Area::Given(a) => a,
+            Area::Radius(r) => std::f64::consts::PI * r * r,
+        }
+    }
+}
+
+/// The drag that balances the weight at a terminal speed, as `mechkit terminal` reports it.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct TerminalReport {
+    /// `quadratic` or `linear`.
+    pub law: &'static str,
+    /// v_T (m/s).
+    pub terminal_speed: Real,
+    /// D/(m g) = 1/v_T² or b/(m g) = 1/v_T.
+    pub per_weight: Real,
+    /// Its unit.
+    pub per_weight_unit: &'static str,
+    /// D/m or b/m: the course's constant in a = −g − (D/m) v|v|.
+    pub per_mass: Real,
+    /// Its unit.
+    pub per_mass_unit: &'static str,
+    /// g (m/s²).
+    pub g: Real,
+    /// D (kg/m) or b (kg/s), with the mass.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub coefficient: Option<Real>,
+    /// Its unit.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub coefficient_unit: Option<&'static str>,
+    /// C_d = 2D/(ρA), with the mass, the density and the area (quadratic drag).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub drag_coefficient: Option<Real>,
+    /// The line fitted through position samples, when v_T came from one.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub fit: Option<SteadyFit>,
+    /// Why the fit's speed is not steady.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub warning: Option<String>,
+    /// The law.
+    #[cfg_attr(feature = "serde", serde(skip))]
+    pub drag_law: DragLaw,
+}
+
+impl TerminalDrag {
+    /// The report in gravity `g`: with `mass` the coefficient, with the fluid's `density` and
+    /// the body's `area` too the drag coefficient; `fit` the line v_T came from, if any.
+    ///
+    /// ```
+    /// use mechkit::forces::terminal::{Area, DragLaw, TerminalDrag};
+    /// let d = TerminalDrag::new(20.0, DragLaw::Quadratic).unwrap();
+    /// let r = d.report(9.81, Some(0.057), Some((1.2, Area::Radius(0.033))), None).unwrap();
+    /// let a = std::f64::consts::PI * 0.033f64.powi(2);
+    /// let cd = 2.0 * 0.057 * 9.81 / (1.2 * a * 400.0);
+    /// assert!((r.drag_coefficient.unwrap() - cd).abs() < 1e-12 * cd);
+    /// assert_eq!(r.coefficient_unit, Some("kg/m"));
+    /// ```
+    pub fn report(
+        &self,
+        g: Real,
+        mass: Option<Real>,
+        fluid: Option<(Real, Area)>,
+        fit: Option<SteadyFit>,
+    ) -> Result<TerminalReport, TerminalError> {
+        positive("g", g)?;
+        let coefficient = mass.map(|m| self.coefficient(m, g)).transpose()?;
+        let drag_coefficient = match (mass, fluid) {
+            (Some(m), Some((rho, area))) => self.drag_coefficient(m, g, rho, area.value())?,
+            _ => None,
+        };
+        let (per_weight_unit, per_mass_unit, coefficient_unit) = self.law.units();
+        Ok(TerminalReport {
+            law: self.law.name(),
+            terminal_speed: self.terminal_speed,
+            per_weight: self.per_weight,
+            per_weight_unit,
+            per_mass: self.per_weight * g,
+            per_mass_unit,
+            g,
+            coefficient,
+            coefficient_unit: coefficient.map(|_| coefficient_unit),
+            drag_coefficient,
+            warning: fit.and_then(|f| f.unsteady_warning()),
+            fit,
+            drag_law: self.law,
+        })
+    }
+}
+
 /// Least-squares slope and intercept (centred sums, for accuracy).
 fn line(t: &[Real], x: &[Real]) -> (Real, Real) {
     let n = t.len() as Real;
@@ -223,6 +395,29 @@ mod tests {
         assert!((cd - want).abs() < 1e-12 * want);
         assert!(TerminalDrag::new(0.0, DragLaw::Linear).is_err());
         assert!(TerminalDrag::from_fall(1.0, 0.0, DragLaw::Linear).is_err());
+    }
+
+    #[test]
+    fn a_fit_from_a_time_warns_when_the_fall_is_not_steady() {
+        let (g, d): (Real, Real) = (9.81, 0.5);
+        let t: Vec<Real> = (0..600).map(|i| Real::from(i) * 0.01).collect();
+        let y: Vec<Real> = t
+            .iter()
+            .map(|&t| 100.0 - ((g * d).sqrt() * t).cosh().ln() / d)
+            .collect();
+        let late = steady_fit_from(&t, &y, Some(3.0)).expect("fit");
+        assert_eq!(late.samples, 300);
+        assert!(late.unsteady_warning().is_none());
+        let early = steady_fit_from(&t[..100], &y[..100], Some(0.0)).expect("fit");
+        assert!(early.unsteady_warning().unwrap().contains("not steady"));
+        assert!(matches!(
+            steady_fit_from(&t, &y, Some(10.0)),
+            Err(TerminalError::NothingAfter { .. })
+        ));
+        let drag = TerminalDrag::new(late.velocity, DragLaw::Quadratic).unwrap();
+        let r = drag.report(g, None, None, Some(late)).unwrap();
+        assert!((r.per_mass - d).abs() < 1e-6);
+        assert!(r.coefficient.is_none() && r.warning.is_none());
     }
 
     #[test]

@@ -14,6 +14,9 @@
 //!   [`PixelBody::mass_properties`]: the body as a thin plate with its inertia tensor
 //!   (`I_zz = Σ mᵢ (|rᵢ − r̄|² + s²/6)`, the polar moment about the axis through the centre
 //!   of mass perpendicular to the image).
+//! - [`PixelBody::report`] with [`ImageOptions`]: everything measured, as an [`ImageReport`]
+//!   (what `mechkit com IMAGE` prints), with the radius of gyration
+//!   [`PixelBody::radius_of_gyration`].
 //! - [`Raster::marked`]: the selected pixels tinted and the centre of mass marked (and
 //!   `marked_png` with the feature `image`).
 //!
@@ -40,6 +43,7 @@ mod mark;
 mod pixel_body;
 mod pixel_frame;
 mod raster;
+mod report;
 mod selection;
 #[cfg(test)]
 mod tests;
@@ -57,4 +61,5 @@ pub use mark::{MARK, OUTLINE, TINT};
 pub use pixel_body::PixelBody;
 pub use pixel_frame::PixelFrame;
 pub use raster::Raster;
+pub use report::{ImageOptions, ImageReport, PlateAbout, PlateInertia};
 pub use selection::{Channel, Density, Selection};

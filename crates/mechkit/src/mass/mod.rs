@@ -1,8 +1,11 @@
 //! Mass properties: systems of point masses (centre of mass, momentum, the centre-of-mass
 //! frame and the kinetic-energy split), and rigid bodies: mass, centre of mass and inertia
 //! tensor of standard shapes, polygons and triangle meshes, composites with holes, and
-//! photographs (the pixels of the body).
+//! photographs (the pixels of the body). The reports of a body ([`BodySummary`]: its centre
+//! of mass, its inertia tensor, principal axes and the moment about an axis) are what
+//! `mechkit com` and `mechkit inertia` print.
 
+mod body_report;
 mod composite;
 pub mod image;
 mod mesh;
@@ -15,9 +18,12 @@ use thiserror::Error;
 
 use crate::Real;
 
+pub use body_report::{
+    AxisMoment, BodyCentreOfMass, BodySummary, InertiaReport, PartSummary, PointDistance,
+};
 pub use composite::{Amount, Body, Part};
 pub use mesh::TriangleMesh;
-pub use points::{MassSummary, PointMassError, PointMasses};
+pub use points::{MassSummary, PointMassError, PointMassInput, PointMassReport, PointMasses};
 pub use polygon::Polygon;
 pub use properties::{
     MassProperties, Mat3, Principal, Vec3, inertia_from_second_moment, parallel_axis, principal,
@@ -63,7 +69,46 @@ pub enum MassError {
         "the mesh is not closed: {0}; a mesh must enclose a volume: every edge shared by exactly two faces"
     )]
     OpenMesh(String),
+    /// An axis direction of zero length.
+    #[error(
+        "the axis direction ({}, {}, {}) has no length; give a non-zero direction, e.g. 0, 0, 1 for the z axis",
+        direction[0],
+        direction[1],
+        direction[2]
+    )]
+    ZeroAxis {
+        /// The direction given.
+        direction: [Real; 3],
+    },
+    /// A total mass to rescale a body to that is not positive and finite.
+    #[error("the total mass is {mass} kg; it must be a positive mass, e.g. 2 kg")]
+    TotalMass {
+        /// The value.
+        mass: Real,
+    },
     /// Any other invalid value.
     #[error("{0}")]
     Invalid(String),
+}
+
+/// The input of a mass report that a [`MassError`] is about (the errors of a body's parts
+/// are located in its file instead).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum MassInput {
+    /// The direction of an axis.
+    Axis,
+    /// The total mass the body is rescaled to.
+    TotalMass,
+}
+
+impl MassError {
+    /// The input the error is about, when it is one of a report's rather than of the body.
+    pub fn input(&self) -> Option<MassInput> {
+        match self {
+            Self::ZeroAxis { .. } => Some(MassInput::Axis),
+            Self::TotalMass { .. } => Some(MassInput::TotalMass),
+            _ => None,
+        }
+    }
 }

@@ -134,10 +134,9 @@ impl MassProperties {
     pub fn moment_about_axis(&self, point: &Vec3, direction: &Vec3) -> Result<Real, MassError> {
         let n = direction.norm();
         if !(n.is_finite() && n > 0.0) {
-            return Err(MassError::Invalid(format!(
-                "the axis direction ({}, {}, {}) has no length; give a non-zero direction, e.g. 0, 0, 1 for the z axis",
-                direction.x, direction.y, direction.z
-            )));
+            return Err(MassError::ZeroAxis {
+                direction: [direction.x, direction.y, direction.z],
+            });
         }
         let u = direction / n;
         Ok((u.transpose() * self.inertia_about(point) * u)[(0, 0)])

@@ -182,6 +182,29 @@ impl AtomsFile {
         Ok(Self { dim: 3, vectors })
     }
 
+    /// The edge lengths of an open box around the particles: their extent along each of the
+    /// `dim` axes plus `margin` on both sides (0 on unused axes).
+    ///
+    /// ```
+    /// use mechkit::md::AtomsFile;
+    /// let f = AtomsFile::parse_csv("0, 1\n1.5, -1\n").unwrap();
+    /// assert_eq!(f.extent_with_margin(2.5), [6.5, 7.0, 0.0]);
+    /// ```
+    pub fn extent_with_margin(&self, margin: Real) -> [Real; 3] {
+        std::array::from_fn(|a| {
+            if a >= self.dim {
+                return 0.0;
+            }
+            let (lo, hi) = self
+                .vectors
+                .iter()
+                .fold((Real::MAX, Real::MIN), |(lo, hi), p| {
+                    (lo.min(p[a]), hi.max(p[a]))
+                });
+            hi - lo + 2.0 * margin
+        })
+    }
+
     /// Parses `text` as XYZ if `name` ends in `.xyz`, as CSV otherwise.
     pub fn parse(name: &str, text: &str) -> Result<Self, MdError> {
         if name.to_ascii_lowercase().ends_with(".xyz") {

@@ -4,15 +4,81 @@ use thiserror::Error;
 
 use crate::Real;
 
+/// The input of a many-particle system or run that an [`MdError`] is about, so that a front
+/// can name its own field for it (a flag, a form field).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum MdInput {
+    /// The number density of a lattice.
+    Density,
+    /// The initial temperature.
+    Temperature,
+    /// The time step.
+    TimeStep,
+    /// The neighbour-list skin.
+    Skin,
+    /// The number of threads.
+    Threads,
+    /// The cut-off of the pair potential.
+    Cutoff,
+    /// The mass of a particle.
+    Mass,
+    /// ε of Lennard-Jones or soft spheres.
+    Epsilon,
+    /// σ of Lennard-Jones or soft spheres.
+    Sigma,
+    /// The stiffness k of springs.
+    SpringConstant,
+    /// The rest length of springs.
+    RestLength,
+    /// An edge length of the box.
+    BoxLength,
+    /// The number of atoms (unit cells of a lattice, or particles of a file).
+    Atoms,
+    /// The steps between thermo rows.
+    ThermoEvery,
+    /// The steps between frames.
+    FrameEvery,
+}
+
+impl MdInput {
+    /// The input as messages name it (`the density`, `the time step dt`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Density => "the density",
+            Self::Temperature => "the temperature",
+            Self::TimeStep => "the time step dt",
+            Self::Skin => "the skin",
+            Self::Threads => "the number of threads",
+            Self::Cutoff => "the cut-off",
+            Self::Mass => "the mass",
+            Self::Epsilon => "epsilon",
+            Self::Sigma => "sigma",
+            Self::SpringConstant => "k",
+            Self::RestLength => "the rest length",
+            Self::BoxLength => "a box length",
+            Self::Atoms => "the number of atoms",
+            Self::ThermoEvery => "the number of steps between thermo rows",
+            Self::FrameEvery => "the number of steps between frames",
+        }
+    }
+}
+
+impl std::fmt::Display for MdInput {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// An invalid box, lattice, potential or run setting of [`crate::md`].
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum MdError {
     /// A parameter that must be positive and finite is not.
-    #[error("{name} is {value}; it must be positive and finite")]
+    #[error("{input} is {value}; it must be positive and finite")]
     NotPositive {
-        /// Which parameter (`the density`, `the time step dt`, …).
-        name: &'static str,
+        /// Which parameter.
+        input: MdInput,
         /// The value given.
         value: Real,
     },
@@ -33,10 +99,10 @@ pub enum MdError {
         dim: usize,
     },
     /// A count above what this code runs (atoms, threads).
-    #[error("{what} would be {value}, more than {max}; {hint}")]
+    #[error("{input} would be {value}, more than {max}; {hint}")]
     TooMany {
-        /// What is counted (`the number of atoms`, `the number of threads`).
-        what: &'static str,
+        /// What is counted (atoms, threads).
+        input: MdInput,
         /// The count asked for (saturated at `u64::MAX`).
         value: u64,
         /// The limit.
@@ -99,6 +165,18 @@ pub enum MdError {
         /// What is wrong there.
         message: String,
     },
+}
+
+impl MdError {
+    /// The input the error is about, when it is about one.
+    pub fn input(&self) -> Option<MdInput> {
+        match self {
+            Self::NotPositive { input, .. } | Self::TooMany { input, .. } => Some(*input),
+            Self::NoCells { .. } | Self::TooFewParticles { .. } => Some(MdInput::Atoms),
+            Self::BoxTooSmall { .. } => Some(MdInput::BoxLength),
+            _ => None,
+        }
+    }
 }
 
 /// A length for a message: 6 significant digits (`2.17674`, not `2.176743828161131`).

@@ -7,7 +7,7 @@
 
 use crate::Real;
 
-use super::{MdError, SimBox};
+use super::{MdError, MdInput, SimBox};
 
 /// A crystal lattice to start from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -107,7 +107,7 @@ impl Lattice {
         }
         if !(density.is_finite() && density > 0.0) {
             return Err(MdError::NotPositive {
-                name: "the density",
+                input: MdInput::Density,
                 value: density,
             });
         }
@@ -118,7 +118,7 @@ impl Lattice {
             .unwrap_or(u64::MAX);
         if atoms > super::MAX_ATOMS as u64 {
             return Err(MdError::TooMany {
-                what: "the number of atoms",
+                input: MdInput::Atoms,
                 value: atoms,
                 max: super::MAX_ATOMS as u64,
                 hint: "use fewer unit cells",

@@ -7,8 +7,11 @@
 //! the minimum image ([`SimBox`], 1-D to 3-D). [`Md`] advances the system by velocity Verlet, starting from a [`Lattice`] (chain,
 //! square, hexagonal, simple cubic, fcc) and [`maxwell_boltzmann`] velocities with zero
 //! momentum from a seeded generator ([`Xoshiro256`]). Observables: energies, temperature,
-//! virial pressure ([`Thermo`]), g(r) and the mean-square displacement; frames as extended
-//! XYZ; initial particles may be read from a small CSV or XYZ file ([`AtomsFile`]). Forces
+//! virial pressure ([`Thermo`], its CSV columns with units), g(r) (`rdf_table`) and the
+//! mean-square displacement; frames as extended XYZ; initial particles may be read from a
+//! small CSV or XYZ file ([`AtomsFile`]). A run of many steps hands its thermo rows and frames
+//! to an [`MdObserver`] as they come ([`Md::run_observed`], stopped by a `Cancel` handle) and
+//! ends in an [`MdReport`]. Forces
 //! run on `threads` threads over a fixed split of the box into slabs, with a result
 //! bit-identical to the serial one.
 //!
@@ -36,7 +39,9 @@ mod lattice;
 mod neighbour;
 mod observe;
 mod potential;
+mod report;
 mod rng;
+mod run;
 mod sim_box;
 mod system;
 mod velocities;
@@ -49,13 +54,15 @@ pub const MAX_ATOMS: usize = 10_000_000;
 pub const MAX_THREADS: usize = 256;
 
 pub use atoms_file::AtomsFile;
-pub use error::MdError;
+pub use error::{MdError, MdInput};
 pub use forces::{ForceScratch, PairSums, all_pairs_forces, compute_forces, compute_forces_with};
 pub use lattice::Lattice;
 pub use neighbour::NeighbourList;
-pub use observe::Thermo;
+pub use observe::{Thermo, ThermoPerAtom};
 pub use potential::{LennardJones, LinearSpring, PairPotential, SoftSphere};
+pub use report::MdReport;
 pub use rng::Xoshiro256;
+pub use run::{MdObserver, MdRun, MdStop, RunPlan};
 pub use sim_box::SimBox;
 pub use system::{Md, MdConfig};
 pub use velocities::maxwell_boltzmann;

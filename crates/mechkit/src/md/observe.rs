@@ -5,6 +5,7 @@
 //! momentum fixed), P = (N T + W / d) / V with the virial W = Σ_pairs r_ij · F_ij.
 
 use crate::Real;
+use crate::csv::{Column, Table};
 
 use super::{Md, PairPotential};
 
@@ -28,22 +29,95 @@ pub struct Thermo {
 }
 
 impl Thermo {
-    /// The CSV header matching [`Thermo::csv_row`].
-    pub const CSV_HEADER: &'static str = "step,t,kinetic,potential,total,temperature,pressure";
+    /// The CSV column names of [`Thermo::values`].
+    pub const NAMES: [&'static str; 7] = [
+        "step",
+        "t",
+        "kinetic",
+        "potential",
+        "total",
+        "temperature",
+        "pressure",
+    ];
 
-    /// The row as CSV (full precision).
-    pub fn csv_row(&self) -> String {
-        format!(
-            "{},{},{},{},{},{},{}",
-            self.step,
+    /// The CSV columns of [`Thermo::values`] with their units, in reduced units (ε, σ, τ,
+    /// k_B = 1) for a box of `dim` dimensions: step `1`, t `tau`, energies `epsilon`,
+    /// temperature `epsilon/k_B`, pressure `epsilon/sigma^dim` (a force per length, area or
+    /// volume).
+    ///
+    /// ```
+    /// use mechkit::md::Thermo;
+    /// let units: Vec<_> = Thermo::columns(3).into_iter().map(|c| c.unit.unwrap()).collect();
+    /// assert_eq!(units, ["1", "tau", "epsilon", "epsilon", "epsilon", "epsilon/k_B", "epsilon/sigma^3"]);
+    /// assert_eq!(Thermo::columns(1)[6].unit.as_deref(), Some("epsilon/sigma"));
+    /// ```
+    pub fn columns(dim: usize) -> Vec<Column> {
+        let pressure = match dim {
+            1 => "epsilon/sigma".to_string(),
+            d => format!("epsilon/sigma^{d}"),
+        };
+        let units = [
+            "1",
+            "tau",
+            "epsilon",
+            "epsilon",
+            "epsilon",
+            "epsilon/k_B",
+            pressure.as_str(),
+        ];
+        Self::NAMES
+            .iter()
+            .zip(units)
+            .map(|(name, unit)| Column::new(*name, unit))
+            .collect()
+    }
+
+    /// The row as numbers, in the order of [`Thermo::columns`].
+    pub fn values(&self) -> [Real; 7] {
+        [
+            self.step as Real,
             self.t,
             self.kinetic,
             self.potential,
             self.total,
             self.temperature,
-            self.pressure
-        )
+            self.pressure,
+        ]
     }
+
+    /// The row with its energies per atom, for `n` atoms (as LAMMPS prints them).
+    pub fn per_atom(&self, n: usize) -> ThermoPerAtom {
+        let n = n.max(1) as Real;
+        ThermoPerAtom {
+            step: self.step,
+            t: self.t,
+            temperature: self.temperature,
+            potential_per_atom: self.potential / n,
+            total_per_atom: self.total / n,
+            kinetic_per_atom: self.kinetic / n,
+            pressure: self.pressure,
+        }
+    }
+}
+
+/// A thermo row with its energies per atom: what `mechkit md` prints and reports.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ThermoPerAtom {
+    /// Steps taken.
+    pub step: usize,
+    /// Time (τ).
+    pub t: Real,
+    /// Temperature (ε/k_B).
+    pub temperature: Real,
+    /// Potential energy per atom U/N (ε).
+    pub potential_per_atom: Real,
+    /// Total energy per atom E/N (ε).
+    pub total_per_atom: Real,
+    /// Kinetic energy per atom K/N (ε).
+    pub kinetic_per_atom: Real,
+    /// Virial pressure (ε/σ^d).
+    pub pressure: Real,
 }
 
 impl<P: PairPotential> Md<P> {
@@ -121,5 +195,15 @@ impl<P: PairPotential> Md<P> {
                 )
             })
             .collect()
+    }
+
+    /// [`Md::radial_distribution`] as a table: columns `r` (σ) and `g` (1), what `rdf.csv`
+    /// holds.
+    pub fn rdf_table(&self, bins: usize, r_max: Real) -> Table {
+        let mut table = Table::new([Column::new("r", "sigma"), Column::new("g", "1")]);
+        for (r, g) in self.radial_distribution(bins, r_max) {
+            table.push(&[r, g]);
+        }
+        table
     }
 }

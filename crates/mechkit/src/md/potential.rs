@@ -8,7 +8,7 @@
 
 use crate::Real;
 
-use super::MdError;
+use super::{MdError, MdInput};
 
 /// A central pair potential, zero beyond its cut-off.
 pub trait PairPotential: Sync + Send {
@@ -33,13 +33,13 @@ pub struct LennardJones {
 impl LennardJones {
     /// ε, σ and the cut-off r_c; `shift` subtracts U(r_c) so the energy is continuous.
     pub fn new(epsilon: Real, sigma: Real, cutoff: Real, shift: bool) -> Result<Self, MdError> {
-        for (name, value) in [
-            ("epsilon", epsilon),
-            ("sigma", sigma),
-            ("the cut-off", cutoff),
+        for (input, value) in [
+            (MdInput::Epsilon, epsilon),
+            (MdInput::Sigma, sigma),
+            (MdInput::Cutoff, cutoff),
         ] {
             if !(value.is_finite() && value > 0.0) {
-                return Err(MdError::NotPositive { name, value });
+                return Err(MdError::NotPositive { input, value });
             }
         }
         let s6 = sigma.powi(6);
@@ -98,9 +98,9 @@ pub struct SoftSphere {
 impl SoftSphere {
     /// Stiffness ε and diameter σ.
     pub fn new(epsilon: Real, sigma: Real) -> Result<Self, MdError> {
-        for (name, value) in [("epsilon", epsilon), ("sigma", sigma)] {
+        for (input, value) in [(MdInput::Epsilon, epsilon), (MdInput::Sigma, sigma)] {
             if !(value.is_finite() && value > 0.0) {
-                return Err(MdError::NotPositive { name, value });
+                return Err(MdError::NotPositive { input, value });
             }
         }
         Ok(Self { epsilon, sigma })
@@ -136,13 +136,13 @@ pub struct LinearSpring {
 impl LinearSpring {
     /// Stiffness `k`, rest length `rest_length` and cut-off `cutoff` (> rest length).
     pub fn new(k: Real, rest_length: Real, cutoff: Real) -> Result<Self, MdError> {
-        for (name, value) in [
-            ("k", k),
-            ("the rest length", rest_length),
-            ("the cut-off", cutoff),
+        for (input, value) in [
+            (MdInput::SpringConstant, k),
+            (MdInput::RestLength, rest_length),
+            (MdInput::Cutoff, cutoff),
         ] {
             if !(value.is_finite() && value > 0.0) {
-                return Err(MdError::NotPositive { name, value });
+                return Err(MdError::NotPositive { input, value });
             }
         }
         Ok(Self {

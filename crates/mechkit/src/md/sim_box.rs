@@ -5,7 +5,7 @@
 
 use crate::Real;
 
-use super::MdError;
+use super::{MdError, MdInput};
 
 /// An orthorhombic box `[0, L₀) × [0, L₁) × [0, L₂)`, periodic per axis (minimum image).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -27,7 +27,7 @@ impl SimBox {
         for a in 0..dim {
             if !(lengths[a].is_finite() && lengths[a] > 0.0) {
                 return Err(MdError::NotPositive {
-                    name: "a box length",
+                    input: MdInput::BoxLength,
                     value: lengths[a],
                 });
             }

@@ -12,7 +12,7 @@ use rayon::prelude::*;
 use crate::Real;
 
 use super::forces::{CHUNK, compute_forces_with};
-use super::{ForceScratch, MdError, NeighbourList, PairPotential, PairSums, SimBox};
+use super::{ForceScratch, MdError, MdInput, NeighbourList, PairPotential, PairSums, SimBox};
 
 /// One particle's position and velocity (updated) with its force and its position at the
 /// last list build.
@@ -86,24 +86,24 @@ impl<P: PairPotential> Md<P> {
                 expected: x.len(),
             });
         }
-        for (name, value) in [
-            ("the time step dt", config.dt),
-            ("the mass", config.mass),
-            ("the skin", config.skin),
+        for (input, value) in [
+            (MdInput::TimeStep, config.dt),
+            (MdInput::Mass, config.mass),
+            (MdInput::Skin, config.skin),
         ] {
             if !(value.is_finite() && value > 0.0) {
-                return Err(MdError::NotPositive { name, value });
+                return Err(MdError::NotPositive { input, value });
             }
         }
         if config.threads == 0 {
             return Err(MdError::NotPositive {
-                name: "the number of threads",
+                input: MdInput::Threads,
                 value: 0.0,
             });
         }
         if config.threads > super::MAX_THREADS {
             return Err(MdError::TooMany {
-                what: "the number of threads",
+                input: MdInput::Threads,
                 value: config.threads as u64,
                 max: super::MAX_THREADS as u64,
                 hint: "more threads than cores only slow a run down",
@@ -111,7 +111,7 @@ impl<P: PairPotential> Md<P> {
         }
         if x.len() > super::MAX_ATOMS {
             return Err(MdError::TooMany {
-                what: "the number of atoms",
+                input: MdInput::Atoms,
                 value: x.len() as u64,
                 max: super::MAX_ATOMS as u64,
                 hint: "give fewer atoms",

@@ -7,7 +7,7 @@
 
 use crate::Real;
 
-use super::{MdError, Xoshiro256};
+use super::{MdError, MdInput, Xoshiro256};
 
 /// `n` velocities in `dim` dimensions for particles of mass `mass` at temperature `kt`
 /// (k_B T in energy units: T itself in reduced LJ units), from `seed`.
@@ -34,9 +34,9 @@ pub fn maxwell_boltzmann(
     if n < 2 {
         return Err(MdError::TooFewParticles { n });
     }
-    for (name, value) in [("the temperature", kt), ("the mass", mass)] {
+    for (input, value) in [(MdInput::Temperature, kt), (MdInput::Mass, mass)] {
         if !(value.is_finite() && value > 0.0) {
-            return Err(MdError::NotPositive { name, value });
+            return Err(MdError::NotPositive { input, value });
         }
     }
     let mut rng = Xoshiro256::seed(seed);

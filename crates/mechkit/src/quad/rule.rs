@@ -88,6 +88,40 @@ impl Rule {
         Some(rule)
     }
 
+    /// Reads a list of rule names, where `"all"` stands for the [basic](Rule::BASIC) rules
+    /// and Gauss-Legendre with 5 points. The error names the first unknown rule and lists the
+    /// known ones.
+    ///
+    /// # Example
+    /// ```
+    /// use mechkit::quad::Rule;
+    /// assert_eq!(Rule::parse_list(&["left", " simpson"]).unwrap(), [Rule::Left, Rule::Simpson]);
+    /// assert_eq!(Rule::parse_list(&["all"]).unwrap().len(), 6);
+    /// assert!(Rule::parse_list(&["trapezoidal"]).unwrap_err().contains("`trapezoidal`"));
+    /// ```
+    ///
+    /// # Errors
+    /// A name that is not a rule (the message says which names are).
+    pub fn parse_list<S: AsRef<str>>(names: &[S]) -> Result<Vec<Rule>, String> {
+        let mut rules = Vec::new();
+        for name in names.iter().map(|n| n.as_ref().trim()) {
+            if name == "all" {
+                rules.extend(Rule::BASIC);
+                rules.push(Rule::GaussLegendre(Rule::DEFAULT_GAUSS_POINTS));
+                continue;
+            }
+            match Rule::parse(name) {
+                Some(r) => rules.push(r),
+                None => {
+                    return Err(format!(
+                        "unknown rule `{name}`; use left, right, midpoint, trapezoid, simpson, gauss-legendre-N (e.g. gauss-legendre-5) or all"
+                    ));
+                }
+            }
+        }
+        Ok(rules)
+    }
+
     /// Order of convergence `p` for smooth integrands: the error scales as `h^p`
     /// (1, 1, 2, 2, 4 and `2N`).
     pub fn order(&self) -> usize {

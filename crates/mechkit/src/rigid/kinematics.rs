@@ -17,6 +17,7 @@ use std::f64::consts::TAU;
 use mechkit_expr::Sym;
 use thiserror::Error;
 
+use super::Input;
 use crate::Real;
 use crate::calculus::{CalculusError, Params};
 use crate::function::Function;
@@ -30,10 +31,22 @@ pub enum KinematicsError {
     /// The formula does not parse, or names lack values.
     #[error("{0}")]
     Formula(#[from] CalculusError),
+    /// A value needed for the question was not given.
+    #[error("{what} is needed {why}")]
+    Missing {
+        /// Which input.
+        input: Input,
+        /// The value, in words.
+        what: &'static str,
+        /// What needs it.
+        why: &'static str,
+    },
     /// A value that must be finite (and positive, where said) is not.
     #[error("{what} must be {must_be}, not {value}")]
     Value {
-        /// Which value.
+        /// Which input it is.
+        input: Input,
+        /// Which value, in words.
         what: &'static str,
         /// The value given.
         value: Real,
@@ -42,8 +55,20 @@ pub enum KinematicsError {
     },
 }
 
-fn check(
-    what: &'static str,
+impl KinematicsError {
+    /// The input the error is about (`None` for a formula's error: it names its own place).
+    pub fn input(&self) -> Option<Input> {
+        match self {
+            KinematicsError::Value { input, .. } | KinematicsError::Missing { input, .. } => {
+                Some(*input)
+            }
+            KinematicsError::Formula(_) => None,
+        }
+    }
+}
+
+pub(super) fn check(
+    (input, what): (Input, &'static str),
     value: Real,
     must_be: &'static str,
     ok: bool,
@@ -52,6 +77,7 @@ fn check(
         Ok(value)
     } else {
         Err(KinematicsError::Value {
+            input,
             what,
             value,
             must_be,
@@ -59,12 +85,12 @@ fn check(
     }
 }
 
-fn positive(what: &'static str, value: Real) -> Result<Real, KinematicsError> {
-    check(what, value, "positive and finite", value > 0.0)
+pub(super) fn positive(name: (Input, &'static str), value: Real) -> Result<Real, KinematicsError> {
+    check(name, value, "positive and finite", value > 0.0)
 }
 
-fn finite(what: &'static str, value: Real) -> Result<Real, KinematicsError> {
-    check(what, value, "finite", true)
+pub(super) fn finite(name: (Input, &'static str), value: Real) -> Result<Real, KinematicsError> {
+    check(name, value, "finite", true)
 }
 
 /// Which function of time the motion was given by.
@@ -74,6 +100,16 @@ pub enum Given {
     Angle,
     /// ω(t) and θ₀.
     AngularVelocity,
+}
+
+impl Given {
+    /// `theta` or `omega`: the name of the function given.
+    pub fn name(self) -> &'static str {
+        match self {
+            Given::Angle => "theta",
+            Given::AngularVelocity => "omega",
+        }
+    }
 }
 
 /// The rotation about a fixed axis given by θ(t) or ω(t) as formulas of `t`.
@@ -89,6 +125,7 @@ pub struct AngularMotion {
 
 /// θ, ω and α at one time, each derivative also by Ridders' method.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct AngularState {
     /// Time (s).
     pub t: Real,
@@ -142,7 +179,7 @@ impl AngularMotion {
         params: &Params,
         theta0: Real,
     ) -> Result<Self, KinematicsError> {
-        let theta0 = finite("θ₀", theta0)?;
+        let theta0 = finite((Input::InitialAngle, "θ₀"), theta0)?;
         let omega = Function::parse(text, &["t"], params)?;
         let alpha = omega.diff("t");
         let theta = omega.sym().integrate("t").map(|anti| {
@@ -242,9 +279,9 @@ impl UniformAngularAcceleration {
     /// ```
     pub fn new(omega0: Real, omega1: Real, duration: Real) -> Result<Self, KinematicsError> {
         Ok(Self {
-            omega0: finite("ω₀", omega0)?,
-            omega1: finite("ω₁", omega1)?,
-            duration: positive("the duration", duration)?,
+            omega0: finite((Input::InitialAngularVelocity, "ω₀"), omega0)?,
+            omega1: finite((Input::FinalAngularVelocity, "ω₁"), omega1)?,
+            duration: positive((Input::Time, "the duration"), duration)?,
         })
     }
 
@@ -280,12 +317,12 @@ impl CircularMotion {
     pub fn new(radius: Real, omega: Real) -> Result<Self, KinematicsError> {
         Ok(Self {
             radius: check(
-                "the radius",
+                (Input::Radius, "the radius"),
                 radius,
                 "non-negative and finite",
                 radius >= 0.0,
             )?,
-            omega: finite("ω", omega)?,
+            omega: finite((Input::AngularSpeed, "ω"), omega)?,
             alpha: 0.0,
         })
     }
@@ -299,19 +336,22 @@ impl CircularMotion {
     /// assert!((c.centripetal() - 2.0).abs() < 1e-15);
     /// ```
     pub fn from_speed(speed: Real, radius: Real) -> Result<Self, KinematicsError> {
-        let r = positive("the radius", radius)?;
-        Self::new(r, finite("the speed", speed)? / r)
+        let r = positive((Input::Radius, "the radius"), radius)?;
+        Self::new(r, finite((Input::Speed, "the speed"), speed)? / r)
     }
 
     /// From the period T = 2π/ω and R.
     pub fn from_period(period: Real, radius: Real) -> Result<Self, KinematicsError> {
-        Self::new(radius, TAU / positive("the period", period)?)
+        Self::new(
+            radius,
+            TAU / positive((Input::Period, "the period"), period)?,
+        )
     }
 
     /// With the angular acceleration α.
     pub fn with_alpha(self, alpha: Real) -> Result<Self, KinematicsError> {
         Ok(Self {
-            alpha: finite("α", alpha)?,
+            alpha: finite((Input::AngularAcceleration, "α"), alpha)?,
             ..self
         })
     }
@@ -320,7 +360,7 @@ impl CircularMotion {
     /// about its polar axis: radius R cos λ, same ω and α.
     pub fn at_latitude(self, latitude: Real) -> Result<Self, KinematicsError> {
         let lat = check(
-            "the latitude",
+            (Input::Latitude, "the latitude"),
             latitude,
             "between -90° and 90°",
             latitude.abs() <= std::f64::consts::FRAC_PI_2 * (1.0 + 1e-15),
@@ -368,7 +408,7 @@ impl Rolling {
     /// A wheel of positive radius.
     pub fn new(radius: Real) -> Result<Self, KinematicsError> {
         Ok(Self {
-            radius: positive("the radius", radius)?,
+            radius: positive((Input::Radius, "the radius"), radius)?,
         })
     }
 

@@ -5,6 +5,27 @@ use thiserror::Error;
 use crate::Real;
 use crate::ode::{AdaptiveError, ConfigError};
 
+/// The inputs of a rocket, named so that an error says which one it is about (a front maps
+/// them to its flags or keywords).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Input {
+    /// The mass at ignition `m0`.
+    IgnitionMass,
+    /// The mass at burnout `m1`.
+    BurnoutMass,
+    /// The mass rate `ṁ`.
+    MassRate,
+    /// The exhaust speed `u`.
+    ExhaustSpeed,
+    /// Gravity `g`.
+    Gravity,
+    /// The drag coefficient `D`.
+    Drag,
+    /// The integrator's settings.
+    Tolerance,
+}
+
 /// An invalid rocket, or a simulation of it that failed.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -12,6 +33,8 @@ pub enum RocketError {
     /// A mass that is not positive and finite.
     #[error("{which} is {value} kg; masses must be positive and finite")]
     Mass {
+        /// Which input: [`Input::IgnitionMass`] or [`Input::BurnoutMass`].
+        input: Input,
         /// Which mass (`the mass at ignition m0`, `the burnout mass m1`).
         which: &'static str,
         /// The value.
@@ -59,4 +82,26 @@ pub enum RocketError {
     /// The adaptive integrator could not advance.
     #[error(transparent)]
     Integrate(#[from] AdaptiveError),
+}
+
+impl RocketError {
+    /// The input the error is about (`None` when the integration failed).
+    ///
+    /// ```
+    /// use mechkit::rocket::{Input, Rocket};
+    /// let e = Rocket::new(1000.0, 2000.0, 10.0, 2000.0).unwrap_err();
+    /// assert_eq!(e.input(), Some(Input::BurnoutMass));
+    /// ```
+    pub fn input(&self) -> Option<Input> {
+        Some(match self {
+            RocketError::Mass { input, .. } => *input,
+            RocketError::Burnout { .. } => Input::BurnoutMass,
+            RocketError::MassRate { .. } => Input::MassRate,
+            RocketError::ExhaustSpeed { .. } => Input::ExhaustSpeed,
+            RocketError::Gravity { .. } => Input::Gravity,
+            RocketError::Drag { .. } => Input::Drag,
+            RocketError::Config(_) => Input::Tolerance,
+            RocketError::Integrate(_) => return None,
+        })
+    }
 }

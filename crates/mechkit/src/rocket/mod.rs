@@ -22,11 +22,16 @@
 //! state `(x, v, m)` with Dormand-Prince 5(4) through burnout (located exactly) and optionally
 //! the coast to the apex (an event of the one driver, [`crate::ode::run_to_event`]), and is the only answer when there is drag ([`RocketRun`]). The model
 //! has no launch pad: a rocket whose thrust is below its weight sinks at first.
+//!
+//! [`Rocket::report`] is the answer of `mechkit rocket` as a value ([`RocketReport`], with its
+//! table and plots); errors name their [`Input`].
 
 mod error;
+mod report;
 mod run;
 mod vehicle;
 
-pub use error::RocketError;
+pub use error::{Input, RocketError};
+pub use report::{Apex, Burnout, RocketReport};
 pub use run::RocketRun;
 pub use vehicle::Rocket;

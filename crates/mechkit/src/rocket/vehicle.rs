@@ -1,6 +1,6 @@
 //! The rocket's parameters, their checks, and the closed forms of its drag-free flight.
 
-use super::error::RocketError;
+use super::error::{Input, RocketError};
 use crate::Real;
 
 /// A rocket burning at a constant mass rate, flying along a vertical line (or in free space),
@@ -82,12 +82,16 @@ impl Rocket {
     pub fn validate(&self) -> Result<(), RocketError> {
         let positive = |v: Real| v.is_finite() && v > 0.0;
         let non_negative = |v: Real| v.is_finite() && v >= 0.0;
-        for (which, value) in [
-            ("the mass at ignition m0", self.m0),
-            ("the burnout mass m1", self.m1),
+        for (input, which, value) in [
+            (Input::IgnitionMass, "the mass at ignition m0", self.m0),
+            (Input::BurnoutMass, "the burnout mass m1", self.m1),
         ] {
             if !positive(value) {
-                return Err(RocketError::Mass { which, value });
+                return Err(RocketError::Mass {
+                    input,
+                    which,
+                    value,
+                });
             }
         }
         if self.m1 >= self.m0 {

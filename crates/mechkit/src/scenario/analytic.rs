@@ -45,6 +45,7 @@ impl Analytic {
                 label: format!("exact: {}", self.formula),
                 points: self.sample(lo, hi, ANALYTIC_POINTS),
                 style: LineStyle::Markers,
+                value: None,
             });
         }
     }

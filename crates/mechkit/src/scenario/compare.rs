@@ -7,7 +7,7 @@ use serde::Serialize;
 use super::Scenario;
 use super::error::{ErrorKind, ScenarioError};
 use crate::Real;
-use crate::figure::{PlotData, Series};
+use crate::figure::{PlotData, Scale, Series};
 use crate::ode::{AdaptiveConfig, Method, MethodKind, Tolerance};
 use crate::particles::{Sample, SampleKind};
 use crate::simulate::{Observer, ObserverError, RunReport, Simulation, Stepping};
@@ -278,22 +278,12 @@ impl Scenario {
                 event_error: event_t.zip(ref_event).map(|(a, b)| a - b),
                 stop_reason: report.stop_reason.name().to_string(),
             });
-            error_series.push(Series::line(
-                method.name(),
-                errors
-                    .iter()
-                    .filter(|p| p.1 > 0.0)
-                    .map(|&(t, d)| (t, d.log10()))
-                    .collect(),
-            ));
+            // drawn on log axes: an exact zero (the common start) is cut out of the curve there
+            error_series.push(Series::line(method.name(), errors));
             if energy.iter().any(|p| p.1.is_finite()) {
                 energy_series.push(Series::line(
                     method.name(),
-                    energy
-                        .iter()
-                        .filter(|p| p.1 != 0.0 && p.1.is_finite())
-                        .map(|&(t, e)| (t, e.log10()))
-                        .collect(),
+                    energy.iter().map(|&(t, e)| (t, e.abs())).collect(),
                 ));
             }
         }
@@ -301,8 +291,9 @@ impl Scenario {
             "position error against the reference",
             "compare_error",
             "t [s]",
-            "log10 of the position error [m]",
-        );
+            "position error [m]",
+        )
+        .with_y_scale(Scale::Log);
         error_plot.series = error_series;
         let mut plots = vec![error_plot];
         if !energy_series.is_empty() {
@@ -314,8 +305,9 @@ impl Scenario {
                 },
                 "compare_energy",
                 "t [s]",
-                "log10 of the relative energy error",
-            );
+                "relative energy error",
+            )
+            .with_y_scale(Scale::Log);
             energy_plot.series = energy_series;
             plots.push(energy_plot);
         }

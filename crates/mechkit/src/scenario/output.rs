@@ -13,8 +13,8 @@ use crate::Real;
 use crate::particles::{ParticleSystem, Sample, SampleKind};
 use crate::simulate::{Observer, ObserverError, StopReason};
 
-pub use crate::csv::write_atomic;
 use crate::csv::partial_path as temp_path;
+pub use crate::csv::write_atomic;
 
 /// How often a [`StreamFile`] hands its buffer to the operating system, at the least: a
 /// process killed outright loses at most about this much of its output.

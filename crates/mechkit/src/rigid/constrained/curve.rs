@@ -7,6 +7,7 @@ use crate::Real;
 use crate::calculus::Params;
 use crate::function::Function;
 use crate::interval::Jet;
+use crate::rigid::Input;
 
 /// Which side of the curve the body is on, relative to the unit normal n (the tangent turned
 /// counter-clockwise: up for a graph y(x) traversed in +x, outward for a circle).
@@ -106,6 +107,7 @@ impl Curve {
     pub fn circle(radius: Real) -> Result<Self, ConstrainedError> {
         if !(radius > 0.0 && radius.is_finite()) {
             return Err(ConstrainedError::Value {
+                input: Input::Radius,
                 what: "the radius",
                 value: radius,
                 must_be: "positive and finite",

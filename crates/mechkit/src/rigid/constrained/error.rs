@@ -5,6 +5,7 @@ use thiserror::Error;
 use crate::Real;
 use crate::calculus::CalculusError;
 use crate::ode::{AdaptiveError, ConfigError};
+use crate::rigid::Input;
 
 /// An invalid curve or start, or an integration that failed.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -16,6 +17,8 @@ pub enum ConstrainedError {
     /// A value that must be positive (or finite) is not.
     #[error("{what} is {value}; it must be {must_be}")]
     Value {
+        /// Which input it is.
+        input: Input,
         /// Which value (`the radius`, `g`, `t_max`, …).
         what: &'static str,
         /// The value given.
@@ -45,4 +48,17 @@ pub enum ConstrainedError {
     /// The adaptive integrator could not advance.
     #[error(transparent)]
     Integrate(#[from] AdaptiveError),
+}
+
+impl ConstrainedError {
+    /// The input the error is about (`None` when the integration failed).
+    pub fn input(&self) -> Option<Input> {
+        Some(match self {
+            ConstrainedError::Formula(_) => Input::Curve,
+            ConstrainedError::Value { input, .. } => *input,
+            ConstrainedError::Undefined { .. } | ConstrainedError::Start(_) => Input::StartPosition,
+            ConstrainedError::Config(_) => Input::Tolerance,
+            ConstrainedError::Integrate(_) => return None,
+        })
+    }
 }

@@ -25,12 +25,18 @@
 //! Checks (tests in `tests/rigid/constrained.rs`): sliding off a frictionless cylinder from the
 //! top leaves at cos θ = 2/3 + v₀²/(3gR); the loop-the-loop needs h = 5R/2; a bead on a circle
 //! is a pendulum with the exact period; energy is conserved while on the curve.
+//!
+//! [`BeadOnCurve::report`] is the answer of `mechkit bead` as a value ([`BeadReport`]): with
+//! the table and the plot, and at an equilibrium start its stability and, at an unstable top,
+//! where the slightest push would make the body leave ([`Equilibrium`]).
 
 mod curve;
 mod error;
 mod flight;
+mod report;
 mod run;
 
 pub use curve::{Curve, Side};
 pub use error::ConstrainedError;
+pub use report::{BeadFiles, BeadReport, DepartureReport, Equilibrium, LeavingPoint};
 pub use run::{BeadOnCurve, BeadRun, BeadSample, Departure, Landing, Start, StopReason};

@@ -11,6 +11,7 @@ use crate::ode::{
     AdaptiveConfig, AdaptiveRk, AdaptiveStats, EventEnd, OdeEvent, OdeSystem, Progress, State,
     Tableau, run_to_event,
 };
+use crate::rigid::Input;
 
 /// A body on a curve: the curve, the side it is on, its mass and gravity.
 #[derive(Debug, Clone, PartialEq)]
@@ -29,6 +30,7 @@ pub struct BeadOnCurve {
 /// for a circle) and the speed along the curve, positive in the direction of increasing
 /// coordinate.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Start {
     /// x (m) or φ (rad).
     pub coordinate: Real,
@@ -67,6 +69,7 @@ pub struct Departure {
 
 /// The free body meets the curve again.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Landing {
     /// Time (s).
     pub t: Real,
@@ -131,11 +134,16 @@ impl OdeSystem for System<'_> {
     }
 }
 
-fn positive(what: &'static str, value: Real, zero_ok: bool) -> Result<Real, ConstrainedError> {
+pub(super) fn positive(
+    (input, what): (Input, &'static str),
+    value: Real,
+    zero_ok: bool,
+) -> Result<Real, ConstrainedError> {
     if value.is_finite() && (value > 0.0 || (zero_ok && value == 0.0)) {
         Ok(value)
     } else {
         Err(ConstrainedError::Value {
+            input,
             what,
             value,
             must_be: if zero_ok {
@@ -153,8 +161,8 @@ impl BeadOnCurve {
         Ok(Self {
             curve,
             side,
-            mass: positive("the mass", mass, false)?,
-            g: positive("g", g, true)?,
+            mass: positive((Input::Mass, "the mass"), mass, false)?,
+            g: positive((Input::Gravity, "g"), g, true)?,
         })
     }
 
@@ -188,14 +196,16 @@ impl BeadOnCurve {
     /// reaches zero (a terminal event, enclosed on a circle and on a graph whose formulas
     /// compile, so a dip of N below zero narrower than a step is not missed; the step redone to
     /// end there), and flies freely, integrated by the same driver, until it meets the curve
-    /// again or `t_max` (the landing is an enclosed event on its gap from the curve).
+    /// again or `t_max` (the landing is an enclosed event on its gap from the curve). A body at
+    /// rest where the curve is level (an equilibrium, stable or not) stays there: the run is its
+    /// start and its state at `t_max`, without steps.
     pub fn simulate(
         &self,
         start: Start,
         t_max: Real,
         config: &AdaptiveConfig,
     ) -> Result<BeadRun, ConstrainedError> {
-        positive("t_max", t_max, false)?;
+        positive((Input::Duration, "t_max"), t_max, false)?;
         if !(start.coordinate.is_finite() && start.speed.is_finite()) {
             return Err(ConstrainedError::Start(format!(
                 "the start ({}, {}) must be finite",
@@ -216,6 +226,24 @@ impl BeadOnCurve {
         let (mut turning_times, mut drift) = (Vec::new(), 0.0_f64);
         let leaves = self.side != Side::Bead;
         let mut departure = None;
+        if qd0 == 0.0
+            && geo0.accel(0.0, self.g) == 0.0
+            && !(leaves && self.normal_force(state.y[0], 0.0) < 0.0)
+        {
+            // at rest where the curve is level: the solution is constant (an equilibrium; the
+            // turning-point event would be identically zero all along)
+            samples.push(self.sample(t_max, &state.y));
+            return Ok(BeadRun {
+                samples,
+                departure: None,
+                landing: None,
+                turning_times,
+                energy,
+                energy_drift: drift,
+                stop: StopReason::TimeLimit,
+                stats: rk.stats(),
+            });
+        }
         if leaves && self.normal_force(state.y[0], state.y[1]) < 0.0 {
             departure = Some(self.departure(&state));
         } else {

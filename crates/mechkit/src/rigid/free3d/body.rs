@@ -6,6 +6,7 @@ use nalgebra::UnitQuaternion;
 use super::error::Free3dError;
 use crate::Real;
 use crate::mass::{MassProperties, Mat3, Vec3, parallel_axis};
+use crate::rigid::Input;
 
 /// An orientation: the rotation from the body frame to the world frame.
 pub type Orientation = UnitQuaternion<Real>;
@@ -119,6 +120,7 @@ impl SpinningBody {
     pub fn on_pivot(body: FreeBody, cm_offset: Vec3, g: Real) -> Result<Self, Free3dError> {
         if !cm_offset.iter().all(|x| x.is_finite()) {
             return Err(Free3dError::NonFinite {
+                input: Input::Pivot,
                 what: "the pivot offset",
                 value: cm_offset.into(),
             });
@@ -172,6 +174,7 @@ impl SpinningBody {
     ) -> Result<Attitude, Free3dError> {
         if !omega_body.iter().all(|x| x.is_finite()) {
             return Err(Free3dError::NonFinite {
+                input: Input::AngularVelocity,
                 what: "the angular velocity",
                 value: omega_body.into(),
             });

@@ -4,6 +4,7 @@ use thiserror::Error;
 
 use crate::Real;
 use crate::ode::{AdaptiveError, ConfigError};
+use crate::rigid::Input;
 
 /// An invalid body, initial state or setting, or a simulation that failed.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -45,6 +46,8 @@ pub enum Free3dError {
     /// A vector input with a component that is not finite.
     #[error("{what} has a component that is not finite: ({}, {}, {})", value[0], value[1], value[2])]
     NonFinite {
+        /// Which input it is.
+        input: Input,
         /// Which input (`the pivot offset`, `the angular velocity`, `the orientation`).
         what: &'static str,
         /// The value.
@@ -94,4 +97,22 @@ pub enum Free3dError {
     /// The adaptive integrator could not advance.
     #[error(transparent)]
     Integrate(#[from] AdaptiveError),
+}
+
+impl Free3dError {
+    /// The input the error is about (`None` when the integration failed).
+    pub fn input(&self) -> Option<Input> {
+        Some(match self {
+            Free3dError::Moment { .. } | Free3dError::Triangle { .. } => Input::Inertia,
+            Free3dError::Mass { .. } => Input::Mass,
+            Free3dError::Gravity { .. } => Input::Gravity,
+            Free3dError::NonFinite { input, .. } => *input,
+            Free3dError::Quaternion { .. } => Input::Orientation,
+            Free3dError::Duration { .. } => Input::Duration,
+            Free3dError::Step { .. } | Free3dError::TooManySteps { .. } => Input::Step,
+            Free3dError::SplittingOffAxis { .. } => Input::Method,
+            Free3dError::Config(_) => Input::Tolerance,
+            Free3dError::Integrate(_) => return None,
+        })
+    }
 }

@@ -22,7 +22,8 @@
 //! are located inside the steps; [`SpinRun::crossing_period`] turns them into the period of
 //! the flip, compared with the exact elliptic-function solution [`Poinsot`] (`T = 4K(m)/λ`,
 //! `K` by the arithmetic-geometric mean, [`complete_k`]). For the symmetric top,
-//! [`SpinningBody::steady_precession`] solves for steady precession.
+//! [`SpinningBody::steady_precession`] solves for steady precession. [`SpinningBody::report`]
+//! is the answer of `mechkit spin` as a value ([`SpinReport`], with its table and plots).
 
 mod body;
 mod driver;
@@ -31,6 +32,7 @@ mod error;
 mod model;
 mod poinsot;
 mod record;
+mod report;
 mod run;
 mod splitting;
 mod top;
@@ -43,4 +45,8 @@ pub use body::{Attitude, FreeBody, Orientation, SpinningBody};
 pub use equations::{Formulation, SpinEquations};
 pub use error::Free3dError;
 pub use poinsot::Poinsot;
+pub use report::{
+    AngularMomentum, Flip, FlipPeriod, IntegratorInfo, Nutation, PrecessionRate, SpinEnergy,
+    SpinReport, StepSetting, Top,
+};
 pub use run::{Conservation, Crossing, SpinIntegrator, SpinOptions, SpinRun, SpinSample};

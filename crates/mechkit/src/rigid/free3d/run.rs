@@ -115,8 +115,10 @@ pub struct Crossing {
 
 /// Largest deviations from the start over all step ends.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Conservation {
     /// `max ||L| − |L₀|| / |L₀|`.
+    #[cfg_attr(feature = "serde", serde(rename = "angular_momentum_norm"))]
     pub l_norm: Real,
     /// `max |E − E₀| / max(|E₀|, T₀)`.
     pub energy: Real,

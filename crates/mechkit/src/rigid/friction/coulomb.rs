@@ -6,6 +6,7 @@ use std::fmt;
 
 use super::error::{FrictionError, finite, gravity, positive};
 use crate::Real;
+use crate::rigid::Input;
 
 /// Coulomb friction with a static and a dynamic (kinetic) coefficient.
 ///
@@ -225,7 +226,7 @@ impl Incline {
 
     /// Checks every field.
     pub fn validate(&self) -> Result<(), FrictionError> {
-        positive("the mass m (kg)", self.mass)?;
+        positive((Input::Mass, "the mass m (kg)"), self.mass)?;
         gravity(self.g)?;
         self.friction.validate()?;
         if !(self.angle.is_finite() && self.angle.abs() <= std::f64::consts::FRAC_PI_2) {
@@ -233,8 +234,14 @@ impl Incline {
                 degrees: self.angle.to_degrees(),
             });
         }
-        finite("the extra normal load (N)", self.extra_normal)?;
-        finite("the extra load along the surface (N)", self.extra_along)?;
+        finite(
+            (Input::NormalLoad, "the extra normal load (N)"),
+            self.extra_normal,
+        )?;
+        finite(
+            (Input::Push, "the extra load along the surface (N)"),
+            self.extra_along,
+        )?;
         Ok(())
     }
 

@@ -4,6 +4,7 @@ use thiserror::Error;
 
 use crate::Real;
 use crate::ode::{AdaptiveError, ConfigError};
+use crate::rigid::Input;
 
 /// An invalid friction model, or a simulation of it that failed.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -22,6 +23,8 @@ pub enum FrictionError {
     /// A parameter that must be positive and finite (a mass, a spring constant).
     #[error("{what} is {value}; it must be positive and finite")]
     NotPositive {
+        /// Which input it is.
+        input: Input,
         /// What it is, with its unit (`the mass m (kg)`).
         what: &'static str,
         /// The value.
@@ -30,6 +33,8 @@ pub enum FrictionError {
     /// A parameter that must be finite (a speed, a position) or not negative (gravity).
     #[error("{what} is {value}; {expected}")]
     Invalid {
+        /// Which input it is.
+        input: Input,
         /// What it is.
         what: &'static str,
         /// The value.
@@ -69,21 +74,48 @@ pub enum FrictionError {
     Integrate(#[from] AdaptiveError),
 }
 
+impl FrictionError {
+    /// The input the error is about (`None` when the integration failed).
+    pub fn input(&self) -> Option<Input> {
+        Some(match self {
+            FrictionError::Coefficient {
+                which: "static", ..
+            } => Input::StaticFriction,
+            FrictionError::Coefficient { .. } => Input::DynamicFriction,
+            FrictionError::NotPositive { input, .. } | FrictionError::Invalid { input, .. } => {
+                *input
+            }
+            FrictionError::Angle { .. } => Input::Angle,
+            FrictionError::NoContact { .. } => Input::NormalLoad,
+            FrictionError::TooManyPhases { .. } => Input::Duration,
+            FrictionError::Config(_) => Input::Tolerance,
+            FrictionError::Integrate(_) => return None,
+        })
+    }
+}
+
 /// Checks that `value` is positive and finite.
-pub(crate) fn positive(what: &'static str, value: Real) -> Result<(), FrictionError> {
+pub(crate) fn positive(
+    (input, what): (Input, &'static str),
+    value: Real,
+) -> Result<(), FrictionError> {
     if value.is_finite() && value > 0.0 {
         Ok(())
     } else {
-        Err(FrictionError::NotPositive { what, value })
+        Err(FrictionError::NotPositive { input, what, value })
     }
 }
 
 /// Checks that `value` is finite.
-pub(crate) fn finite(what: &'static str, value: Real) -> Result<(), FrictionError> {
+pub(crate) fn finite(
+    (input, what): (Input, &'static str),
+    value: Real,
+) -> Result<(), FrictionError> {
     if value.is_finite() {
         Ok(())
     } else {
         Err(FrictionError::Invalid {
+            input,
             what,
             value,
             expected: "it must be a finite number",
@@ -97,6 +129,7 @@ pub(crate) fn gravity(g: Real) -> Result<(), FrictionError> {
         Ok(())
     } else {
         Err(FrictionError::Invalid {
+            input: Input::Gravity,
             what: "g (m/s²)",
             value: g,
             expected: "it must be 0 or positive (pointing down into the surface)",

@@ -23,13 +23,21 @@
 //! [`SpringBlock::exact_stick_end`]) check it. The energy balance
 //! ([`crate::energy::EnergyBalance`]) closes `K + U_spring + Q = K0 + U0 + W_belt + W_anchor`,
 //! with `Q = ∫ μd N |v − u| dt` the heat, the negative work of friction relative to the surface.
+//!
+//! **Reports.** [`Incline::report`] and [`SpringBlock::report`] are the answers of
+//! `mechkit friction` as values ([`FrictionReport`], [`StickSlipReport`] with its table and
+//! plots).
 
 mod coulomb;
 mod error;
+mod report;
 mod spring_block;
 mod stick_slip;
 
 pub use coulomb::{Coulomb, FrictionWarning, Incline, InclineReport};
 pub use error::FrictionError;
+pub use report::{
+    FrictionReport, PhaseReport, StartEnd, StickSlipEnergy, StickSlipReport, regime_name,
+};
 pub use spring_block::{PhaseStart, SpringBlock};
 pub use stick_slip::{Phase, PhaseEnd, Regime, StickSlipRun, StickSlipSample};

@@ -6,6 +6,7 @@
 use super::coulomb::Coulomb;
 use super::error::{FrictionError, finite, gravity, positive};
 use crate::Real;
+use crate::rigid::Input;
 
 /// A block of mass `m` on a flat surface moving at `belt_speed`, pulled by a spring of
 /// stiffness `k` attached to an anchor at `a(t) = anchor_speed · t`; the block starts at
@@ -104,14 +105,20 @@ impl SpringBlock {
 
     /// Checks every field.
     pub fn validate(&self) -> Result<(), FrictionError> {
-        positive("the mass m (kg)", self.mass)?;
-        positive("the spring constant k (N/m)", self.k)?;
+        positive((Input::Mass, "the mass m (kg)"), self.mass)?;
+        positive(
+            (Input::SpringConstant, "the spring constant k (N/m)"),
+            self.k,
+        )?;
         gravity(self.g)?;
         self.friction.validate()?;
-        finite("the belt speed (m/s)", self.belt_speed)?;
-        finite("the anchor speed (m/s)", self.anchor_speed)?;
-        finite("the start position x0 (m)", self.x0)?;
-        finite("the start velocity v0 (m/s)", self.v0)?;
+        finite((Input::BeltSpeed, "the belt speed (m/s)"), self.belt_speed)?;
+        finite(
+            (Input::AnchorSpeed, "the anchor speed (m/s)"),
+            self.anchor_speed,
+        )?;
+        finite((Input::StartPosition, "the start position x0 (m)"), self.x0)?;
+        finite((Input::StartSpeed, "the start velocity v0 (m/s)"), self.v0)?;
         Ok(())
     }
 

@@ -15,6 +15,7 @@ use crate::ode::{
     AdaptiveConfig, AdaptiveRk, AdaptiveStats, EventEnd, OdeEvent, OdeSystem, Progress, State,
     Tableau, run_to_event,
 };
+use crate::rigid::Input;
 
 /// The regime of the block relative to the surface.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -190,6 +191,7 @@ impl SpringBlock {
         self.validate()?;
         if !(t_max.is_finite() && t_max > 0.0) {
             return Err(FrictionError::NotPositive {
+                input: Input::Duration,
                 what: "the end time t_max (s)",
                 value: t_max,
             });

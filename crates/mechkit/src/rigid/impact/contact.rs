@@ -2,6 +2,7 @@
 
 use super::error::ImpactError;
 use crate::Real;
+use crate::rigid::Input;
 
 /// A contact: the point, the unit normal from the first body into the second, and the
 /// coefficient of restitution.
@@ -30,6 +31,7 @@ impl Contact {
         }
         if !self.point.iter().all(|v| v.is_finite()) {
             return Err(ImpactError::Value {
+                input: Input::ContactPoint,
                 what: "the contact point",
                 value: self.point[0] + self.point[1],
                 must_be: "finite",

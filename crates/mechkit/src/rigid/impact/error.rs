@@ -3,6 +3,7 @@
 use thiserror::Error;
 
 use crate::Real;
+use crate::rigid::Input;
 
 /// An invalid body or contact.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -11,6 +12,8 @@ pub enum ImpactError {
     /// A value that must be positive (or finite) is not.
     #[error("{what} is {value}; it must be {must_be}")]
     Value {
+        /// Which input it is.
+        input: Input,
         /// Which value.
         what: &'static str,
         /// The value given.
@@ -71,4 +74,18 @@ pub enum ImpactError {
     /// Both bodies immovable.
     #[error("both bodies are immovable; at least one must have a finite mass")]
     BothFixed,
+}
+
+impl ImpactError {
+    /// The input the error is about; `None` for bodies that do not approach (which velocity
+    /// is at fault depends on the question) and for two immovable bodies.
+    pub fn input(&self) -> Option<Input> {
+        Some(match self {
+            ImpactError::Value { input, .. } => *input,
+            ImpactError::ZeroInertia { .. } | ImpactError::ParallelAxis { .. } => Input::Inertia,
+            ImpactError::Normal { .. } => Input::Normal,
+            ImpactError::Restitution { .. } => Input::Restitution,
+            ImpactError::Separating { .. } | ImpactError::BothFixed => return None,
+        })
+    }
 }

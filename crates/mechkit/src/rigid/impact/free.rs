@@ -3,6 +3,7 @@
 use super::error::ImpactError;
 use super::{Contact, cross, spin};
 use crate::Real;
+use crate::rigid::Input;
 
 /// A rigid body moving freely in the plane.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,6 +32,7 @@ impl PlanarBody {
     ) -> Result<Self, ImpactError> {
         if !(mass > 0.0 && mass.is_finite()) {
             return Err(ImpactError::Value {
+                input: Input::Mass,
                 what: "a body's mass",
                 value: mass,
                 must_be: "positive and finite",
@@ -38,6 +40,7 @@ impl PlanarBody {
         }
         if !(inertia >= 0.0 && inertia.is_finite()) {
             return Err(ImpactError::Value {
+                input: Input::Inertia,
                 what: "a body's moment of inertia",
                 value: inertia,
                 must_be: "zero (a point) or positive, and finite",
@@ -46,6 +49,7 @@ impl PlanarBody {
         let state = [position[0], position[1], velocity[0], velocity[1], omega];
         if let Some(bad) = state.iter().find(|v| !v.is_finite()) {
             return Err(ImpactError::Value {
+                input: Input::Velocity,
                 what: "a body's position, velocity or ω",
                 value: *bad,
                 must_be: "finite",

@@ -4,6 +4,7 @@ use super::error::ImpactError;
 use super::{Contact, cross, spin};
 use crate::Real;
 use crate::mass::{MassProperties, Vec3};
+use crate::rigid::Input;
 
 /// A rigid body turning about a fixed pivot at the origin (axis z).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -21,11 +22,15 @@ pub struct PivotedBody {
     pub reach: Option<(Real, Real)>,
 }
 
-fn positive(what: &'static str, value: Real) -> Result<Real, ImpactError> {
+pub(super) fn positive(
+    (input, what): (Input, &'static str),
+    value: Real,
+) -> Result<Real, ImpactError> {
     if value > 0.0 && value.is_finite() {
         Ok(value)
     } else {
         Err(ImpactError::Value {
+            input,
             what,
             value,
             must_be: "positive and finite",
@@ -33,11 +38,15 @@ fn positive(what: &'static str, value: Real) -> Result<Real, ImpactError> {
     }
 }
 
-fn finite(what: &'static str, value: Real) -> Result<Real, ImpactError> {
+pub(super) fn finite(
+    (input, what): (Input, &'static str),
+    value: Real,
+) -> Result<Real, ImpactError> {
     if value.is_finite() {
         Ok(value)
     } else {
         Err(ImpactError::Value {
+            input,
             what,
             value,
             must_be: "finite",
@@ -59,10 +68,21 @@ impl PivotedBody {
                 which: "the hinged body",
             });
         }
-        let inertia = positive("the moment of inertia about the pivot", inertia)?;
-        let mass = positive("the mass of the hinged body", mass)?;
-        let d2 = finite("the centre of mass", centre_of_mass[0])?.powi(2)
-            + finite("the centre of mass", centre_of_mass[1])?.powi(2);
+        let inertia = positive(
+            (Input::Inertia, "the moment of inertia about the pivot"),
+            inertia,
+        )?;
+        let mass = positive((Input::Mass, "the mass of the hinged body"), mass)?;
+        let d2 = finite(
+            (Input::CentreOfMass, "the centre of mass"),
+            centre_of_mass[0],
+        )?
+        .powi(2)
+            + finite(
+                (Input::CentreOfMass, "the centre of mass"),
+                centre_of_mass[1],
+            )?
+            .powi(2);
         if inertia < mass * d2 * (1.0 - 1e-12) {
             return Err(ImpactError::ParallelAxis {
                 inertia,
@@ -73,7 +93,7 @@ impl PivotedBody {
             inertia,
             mass,
             centre_of_mass,
-            omega: finite("ω", omega)?,
+            omega: finite((Input::AngularVelocity, "ω"), omega)?,
             reach: None,
         })
     }
@@ -94,9 +114,9 @@ impl PivotedBody {
         pivot_offset: Real,
         omega: Real,
     ) -> Result<Self, ImpactError> {
-        let length = positive("the rod's length", length)?;
-        let mass = positive("the rod's mass", mass)?;
-        let d = finite("the pivot's position", pivot_offset)?;
+        let length = positive((Input::Length, "the rod's length"), length)?;
+        let mass = positive((Input::Mass, "the rod's mass"), mass)?;
+        let d = finite((Input::Pivot, "the pivot's position"), pivot_offset)?;
         let mut body = Self::new(
             mass * (length * length / 12.0 + d * d),
             mass,
@@ -118,6 +138,7 @@ impl PivotedBody {
             props
                 .moment_about_axis(pivot, &Vec3::z())
                 .map_err(|_| ImpactError::Value {
+                    input: Input::Pivot,
                     what: "the pivot",
                     value: pivot.norm(),
                     must_be: "finite",
@@ -257,9 +278,12 @@ pub fn hinged_impact(
     contact: &Contact,
 ) -> Result<HingedImpact, ImpactError> {
     let c = contact.checked()?;
-    let m = positive("the particle's mass", particle.mass)?;
+    let m = positive((Input::BlockMass, "the particle's mass"), particle.mass)?;
     let v = particle.velocity;
-    finite("the particle's velocity", v[0] + v[1])?;
+    finite(
+        (Input::BlockVelocity, "the particle's velocity"),
+        v[0] + v[1],
+    )?;
     let (n, p) = (c.normal, c.point);
     let arm = cross(p, n);
     let inv_m_eff = 1.0 / m + arm * arm / body.inertia;

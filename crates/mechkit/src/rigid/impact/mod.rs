@@ -19,14 +19,22 @@
 //! angular momentum about the hinge conserved to 1e-12, the energy loss against the closed
 //! form, zero hinge impulse at the centre of percussion, two free bodies conserving P and L,
 //! a rod landing on its end.
+//!
+//! [`hinged_report`] and [`rod_landing`] are the answers of `mechkit rigid-collide` as values.
 
 mod contact;
 mod error;
 mod free;
 mod hinged;
+mod report;
 
 pub use contact::Contact;
 pub(crate) use contact::{cross, spin};
 pub use error::ImpactError;
 pub use free::{FreeImpact, PlanarBody, impact};
 pub use hinged::{HingedImpact, Particle, PivotedBody, hinged_impact, release_omega};
+pub use report::{
+    AngularMomentumChange, BeforeAfter, BlockNumbers, ContactNumbers, HingedBodyNumbers,
+    HingedReport, KineticEnergy, LandingEnergy, LandingReport, RodMotion, RodNumbers,
+    hinged_report, rod_landing,
+};

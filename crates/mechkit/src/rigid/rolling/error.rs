@@ -5,6 +5,7 @@ use thiserror::Error;
 use crate::Real;
 use crate::mass::MassError;
 use crate::ode::{AdaptiveError, ConfigError};
+use crate::rigid::Input;
 use crate::rigid::friction::FrictionError;
 
 /// An invalid rolling body or motion, or a simulation of it that failed.
@@ -64,6 +65,8 @@ pub enum RollingError {
     /// An initial value or time span that is not finite (or not positive).
     #[error("{what} is {value}; it must be {expected}")]
     Invalid {
+        /// Which input it is.
+        input: Input,
         /// What it is.
         what: &'static str,
         /// The value.
@@ -83,4 +86,24 @@ pub enum RollingError {
     /// The adaptive integrator could not advance.
     #[error(transparent)]
     Integrate(#[from] AdaptiveError),
+}
+
+impl RollingError {
+    /// The input the error is about (`None` when the integration failed).
+    pub fn input(&self) -> Option<Input> {
+        Some(match self {
+            RollingError::NoRadius { .. } => Input::Radius,
+            RollingError::Mass { .. } => Input::Mass,
+            RollingError::InertiaFactor { .. }
+            | RollingError::UnknownBody { .. }
+            | RollingError::ShapeCannotRoll { .. }
+            | RollingError::Shape(_) => Input::Body,
+            RollingError::Angle { .. } => Input::Angle,
+            RollingError::Gravity { .. } => Input::Gravity,
+            RollingError::Invalid { input, .. } => *input,
+            RollingError::Friction(e) => return e.input(),
+            RollingError::Config(_) => Input::Tolerance,
+            RollingError::Integrate(_) => return None,
+        })
+    }
 }

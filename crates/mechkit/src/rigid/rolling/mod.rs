@@ -21,14 +21,19 @@
 //! [`RollingMotion::simulate`] integrates each regime with DOP853 and locates the switch
 //! exactly when `v_c` reaches zero; its energy balance checks `K_trans + K_rot + U − W_friction`
 //! constant, with the work of friction `∫ f v_c dt` negative while slipping and zero while
-//! rolling.
+//! rolling. [`RollingMotion::report`] is the answer of `mechkit roll` as a value
+//! ([`RollReport`]: each phase with its accelerations, the table and the plots).
 
 mod body;
 mod error;
 mod motion;
+mod report;
 mod run;
 
 pub use body::RollingBody;
 pub use error::RollingError;
 pub use motion::RollingMotion;
+pub use report::{
+    BodyNumbers, PhaseMotion, PhaseReport, RollEnergy, RollReport, RollStart, StartEnd, regime_name,
+};
 pub use run::{Contact, RollPhase, RollSample, RollingRun};

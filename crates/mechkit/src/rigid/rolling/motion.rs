@@ -4,6 +4,7 @@
 use super::body::RollingBody;
 use super::error::RollingError;
 use crate::Real;
+use crate::rigid::Input;
 use crate::rigid::friction::Coulomb;
 
 /// A [`RollingBody`] on a plane inclined at `angle` (0: a flat floor) with Coulomb friction,
@@ -95,13 +96,14 @@ impl RollingMotion {
         if !(self.g.is_finite() && self.g >= 0.0) {
             return Err(RollingError::Gravity { value: self.g });
         }
-        for (what, value) in [
-            ("the start position x0 (m)", self.x0),
-            ("the start speed v0 (m/s)", self.v0),
-            ("the start spin ω0 (rad/s)", self.omega0),
+        for (input, what, value) in [
+            (Input::StartPosition, "the start position x0 (m)", self.x0),
+            (Input::StartSpeed, "the start speed v0 (m/s)", self.v0),
+            (Input::StartSpin, "the start spin ω0 (rad/s)", self.omega0),
         ] {
             if !value.is_finite() {
                 return Err(RollingError::Invalid {
+                    input,
                     what,
                     value,
                     expected: "a finite number",

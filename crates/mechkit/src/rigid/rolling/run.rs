@@ -15,6 +15,7 @@ use crate::ode::{
     AdaptiveConfig, AdaptiveRk, AdaptiveStats, EventEnd, OdeEvent, OdeSystem, Progress, State,
     Tableau, run_to_event,
 };
+use crate::rigid::Input;
 
 /// The regime of the contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -163,6 +164,7 @@ impl RollingMotion {
         self.validate()?;
         if !(t_max.is_finite() && t_max > 0.0) {
             return Err(RollingError::Invalid {
+                input: Input::Duration,
                 what: "the end time t_max (s)",
                 value: t_max,
                 expected: "positive and finite",

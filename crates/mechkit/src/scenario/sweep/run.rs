@@ -3,11 +3,14 @@
 
 use rayon::prelude::*;
 
-use super::{Shard, SweepError, SweepGrid, SweepTable};
+use mechkit_expr::Dim;
+
+use super::{Parameter, Shard, SweepError, SweepGrid, SweepTable};
 use crate::Real;
 use crate::figure::PlotData;
 use crate::particles::{BodyRef, NameContext, VarLevel};
 use crate::scenario::build::build_with;
+use crate::scenario::observe::unit_text;
 use crate::scenario::{PlotSpec, Scenario};
 use crate::simulate::Cancel;
 
@@ -136,9 +139,24 @@ pub fn run_sweep(
         runs: len,
         shard: options.shard,
         params: grid.params.iter().map(|p| p.name.clone()).collect(),
+        units: grid.params.iter().map(|p| unit(&base, p)).collect(),
         observables: base.observables.iter().map(|o| o.name.clone()).collect(),
         rows,
     })
+}
+
+/// The SI unit of the parameter `p` for people (`m/s`): the dimension it was given in, else
+/// the constant's in the scenario; empty for a dimensionless or unknown one.
+fn unit(s: &Scenario, p: &Parameter) -> String {
+    let file = s
+        .constants
+        .iter()
+        .find(|(name, _, _)| *name == p.name)
+        .and_then(|(_, _, d)| match d {
+            Dim::Known(d) => Some(*d),
+            _ => None,
+        });
+    p.dim.or(file).map(unit_text).unwrap_or_default()
 }
 
 /// Parses a plot spec against a scenario's names.

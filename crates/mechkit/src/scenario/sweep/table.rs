@@ -16,10 +16,15 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use super::{Shard, SweepError, SweepGrid, SweepRow};
-use crate::figure::{PlotData, Series};
+use crate::Real;
+use crate::figure::{ColourScale, PlotData, Series};
 use crate::scenario::push_number;
 
 const MAGIC: &str = "mechkit sweep of ";
+
+/// The most curves an overlay tells apart by a legend (the plot palette's colours): a sweep
+/// of one parameter with more runs colours them by the parameter's value.
+const COLOURED: usize = 8;
 
 /// The rows of a sweep, or of one shard of it.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,6 +37,8 @@ pub struct SweepTable {
     pub shard: Option<Shard>,
     /// Parameter names (columns after `index`).
     pub params: Vec<String>,
+    /// Their SI units for people (`m/s`; empty when dimensionless or unknown).
+    pub units: Vec<String>,
     /// Observable names.
     pub observables: Vec<String>,
     /// The rows, by run index.
@@ -147,7 +154,10 @@ impl SweepTable {
 
     /// The recorded plots of all runs in one figure, each curve labelled by its parameter
     /// values; with more than `legend` curves, only about `legend` evenly spaced ones are
-    /// labelled. `None` when no plot was recorded.
+    /// labelled. A sweep of one parameter with more than eight runs, each of one
+    /// curve, colours its curves by the parameter's value instead (a [`ColourScale`] named
+    /// after the parameter and its unit, each curve valued), for a colour bar to replace the
+    /// legend. `None` when no plot was recorded.
     pub fn overlay(&self, legend: usize) -> Option<PlotData> {
         let first = self.rows.iter().find_map(|r| r.plot.as_ref())?;
         let mut plot = PlotData::new(
@@ -179,7 +189,46 @@ impl SweepTable {
                 ));
             }
         }
+        if let Some(scale) = self.colour_scale() {
+            for (s, r) in plot
+                .series
+                .iter_mut()
+                .zip(self.rows.iter().filter(|r| r.plot.is_some()))
+            {
+                s.value = r.values.first().copied();
+            }
+            plot.colour_scale = Some(scale);
+        }
         Some(plot)
+    }
+
+    /// The colour scale of the overlay when its curves are one per run of a sweep of one
+    /// parameter, more than [`COLOURED`] of them: from the smallest value to the largest.
+    fn colour_scale(&self) -> Option<ColourScale> {
+        let [name] = &self.params[..] else {
+            return None;
+        };
+        let mut plots = self.rows.iter().filter_map(|r| r.plot.as_ref());
+        if plots.clone().count() <= COLOURED || !plots.all(|p| p.series.len() == 1) {
+            return None;
+        }
+        let (from, to) = self
+            .rows
+            .iter()
+            .filter(|r| r.plot.is_some())
+            .filter_map(|r| r.values.first().copied())
+            .filter(|v| v.is_finite())
+            .fold((Real::INFINITY, Real::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            });
+        if from > to {
+            return None;
+        }
+        let label = match self.units.first().map(String::as_str) {
+            None | Some("") => name.clone(),
+            Some(unit) => format!("{name} [{unit}]"),
+        };
+        Some(ColourScale { label, from, to })
     }
 }
 
@@ -303,4 +352,72 @@ pub fn merge_parts(parts: &[SweepPart]) -> Result<(String, String), SweepError> 
     }
     let whole = serde_json::json!({"sweep": identity, "runs": runs, "shard": null});
     Ok((out, format!("{whole:#}\n")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{SweepRow, SweepTable};
+    use crate::figure::{PlotData, Series};
+
+    /// A table of `n` runs of `params`, run `i` with the values `i` and a `v(x)` curve.
+    fn table(n: usize, params: &[&str]) -> SweepTable {
+        let rows = (0..n)
+            .map(|i| {
+                let v = i as f64;
+                SweepRow {
+                    index: i,
+                    values: vec![v; params.len()],
+                    stop_reason: "t_max".into(),
+                    t_end: 1.0,
+                    steps: 10,
+                    observables: Vec::new(),
+                    kinetic_end: 0.0,
+                    potential_end: None,
+                    energy_end: 0.0,
+                    work_energy_residual: 0.0,
+                    plot: Some(
+                        PlotData::new("v(x)", "v_x", "x [m]", "v [m/s]")
+                            .with_series(Series::line("v", vec![(0.0, v), (1.0, v)])),
+                    ),
+                }
+            })
+            .collect();
+        SweepTable {
+            manifest: String::new(),
+            runs: n,
+            shard: None,
+            params: params.iter().map(ToString::to_string).collect(),
+            units: vec!["m/s".into(); params.len()],
+            observables: Vec::new(),
+            rows,
+        }
+    }
+
+    #[test]
+    fn many_runs_of_one_parameter_are_coloured_by_its_value() {
+        let plot = table(9, &["v0"]).overlay(10).unwrap();
+        let scale = plot.colour_scale.expect("a colour scale");
+        assert_eq!(scale.label, "v0 [m/s]");
+        assert_eq!((scale.from, scale.to), (0.0, 8.0));
+        let values: Vec<Option<f64>> = plot.series.iter().map(|s| s.value).collect();
+        assert_eq!(
+            values,
+            (0..9).map(|i| Some(f64::from(i))).collect::<Vec<_>>()
+        );
+        // eight runs, or two parameters, keep the legend
+        assert!(
+            table(8, &["v0"])
+                .overlay(10)
+                .unwrap()
+                .colour_scale
+                .is_none()
+        );
+        assert!(
+            table(20, &["v0", "g"])
+                .overlay(10)
+                .unwrap()
+                .colour_scale
+                .is_none()
+        );
+    }
 }

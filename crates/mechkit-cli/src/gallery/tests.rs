@@ -1,7 +1,12 @@
-use serde_json::json;
+//! The case file, checks, scripts and the report, on a small case file of their own.
 
-use super::report::{self, significant, splice};
-use super::*;
+use serde_json::{Value, json};
+
+use super::case::tolerance;
+use super::check::{Family, implicit_products};
+use super::report::{self, MarkerError, add_markers, report, significant, splice};
+use super::script::shell_words;
+use super::{Case, CaseRun, Check, Script, case_of};
 
 const FILE: &str = r#"{"id": "a", "topic": "drag", "expected": {"v": -4.8042, "y": 0.78709}, "tolerance": {"rel": 0.001}}
 
@@ -152,8 +157,40 @@ fn the_report_goes_between_the_markers() {
         format!("# V\n\n{}\nnew\n{}\nafter\n", report::BEGIN, report::END)
     );
     assert_eq!(splice(&new, "new\n").unwrap(), new);
-    assert!(splice("# V\n", "x").is_err());
-    assert!(splice(&format!("{}\n", report::BEGIN), "x").is_err());
+    assert_eq!(splice("# V\n", "x"), Err(MarkerError::Missing));
+    assert_eq!(
+        splice(&format!("{}\n", report::BEGIN), "x"),
+        Err(MarkerError::NoEnd)
+    );
+    assert_eq!(
+        splice(&format!("{}\n{}\n", report::END, report::BEGIN), "x"),
+        Err(MarkerError::NoEnd)
+    );
+    assert_eq!(
+        splice(&format!("a\n{}\n", report::END), "x"),
+        Err(MarkerError::NoBegin)
+    );
+    // a marker quoted in the text is not a marker line
+    let quoted = format!("see `{}`\n", report::BEGIN);
+    assert_eq!(splice(&quoted, "x"), Err(MarkerError::Missing));
+}
+
+#[test]
+fn markers_are_added_at_the_end_of_a_document_without_them() {
+    let marked = add_markers("# V\ntext");
+    assert_eq!(
+        marked,
+        format!("# V\ntext\n\n{}\n{}\n", report::BEGIN, report::END)
+    );
+    assert_eq!(
+        splice(&marked, "table\n").unwrap(),
+        format!("# V\ntext\n\n{}\ntable\n{}\n", report::BEGIN, report::END)
+    );
+    // a new file: the markers alone
+    assert_eq!(
+        add_markers(""),
+        format!("{}\n{}\n", report::BEGIN, report::END)
+    );
 }
 
 #[test]

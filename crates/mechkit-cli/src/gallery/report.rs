@@ -1,7 +1,9 @@
 //! The validation report: one table row per expected value of every case, computed against
-//! expected, in the case file's order, as Markdown for `docs/validation.md`.
+//! expected, in the case file's order, as Markdown for `docs/validation.md`, where it goes
+//! between two marker lines ([`BEGIN`], [`END`]).
 
 use std::fmt::Write as _;
+use std::ops::Range;
 
 use serde_json::Value;
 
@@ -64,6 +66,7 @@ pub fn checks(cases: &[Case], runs: &[CaseRun]) -> Vec<(Check, Option<String>)> 
 }
 
 /// The Markdown report: a count, then the table.
+#[cfg(test)]
 pub fn report(cases: &[Case], runs: &[CaseRun]) -> String {
     render(cases, runs, &checks(cases, runs))
 }
@@ -99,7 +102,8 @@ pub fn render(cases: &[Case], runs: &[CaseRun], rows: &[(Check, Option<String>)]
                     .iter()
                     .map(|p| {
                         let name = p.rsplit('/').next().unwrap_or(p);
-                        format!("[{}]({})", name.trim_end_matches(".svg"), link(p))
+                        let label = name.trim_end_matches(".svg").trim_end_matches(".png");
+                        format!("[{label}]({})", link(p))
                     })
                     .collect::<Vec<_>>()
                     .join(", ")
@@ -127,21 +131,84 @@ pub fn render(cases: &[Case], runs: &[CaseRun], rows: &[(Check, Option<String>)]
     out
 }
 
-/// Replaces the part of `document` between [`BEGIN`] and [`END`] with `section` (the markers
-/// stay). Errors when the markers are missing or out of order.
-pub fn splice(document: &str, section: &str) -> Result<String, String> {
-    let start = document
-        .find(BEGIN)
-        .ok_or_else(|| format!("no line `{BEGIN}` to put the report after"))?;
-    let end = document[start..]
-        .find(END)
-        .map(|e| start + e)
-        .ok_or_else(|| format!("no line `{END}` after `{BEGIN}`"))?;
-    Ok(format!(
-        "{}{BEGIN}\n{section}{}",
-        &document[..start],
-        &document[end..]
-    ))
+/// What is wrong with the markers of a document.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MarkerError {
+    /// Neither marker line: the document has no place for the report yet ([`add_markers`]).
+    Missing,
+    /// A [`BEGIN`] line with no [`END`] line after it.
+    NoEnd,
+    /// An [`END`] line with no [`BEGIN`] line before it.
+    NoBegin,
+}
+
+impl std::fmt::Display for MarkerError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Missing => write!(f, "no line `{BEGIN}` and no line `{END}`"),
+            Self::NoEnd => write!(f, "a line `{BEGIN}` but no line `{END}` after it"),
+            Self::NoBegin => write!(f, "a line `{END}` but no line `{BEGIN}` before it"),
+        }
+    }
+}
+
+/// The byte ranges of the marker lines: the first [`BEGIN`] line and the first [`END`] line
+/// after it (without a [`BEGIN`] line: the first [`END`] line). A marker is a whole line
+/// (trailing spaces and `\r` allowed), so text that quotes one is not one.
+fn marker_lines(document: &str) -> (Option<Range<usize>>, Option<Range<usize>>) {
+    let (mut begin, mut end_alone) = (None, None);
+    let mut offset = 0;
+    for line in document.split_inclusive('\n') {
+        let range = offset..offset + line.len();
+        offset += line.len();
+        match line.trim_end() {
+            text if text == BEGIN && begin.is_none() => begin = Some(range),
+            text if text == END => {
+                if begin.is_some() {
+                    return (begin, Some(range));
+                }
+                end_alone.get_or_insert(range);
+            }
+            _ => {}
+        }
+    }
+    if begin.is_some() {
+        (begin, None)
+    } else {
+        (None, end_alone)
+    }
+}
+
+/// Replaces the lines between the [`BEGIN`] and [`END`] lines of `document` with `section`
+/// (the markers stay). Errors when the markers are missing or out of order.
+pub fn splice(document: &str, section: &str) -> Result<String, MarkerError> {
+    match marker_lines(document) {
+        (Some(begin), Some(end)) => Ok(format!(
+            "{}{BEGIN}\n{section}{}",
+            &document[..begin.start],
+            &document[end.start..]
+        )),
+        (Some(_), _) => Err(MarkerError::NoEnd),
+        (None, Some(_)) => Err(MarkerError::NoBegin),
+        (None, None) => Err(MarkerError::Missing),
+    }
+}
+
+/// `document` with the two marker lines added at its end, after a blank line (a new file:
+/// the markers alone), for a document that has neither yet.
+pub fn add_markers(document: &str) -> String {
+    let mut out = document.to_string();
+    if !out.is_empty() {
+        if !out.ends_with('\n') {
+            out.push('\n');
+        }
+        out.push('\n');
+    }
+    out.push_str(BEGIN);
+    out.push('\n');
+    out.push_str(END);
+    out.push('\n');
+    out
 }
 
 /// A value for a table cell: numbers to 7 significant digits, strings in code quotes.

@@ -1,14 +1,20 @@
 //! The course's worked problems (`examples/book/cases.jsonl`, a copy of
 //! `shared/book_cases.jsonl`) reproduced through scenario files: every `examples/book/*.toml`
 //! is run, and each of its `[observe]` values named like an expected key is compared with the
-//! expected value within the case's tolerance ([`mechkit::gallery::Check`]). A value no file
-//! computes fails the CLI's `gallery::the_validation_report_is_current`.
+//! expected value within the case's tolerance ([`Check`]). A value no file computes fails
+//! the CLI test `gallery::the_validation_report_is_current`.
 
-use mechkit::gallery::{Case, Check, case_of};
+use std::path::PathBuf;
+
 use mechkit::scenario::Scenario;
 use serde_json::json;
 
-use crate::util::workspace;
+use super::{Case, Check, case_of};
+
+/// The workspace root.
+fn workspace() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
 
 fn cases() -> Vec<Case> {
     let text = std::fs::read_to_string(workspace().join("examples/book/cases.jsonl")).unwrap();

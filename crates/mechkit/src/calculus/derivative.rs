@@ -1,0 +1,132 @@
+//! `d/dx` of a formula, simplified, and its value at a point checked against Ridders'
+//! extrapolation of central differences.
+
+use mechkit_expr::{Sym, parse};
+
+use super::{CalculusError, Params};
+use crate::Real;
+use crate::function::Function;
+use crate::inputs::{Input, InputError};
+
+/// A derivative.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Derivative {
+    /// The formula, canonical.
+    pub input: Sym,
+    /// Its derivative, simplified.
+    pub result: Sym,
+}
+
+/// `d/dx` of `text`.
+pub fn derivative(text: &str, x: &str) -> Result<Derivative, CalculusError> {
+    let input = Sym::from_expr(&parse(text)?.expr);
+    let result = input.diff(x);
+    Ok(Derivative { input, result })
+}
+
+/// The value of a derivative at a point by the symbolic derivative and by Ridders'
+/// extrapolation of central differences, side by side.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct DerivativeCheck {
+    /// Where.
+    #[cfg_attr(feature = "serde", serde(rename = "x"))]
+    pub at: Real,
+    /// The symbolic derivative's value.
+    pub symbolic: Real,
+    /// Ridders' estimate.
+    pub numeric: Real,
+    /// Its error estimate.
+    pub numeric_error: Real,
+    /// Whether they agree within the estimate (or 1e-9 relative).
+    pub agree: bool,
+}
+
+/// `d/dx text` at `at`, symbolically and numerically (initial step `h`, e.g. 0.1 or a tenth
+/// of the scale of `x`), with `params` for the other names.
+///
+/// ```
+/// let c = mechkit::calculus::derivative_at("x^3*sin(x)", "x", 1.2, &[], 0.1).unwrap();
+/// assert!(c.agree && (c.symbolic - c.numeric).abs() < 1e-10);
+/// ```
+pub fn derivative_at(
+    text: &str,
+    x: &str,
+    at: Real,
+    params: &Params,
+    h: Real,
+) -> Result<DerivativeCheck, CalculusError> {
+    let f = Function::parse(text, &[x], params)?;
+    let symbolic = f.diff(x).at1(at);
+    let est = crate::deriv::derivative(|v| f.at1(v), at, h);
+    let agree = (symbolic - est.value).abs() <= (10.0 * est.error).max(1e-9 * symbolic.abs());
+    Ok(DerivativeCheck {
+        at,
+        symbolic,
+        numeric: est.value,
+        numeric_error: est.error,
+        agree,
+    })
+}
+
+/// The answer of `mechkit diff`: the derivative, and its check at a point when asked.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Differentiation {
+    /// The formula, canonical.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "super::text::display"))]
+    pub input: Sym,
+    /// The variable.
+    pub var: String,
+    /// The derivative, simplified.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "super::text::display"))]
+    pub derivative: Sym,
+    /// Its value at the point asked, symbolically and numerically.
+    pub at: Option<DerivativeCheck>,
+}
+
+impl Differentiation {
+    /// Whether the check (if any) found the two values in agreement.
+    pub fn agrees(&self) -> bool {
+        self.at.is_none_or(|c| c.agree)
+    }
+}
+
+/// `d/dx text`, and with `at = Some((point, h))` its value at `point` checked numerically
+/// from the initial step `h` (positive), with `params` for the other names.
+///
+/// ```
+/// use mechkit::calculus::differentiate;
+/// let d = differentiate("-F0*sin(2*pi*x/b)", "x", Some((0.1, 0.1)),
+///     &[("F0".into(), 2.0), ("b".into(), 1.0)]).unwrap();
+/// assert_eq!(d.derivative.to_string(), "-2*pi*F0*cos(2*pi*x/b)/b");
+/// let exact = -2.0 * std::f64::consts::TAU * (std::f64::consts::TAU * 0.1).cos();
+/// assert!((d.at.unwrap().symbolic - exact).abs() < 1e-12 && d.agrees());
+/// ```
+pub fn differentiate(
+    text: &str,
+    x: &str,
+    at: Option<(Real, Real)>,
+    params: &Params,
+) -> Result<Differentiation, CalculusError> {
+    let d = derivative(text, x)?;
+    let at = match at {
+        Some((point, h)) => {
+            if h.is_nan() || h <= 0.0 {
+                return Err(InputError::new(
+                    Input::Step,
+                    format!("the step of the numerical derivative must be positive, not {h}"),
+                )
+                .into());
+            }
+            Some(derivative_at(text, x, point, params, h)?)
+        }
+        None => None,
+    };
+    Ok(Differentiation {
+        input: d.input,
+        var: x.to_string(),
+        derivative: d.result,
+        at,
+    })
+}

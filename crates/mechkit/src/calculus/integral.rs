@@ -1,0 +1,379 @@
+//! Antiderivatives from the rule table (verified by differentiation), definite integrals by
+//! the closed form and by adaptive quadrature side by side, and the fixed rules of a course
+//! against the exact value with their observed orders.
+
+use mechkit_expr::{Sym, parse};
+
+use super::{CalculusError, Params, lookup};
+use crate::Real;
+use crate::function::Function;
+use crate::inputs::{Input, InputError};
+use crate::quad::{QuadResult, Rule, Tolerance, integrate as quadrature, integrate_rule};
+
+/// An integral: the antiderivative when the rule table has one, and the definite value by
+/// both routes when limits are given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Integral {
+    /// The integrand, canonical.
+    pub input: Sym,
+    /// An antiderivative (verified by differentiation), if found.
+    pub antiderivative: Option<Sym>,
+    /// What it assumed.
+    pub assumptions: Vec<String>,
+    /// The definite integral, if limits were given.
+    pub definite: Option<Definite>,
+}
+
+/// A definite integral by the closed form and by quadrature.
+///
+/// Serialized as `{from, to, closed_form, quadrature: {value, error, evaluations} | null,
+/// quadrature_error: text | null, agree}`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Definite {
+    /// Lower limit.
+    pub from: Real,
+    /// Upper limit.
+    pub to: Real,
+    /// `F(to) - F(from)`, when there is an antiderivative continuous on the interval and all
+    /// names have values.
+    pub closed_form: Option<Real>,
+    /// Adaptive Gauss-Kronrod.
+    pub quadrature: Result<QuadResult, String>,
+    /// Whether the two agree within the quadrature's error estimate (or 1e-9 relative).
+    pub agree: Option<bool>,
+}
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for Definite {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        #[derive(serde::Serialize)]
+        struct Quad {
+            value: Real,
+            error: Real,
+            evaluations: usize,
+        }
+        let mut st = s.serialize_struct("Definite", 6)?;
+        st.serialize_field("from", &self.from)?;
+        st.serialize_field("to", &self.to)?;
+        st.serialize_field("closed_form", &self.closed_form)?;
+        st.serialize_field(
+            "quadrature",
+            &self.quadrature.as_ref().ok().map(|q| Quad {
+                value: q.value,
+                error: q.error,
+                evaluations: q.evaluations,
+            }),
+        )?;
+        st.serialize_field("quadrature_error", &self.quadrature.as_ref().err())?;
+        st.serialize_field("agree", &self.agree)?;
+        st.end()
+    }
+}
+
+/// The integral of `text` with respect to `x`, with `params` giving values to the other names
+/// (needed for the definite value).
+pub fn integral(
+    text: &str,
+    x: &str,
+    limits: Option<(Real, Real)>,
+    params: &Params,
+) -> Result<Integral, CalculusError> {
+    let input = Sym::from_expr(&parse(text)?.expr);
+    let anti = input.integrate(x);
+    let (antiderivative, assumptions) = match anti {
+        Some(a) => (Some(a.result), a.assumptions),
+        None => (None, Vec::new()),
+    };
+    let definite = limits.map(|(from, to)| {
+        let env = lookup(params);
+        let at = |f: &Sym, v: Real| f.eval(&|n| if n == x { Some(v) } else { env(n) });
+        let quad = quadrature(
+            |v| at(&input, v).unwrap_or(Real::NAN),
+            from,
+            to,
+            Tolerance::default(),
+        )
+        .map_err(|e| e.to_string());
+        // the closed form counts only if it is continuous on the interval: compare with the
+        // quadrature's value (a jump in ln|x| across 0 would show as a disagreement)
+        let closed_form = antiderivative.as_ref().and_then(|big_f| {
+            let (a, b) = (at(big_f, from).ok()?, at(big_f, to).ok()?);
+            let v = b - a;
+            v.is_finite().then_some(v)
+        });
+        let agree = match (&closed_form, &quad) {
+            (Some(c), Ok(q)) => {
+                Some((c - q.value).abs() <= (10.0 * q.error).max(1e-9 * c.abs().max(1e-12)))
+            }
+            _ => None,
+        };
+        Definite {
+            from,
+            to,
+            closed_form,
+            quadrature: quad,
+            agree,
+        }
+    });
+    if definite
+        .as_ref()
+        .is_some_and(|d| d.quadrature.is_err() && d.closed_form.is_none())
+    {
+        let missing: Vec<String> = input
+            .names()
+            .into_iter()
+            .filter(|n| n != x && lookup(params)(n).is_none())
+            .collect();
+        if let Some(first) = missing.first() {
+            return Err(CalculusError::Invalid(format!(
+                "a definite value needs values for {}: give them with --set, e.g. --set {first}=1",
+                missing.join(", "),
+            )));
+        }
+    }
+    Ok(Integral {
+        input,
+        antiderivative,
+        assumptions,
+        definite,
+    })
+}
+
+/// One fixed rule's estimate of a definite integral, next to the exact value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct RuleEstimate {
+    /// The rule (its name in JSON).
+    #[cfg_attr(feature = "serde", serde(serialize_with = "super::text::display"))]
+    pub rule: Rule,
+    /// Number of intervals.
+    pub n: usize,
+    /// Its value.
+    pub value: Real,
+    /// `value - reference`.
+    pub error: Real,
+    /// The convergence order measured against the previous number of intervals of the same
+    /// rule, `ln(e_prev/e)/ln(n/n_prev)` (none for the first, or when an error is down at
+    /// rounding level).
+    pub observed_order: Option<Real>,
+}
+
+/// The estimates of `∫ text dx` over `limits` by each rule with each number of intervals, and
+/// the reference they are measured against: the closed form when the rule table has one
+/// (checked against adaptive quadrature), else adaptive Gauss-Kronrod quadrature.
+///
+/// ```
+/// use mechkit::calculus::rule_estimates;
+/// use mechkit::quad::Rule;
+/// let (reference, rows) = rule_estimates("1/(1 + x^2)", "x", (0.0, 1.0), &[],
+///     &[Rule::Trapezoid], &[10]).unwrap();
+/// assert!((reference - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+/// assert!((rows[0].value - 0.784_981).abs() < 1e-6);
+/// let (_, rows) = rule_estimates("exp(x)", "x", (0.0, 1.0), &[], &[Rule::Simpson], &[8, 16]).unwrap();
+/// assert!((rows[1].observed_order.unwrap() - 4.0).abs() < 0.05);
+/// ```
+pub fn rule_estimates(
+    text: &str,
+    x: &str,
+    limits: (Real, Real),
+    params: &Params,
+    rules: &[Rule],
+    ns: &[usize],
+) -> Result<(Real, Vec<RuleEstimate>), CalculusError> {
+    let f = Function::parse(text, &[x], params)?;
+    let exact = integral(text, x, Some(limits), params)?
+        .definite
+        .and_then(|d| reference(&d))
+        .ok_or_else(|| {
+            CalculusError::Invalid(format!(
+                "`{text}` could not be integrated from {} to {} to compare the rules with",
+                limits.0, limits.1
+            ))
+        })?;
+    Ok((exact, estimates(&f, limits, exact, rules, ns)?))
+}
+
+/// What fixed rules are measured against: the closed form where it agrees with quadrature,
+/// else the quadrature.
+fn reference(d: &Definite) -> Option<Real> {
+    match (d.closed_form, d.agree, &d.quadrature) {
+        (Some(c), Some(true), _) => Some(c),
+        (_, _, Ok(q)) => Some(q.value),
+        _ => None,
+    }
+}
+
+fn estimates(
+    f: &Function,
+    limits: (Real, Real),
+    exact: Real,
+    rules: &[Rule],
+    ns: &[usize],
+) -> Result<Vec<RuleEstimate>, CalculusError> {
+    if let Some(&bad) = ns.iter().find(|&&n| n == 0) {
+        return Err(InputError::new(
+            Input::Intervals,
+            format!("the number of intervals must be at least 1, not {bad}"),
+        )
+        .into());
+    }
+    let mut rows = Vec::new();
+    for &rule in rules {
+        let mut previous: Option<(usize, Real)> = None;
+        for &n in ns {
+            let value = integrate_rule(|v| f.at1(v), limits.0, limits.1, rule, n)
+                .map_err(|e| CalculusError::Invalid(format!("{}: {e}", rule.name())))?;
+            let error = value - exact;
+            // errors at the level of rounding carry no order
+            let noise = 1e3 * Real::EPSILON * exact.abs().max(Real::MIN_POSITIVE);
+            let observed_order = previous.and_then(|(n0, e0)| {
+                let o = (e0.abs() / error.abs()).ln() / (n as Real / n0 as Real).ln();
+                (o.is_finite() && n != n0 && e0.abs() > noise && error.abs() > noise).then_some(o)
+            });
+            previous = Some((n, error));
+            rows.push(RuleEstimate {
+                rule,
+                n,
+                value,
+                error,
+                observed_order,
+            });
+        }
+    }
+    Ok(rows)
+}
+
+/// The answer of `mechkit integrate`: the antiderivative, the definite value by both routes,
+/// and the fixed rules against the exact value when asked.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Integration {
+    /// The integrand, canonical.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "super::text::display"))]
+    pub input: Sym,
+    /// The variable of integration.
+    pub var: String,
+    /// An antiderivative (verified by differentiation), if the rule table has one.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "super::text::display_opt"))]
+    pub antiderivative: Option<Sym>,
+    /// What it assumed (`a > 0`).
+    pub assumptions: Vec<String>,
+    /// The values given to the other names (a JSON object).
+    #[cfg_attr(feature = "serde", serde(serialize_with = "super::text::params"))]
+    pub parameters: Vec<(String, Real)>,
+    /// The definite integral, with limits.
+    pub definite: Option<Definite>,
+    /// The exact value the fixed rules are measured against, with rules.
+    pub reference: Option<Real>,
+    /// The fixed rules' estimates, with rules.
+    pub rules: Option<Vec<RuleEstimate>>,
+}
+
+impl Integration {
+    /// Whether nothing could be computed: no closed form, and no definite value either.
+    pub fn found_nothing(&self) -> bool {
+        self.antiderivative.is_none()
+            && self.definite.as_ref().is_none_or(|d| d.quadrature.is_err())
+    }
+}
+
+/// `∫ text dx`: the antiderivative, the definite value over `limits` (closed form and
+/// quadrature), and with `rules` (given with limits) each rule's estimate with each number of
+/// intervals in `ns` against the exact value.
+///
+/// ```
+/// use mechkit::calculus::integration;
+/// use mechkit::quad::Rule;
+/// let i = integration("1/(a+x^2)", "x", Some((0.0, 1.0)), &[("a".into(), 1.0)],
+///     &[Rule::Trapezoid], &[10, 20]).unwrap();
+/// assert_eq!(i.antiderivative.unwrap().to_string(), "atan(x/sqrt(a))/sqrt(a)");
+/// assert_eq!(i.definite.unwrap().agree, Some(true));
+/// let order = i.rules.unwrap()[1].observed_order.unwrap();
+/// assert!((order - 2.0).abs() < 0.01);
+/// ```
+pub fn integration(
+    text: &str,
+    x: &str,
+    limits: Option<(Real, Real)>,
+    params: &Params,
+    rules: &[Rule],
+    ns: &[usize],
+) -> Result<Integration, CalculusError> {
+    let i = integral(text, x, limits, params)?;
+    let mut reference_value = None;
+    let mut rows = None;
+    if let (false, Some(lim)) = (rules.is_empty(), limits) {
+        let f = Function::parse(text, &[x], params)?;
+        let exact = i.definite.as_ref().and_then(reference).ok_or_else(|| {
+            CalculusError::Invalid(format!(
+                "`{text}` could not be integrated from {} to {} to compare the rules with",
+                lim.0, lim.1
+            ))
+        })?;
+        rows = Some(estimates(&f, lim, exact, rules, ns)?);
+        reference_value = Some(exact);
+    }
+    Ok(Integration {
+        input: i.input,
+        var: x.to_string(),
+        antiderivative: i.antiderivative,
+        assumptions: i.assumptions,
+        parameters: params.to_vec(),
+        definite: i.definite,
+        reference: reference_value,
+        rules: rows,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_acceptance_integral() {
+        let i = integral("1/(a+x^2)", "x", Some((0.0, 1.0)), &[("a".into(), 1.0)]).unwrap();
+        assert_eq!(
+            i.antiderivative.unwrap().to_string(),
+            "atan(x/sqrt(a))/sqrt(a)"
+        );
+        assert_eq!(i.assumptions, vec!["a > 0"]);
+        let d = i.definite.unwrap();
+        assert!((d.closed_form.unwrap() - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+        assert_eq!(d.agree, Some(true));
+    }
+
+    #[test]
+    fn rules_need_intervals_and_nothing_found_is_said() {
+        let e = integration("x", "x", Some((0.0, 1.0)), &[], &[Rule::Left], &[0]).unwrap_err();
+        assert!(matches!(
+            e,
+            CalculusError::Input(InputError {
+                input: Input::Intervals,
+                ..
+            })
+        ));
+        let none = integration("exp(-x^2)", "x", None, &[], &[], &[]).unwrap();
+        assert!(none.found_nothing() && none.rules.is_none());
+    }
+
+    #[cfg(feature = "serde")]
+    #[test]
+    fn the_json_shape_of_integrate() {
+        let i = integration(
+            "1/(a+x^2)",
+            "x",
+            Some((0.0, 1.0)),
+            &[("a".into(), 1.0)],
+            &[Rule::Trapezoid],
+            &[10],
+        )
+        .unwrap();
+        let j = serde_json::to_value(&i).unwrap();
+        assert_eq!(j["antiderivative"], "atan(x/sqrt(a))/sqrt(a)");
+        assert_eq!(j["parameters"], serde_json::json!({"a": 1.0}));
+        assert_eq!(j["definite"]["quadrature_error"], serde_json::Value::Null);
+        assert!(j["definite"]["quadrature"]["evaluations"].as_u64().unwrap() > 0);
+        assert_eq!(j["rules"][0]["rule"], "trapezoid");
+    }
+}

@@ -1,0 +1,272 @@
+//! A run of many steps: thermo rows every `thermo_every` steps (and at the last), frames every
+//! `frame_every` steps, handed to an observer as they are taken (a front streams them to
+//! files, draws a progress bar); stopped early by a [`Cancel`] handle, by the observer (an
+//! output reached its size limit) or by a diverging energy.
+
+use std::time::Instant;
+
+use crate::Real;
+use crate::simulate::Cancel;
+
+use super::{Md, MdError, MdInput, PairPotential, Thermo};
+
+/// How long to run and what to record: the number of velocity-Verlet steps, a thermo row every
+/// `thermo_every` steps (and one at the start and the end), a frame every `frame_every` steps
+/// (and one at the start) when it is given.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RunPlan {
+    /// Steps to take.
+    pub steps: usize,
+    /// Steps between thermo rows (≥ 1).
+    pub thermo_every: usize,
+    /// Steps between frames (≥ 1), or no frames.
+    pub frame_every: Option<usize>,
+}
+
+impl RunPlan {
+    /// A plan, checked: the intervals are at least one step.
+    pub fn new(
+        steps: usize,
+        thermo_every: usize,
+        frame_every: Option<usize>,
+    ) -> Result<Self, MdError> {
+        if thermo_every == 0 {
+            return Err(MdError::NotPositive {
+                input: MdInput::ThermoEvery,
+                value: 0.0,
+            });
+        }
+        if frame_every == Some(0) {
+            return Err(MdError::NotPositive {
+                input: MdInput::FrameEvery,
+                value: 0.0,
+            });
+        }
+        Ok(Self {
+            steps,
+            thermo_every,
+            frame_every,
+        })
+    }
+}
+
+/// What a run hands out as it goes. Every method has a default that does nothing.
+pub trait MdObserver<P: PairPotential> {
+    /// What the observer's own work can fail with (writing a file).
+    type Error;
+
+    /// A thermo row was taken.
+    fn thermo(&mut self, _row: &Thermo) -> Result<(), Self::Error> {
+        Ok(())
+    }
+
+    /// A frame is due: the state is `md` now.
+    fn frame(&mut self, _md: &Md<P>) -> Result<(), Self::Error> {
+        Ok(())
+    }
+
+    /// A step was taken; `done` steps of this run so far.
+    fn step(&mut self, _done: usize) {}
+
+    /// Whether the run must stop before its next step (an output reached its size limit).
+    fn full(&self) -> bool {
+        false
+    }
+}
+
+/// An observer that keeps nothing: the run's rows are in its [`MdRun`].
+impl<P: PairPotential> MdObserver<P> for () {
+    type Error = std::convert::Infallible;
+}
+
+/// Why a run ended.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MdStop {
+    /// Every step was taken.
+    Completed,
+    /// The cancellation handle was raised (Ctrl-C).
+    Cancelled,
+    /// The observer asked to stop (an output reached its size limit).
+    Full,
+    /// The energy stopped being finite.
+    Diverged(MdError),
+}
+
+/// A finished run: its thermo rows (the start, every `thermo_every` steps, the end), why it
+/// ended and how long it took.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MdRun {
+    /// The thermo rows in order, the last one at the state reached.
+    pub rows: Vec<Thermo>,
+    /// Why it ended.
+    pub stop: MdStop,
+    /// Wall-clock seconds of the steps.
+    pub seconds: Real,
+}
+
+impl<P: PairPotential> Md<P> {
+    /// Runs `plan.steps` steps, handing `observer` each thermo row and frame as it is taken;
+    /// `cancel` (or the observer being full) ends the run after the current step, a
+    /// non-finite energy ends it at once. The last row is always of the state reached.
+    ///
+    /// ```
+    /// use mechkit::md::{Lattice, LennardJones, Md, MdConfig, MdStop, RunPlan, maxwell_boltzmann};
+    /// use mechkit::simulate::Cancel;
+    /// let (sim_box, x) = Lattice::Fcc.build(4, 0.8442).unwrap();
+    /// let v = maxwell_boltzmann(1.44, 1.0, 3, x.len(), 1).unwrap();
+    /// let mut md = Md::new(sim_box, LennardJones::reduced(2.5).unwrap(), x, v, MdConfig::default()).unwrap();
+    /// let plan = RunPlan::new(20, 5, None).unwrap();
+    /// let run = md.run_observed(&plan, &Cancel::new(), &mut ()).unwrap();
+    /// assert_eq!(run.stop, MdStop::Completed);
+    /// assert_eq!(run.rows.iter().map(|r| r.step).collect::<Vec<_>>(), [0, 5, 10, 15, 20]);
+    /// ```
+    pub fn run_observed<O: MdObserver<P>>(
+        &mut self,
+        plan: &RunPlan,
+        cancel: &Cancel,
+        observer: &mut O,
+    ) -> Result<MdRun, O::Error> {
+        let thermo_every = plan.thermo_every.max(1);
+        let mut rows = vec![self.thermo()];
+        observer.thermo(&rows[0])?;
+        if plan.frame_every.is_some() {
+            observer.frame(self)?;
+        }
+        let start = Instant::now();
+        let mut stop = MdStop::Completed;
+        for step in 1..=plan.steps {
+            if cancel.is_cancelled() {
+                stop = MdStop::Cancelled;
+                break;
+            }
+            if observer.full() {
+                stop = MdStop::Full;
+                break;
+            }
+            if let Err(e) = self.run(1) {
+                stop = MdStop::Diverged(e);
+                break;
+            }
+            observer.step(step);
+            if step % thermo_every == 0 || step == plan.steps {
+                let row = self.thermo();
+                observer.thermo(&row)?;
+                rows.push(row);
+            }
+            if plan.frame_every.is_some_and(|k| step % k.max(1) == 0) {
+                observer.frame(self)?;
+            }
+        }
+        if stop == MdStop::Completed && observer.full() {
+            stop = MdStop::Full;
+        }
+        if rows.last().is_none_or(|r| r.step != self.steps()) {
+            let row = self.thermo();
+            observer.thermo(&row)?;
+            rows.push(row);
+        }
+        Ok(MdRun {
+            rows,
+            stop,
+            seconds: start.elapsed().as_secs_f64(),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::md::{Lattice, LennardJones, MdConfig, maxwell_boltzmann};
+
+    fn melt() -> Md<LennardJones> {
+        let (sim_box, x) = Lattice::Fcc.build(4, 0.8442).unwrap();
+        let v = maxwell_boltzmann(1.44, 1.0, 3, x.len(), 7).unwrap();
+        Md::new(
+            sim_box,
+            LennardJones::reduced(2.5).unwrap(),
+            x,
+            v,
+            MdConfig::default(),
+        )
+        .unwrap()
+    }
+
+    /// Records what it is handed; full after `limit` frames.
+    struct Recorder {
+        rows: Vec<usize>,
+        frames: Vec<usize>,
+        steps: usize,
+        limit: usize,
+    }
+
+    impl MdObserver<LennardJones> for Recorder {
+        type Error = ();
+        fn thermo(&mut self, row: &Thermo) -> Result<(), ()> {
+            self.rows.push(row.step);
+            Ok(())
+        }
+        fn frame(&mut self, md: &Md<LennardJones>) -> Result<(), ()> {
+            self.frames.push(md.steps());
+            Ok(())
+        }
+        fn step(&mut self, done: usize) {
+            self.steps = done;
+        }
+        fn full(&self) -> bool {
+            self.frames.len() >= self.limit
+        }
+    }
+
+    #[test]
+    fn rows_and_frames_at_their_intervals_and_the_last_row_at_the_end() {
+        let mut md = melt();
+        let mut rec = Recorder {
+            rows: Vec::new(),
+            frames: Vec::new(),
+            steps: 0,
+            limit: usize::MAX,
+        };
+        let plan = RunPlan::new(12, 5, Some(4)).unwrap();
+        let run = md.run_observed(&plan, &Cancel::new(), &mut rec).unwrap();
+        assert_eq!(run.stop, MdStop::Completed);
+        assert_eq!(rec.rows, [0, 5, 10, 12]);
+        assert_eq!(rec.frames, [0, 4, 8, 12]);
+        assert_eq!(rec.steps, 12);
+        let steps: Vec<usize> = run.rows.iter().map(|r| r.step).collect();
+        assert_eq!(steps, rec.rows);
+    }
+
+    #[test]
+    fn a_full_observer_or_a_cancel_stops_with_a_row_of_the_state_reached() {
+        let mut md = melt();
+        let mut rec = Recorder {
+            rows: Vec::new(),
+            frames: Vec::new(),
+            steps: 0,
+            limit: 2,
+        };
+        let plan = RunPlan::new(100, 50, Some(3)).unwrap();
+        let run = md.run_observed(&plan, &Cancel::new(), &mut rec).unwrap();
+        assert_eq!(run.stop, MdStop::Full);
+        assert_eq!(md.steps(), 3);
+        assert_eq!(rec.rows, [0, 3]);
+        let cancel = Cancel::new();
+        cancel.cancel();
+        let mut md = melt();
+        let run = md.run_observed(&plan, &cancel, &mut ()).unwrap();
+        assert_eq!(run.stop, MdStop::Cancelled);
+        assert_eq!(run.rows.len(), 1, "the start is the state reached");
+    }
+
+    #[test]
+    fn intervals_of_zero_steps_are_refused() {
+        assert_eq!(
+            RunPlan::new(10, 0, None).unwrap_err().input(),
+            Some(MdInput::ThermoEvery)
+        );
+        assert_eq!(
+            RunPlan::new(10, 1, Some(0)).unwrap_err().input(),
+            Some(MdInput::FrameEvery)
+        );
+    }
+}
