@@ -38,19 +38,17 @@ fn lookup(params: &Params) -> impl Fn(&str) -> Option<Real> + '_ {
     move |n| params.iter().find(|(k, _)| k == n).map(|(_, v)| *v)
 }
 
-/// Reads `a=1,b=2 m` into names and SI values.
+/// Reads `a=1,b=2 m,th=pi/6` into names and SI values ([`crate::values::params`]).
 pub fn parse_params(text: &str) -> Result<Vec<(String, Real)>, CalculusError> {
-    let mut out = Vec::new();
-    for item in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-        let (name, value) = item.split_once('=').ok_or_else(|| {
-            CalculusError::Invalid(format!(
-                "`{item}` is not `name=value` (e.g. `a=1` or `m=2 kg`)"
-            ))
-        })?;
-        let q = Quantity::parse(value.trim())?;
-        out.push((name.trim().to_string(), q.value));
-    }
-    Ok(out)
+    crate::values::params(text).map_err(|e| {
+        CalculusError::Invalid(
+            e.message
+                .strip_prefix("--set ")
+                .or_else(|| e.message.strip_prefix("--set: "))
+                .unwrap_or(&e.message)
+                .to_string(),
+        )
+    })
 }
 
 /// A derivative.

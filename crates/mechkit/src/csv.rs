@@ -135,7 +135,10 @@ impl Table {
     pub fn write(&self, dir: &Path, name: &str) -> io::Result<PathBuf> {
         let path = dir.join(format!("{name}.csv"));
         write_atomic(&path, self.to_csv().as_bytes())?;
-        write_atomic(&dir.join(units_file_name(name)), self.units_json().as_bytes())?;
+        write_atomic(
+            &dir.join(units_file_name(name)),
+            self.units_json().as_bytes(),
+        )?;
         Ok(path)
     }
 }

@@ -96,6 +96,7 @@ pub mod roots;
 #[cfg(feature = "scenario")]
 pub mod scenario;
 pub mod simulate;
+pub mod values;
 
 pub use error::Error;
 pub use mechkit_expr as expr;

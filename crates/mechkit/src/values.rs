@@ -1,0 +1,336 @@
+//! Values a user types: quantities with units (`"2 eV"`), constant formulas (`2*pi`, `b/4`
+//! with `b` given), `name=value` lists (`"m=2 kg, th=pi/6"`), intervals `A:B` and vectors
+//! (`"3, -1 m/s"`). One parser of each, used by every front (the CLI's flags, Python's
+//! keyword arguments), and fuzzed (`crates/mechkit-fuzz`, target `values`).
+//!
+//! Errors are [`ValueError`]s: the input they are about (a flag such as `--range`, or a
+//! name) and a message that says what was expected.
+//!
+//! ```
+//! use mechkit::values;
+//!
+//! let p = values::params("m=2 kg, th=30 deg, h=2*m/4").unwrap();
+//! assert_eq!(p[0], ("m".to_string(), 2.0));
+//! assert!((p[1].1 - std::f64::consts::PI / 6.0).abs() < 1e-15);
+//! assert_eq!(p[2].1, 1.0);
+//! assert_eq!(values::interval("-1:b", "--range", &[("b".into(), 2.0)]).unwrap(), (-1.0, 2.0));
+//! let v = values::vector("3, -1 m/s", "--v1", mechkit::units::Dimension::VELOCITY).unwrap();
+//! assert_eq!(v, [3.0, -1.0]);
+//! ```
+
+use mechkit_expr::Sym;
+use mechkit_expr::units::{Dimension, Quantity};
+
+use crate::Real;
+
+/// Names and SI values (`--set`, `[constants]` overrides).
+pub type Params = [(String, Real)];
+
+/// A value that could not be read.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
+pub struct ValueError {
+    /// The input it is about: a flag (`--range`), a name (`m`), as the caller called it.
+    pub input: String,
+    /// What is wrong and what would fix it (it names the input).
+    pub message: String,
+}
+
+fn fail(input: &str, message: String) -> ValueError {
+    ValueError {
+        input: input.to_string(),
+        message,
+    }
+}
+
+/// Reads `name=value` items separated by commas (outside parentheses): each value as in
+/// [`value`], so it may be a quantity (`2 kg`, `30 deg`) or a formula of `pi`, `e` and the
+/// names given before it (`th=pi/6`, `h=2*m/4`).
+///
+/// # Errors
+/// An item that is not `name=value`, a name that is not a name, a value that does not read.
+pub fn params(text: &str) -> Result<Vec<(String, Real)>, ValueError> {
+    let mut out: Vec<(String, Real)> = Vec::new();
+    for item in split_top_level(text, ',')
+        .into_iter()
+        .filter(|s| !s.is_empty())
+    {
+        let Some((name, v)) = item.split_once('=') else {
+            return Err(fail(
+                "--set",
+                format!("--set: `{item}` is not `name=value` (e.g. `a=1`, `m=2 kg`, `th=pi/6`)"),
+            ));
+        };
+        let name = name.trim();
+        let is_name = name
+            .chars()
+            .next()
+            .is_some_and(|c| c.is_alphabetic() || c == '_')
+            && name.chars().all(|c| c.is_alphanumeric() || c == '_');
+        if !is_name {
+            return Err(fail(
+                "--set",
+                format!("--set: `{name}` is not a name (letters, digits and _, e.g. `v0`)"),
+            ));
+        }
+        let x = value(v, name, &out).map_err(|e| ValueError {
+            input: name.to_string(),
+            message: format!("--set {}", e.message),
+        })?;
+        match out.iter_mut().find(|(k, _)| k == name) {
+            Some(slot) => slot.1 = x,
+            None => out.push((name.to_string(), x)),
+        }
+    }
+    Ok(out)
+}
+
+/// A number, a quantity with units (converted to SI), a formula of the `params` names and
+/// `pi`/`e` (`2*pi`, `b/4`), or `inf`/`-inf` (for integration limits). `what` names the input
+/// in the error.
+///
+/// # Errors
+/// Text that is none of these, a name without a value, a value that is not finite.
+pub fn value(text: &str, what: &str, params: &Params) -> Result<Real, ValueError> {
+    let bare = text.trim();
+    let (sign, magnitude) = match bare.strip_prefix('-') {
+        Some(rest) => (-1.0, rest.trim()),
+        None => (1.0, bare.strip_prefix('+').unwrap_or(bare).trim()),
+    };
+    if ["inf", "infinity", "∞"].contains(&magnitude.to_ascii_lowercase().as_str()) {
+        return Ok(sign * Real::INFINITY);
+    }
+    let quantity_error = match Quantity::parse(bare) {
+        Ok(q) if q.value.is_finite() => return Ok(q.value),
+        Ok(q) => format!("`{text}` is {}, not a finite number", q.value),
+        Err(e) => e.to_string(),
+    };
+    if let Ok(sym) = Sym::parse(bare) {
+        let env = |n: &str| params.iter().find(|(k, _)| k == n).map(|(_, v)| *v);
+        match sym.eval(&env) {
+            Ok(v) if v.is_finite() => return Ok(v),
+            Ok(v) => {
+                return Err(fail(
+                    what,
+                    format!("{what}: `{text}` is {v}, not a finite number"),
+                ));
+            }
+            Err(name) if !name.is_empty() && text.contains(name.as_str()) => {
+                return Err(fail(
+                    what,
+                    format!(
+                        "{what}: `{text}` uses `{name}`, which has no value: give it with --set {name}=…"
+                    ),
+                ));
+            }
+            Err(_) => {}
+        }
+    }
+    Err(fail(what, format!("{what}: {quantity_error}")))
+}
+
+/// A quantity of dimension `dim`: a bare number (SI), or a value with units of that dimension
+/// (`"20 kW"` for a power). `what` names the input in the error.
+///
+/// # Errors
+/// Text that does not read as a quantity, or one of another dimension.
+pub fn quantity(text: &str, what: &str, dim: Dimension) -> Result<Real, ValueError> {
+    let q = Quantity::parse(text).map_err(|e| fail(what, format!("{what}: {e}")))?;
+    if !q.dim.is_none() && q.dim != dim {
+        return Err(fail(
+            what,
+            format!(
+                "{what} `{text}` has the dimension {}, but {} is needed (a plain number is taken in {})",
+                q.dim.describe(),
+                dim.describe(),
+                dim.derived_symbol()
+                    .map_or_else(|| dim.to_string(), str::to_string)
+            ),
+        ));
+    }
+    Ok(q.value)
+}
+
+/// A vector of 1 to 3 components separated by commas, each a quantity of `dim` or a bare
+/// number; a unit written once after the last component applies to the bare ones
+/// (`"3, -1 m/s"`).
+///
+/// # Errors
+/// No component or more than three, an empty one, or one that is not a quantity of `dim`.
+pub fn vector(text: &str, what: &str, dim: Dimension) -> Result<Vec<Real>, ValueError> {
+    let items = split_top_level(text, ',');
+    if items.len() > 3 || items.iter().any(|p| p.is_empty()) {
+        return Err(fail(
+            what,
+            format!(
+                "{what} `{text}`: give 1, 2 or 3 components separated by commas, e.g. \"3 m/s, -1 m/s\" or \"3, -1 m/s\""
+            ),
+        ));
+    }
+    let last = items[items.len() - 1];
+    let unit = last
+        .trim_start_matches(|c: char| c.is_ascii_digit() || "+-.eE ".contains(c))
+        .trim();
+    items
+        .iter()
+        .map(|c| {
+            if c.parse::<Real>().is_ok() && !unit.is_empty() && !unit.starts_with('(') {
+                quantity(&format!("{c} {unit}"), what, dim)
+            } else {
+                quantity(c, what, dim)
+            }
+        })
+        .collect()
+}
+
+/// `A:B` (each end as in [`value`]); `flag` names the input in errors.
+///
+/// # Errors
+/// Text without one colon outside parentheses, an end that does not read, equal ends.
+pub fn interval(text: &str, flag: &str, params: &Params) -> Result<(Real, Real), ValueError> {
+    let Some((a, b)) = split_interval(text) else {
+        return Err(fail(
+            flag,
+            format!("{flag} takes an interval A:B, e.g. {flag} 0:10 or {flag} -1:2, not `{text}`"),
+        ));
+    };
+    let at = |t: &str, end: &str| {
+        value(t, &format!("{flag} {end}"), params).map_err(|e| ValueError {
+            input: flag.to_string(),
+            ..e
+        })
+    };
+    let (a, b) = (at(a, "start")?, at(b, "end")?);
+    if a == b {
+        return Err(fail(
+            flag,
+            format!("{flag} {text}: the interval is empty; give two different ends"),
+        ));
+    }
+    Ok((a, b))
+}
+
+/// `A:B` with `A < B`: a range to scan or plot, where a reversed one is a slip, refused with
+/// the ends swapped as the example (an oriented interval, such as the limits of an integral or
+/// a path's parameter, is [`interval`]).
+///
+/// # Errors
+/// As [`interval`], and a decreasing range.
+pub fn increasing_interval(
+    text: &str,
+    flag: &str,
+    params: &Params,
+) -> Result<(Real, Real), ValueError> {
+    let (a, b) = interval(text, flag, params)?;
+    if a > b {
+        let (start, end) = split_interval(text).unwrap_or((text, text));
+        return Err(fail(
+            flag,
+            format!(
+                "{flag} {text}: the range must be increasing (its start below its end), e.g. {flag} {}:{}",
+                end.trim(),
+                start.trim()
+            ),
+        ));
+    }
+    Ok((a, b))
+}
+
+/// Splits `A:B` at the one colon outside parentheses.
+fn split_interval(text: &str) -> Option<(&str, &str)> {
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ':' if depth == 0 => return Some((&text[..i], &text[i + 1..])),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Splits a list at `sep` outside parentheses and brackets (`"atan2(y, x), 0"` has two
+/// items), each trimmed.
+pub fn split_top_level(text: &str, sep: char) -> Vec<&str> {
+    let mut out = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            c if c == sep && depth == 0 => {
+                out.push(text[start..i].trim());
+                start = i + c.len_utf8();
+            }
+            _ => {}
+        }
+    }
+    out.push(text[start..].trim());
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn values() {
+        let p = vec![("b".to_string(), 2.0)];
+        assert_eq!(value("3", "--x", &p).unwrap(), 3.0);
+        assert!((value("60 km/h", "--v", &p).unwrap() - 16.666_666_666_666_668).abs() < 1e-12);
+        assert_eq!(value("b/4", "--to", &p).unwrap(), 0.5);
+        assert!((value("2*pi", "--to", &p).unwrap() - std::f64::consts::TAU).abs() < 1e-15);
+        let e = value("c/4", "--to", &p).unwrap_err();
+        assert!(e.message.contains("--set c="), "{e}");
+        assert_eq!(e.input, "--to");
+        assert_eq!(interval("-1:2", "--range", &p).unwrap(), (-1.0, 2.0));
+        assert_eq!(value("-inf", "--from", &p).unwrap(), f64::NEG_INFINITY);
+        assert_eq!(value("∞", "--to", &p).unwrap(), f64::INFINITY);
+        assert!(interval("1", "--range", &p).is_err());
+        assert_eq!(interval("2:1", "--param", &p).unwrap(), (2.0, 1.0));
+        let e = increasing_interval("2:-1", "--range", &p).unwrap_err();
+        assert!(
+            e.message.contains("must be increasing") && e.message.contains("--range -1:2"),
+            "{e}"
+        );
+        assert_eq!(e.input, "--range");
+        assert_eq!(split_top_level("atan2(y, x), 0", ','), ["atan2(y, x)", "0"]);
+    }
+
+    #[test]
+    fn params_take_formulas_units_and_earlier_names() {
+        let p = params("th=pi/6, m = 2 kg, w=m*3, f=atan2(1, 1)").unwrap();
+        let get = |n: &str| p.iter().find(|(k, _)| k == n).unwrap().1;
+        assert!((get("th") - std::f64::consts::FRAC_PI_6).abs() < 1e-15);
+        assert_eq!(get("m"), 2.0);
+        assert_eq!(get("w"), 6.0);
+        assert!((get("f") - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+        assert!((params("a=30 deg").unwrap()[0].1 - std::f64::consts::FRAC_PI_6).abs() < 1e-15);
+        assert_eq!(params("a=1,a=2").unwrap(), [("a".to_string(), 2.0)]);
+        let e = params("a").unwrap_err();
+        assert!(e.message.contains("name=value"), "{e}");
+        let e = params("2x=1").unwrap_err();
+        assert!(e.message.contains("not a name"), "{e}");
+        let e = params("a=b+1").unwrap_err();
+        assert_eq!(e.input, "a");
+        assert!(e.message.contains("`b`"), "{e}");
+    }
+
+    #[test]
+    fn vectors() {
+        assert_eq!(
+            vector("3 m/s, -1 m/s", "--v", Dimension::VELOCITY).unwrap(),
+            [3.0, -1.0]
+        );
+        assert_eq!(
+            vector("3, -1 km/s", "--v", Dimension::VELOCITY).unwrap(),
+            [3000.0, -1000.0]
+        );
+        assert_eq!(vector("2", "--v", Dimension::VELOCITY).unwrap(), [2.0]);
+        assert!(vector("1,2,3,4", "--v", Dimension::VELOCITY).is_err());
+        assert!(vector("1,,2", "--v", Dimension::VELOCITY).is_err());
+        let e = vector("1 kg", "--v", Dimension::VELOCITY).unwrap_err();
+        assert!(e.message.contains("dimension"), "{e}");
+    }
+}
