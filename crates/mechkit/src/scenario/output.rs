@@ -139,7 +139,7 @@ pub fn csv_columns(sys: &ParticleSystem, has_potential: bool) -> Vec<Column> {
     let [position, velocity, _] = coordinates.component_names(sys.dim());
     let (q_unit, v_unit) = match coordinates {
         crate::particles::Coordinates::Angle => ("rad", "rad/s"),
-        _ => ("m", "m/s"),
+        crate::particles::Coordinates::Cartesian => ("m", "m/s"),
     };
     let mut cols = vec![Column::new("t", "s")];
     for b in sys.bodies() {

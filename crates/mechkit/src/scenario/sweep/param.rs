@@ -36,8 +36,7 @@ impl ConstantOverride {
                 let given = crate::values::split_top_level(text, ',')
                     .into_iter()
                     .filter_map(|item| item.split_once('='))
-                    .filter(|(n, _)| n.trim() == name)
-                    .last()
+                    .rfind(|(n, _)| n.trim() == name)
                     .map(|(_, v)| v.trim());
                 let dim = given
                     .and_then(|v| Quantity::parse(v).ok())
