@@ -4,10 +4,11 @@ Run as `python3 tests/python/csv_readers.py MECHKIT` (the binary; `tests/run` pa
 build). Each command writes its CSV into a temporary directory; pandas.read_csv and
 numpy.genfromtxt(names=True) must read it as it is: one header row, as many columns as the
 header has names, the same numbers in both readers, and column names that pandas keeps
-exactly. numpy's name validation drops the `.` of a trajectory's `body.x` (the CLI contract
+exactly; beside it, NAME.units.json gives a unit (or null) for every column of the header. numpy's name validation drops the `.` of a trajectory's `body.x` (the CLI contract
 of docs/scenario.md §16); the test checks that this is all it changes.
 """
 
+import json
 import subprocess
 import sys
 import tempfile
@@ -32,10 +33,10 @@ def cases(binary, tmp):
     run(binary, ["run", str(EXAMPLES / "newtons_cradle.toml"), "--out", "cradle", "--no-plots"], tmp)
     yield "trajectory.csv (bodies, centre of mass)", tmp / "cradle/trajectory.csv"
     run(binary, ["sweep", str(EXAMPLES / "sweep/throw.toml"), "--set", "v0=0:5:11",
-                 "--out", "sweep", "--no-plot", "-q"], tmp)
+                 "--out", "sweep", "--no-plots", "-q"], tmp)
     yield "sweep.csv", tmp / "sweep/sweep.csv"
     run(binary, ["sweep", str(EXAMPLES / "sweep/throw.toml"), "--set", "v0=0:5:11",
-                 "--shard", "2/3", "--out", "sweep", "--no-plot", "-q"], tmp)
+                 "--shard", "2/3", "--out", "sweep", "--no-plots", "-q"], tmp)
     yield "sweep.partK.csv", tmp / "sweep/sweep.part2.csv"
     run(binary, ["derive", str(EXAMPLES / "data/fallingtennisball02.txt"), "--out", "derive",
                  "--no-plots"], tmp)
@@ -92,6 +93,12 @@ def check(kind, path):
             right = np.asarray(table[numpy_name], dtype=float)
             same = (left == right) | (np.isnan(left) & np.isnan(right))
             assert same.all(), f"{kind}: column {name} differs between pandas and numpy"
+    units_path = path.with_name(path.name[: -len(".csv")] + ".units.json")
+    assert units_path.is_file(), f"{kind}: no units sidecar {units_path.name}"
+    units = json.loads(units_path.read_text())
+    assert list(units) == header, f"{kind}: the sidecar's columns {list(units)} are not the header's"
+    for name, unit in units.items():
+        assert unit is None or (isinstance(unit, str) and unit), f"{kind}: unit of {name} is {unit!r}"
     return len(frame), len(header)
 
 

@@ -280,7 +280,7 @@ pub fn image(data: &[u8]) {
 pub type Target = fn(&[u8]);
 
 /// The values of command-line options that have their own small languages: `--set` parameter
-/// lists, sweep ranges and grids, shards, sizes, data columns, restitutions, image channels,
+/// lists and the other value parsers of `mechkit::values` (quantities, intervals, vectors), sweep ranges and grids, shards, sizes, data columns, restitutions, image channels,
 /// force fields. Each line of the input is given to every parser.
 pub fn options(data: &[u8]) {
     let Some(src) = text(data) else { return };
@@ -310,6 +310,13 @@ pub fn options(data: &[u8]) {
         let _ = Channel::parse(line).map_err(|e| e.to_string());
         let components: Vec<&str> = line.split(';').collect();
         let _ = ForceField::parse(&components, &params).map_err(|e| e.to_string());
+        // the library's value parsers (mechkit::values): every front reads values with them
+        let _ = mechkit::values::value(line, "--x", &params).map_err(|e| e.to_string());
+        let _ = mechkit::values::increasing_interval(line, "--range", &params)
+            .map_err(|e| e.to_string());
+        let _ = mechkit::values::vector(line, "--v", mechkit::units::Dimension::VELOCITY)
+            .map_err(|e| e.to_string());
+        let _ = mechkit::scenario::ConstantOverride::parse_list(line).map_err(|e| e.to_string());
     }
 }
 

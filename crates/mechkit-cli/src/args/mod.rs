@@ -92,7 +92,7 @@ pub enum Command {
     /// Check a scenario file without running it.
     Check(CheckArgs),
     /// List the integration methods.
-    ListIntegrators,
+    ListIntegrators(ListArgs),
     /// Differentiate a formula symbolically.
     Diff(DiffArgs),
     /// Integrate a formula: antiderivative, and the definite value by closed form and by
@@ -171,6 +171,42 @@ pub enum Command {
     /// The course's worked problems, bundled: list them, run one (its answers against the
     /// book's, its outputs and plots), or run all into the validation report.
     Gallery(GalleryArgs),
+    /// Print a shell completion script: `mechkit completions bash > ~/.local/share/bash-completion/completions/mechkit`
+    /// (zsh: into a directory of `$fpath` as `_mechkit`; fish: `~/.config/fish/completions/mechkit.fish`).
+    Completions(CompletionsArgs),
+    /// Print the manual page (roff): `mechkit man | man -l -`; with -o DIR, write `mechkit.1`
+    /// and one page per command (`mechkit-run.1`, …) into DIR.
+    Man(ManArgs),
+}
+
+/// `mechkit list-integrators`.
+#[derive(Debug, clap::Args)]
+pub struct ListArgs {
+    /// `--json`, `-q`.
+    #[command(flatten)]
+    pub report: Report,
+}
+
+/// `mechkit completions`.
+#[derive(Debug, clap::Args)]
+pub struct CompletionsArgs {
+    /// The shell.
+    #[arg(value_enum)]
+    pub shell: clap_complete::Shell,
+    /// `--json` prints `{"shell": …, "script": …}`; the script is printed even with `-q`.
+    #[command(flatten)]
+    pub report: Report,
+}
+
+/// `mechkit man`.
+#[derive(Debug, clap::Args)]
+pub struct ManArgs {
+    /// Directory for `mechkit.1` and the commands' pages (default: print `mechkit.1` on stdout).
+    #[arg(long, short)]
+    pub out: Option<PathBuf>,
+    /// `--json`, `-q`.
+    #[command(flatten)]
+    pub report: Report,
 }
 
 /// The flags every command has: `--json` and `-q/--quiet`.
@@ -281,12 +317,17 @@ pub struct UnitsArgs {
 pub struct RunArgs {
     /// The scenario file (TOML).
     pub file: PathBuf,
-    /// Output directory [default: out/<file name without .toml>].
+    /// Output directory for trajectory.csv (with trajectory.units.json), summary.json and the
+    /// plots; without it the run writes no file and prints its summary.
     #[arg(long, short)]
     pub out: Option<PathBuf>,
-    /// Print the summary as JSON on stdout (instead of the human summary).
-    #[arg(long)]
-    pub json: bool,
+    /// Give constants of the scenario other values, e.g. "v0=12 m/s, th=pi/6" (a quantity
+    /// with units, a bare number in SI, or a formula of pi, e and the names before it).
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// `--json` prints the summary as JSON; `-q` prints nothing but warnings and errors.
+    #[command(flatten)]
+    pub report: Report,
     /// Do not draw plots.
     #[arg(long)]
     pub no_plots: bool,
@@ -320,6 +361,12 @@ pub struct RunArgs {
 pub struct CheckArgs {
     /// The scenario file (TOML).
     pub file: PathBuf,
+    /// Give constants of the scenario other values, as `run --set` does.
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// `--json` prints what the scenario sets up as JSON.
+    #[command(flatten)]
+    pub report: Report,
 }
 
 /// A count (a whole number ≥ 0) of an option: a negative or fractional value gets a message
@@ -373,6 +420,7 @@ mod negative_values {
     const NOT_NUMBERS: &[&str] = &[
         "file",
         "out",
+        "shell",
         "plot",
         "kind",
         "mark",

@@ -32,19 +32,17 @@ pub struct SweepArgs {
     pub plot: Option<String>,
     /// No overlay plot.
     #[arg(long, conflicts_with = "plot")]
-    pub no_plot: bool,
+    pub no_plots: bool,
     /// Plot files: `--format svg|png` and `--dpi`.
     #[command(flatten)]
     pub plots: crate::args::PlotFormat,
-    /// Output directory [default: out/<file stem>].
+    /// Output directory for sweep.csv (with sweep.units.json and sweep.manifest.json) and
+    /// the plot; without it the table is printed on stdout as CSV and no file is written.
     #[arg(long, short)]
     pub out: Option<PathBuf>,
-    /// No progress bar.
-    #[arg(long, short)]
-    pub quiet: bool,
-    /// Print what was done as JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` prints what was done as JSON; `-q` hides the progress bar and the report.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }
 
 /// `mechkit sweep-merge`.
@@ -56,7 +54,7 @@ pub struct SweepMergeArgs {
     /// The merged table [default: sweep.csv beside the first part].
     #[arg(long, short)]
     pub out: Option<PathBuf>,
-    /// Print what was done as JSON.
-    #[arg(long)]
-    pub json: bool,
+    /// `--json` prints what was done as JSON.
+    #[command(flatten)]
+    pub report: crate::args::Report,
 }

@@ -78,29 +78,90 @@ pub fn dispatch(cli: Cli, cancel: &Cancel) -> anyhow::Result<Outcome> {
         Command::Sweep(args) => sweep::sweep(&args, cancel),
         Command::SweepMerge(args) => sweep::sweep_merge(&args),
         Command::Gallery(args) => gallery::gallery(&args),
-        Command::ListIntegrators => {
-            let mut text = String::new();
-            for m in mechkit::ode::Method::ALL {
-                let kind = match m.kind() {
-                    mechkit::ode::MethodKind::Fixed => "fixed",
-                    mechkit::ode::MethodKind::Adaptive => "adaptive",
-                    mechkit::ode::MethodKind::Symplectic => "symplectic",
-                };
-                let _ = writeln!(
-                    text,
-                    "{:<12} {kind:<10} order {}  {}",
-                    m.name(),
-                    m.order(),
-                    m.description()
+        Command::ListIntegrators(args) => {
+            let methods = mechkit::ode::Method::catalogue();
+            report(args.report, &methods, || {
+                let mut text = String::new();
+                for m in &methods {
+                    let _ = writeln!(
+                        text,
+                        "{:<12} {:<10} order {}  {}",
+                        m.name, m.kind, m.order, m.description
+                    );
+                }
+                text.push_str(
+                    "\nadaptive methods take rtol/atol (or a fixed dt); symplectic ones need forces of position and time only\n",
                 );
-            }
-            text.push_str(
-                "\nadaptive methods take rtol/atol (or a fixed dt); symplectic ones need forces of position and time only\n",
-            );
-            print(&text)?;
+                text
+            })?;
             Ok(Outcome::Success)
         }
+        Command::Completions(args) => {
+            let mut cmd = <Cli as clap::CommandFactory>::command();
+            let mut out = Vec::new();
+            clap_complete::generate(args.shell, &mut cmd, "mechkit", &mut out);
+            let script = String::from_utf8_lossy(&out).into_owned();
+            if args.report.json {
+                report(
+                    args.report,
+                    &Completion {
+                        shell: args.shell.to_string(),
+                        script,
+                    },
+                    String::new,
+                )?;
+            } else {
+                print(&script)?;
+            }
+            Ok(Outcome::Success)
+        }
+        Command::Man(args) => man(&args),
     }
+}
+
+/// What `mechkit completions SHELL --json` prints.
+#[derive(serde::Serialize)]
+struct Completion {
+    shell: String,
+    script: String,
+}
+
+/// `mechkit man`: the manual page on stdout, or `mechkit.1` and a page per command in `-o DIR`.
+fn man(args: &crate::args::ManArgs) -> anyhow::Result<Outcome> {
+    use anyhow::Context as _;
+    let cmd = <Cli as clap::CommandFactory>::command();
+    let page = |c: clap::Command, title: &str| -> anyhow::Result<Vec<u8>> {
+        let mut out = Vec::new();
+        clap_mangen::Man::new(c)
+            .title(title.to_string())
+            .render(&mut out)?;
+        Ok(out)
+    };
+    let Some(dir) = &args.out else {
+        print(&String::from_utf8_lossy(&page(cmd, "mechkit")?))?;
+        return Ok(Outcome::Success);
+    };
+    std::fs::create_dir_all(dir)
+        .with_context(|| format!("cannot create the output directory {}", dir.display()))?;
+    let mut written = vec![dir.join("mechkit.1")];
+    mechkit::csv::write_atomic(&written[0], &page(cmd.clone(), "mechkit")?)
+        .with_context(|| format!("cannot write {}", written[0].display()))?;
+    for sub in cmd.get_subcommands() {
+        let name = format!("mechkit-{}", sub.get_name());
+        let path = dir.join(format!("{name}.1"));
+        mechkit::csv::write_atomic(&path, &page(sub.clone(), &name)?)
+            .with_context(|| format!("cannot write {}", path.display()))?;
+        written.push(path);
+    }
+    note(
+        args.report,
+        &format!(
+            "wrote {} manual pages into {}",
+            written.len(),
+            dir.display()
+        ),
+    );
+    Ok(Outcome::Success)
 }
 
 /// Prints a command's result: its JSON with `--json`, else the text report unless `--quiet`.

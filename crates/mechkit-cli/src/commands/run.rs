@@ -1,55 +1,56 @@
 //! `mechkit run FILE`: simulate, write the trajectory, summary and plots, print the summary.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use anyhow::{Context as _, Result, anyhow, bail};
 use mechkit::ode::Method;
-use mechkit::scenario::{CompareSettings, Scenario, parse_size, write_atomic};
+use mechkit::scenario::{CompareSettings, ConstantOverride, Scenario, parse_size, write_atomic};
 use mechkit::simulate::Cancel;
 use mechkit::units::{Dimension, Quantity};
 
-use super::{Outcome, print};
+use super::Outcome;
 use crate::args::RunArgs;
 use crate::plot;
 
 pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
-    let mut scenario = Scenario::load(&args.file)?;
+    let mut scenario = load(&args.file, args.set.as_deref())?;
     scenario.cancel = cancel.clone();
     if let Some(size) = &args.max_output {
         scenario.max_output = parse_size(size).map_err(|e| anyhow!("--max-output: {e}"))?;
     }
-    let dir = args.out.clone().unwrap_or_else(|| {
-        let stem = args
-            .file
-            .file_stem()
-            .map_or_else(|| "run".into(), |s| s.to_string_lossy().into_owned());
-        PathBuf::from("out").join(stem)
-    });
+    let dir = args.out.clone();
     if let Some(methods) = &args.compare_methods {
-        return compare(args, &scenario, methods, &dir);
+        return compare(args, &scenario, methods, dir.as_deref());
     }
-    let mut out = scenario.run_to_dir(&dir)?;
-    if !args.no_plots {
-        plot::render_run(&scenario, &mut out, &dir, args.plots)?;
+    let bar = progress_bar(&scenario, args.report);
+    let mut out = match &dir {
+        Some(dir) => scenario.run_to_dir(dir)?,
+        None => scenario.run()?,
+    };
+    bar.finish();
+    if let Some(dir) = &dir
+        && !args.no_plots
+    {
+        plot::render_run(&scenario, &mut out, dir, args.plots)?;
     }
     for w in &out.summary.warnings {
         eprintln!("warning: {w}");
     }
-    if args.json {
-        print(&out.summary.to_json())?;
-    } else {
-        print(&format!(
-            "{}wrote {}\n",
-            out.summary.to_text(),
-            dir.display()
-        ))?;
-    }
+    let wrote = dir.as_ref().map_or_else(
+        || {
+            "no files written (give -o DIR to write trajectory.csv, summary.json and plots)\n"
+                .to_string()
+        },
+        |d| format!("wrote {}\n", d.display()),
+    );
+    super::report(args.report, &out.summary, || {
+        format!("{}{wrote}", out.summary.to_text())
+    })?;
+    let held = dir.as_ref().map_or_else(String::new, |d| {
+        format!(": the outputs in {} hold the run up to there", d.display())
+    });
     if out.summary.stop_reason == "interrupted" {
-        eprintln!(
-            "interrupted at t = {} s: the outputs in {} hold the run up to there",
-            out.summary.t_end,
-            dir.display()
-        );
+        eprintln!("interrupted at t = {} s{held}", out.summary.t_end);
         return Ok(Outcome::Interrupted);
     }
     if let Some(why) = match out.summary.stop_reason.as_str() {
@@ -59,9 +60,8 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
     } {
         // the message, with what to do, is among the warnings printed above
         eprintln!(
-            "error: the run stopped at t = {} s because {why}; {} holds the run up to there",
-            out.summary.t_end,
-            dir.display()
+            "error: the run stopped at t = {} s because {why}{held}",
+            out.summary.t_end
         );
         return Ok(Outcome::ComputationFailed);
     }
@@ -80,7 +80,12 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
     Ok(Outcome::Success)
 }
 
-fn compare(args: &RunArgs, scenario: &Scenario, names: &[String], dir: &Path) -> Result<Outcome> {
+fn compare(
+    args: &RunArgs,
+    scenario: &Scenario,
+    names: &[String],
+    dir: Option<&Path>,
+) -> Result<Outcome> {
     let mut methods = Vec::new();
     for n in names.iter().map(|n| n.trim()).filter(|n| !n.is_empty()) {
         let m = Method::from_name(n).ok_or_else(|| {
@@ -123,6 +128,11 @@ fn compare(args: &RunArgs, scenario: &Scenario, names: &[String], dir: &Path) ->
         rtol: args.rtol,
         atol: args.atol,
     };
+    let dir = dir.ok_or_else(|| {
+        anyhow!(
+            "--compare-methods writes compare.json and its plots: give the directory with -o DIR"
+        )
+    })?;
     let cmp = scenario.compare(&methods, &settings)?;
     std::fs::create_dir_all(dir)
         .with_context(|| format!("cannot create the output directory {}", dir.display()))?;
@@ -134,10 +144,90 @@ fn compare(args: &RunArgs, scenario: &Scenario, names: &[String], dir: &Path) ->
             plot::render(p, &scenario.title, &path, args.plots)?;
         }
     }
-    if args.json {
-        print(&cmp.to_json())?;
-    } else {
-        print(&format!("{}wrote {}\n", cmp.to_text(), dir.display()))?;
-    }
+    super::report(args.report, &cmp, || {
+        format!("{}wrote {}\n", cmp.to_text(), dir.display())
+    })?;
     Ok(Outcome::Success)
+}
+
+/// Reads the scenario, with `--set` overrides of its constants.
+pub fn load(file: &Path, set: Option<&str>) -> Result<Scenario> {
+    let overrides = match set {
+        Some(text) => ConstantOverride::parse_list(text)?,
+        None => Vec::new(),
+    };
+    Ok(Scenario::load_with(file, &overrides)?)
+}
+
+/// A progress bar for a run with an end time, on a terminal and unless `-q`: it follows the
+/// scenario's [`Progress`](mechkit::simulate::Progress) from a thread and appears only when
+/// the run lasts more than half a second.
+fn progress_bar(scenario: &Scenario, flags: crate::args::Report) -> ProgressBar {
+    use std::io::IsTerminal as _;
+    let Some(t_max) = scenario.t_max.filter(|t| t.is_finite() && *t > 0.0) else {
+        return ProgressBar::none();
+    };
+    if flags.quiet || flags.json || !std::io::stderr().is_terminal() {
+        return ProgressBar::none();
+    }
+    ProgressBar::follow(scenario.progress.clone(), t_max)
+}
+
+/// A terminal progress bar fed by a thread that polls a run's time.
+struct ProgressBar {
+    stop: Option<(
+        std::sync::Arc<std::sync::atomic::AtomicBool>,
+        std::thread::JoinHandle<()>,
+    )>,
+}
+
+impl ProgressBar {
+    fn none() -> Self {
+        Self { stop: None }
+    }
+
+    fn follow(progress: mechkit::simulate::Progress, t_max: f64) -> Self {
+        use std::sync::atomic::{AtomicBool, Ordering};
+        let stop = std::sync::Arc::new(AtomicBool::new(false));
+        let done = std::sync::Arc::clone(&stop);
+        let thread = std::thread::spawn(move || {
+            let start = std::time::Instant::now();
+            let mut bar: Option<indicatif::ProgressBar> = None;
+            while !done.load(Ordering::Relaxed) {
+                std::thread::sleep(std::time::Duration::from_millis(100));
+                if start.elapsed() < std::time::Duration::from_millis(500) {
+                    continue;
+                }
+                let b = bar.get_or_insert_with(|| {
+                    let b = indicatif::ProgressBar::new(1000);
+                    if let Ok(style) = indicatif::ProgressStyle::with_template(
+                        "{bar:40} {percent:>3}% t = {msg}  {elapsed} (eta {eta})",
+                    ) {
+                        b.set_style(style);
+                    }
+                    b
+                });
+                let t = progress.time();
+                if t.is_finite() {
+                    let frac = (t / t_max).clamp(0.0, 1.0);
+                    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+                    b.set_position((frac * 1000.0) as u64);
+                    b.set_message(format!("{t:.4} s of {t_max} s"));
+                }
+            }
+            if let Some(b) = bar {
+                b.finish_and_clear();
+            }
+        });
+        Self {
+            stop: Some((stop, thread)),
+        }
+    }
+
+    fn finish(self) {
+        if let Some((stop, thread)) = self.stop {
+            stop.store(true, std::sync::atomic::Ordering::Relaxed);
+            let _ = thread.join();
+        }
+    }
 }

@@ -15,7 +15,7 @@ use mechkit::scenario::sweep::{
 use mechkit::scenario::write_atomic;
 use mechkit::simulate::Cancel;
 
-use super::{Outcome, print};
+use super::Outcome;
 use crate::args::{SweepArgs, SweepMergeArgs};
 use crate::plot;
 
@@ -46,16 +46,10 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
     };
     let text = mechkit::scenario::read_source(&args.file)?;
     let name = args.file.display().to_string();
-    let dir = args.out.clone().unwrap_or_else(|| {
-        let stem = args
-            .file
-            .file_stem()
-            .map_or_else(|| "sweep".into(), |s| s.to_string_lossy().into_owned());
-        PathBuf::from("out").join(stem)
-    });
+    let dir = args.out.clone();
     let options = SweepOptions {
         shard,
-        plot: if args.no_plot {
+        plot: if args.no_plots {
             None
         } else {
             Some(args.plot.clone().unwrap_or_default())
@@ -63,7 +57,7 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
         cancel: cancel.clone(),
     };
     let count = shard.map_or(grid.len(), |s| s.indices(grid.len()).len());
-    let bar = if args.quiet || !std::io::stderr().is_terminal() {
+    let bar = if args.report.quiet || args.report.json || !std::io::stderr().is_terminal() {
         ProgressBar::hidden()
     } else {
         ProgressBar::new(count as u64).with_style(
@@ -81,11 +75,21 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
     let table = result?;
     let seconds = start.elapsed().as_secs_f64();
 
+    let Some(dir) = dir else {
+        return print_table(args, &table, cancel, count, seconds, threads);
+    };
+    let base = mechkit::scenario::Scenario::from_str(&name, &text)?;
     std::fs::create_dir_all(&dir)
         .with_context(|| format!("cannot create the output directory {}", dir.display()))?;
     let csv = dir.join(table.file_name());
     write_atomic(&csv, table.to_csv().as_bytes())
         .with_context(|| format!("cannot write {}", csv.display()))?;
+    let units = dir.join(mechkit::csv::units_file_name(&table.file_name()));
+    write_atomic(
+        &units,
+        mechkit::csv::units_json(&table.columns(&base)).as_bytes(),
+    )
+    .with_context(|| format!("cannot write {}", units.display()))?;
     let manifest = dir.join(table.manifest_file_name());
     write_atomic(&manifest, table.manifest_json().as_bytes())
         .with_context(|| format!("cannot write {}", manifest.display()))?;
@@ -119,21 +123,19 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
         );
     }
     let rate = table.rows.len() as f64 / seconds.max(1e-9);
-    if args.json {
-        let json = serde_json::json!({
-            "scenario": name,
-            "runs": grid.len(),
-            "rows": table.rows.len(),
-            "shard": shard.map(|s| format!("{}/{}", s.k, s.n)),
-            "threads": threads,
-            "seconds": seconds,
-            "runs_per_second": rate,
-            "failed": failed,
-            "csv": csv.display().to_string(),
-            "plot": plot_path.as_ref().map(|p| p.display().to_string()),
-        });
-        print(&format!("{json:#}\n"))?;
-    } else {
+    let done = SweepDone {
+        scenario: name.clone(),
+        runs: grid.len(),
+        rows: table.rows.len(),
+        shard: shard.map(|s| format!("{}/{}", s.k, s.n)),
+        threads,
+        seconds,
+        runs_per_second: rate,
+        failed,
+        csv: Some(csv.display().to_string()),
+        plot: plot_path.as_ref().map(|p| p.display().to_string()),
+    };
+    super::report(args.report, &done, || {
         let mut text = format!(
             "{} runs of {} on {threads} thread{} in {seconds:.3} s ({rate:.0} runs/s)\nwrote {}\n",
             table.rows.len(),
@@ -144,14 +146,52 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
         if let Some(p) = &plot_path {
             let _ = writeln!(text, "wrote {}", p.display());
         }
-        print(&text)?;
-    }
+        text
+    })?;
     if cancel.is_cancelled() {
         eprintln!(
             "interrupted: {} of {count} runs in {} (those cut short have stop_reason `interrupted`); the rest were not started",
             table.rows.len(),
             csv.display()
         );
+        return Ok(Outcome::Interrupted);
+    }
+    Ok(Outcome::Success)
+}
+
+/// A sweep without `-o`: its table on stdout as CSV (or, with `--json`, what was done), a
+/// note on stderr, no file.
+fn print_table(
+    args: &SweepArgs,
+    table: &mechkit::scenario::sweep::SweepTable,
+    cancel: &Cancel,
+    count: usize,
+    seconds: f64,
+    threads: usize,
+) -> Result<Outcome> {
+    let rate = table.rows.len() as f64 / seconds.max(1e-9);
+    let done = SweepDone {
+        scenario: args.file.display().to_string(),
+        runs: count,
+        rows: table.rows.len(),
+        shard: None,
+        threads,
+        seconds,
+        runs_per_second: rate,
+        failed: 0,
+        csv: None,
+        plot: None,
+    };
+    super::report(args.report, &done, || table.to_csv())?;
+    super::note(
+        args.report,
+        &format!(
+            "{} runs on {threads} thread{} in {seconds:.3} s ({rate:.0} runs/s); no files written (give -o DIR for sweep.csv, its units and manifest, and the plot)",
+            table.rows.len(),
+            if threads == 1 { "" } else { "s" },
+        ),
+    );
+    if cancel.is_cancelled() {
         return Ok(Outcome::Interrupted);
     }
     Ok(Outcome::Success)
@@ -220,20 +260,52 @@ pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
     let manifest_path = out.with_file_name(manifest_name(&out_name));
     write_atomic(&manifest_path, manifest.as_bytes())
         .with_context(|| format!("cannot write {}", manifest_path.display()))?;
+    let units = files[0].with_file_name(mechkit::csv::units_file_name(
+        &files[0]
+            .file_name()
+            .map_or_else(String::new, |n| n.to_string_lossy().into_owned()),
+    ));
+    if let Ok(text) = std::fs::read(&units) {
+        let target = out.with_file_name(mechkit::csv::units_file_name(&out_name));
+        write_atomic(&target, &text)
+            .with_context(|| format!("cannot write {}", target.display()))?;
+    }
     let rows = merged.lines().count() - 1;
-    if args.json {
-        let json = serde_json::json!({
-            "parts": files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>(),
-            "rows": rows,
-            "csv": out.display().to_string(),
-        });
-        print(&format!("{json:#}\n"))?;
-    } else {
-        print(&format!(
+    let done = MergeDone {
+        parts: files.iter().map(|f| f.display().to_string()).collect(),
+        rows,
+        csv: out.display().to_string(),
+    };
+    super::report(args.report, &done, || {
+        format!(
             "merged {} parts, {rows} runs\nwrote {}\n",
             files.len(),
             out.display()
-        ))?;
-    }
+        )
+    })?;
     Ok(Outcome::Success)
+}
+
+/// What `mechkit sweep --json` prints: the run of the sweep itself (the results are in
+/// sweep.csv).
+#[derive(serde::Serialize)]
+struct SweepDone {
+    scenario: String,
+    runs: usize,
+    rows: usize,
+    shard: Option<String>,
+    threads: usize,
+    seconds: f64,
+    runs_per_second: f64,
+    failed: usize,
+    csv: Option<String>,
+    plot: Option<String>,
+}
+
+/// What `mechkit sweep-merge --json` prints.
+#[derive(serde::Serialize)]
+struct MergeDone {
+    parts: Vec<String>,
+    rows: usize,
+    csv: String,
 }

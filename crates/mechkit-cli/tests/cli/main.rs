@@ -31,6 +31,7 @@ mod bead;
 mod calculus;
 mod collide;
 mod com_image;
+mod conventions;
 mod data;
 mod diverge;
 mod docs;

@@ -45,7 +45,7 @@ fn thousand_runs_give_thousand_rows_and_do_not_depend_on_threads() {
                 "v0=0.1:2:1000",
                 "--threads",
                 threads,
-                "--no-plot",
+                "--no-plots",
                 "--out",
                 &out,
                 "--json",
@@ -98,7 +98,7 @@ fn shards_merged_equal_the_unsharded_sweep() {
     };
     run(&["--out", "whole", "-q"]);
     for k in ["3/3", "1/3", "2/3"] {
-        run(&["--out", "parts", "--shard", k, "--no-plot"]);
+        run(&["--out", "parts", "--shard", k, "--no-plots"]);
     }
     let whole = dir.read("whole/sweep.csv");
     assert_eq!(whole.lines().count(), 1 + 60);

@@ -38,6 +38,20 @@ pub enum Method {
     Yoshida6,
 }
 
+/// A method described: what `mechkit list-integrators` lists.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct MethodInfo {
+    /// Its name in `[integrator] method`.
+    pub name: &'static str,
+    /// `fixed`, `adaptive` or `symplectic`.
+    pub kind: &'static str,
+    /// Global order of accuracy.
+    pub order: u32,
+    /// A one-line description.
+    pub description: &'static str,
+}
+
 /// What kind of method it is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum MethodKind {
@@ -153,6 +167,23 @@ impl Method {
                 (None, None) => unreachable!("every method has a stepper"),
             },
         }
+    }
+
+    /// Every method as a [`MethodInfo`] (`mechkit list-integrators`).
+    pub fn catalogue() -> Vec<MethodInfo> {
+        Method::ALL
+            .iter()
+            .map(|&m| MethodInfo {
+                name: m.name(),
+                kind: match m.kind() {
+                    MethodKind::Fixed => "fixed",
+                    MethodKind::Adaptive => "adaptive",
+                    MethodKind::Symplectic => "symplectic",
+                },
+                order: m.order(),
+                description: m.description(),
+            })
+            .collect()
     }
 
     /// A one-line description.

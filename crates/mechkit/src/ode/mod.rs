@@ -57,7 +57,7 @@ pub use events::{
 };
 pub use explicit_rk::ExplicitRk;
 pub use hermite::{hermite, hermite_derivative};
-pub use method::{Method, MethodKind};
+pub use method::{Method, MethodInfo, MethodKind};
 pub use polynomial::{MAX_COEFFICIENTS, StepPolynomial};
 pub use proof::{MAX_BOUNDS, Piece, ProofOutcome, StepProof};
 pub use rk4::Rk4;

@@ -21,7 +21,7 @@ use super::values::{Constant, ValueEnv, scalar, vector};
 use crate::Real;
 use crate::ode::State;
 use crate::particles::{BodyRef, NameContext, ParticleSystem, VarLevel};
-use crate::simulate::{Cancel, Stepping};
+use crate::simulate::{Cancel, Progress, Stepping};
 
 const TOP_KEYS: &[&str] = &[
     "title",
@@ -288,6 +288,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         max_steps,
         max_output,
         cancel: Cancel::new(),
+        progress: Progress::new(),
         stop,
         events,
         observables,

@@ -39,6 +39,7 @@
 mod analytic;
 mod bodyfile;
 mod build;
+mod check;
 mod compare;
 mod constants;
 mod contact;
@@ -66,13 +67,15 @@ use std::path::Path;
 pub use crate::figure::{PlotData, Series};
 pub use analytic::Analytic;
 pub use bodyfile::BodyFile;
+pub use check::{CheckReport, CheckedBody, CheckedConstant, CheckedEvent};
 pub use compare::{CompareSettings, Comparison, MethodResult};
 pub use energy_bars::ENERGY_BARS;
 pub use error::{ErrorKind, Location, ScenarioError};
 pub use limits::{DEFAULT_MAX_OUTPUT, MAX_SCENARIO_BYTES, format_size, parse_size};
 pub use observe::Observable;
 pub use output::{
-    FLUSH_INTERVAL, StreamFile, csv_header, output_limit_message, push_number, write_atomic,
+    FLUSH_INTERVAL, StreamFile, csv_columns, csv_header, output_limit_message, push_number,
+    write_atomic,
 };
 pub use plot::{OutputTimes, PlotSpec, SeriesSpec};
 pub use provenance::Provenance;
@@ -81,12 +84,13 @@ pub use summary::{
     BodyState, BodySummary, CentreOfMass, DivergenceSummary, EnergySummary, EventSummary, Files,
     MomentumSummary, StartEnd, StepControl, Summary, TimedState,
 };
+pub use sweep::ConstantOverride;
 
 use crate::Real;
 use crate::expr::Dim;
 use crate::ode::State;
 use crate::particles::ParticleSystem;
-use crate::simulate::{Cancel, Condition, Event, Stepping};
+use crate::simulate::{Cancel, Condition, Event, Progress, Stepping};
 
 /// A checked, runnable scenario.
 #[derive(Debug)]
@@ -117,6 +121,8 @@ pub struct Scenario {
     /// caller gives its own (the command line's Ctrl-C, a sweep's
     /// [`SweepOptions::cancel`](sweep::SweepOptions::cancel)).
     pub cancel: Cancel,
+    /// Where the run reports the time it has reached (a progress bar reads it).
+    pub progress: Progress,
     /// Stop condition.
     pub stop: Option<Condition>,
     /// `[[event]]` entries.
@@ -149,6 +155,28 @@ impl Scenario {
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
         let text = read_source(path)?;
         Scenario::from_str(&path.display().to_string(), &text)
+    }
+
+    /// [`Scenario::from_str`] with some `[constants]` given other values (`mechkit run
+    /// --set`, Python's `scenario.run(**constants)`): every formula that uses them sees the
+    /// new values. A name that is not a constant of the file is an error, as is a value with
+    /// units of another dimension than the constant's.
+    pub fn from_str_with(
+        name: &str,
+        text: &str,
+        overrides: &[ConstantOverride],
+    ) -> Result<Scenario, ScenarioError> {
+        build::build_with(name, text, overrides)
+    }
+
+    /// [`Scenario::load`] with some `[constants]` given other values
+    /// ([`Scenario::from_str_with`]).
+    pub fn load_with(
+        path: &Path,
+        overrides: &[ConstantOverride],
+    ) -> Result<Scenario, ScenarioError> {
+        let text = read_source(path)?;
+        Scenario::from_str_with(&path.display().to_string(), &text, overrides)
     }
 
     /// The name given when loading (the file path).

@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::Real;
+use crate::csv::Column;
 use crate::particles::{ParticleSystem, Sample, SampleKind};
 use crate::simulate::{Observer, ObserverError, StopReason};
 
@@ -128,32 +129,65 @@ pub fn output_limit_message(file: &Path, limit: u64, at: &str, how: &str) -> Str
 /// How to raise a scenario run's output limit.
 const SCENARIO_LIMIT_HINT: &str = "raise the limit with `[output] max_size = \"10 GB\"` (or `mechkit run --max-output 10GB`), or write fewer rows with `[output] every = 10` or `interval`";
 
-/// The CSV header for a system: `t`, positions, velocities, with two or more bodies the
-/// centre of mass (`cm.x`, `cm.vx`, `cm.ax`) and the split `K = K_cm + K_internal`, then `K`,
-/// `U`, `E`, the work of each force and its power `F·v`.
-pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
+/// The trajectory's columns with their units: `t`, positions, velocities, with two or more
+/// bodies the centre of mass (`cm.x`, `cm.vx`, `cm.ax`) and the split `K = K_cm + K_internal`,
+/// then `K`, `U`, `E`, the work of each force and its power `F·v`. Hinged bodies' coordinates
+/// are angles (rad, rad/s).
+pub fn csv_columns(sys: &ParticleSystem, has_potential: bool) -> Vec<Column> {
     let axes = &["x", "y", "z"][..sys.dim()];
-    let [position, velocity, _] = sys.coordinates().component_names(sys.dim());
-    let mut cols = vec!["t".to_string()];
+    let coordinates = sys.coordinates();
+    let [position, velocity, _] = coordinates.component_names(sys.dim());
+    let (q_unit, v_unit) = match coordinates {
+        crate::particles::Coordinates::Angle => ("rad", "rad/s"),
+        crate::particles::Coordinates::Cartesian => ("m", "m/s"),
+    };
+    let mut cols = vec![Column::new("t", "s")];
     for b in sys.bodies() {
-        cols.extend(position.iter().map(|a| format!("{}.{a}", b.name)));
-        cols.extend(velocity.iter().map(|a| format!("{}.{a}", b.name)));
+        cols.extend(
+            position
+                .iter()
+                .map(|a| Column::new(format!("{}.{a}", b.name), q_unit)),
+        );
+        cols.extend(
+            velocity
+                .iter()
+                .map(|a| Column::new(format!("{}.{a}", b.name), v_unit)),
+        );
     }
     if sys.bodies().len() > 1 {
-        for prefix in ["", "v", "a"] {
-            cols.extend(axes.iter().map(|a| format!("cm.{prefix}{a}")));
+        for (prefix, unit) in [("", "m"), ("v", "m/s"), ("a", "m/s^2")] {
+            cols.extend(
+                axes.iter()
+                    .map(|a| Column::new(format!("cm.{prefix}{a}"), unit)),
+            );
         }
-        cols.push("K_cm".into());
-        cols.push("K_internal".into());
+        cols.push(Column::new("K_cm", "J"));
+        cols.push(Column::new("K_internal", "J"));
     }
-    cols.push("K".into());
+    cols.push(Column::new("K", "J"));
     if has_potential {
-        cols.push("U".into());
-        cols.push("E".into());
+        cols.push(Column::new("U", "J"));
+        cols.push(Column::new("E", "J"));
     }
-    cols.extend(sys.forces().iter().map(|f| format!("work.{}", f.name())));
-    cols.extend(sys.forces().iter().map(|f| format!("power.{}", f.name())));
+    cols.extend(
+        sys.forces()
+            .iter()
+            .map(|f| Column::new(format!("work.{}", f.name()), "J")),
+    );
+    cols.extend(
+        sys.forces()
+            .iter()
+            .map(|f| Column::new(format!("power.{}", f.name()), "W")),
+    );
     cols
+}
+
+/// The trajectory's column names ([`csv_columns`] without the units).
+pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
+    csv_columns(sys, has_potential)
+        .into_iter()
+        .map(|c| c.name)
+        .collect()
 }
 
 pub use crate::csv::push_number;

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use super::error::{ErrorKind, ScenarioError};
 use super::observe::ObservableSet;
-use super::output::{CsvWriter, Keep, csv_header, write_atomic};
+use super::output::{CsvWriter, Keep, csv_columns, csv_header, write_atomic};
 use super::plot::PlotRecorder;
 use super::provenance::Provenance;
 use super::summary::Summary;
@@ -86,7 +86,9 @@ impl Scenario {
         let mass = self.system.masses();
         let mut observables = ObservableSet::new(&self.observables, dim, mass);
         let mut plots = PlotRecorder::new(&self.plots, self.keep(), dim, mass);
-        let mut observers: Vec<&mut dyn Observer> = vec![&mut observables, &mut plots];
+        let mut progress = ProgressObserver(&self.progress);
+        let mut observers: Vec<&mut dyn Observer> =
+            vec![&mut observables, &mut plots, &mut progress];
         if let Some(csv) = extra {
             observers.push(csv);
         }
@@ -149,10 +151,15 @@ impl Scenario {
             self.max_output,
         )
         .map_err(|e| io_error("write", &csv_path, &e))?;
+        let units_path = dir.join(crate::csv::units_file_name("trajectory"));
+        let units = crate::csv::units_json(&csv_columns(&self.system, has_potential));
+        write_atomic(&units_path, units.as_bytes())
+            .map_err(|e| io_error("write", &units_path, &e))?;
         let result = self.run_with(Some(&mut csv));
         let rows = csv.close().map_err(|e| io_error("write", &csv_path, &e))?;
         let mut out = result?;
         out.summary.files.trajectory = Some("trajectory.csv".into());
+        out.summary.files.units = Some(crate::csv::units_file_name("trajectory"));
         out.summary.files.trajectory_rows = rows;
         self.write_summary(dir, &out.summary)?;
         Ok(out)
@@ -168,5 +175,27 @@ impl Scenario {
         write_atomic(&path, summary.to_json().as_bytes())
             .map_err(|e| io_error("write", &path, &e))?;
         Ok(path)
+    }
+}
+
+/// Puts the time of the run's samples into the scenario's [`Progress`](crate::simulate::Progress):
+/// every [`PROGRESS_EVERY`] steps (so a compiled kernel still runs the steps between) and at
+/// every event and output time.
+struct ProgressObserver<'a>(&'a crate::simulate::Progress);
+
+/// Steps between progress samples.
+const PROGRESS_EVERY: u64 = 4096;
+
+impl Observer for ProgressObserver<'_> {
+    fn observe(
+        &mut self,
+        sample: &crate::particles::Sample<'_>,
+    ) -> Result<(), crate::simulate::ObserverError> {
+        self.0.set(sample.t);
+        Ok(())
+    }
+
+    fn next_step(&self, step: u64) -> Option<u64> {
+        Some((step / PROGRESS_EVERY + 1) * PROGRESS_EVERY)
     }
 }

@@ -134,6 +134,10 @@ pub struct Files {
     pub trajectory: Option<String>,
     /// Rows in the trajectory (header excluded).
     pub trajectory_rows: u64,
+    /// The units of the trajectory's columns: a JSON object from column name to unit
+    /// (`"trajectory.units.json"`), beside the CSV.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units: Option<String>,
     /// Plots.
     pub plots: Vec<String>,
 }

@@ -90,3 +90,46 @@ mod tests {
         assert_eq!(format!("{a:?}"), "Cancel { cancelled: true }");
     }
 }
+
+/// How far a run has come: the time of its latest sample, shared with whoever shows it (a
+/// progress bar, a browser page). A run holding a clone updates it every few thousand steps
+/// and at every output sample; reading it never slows the run.
+///
+/// ```
+/// let p = mechkit::simulate::Progress::new();
+/// assert!(p.time().is_nan());
+/// ```
+#[derive(Clone)]
+pub struct Progress(Arc<std::sync::atomic::AtomicU64>);
+
+impl Default for Progress {
+    fn default() -> Self {
+        Self(Arc::new(std::sync::atomic::AtomicU64::new(
+            crate::Real::NAN.to_bits(),
+        )))
+    }
+}
+
+impl Progress {
+    /// A handle that has seen no sample yet ([`Progress::time`] is NaN).
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Records the time of the latest sample.
+    #[inline]
+    pub fn set(&self, t: crate::Real) {
+        self.0.store(t.to_bits(), Ordering::Relaxed);
+    }
+
+    /// The time of the latest sample, NaN before the first.
+    pub fn time(&self) -> crate::Real {
+        crate::Real::from_bits(self.0.load(Ordering::Relaxed))
+    }
+}
+
+impl fmt::Debug for Progress {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Progress").field("t", &self.time()).finish()
+    }
+}

@@ -27,7 +27,7 @@ mod run;
 mod stepping;
 
 pub use book::ZENO_LIMIT;
-pub use cancel::Cancel;
+pub use cancel::{Cancel, Progress};
 pub use condition::Condition;
 pub use event::{Direction, Event, EventAction};
 pub use observe::{Observer, ObserverError, Recorder};

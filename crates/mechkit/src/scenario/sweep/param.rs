@@ -21,6 +21,32 @@ pub struct ConstantOverride {
 }
 
 impl ConstantOverride {
+    /// Reads `"m=2 kg, th=pi/6, k=100"`: each value a quantity with units (checked against
+    /// the constant's dimension when applied), a bare number (SI, taking the constant's
+    /// dimension), or a formula of `pi`, `e` and the names before it
+    /// ([`crate::values::params`]).
+    ///
+    /// # Errors
+    /// What [`crate::values::params`] refuses.
+    pub fn parse_list(text: &str) -> Result<Vec<ConstantOverride>, crate::values::ValueError> {
+        let values = crate::values::params(text)?;
+        Ok(values
+            .into_iter()
+            .map(|(name, value)| {
+                let given = crate::values::split_top_level(text, ',')
+                    .into_iter()
+                    .filter_map(|item| item.split_once('='))
+                    .rfind(|(n, _)| n.trim() == name)
+                    .map(|(_, v)| v.trim());
+                let dim = given
+                    .and_then(|v| Quantity::parse(v).ok())
+                    .map(|q| q.dim)
+                    .filter(|d| !d.is_none());
+                ConstantOverride { name, value, dim }
+            })
+            .collect())
+    }
+
     /// The value and dimension the constant takes, given the dimension it has in the file:
     /// an error when both are known and differ.
     pub(crate) fn apply(&self, file: Dim) -> Result<(Real, Dim), ScenarioError> {

@@ -72,6 +72,47 @@ fn field(out: &mut String, s: &str) {
 }
 
 impl SweepTable {
+    /// The columns with their units, given the swept scenario (built with any values of the
+    /// parameters): a parameter has its constant's unit, an observable its own, `stop_reason`
+    /// is text (unit `null`), `index` and `steps` are counts (`"1"`).
+    pub fn columns(&self, scenario: &crate::scenario::Scenario) -> Vec<crate::csv::Column> {
+        use crate::csv::Column;
+        let unit = |d: mechkit_expr::units::Dimension| {
+            d.derived_symbol()
+                .map_or_else(|| d.to_string(), str::to_string)
+        };
+        let mut cols = vec![Column::new("index", "1")];
+        for p in &self.params {
+            let dim = scenario
+                .constants
+                .iter()
+                .find(|(n, _, _)| n == p)
+                .and_then(|(_, _, d)| d.known());
+            cols.push(match dim {
+                Some(d) => Column::new(p.as_str(), unit(d)),
+                None => Column::unknown(p.as_str()),
+            });
+        }
+        cols.push(Column::unknown("stop_reason"));
+        cols.push(Column::new("t_end", "s"));
+        cols.push(Column::new("steps", "1"));
+        for o in &self.observables {
+            let known = scenario
+                .observables
+                .iter()
+                .find(|x| &x.name == o)
+                .and_then(crate::scenario::Observable::unit);
+            cols.push(match known {
+                Some(u) => Column::new(o.as_str(), u),
+                None => Column::unknown(o.as_str()),
+            });
+        }
+        for name in ["K_end", "U_end", "E_end", "work_energy_residual"] {
+            cols.push(Column::new(name, "J"));
+        }
+        cols
+    }
+
     /// The column names.
     pub fn header(&self) -> Vec<String> {
         let mut h = vec!["index".to_string()];
