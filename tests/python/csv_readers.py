@@ -67,6 +67,9 @@ def cases(binary, tmp):
     run(binary, ["spin", "--moments", "1,2,3", "--omega", "0.01,1,0.01", "--t-max", "20",
                  "--out", "spin"], tmp)
     yield "spin.csv", tmp / "spin/spin.csv"
+    run(binary, ["rocket", "--m0", "1000 kg", "--m1", "400 kg", "--mass-rate", "10 kg/s",
+                 "--exhaust-speed", "2 km/s", "--g", "9.81", "-o", "rocket", "--no-plots"], tmp)
+    yield "rocket.csv", tmp / "rocket/rocket.csv"
     run(binary, ["md", "--cells", "4", "--steps", "20", "--thermo-every", "5",
                  "--out", "md"], tmp)
     yield "thermo.csv", tmp / "md/thermo.csv"

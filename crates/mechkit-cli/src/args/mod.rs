@@ -43,7 +43,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit list-integrators
   mechkit diff "-F0*sin(2*pi*x/b)" --var x --at 0.1 --set F0=1,b=1
   mechkit integrate "1/(a+x^2)" --var x --from 0 --to 1 --set a=1
-  mechkit integrate "-F0*sin(2*pi*x/b)" --from 0 --to b/4 --set F0=1,b=1 --method left,trapezoid --n 10,100
+  mechkit integrate "-F0*sin(2*pi*x/b)" --from 0 --to 1/4 --set F0=1,b=1 --method left --n 10,100
   mechkit solve "x^2 - 5*x + 6 = 0" --for x
   mechkit solve "cos(x) = x" --for x --in 0:1
   mechkit units "60 km/h" --to m/s
@@ -55,10 +55,10 @@ const EXAMPLES: &str = r#"Examples:
   mechkit impulse examples/data/baseballforce.d --mass "0.145 kg"
   mechkit com --mass "12.011 u" --at "0 pm" --mass "15.999 u" --at "112.8 pm" --in pm
   mechkit power --power "20 kW" --mass "200 kg" --at "5 s"
-  mechkit rocket --m0 "1000 kg" --m1 "400 kg" --mass-rate "10 kg/s" --exhaust-speed "2 km/s" --g "9.81 m/s^2" --coast
+  mechkit rocket --m0 "1 t" --m1 "400 kg" --mass-rate 10 --exhaust-speed "2 km/s" --g 9.81 --coast
   mechkit potential --force "-F0*sin(2*pi*x/b)" --range=-1:2 --set F0=1,b=1 --mass 1 --x0 0 --v0 1
-  mechkit friction --mass "1 kg" --mu-s 0.6 --mu-d 0.4 --spring-k "100 N/m" --anchor-speed "5 cm/s" --t-max "8 s" --out out/quake
-  mechkit roll --body sphere --radius "11 cm" --mass "0.45 kg" --slope "20 deg" --mu 0.3 --v0 "2 m/s" --omega0 "-30 rad/s" --t-max "3 s"
+  mechkit friction --mass 1 --mu-s 0.6 --mu-d 0.4 --spring-k 100 --anchor-speed 0.05 --t-max 8
+  mechkit roll --body hoop --radius 1 --mass 1 --slope 0.3 --mu 0.3 --v0 2 --omega0 -3 --t-max 3
   mechkit spin --moments "1, 2, 3" --omega "0.01, 1, 0.01" --t-max 100
   mechkit rotation --omega0 "1000 rpm" --omega1 "2000 rpm" --time "15 s"
   mechkit bead --circle "1 m" --side outside --start 0 --speed "0.1 m/s" --t-max "3 s"

@@ -42,7 +42,11 @@ fn every_command_has_json_and_quiet() {
 /// The examples of `mechkit --help`, with their `-o`/`--out` and `--plot PATH` removed and
 /// `examples/` made absolute.
 fn examples_without_outputs(dir: &Dir) -> Vec<Vec<String>> {
-    let text = dir.run(&["--help"]).assert_code(0).stdout.clone();
+    let text = dir
+        .run_with_env(&["--help"], &[("COLUMNS", "100")])
+        .assert_code(0)
+        .stdout
+        .clone();
     let root = examples();
     let root = root.parent().unwrap();
     text.lines()
