@@ -183,7 +183,7 @@ fn run_scenario(
     }
     for (key, _) in case.expected_of(stem).unwrap_or_default() {
         if let Some(&v) = out.summary.observables.get(&key) {
-            checks.push(Check::new(case, stem, &key, &serde_json::json!(v)));
+            checks.push(Check::new(case, stem, &key, &serde_json::Value::from(v)));
         }
     }
     if out.failed() {

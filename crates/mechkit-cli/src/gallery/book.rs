@@ -7,7 +7,6 @@
 use std::path::PathBuf;
 
 use mechkit::scenario::Scenario;
-use serde_json::json;
 
 use super::{Case, Check, case_of};
 
@@ -54,7 +53,7 @@ fn book_cases_reproduce_the_expected_answers() {
                 println!("{stem}: `{key}` not observed here");
                 continue;
             };
-            let check = Check::new(case, &stem, &key, &json!(got));
+            let check = Check::new(case, &stem, &key, &serde_json::Value::from(got));
             checked += 1;
             println!(
                 "{stem}: {key} expected {} got {got} (tolerance {:?}) {}",
