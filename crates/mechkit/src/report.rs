@@ -1,6 +1,8 @@
 //! Pieces the models' reports share: a closed form next to its simulation
-//! ([`Comparison`]), the settings and counters of an adaptive run ([`SimulationInfo`]), and
-//! the files a front wrote ([`Files`]).
+//! ([`Comparison`]), a value at the start and at the end of a run ([`StartEnd`]), the
+//! settings and counters of an adaptive run ([`SimulationInfo`]), the files a front wrote
+//! ([`Files`]), the table of a run's samples ([`sample_table`]) and the phases of a run shaded
+//! on its plots ([`shade`]).
 //!
 //! A model's report (`mechkit::rocket::RocketReport`, `mechkit::rigid::rolling::RollReport`,
 //! …) is the value a front prints: its `serde` shape (feature `serde`) is the `--json` output
@@ -14,6 +16,8 @@
 //! ```
 
 use crate::Real;
+use crate::csv::{Column, Table};
+use crate::figure::{Band, PlotData};
 use crate::ode::{AdaptiveConfig, AdaptiveStats};
 
 /// A quantity in closed form and simulated, and their difference `simulated − closed_form`.
@@ -48,6 +52,64 @@ impl Comparison<Option<Real>> {
             simulated,
             difference: closed_form.zip(simulated).map(|(c, s)| s - c),
         }
+    }
+}
+
+/// A value at the start and at the end of a run (an energy, J).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct StartEnd {
+    /// At the start.
+    pub start: Real,
+    /// At the end.
+    pub end: Real,
+}
+
+impl StartEnd {
+    /// Both values.
+    pub fn new(start: Real, end: Real) -> Self {
+        Self { start, end }
+    }
+}
+
+/// The table of a run's `samples`, one row each: `row` gives a sample's cells in the order of
+/// `columns` (as many, which the types check).
+///
+/// ```
+/// use mechkit::csv::Column;
+/// use mechkit::report::sample_table;
+/// let samples = [(0.0, 1.0), (0.5, 0.75)];
+/// let table = sample_table(
+///     [Column::new("t", "s"), Column::new("x", "m")],
+///     &samples,
+///     |&(t, x)| [t, x],
+/// );
+/// assert_eq!(table.column("x"), Some(vec![1.0, 0.75]));
+/// ```
+pub fn sample_table<S, const N: usize>(
+    columns: [Column; N],
+    samples: &[S],
+    row: impl Fn(&S) -> [Real; N],
+) -> Table {
+    let mut table = Table::new(columns);
+    for s in samples {
+        table.push(&row(s));
+    }
+    table
+}
+
+/// Shades the intervals `(from, to)` of the horizontal axis, each labelled `label`, on every
+/// plot of `plots`: the phases of a run (where a block sticks, where a ball rolls).
+pub fn shade(plots: &mut [PlotData], label: &str, intervals: impl Iterator<Item = (Real, Real)>) {
+    let bands: Vec<Band> = intervals
+        .map(|(from, to)| Band {
+            from,
+            to,
+            label: label.to_string(),
+        })
+        .collect();
+    for p in plots {
+        p.bands.clone_from(&bands);
     }
 }
 

@@ -7,9 +7,9 @@ use mechkit::figure::{BarKind, PlotData};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::chart::{draw_mesh, titled_area};
 use super::style::Style;
-use super::title::titled;
-use super::{GRID, PALETTE, tick};
+use super::{PALETTE, tick};
 
 const GAIN: RGBColor = RGBColor(44, 160, 44);
 const LOSS: RGBColor = RGBColor(214, 39, 40);
@@ -37,12 +37,7 @@ where
     let (y0, y1) = (if lo < 0.0 { lo - pad } else { 0.0 }, hi + pad);
     let scale = y0.abs().max(y1.abs());
     let labels: Vec<String> = bars.iter().map(|b| b.label.clone()).collect();
-    let m = style.px(16.0);
-    let area = titled(
-        &root.margin(m, m, m, m),
-        &format!("{title}: {}", plot.spec),
-        style,
-    )?;
+    let area = titled_area(root, plot, title, style)?;
     let (x_area, y_area) = style.label_areas();
     let mut chart = ChartBuilder::on(&area)
         .x_label_area_size(x_area)
@@ -50,26 +45,18 @@ where
         .margin_right(style.px(8.0))
         .build_cartesian_2d((0..n.saturating_sub(1)).into_segmented(), y0..y1)
         .map_err(|e| anyhow!("{e}"))?;
-    chart
-        .configure_mesh()
-        .disable_x_mesh()
+    let x_fmt = |v: &SegmentValue<usize>| match v {
+        SegmentValue::CenterOf(i) => labels.get(*i).cloned().unwrap_or_default(),
+        _ => String::new(),
+    };
+    let y_fmt = |v: &f64| tick(*v, scale);
+    let mut mesh = chart.configure_mesh();
+    mesh.disable_x_mesh()
         .x_labels(n + 1)
-        .x_label_formatter(&|v| match v {
-            SegmentValue::CenterOf(i) => labels.get(*i).cloned().unwrap_or_default(),
-            _ => String::new(),
-        })
+        .x_label_formatter(&x_fmt)
         .y_labels(style.labels())
-        .y_label_formatter(&|v| tick(*v, scale))
-        .x_desc(&plot.x_label)
-        .y_desc(&plot.y_label)
-        .label_style(style.label())
-        .axis_desc_style(style.axis_desc())
-        .axis_style(BLACK.stroke_width(style.frame(1.0)))
-        .bold_line_style(BLACK.mix(0.2).stroke_width(style.frame(1.0)))
-        .light_line_style(GRID.stroke_width(style.frame(1.0)))
-        .set_all_tick_mark_size(style.px(5.0))
-        .draw()
-        .map_err(|e| anyhow!("{e}"))?;
+        .y_label_formatter(&y_fmt);
+    draw_mesh(&mut mesh, plot, style)?;
     if y0 < 0.0 {
         chart
             .draw_series(std::iter::once(PathElement::new(

@@ -1,6 +1,7 @@
 //! A chart of curves: axes (linear, or a logarithmic vertical axis with decade labels),
 //! shaded bands, curves in the palette's colours or coloured by a value with a colour bar,
-//! marked points and the legend.
+//! marked points and the legend. The frame it shares with the bars (title, margins, mesh) is
+//! in `chart/frame.rs`.
 
 use anyhow::{Result, anyhow};
 use mechkit::figure::{LineStyle, MarkerShape, PlotData, Scale, Series};
@@ -9,12 +10,15 @@ use plotters::coord::ranged1d::ValueFormatter;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
+mod frame;
+
+pub(super) use frame::{draw_mesh, titled_area};
+
 use super::axes::{decade, log_range};
 use super::colour::{bar_width, draw_bar, viridis};
 use super::layout::{clip_to_band, in_legend, legend_corner};
 use super::style::Style;
-use super::title::titled;
-use super::{GRID, PALETTE, equalize, range, tick};
+use super::{PALETTE, equalize, range, tick};
 
 /// The chart's frame: its style, ranges and vertical scale.
 struct Frame {
@@ -34,12 +38,7 @@ pub(super) fn draw<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let m = style.px(16.0);
-    let area = titled(
-        &root.margin(m, m, m, m),
-        &format!("{title}: {}", plot.spec),
-        style,
-    )?;
+    let area = titled_area(root, plot, title, style)?;
     let colour = plot
         .colour_scale
         .as_ref()
@@ -163,22 +162,12 @@ where
     } else {
         labels
     };
-    chart
-        .configure_mesh()
-        .x_labels(labels)
+    let mut mesh = chart.configure_mesh();
+    mesh.x_labels(labels)
         .y_labels(y_labels)
         .x_label_formatter(&x_fmt)
-        .y_label_formatter(&y_fmt)
-        .x_desc(&plot.x_label)
-        .y_desc(&plot.y_label)
-        .label_style(style.label())
-        .axis_desc_style(style.axis_desc())
-        .axis_style(BLACK.stroke_width(style.frame(1.0)))
-        .bold_line_style(BLACK.mix(0.2).stroke_width(style.frame(1.0)))
-        .light_line_style(GRID.stroke_width(style.frame(1.0)))
-        .set_all_tick_mark_size(style.px(5.0))
-        .draw()
-        .map_err(|e| anyhow!("{e}"))?;
+        .y_label_formatter(&y_fmt);
+    draw_mesh(&mut mesh, plot, style)?;
     let legend_box = style.text_px(20.0);
     let mut band_labels: Vec<&str> = Vec::new();
     for band in &plot.bands {

@@ -4,31 +4,22 @@
 
 use crate::util::{Dir, num};
 
-fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
-    let out = dir.run(args);
-    out.assert_code(0);
-    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
-}
-
 #[test]
 fn perfectly_inelastic_head_on() {
-    let j = json(
-        &Dir::new(),
-        &[
-            "collide",
-            "--m1",
-            "0.2 kg",
-            "--v1",
-            "15 m/s",
-            "--m2",
-            "1.5 kg",
-            "--v2",
-            "0",
-            "--restitution",
-            "0",
-            "--json",
-        ],
-    );
+    let j = Dir::new().json(&[
+        "collide",
+        "--m1",
+        "0.2 kg",
+        "--v1",
+        "15 m/s",
+        "--m2",
+        "1.5 kg",
+        "--v2",
+        "0",
+        "--restitution",
+        "0",
+        "--json",
+    ]);
     let v = 0.2 * 15.0 / 1.7;
     assert_eq!(num(&j, "/v1/0"), num(&j, "/v2/0"));
     assert!((num(&j, "/v1/0") - v).abs() < 1e-14);
@@ -40,13 +31,10 @@ fn perfectly_inelastic_head_on() {
 fn oblique_spheres_wall_and_friction() {
     let dir = Dir::new();
     // equal masses, elastic, the normal from the centres: the velocities end up perpendicular
-    let j = json(
-        &dir,
-        &[
-            "collide", "--m1", "1", "--v1", "3, 0", "--m2", "1", "--v2", "0", "--r1", "0, 0",
-            "--r2", "0.8, 0.6", "-e", "elastic", "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "collide", "--m1", "1", "--v1", "3, 0", "--m2", "1", "--v2", "0", "--r1", "0, 0", "--r2",
+        "0.8, 0.6", "-e", "elastic", "--json",
+    ]);
     let (a, b) = (
         [num(&j, "/v1/0"), num(&j, "/v1/1")],
         [num(&j, "/v2/0"), num(&j, "/v2/1")],
@@ -54,27 +42,24 @@ fn oblique_spheres_wall_and_friction() {
     assert!((a[0] * b[0] + a[1] * b[1]).abs() < 1e-12);
     assert!((num(&j, "/kinetic_lost")).abs() < 1e-12);
     // a ball onto an immovable floor with friction: it slides, losing μ J_n of its 1 m/s
-    let j = json(
-        &dir,
-        &[
-            "collide",
-            "--m1",
-            "1",
-            "--v1",
-            "1, -1",
-            "--m2",
-            "inf",
-            "--v2",
-            "0",
-            "--normal",
-            "0, -1",
-            "-e",
-            "0.5",
-            "--friction",
-            "0.2",
-            "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "collide",
+        "--m1",
+        "1",
+        "--v1",
+        "1, -1",
+        "--m2",
+        "inf",
+        "--v2",
+        "0",
+        "--normal",
+        "0, -1",
+        "-e",
+        "0.5",
+        "--friction",
+        "0.2",
+        "--json",
+    ]);
     assert_eq!(j["sticks"], false);
     assert!((num(&j, "/v1/0") - 0.7).abs() < 1e-15 && (num(&j, "/v1/1") - 0.5).abs() < 1e-15);
     assert_eq!(j["m2"], "inf");
@@ -88,12 +73,9 @@ fn separating_bodies_are_no_collision() {
     ]);
     out.assert_code(0);
     assert!(out.stdout.contains("no collision"), "{}", out.stdout);
-    let j = json(
-        &dir,
-        &[
-            "collide", "--m1", "1", "--v1", "-1", "--m2", "1", "--v2", "1", "-e", "1", "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "collide", "--m1", "1", "--v1", "-1", "--m2", "1", "--v2", "1", "-e", "1", "--json",
+    ]);
     assert_eq!(j["collided"], false);
 }
 
@@ -101,12 +83,9 @@ fn separating_bodies_are_no_collision() {
 fn impulse_of_a_force_file() {
     let dir = Dir::new();
     dir.create("kick.d", "# t [s], F [N]\n0 0\n0.01 100\n0.02 0\n");
-    let j = json(
-        &dir,
-        &[
-            "impulse", "kick.d", "--mass", "0.5 kg", "--v0", "-2 m/s", "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "impulse", "kick.d", "--mass", "0.5 kg", "--v0", "-2 m/s", "--json",
+    ]);
     assert!((num(&j, "/impulse") - 1.0).abs() < 1e-15);
     assert!((num(&j, "/delta_v") - 2.0).abs() < 1e-15);
     assert!((num(&j, "/v_end")).abs() < 1e-15);
@@ -155,25 +134,22 @@ fn collide_and_impulse_bad_input() {
 #[test]
 fn centre_of_mass_of_point_masses() {
     let dir = Dir::new();
-    let j = json(
-        &dir,
-        &[
-            "com",
-            "--mass",
-            "1 kg",
-            "--at",
-            "0, 0",
-            "--mass",
-            "3 kg",
-            "--at",
-            "1 m, 2 m",
-            "--velocity",
-            "2, -1",
-            "--velocity",
-            "0.5, 4",
-            "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "com",
+        "--mass",
+        "1 kg",
+        "--at",
+        "0, 0",
+        "--mass",
+        "3 kg",
+        "--at",
+        "1 m, 2 m",
+        "--velocity",
+        "2, -1",
+        "--velocity",
+        "0.5, 4",
+        "--json",
+    ]);
     assert_eq!(num(&j, "/total_mass"), 4.0);
     assert_eq!(
         (num(&j, "/centre_of_mass/0"), num(&j, "/centre_of_mass/1")),

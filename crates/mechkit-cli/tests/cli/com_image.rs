@@ -17,12 +17,6 @@ fn image(name: &str) -> String {
     examples().join("data").join(name).display().to_string()
 }
 
-fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
-    let out = dir.run(args);
-    out.assert_code(0);
-    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
-}
-
 #[test]
 fn disk_text_and_json() {
     let dir = Dir::new();
@@ -37,7 +31,7 @@ fn disk_text_and_json() {
         "{}",
         out.stdout
     );
-    let j = json(&dir, &["com", &disk, "--json"]);
+    let j = dir.json(&["com", &disk, "--json"]);
     assert_eq!(j["source"], "image");
     assert_eq!((num(&j, "/width"), num(&j, "/height")), (400.0, 400.0));
     assert_eq!(j["channel"], "sum");
@@ -59,7 +53,7 @@ fn disk_text_and_json() {
     );
     assert!((xx + yy - zz).abs() < 1e-9 * zz);
     // the background: the rest of the square, centred on the same point
-    let rest = json(&dir, &["com", &disk, "--invert", "--json"]);
+    let rest = dir.json(&["com", &disk, "--invert", "--json"]);
     assert_eq!(num(&rest, "/selected_pixels"), 160_000.0 - 70688.0);
     assert_eq!(num(&rest, "/pixel_centre_of_mass/0"), 200.0);
 }
@@ -77,8 +71,8 @@ fn pixel_size_scale_mass_and_a_point() {
         "0, 0",
         "--json",
     ];
-    let a = json(&dir, &[&common[..], &["--pixel-size", "0.5 mm"]].concat());
-    let b = json(&dir, &[&common[..], &["--scale", "2 px = 1 mm"]].concat());
+    let a = dir.json(&[&common[..], &["--pixel-size", "0.5 mm"]].concat());
+    let b = dir.json(&[&common[..], &["--scale", "2 px = 1 mm"]].concat());
     for key in ["/centre_of_mass/0", "/inertia_cm/zz", "/about/zz", "/area"] {
         assert!(
             (num(&a, key) - num(&b, key)).abs() <= 1e-15 * num(&a, key).abs(),
@@ -115,7 +109,7 @@ fn the_marked_picture_is_a_png_with_the_centre_marked() {
 #[test]
 fn the_ball_photo() {
     let dir = Dir::new();
-    let j = json(&dir, &["com", &image("ballimage02cut.png"), "--json"]);
+    let j = dir.json(&["com", &image("ballimage02cut.png"), "--json"]);
     assert_eq!((num(&j, "/width"), num(&j, "/height")), (331.0, 234.0));
     let (x, y) = (
         num(&j, "/pixel_centre_of_mass/0"),

@@ -4,17 +4,7 @@
 
 use std::fmt::Write as _;
 
-use crate::util::{Csv, Dir, examples, num};
-
-fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
-    let out = dir.run(args);
-    out.assert_code(0);
-    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
-}
-
-fn example(name: &str) -> String {
-    examples().join("data").join(name).display().to_string()
-}
+use crate::util::{Csv, Dir, example, num};
 
 #[test]
 fn work_of_a_spring_from_a_csv_with_a_header() {
@@ -26,20 +16,17 @@ fn work_of_a_spring_from_a_csv_with_a_header() {
         writeln!(text, "{x}, {}", -100.0 * (x - 1.0)).unwrap();
     }
     dir.create("spring.csv", &text);
-    let j = json(
-        &dir,
-        &[
-            "work",
-            "spring.csv",
-            "--x",
-            "x",
-            "--f",
-            "F",
-            "-o",
-            "w",
-            "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "work",
+        "spring.csv",
+        "--x",
+        "x",
+        "--f",
+        "F",
+        "-o",
+        "w",
+        "--json",
+    ]);
     // W = k(x0-L0)²/2 - k(x1-L0)²/2 = 2 - 0.5 = 1.5 J, exact for trapezoids of a linear force
     assert!((num(&j, "/work") - 1.5).abs() < 1e-12, "{j}");
     assert_eq!(j["of"], "position");
@@ -57,18 +44,15 @@ fn work_of_a_spring_from_a_csv_with_a_header() {
 #[test]
 fn work_energy_speed_and_turning_point_from_samples() {
     let dir = Dir::new();
-    let j = json(
-        &dir,
-        &[
-            "work",
-            &example("forcedata.d"),
-            "--mass",
-            "1 kg",
-            "--v0",
-            "0.5 m/s",
-            "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "work",
+        &example("data/forcedata.d"),
+        "--mass",
+        "1 kg",
+        "--v0",
+        "0.5 m/s",
+        "--json",
+    ]);
     // ½ v0² = 0.125 J runs out where (1 - cos 2πx)/2π = 0.125
     let exact = (1.0 - 0.125 * std::f64::consts::TAU).acos() / std::f64::consts::TAU;
     assert!((num(&j, "/turning_point") - exact).abs() < 1e-5, "{j}");
@@ -79,7 +63,7 @@ fn impulse_of_the_baseball_bat() {
     let dir = Dir::new();
     let out = dir.run(&[
         "work",
-        &example("baseballforce.d"),
+        &example("data/baseballforce.d"),
         "--of",
         "time",
         "--mass",
@@ -93,18 +77,15 @@ fn impulse_of_the_baseball_bat() {
 #[test]
 fn derive_the_falling_tennis_ball() {
     let dir = Dir::new();
-    let j = json(
-        &dir,
-        &[
-            "derive",
-            &example("fallingtennisball02.txt"),
-            "--smooth",
-            "21:2",
-            "--out",
-            "tb",
-            "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "derive",
+        &example("data/fallingtennisball02.txt"),
+        "--smooth",
+        "21:2",
+        "--out",
+        "tb",
+        "--json",
+    ]);
     assert_eq!(num(&j, "/rows"), 2500.0);
     assert!((num(&j, "/uniform_step") - 1e-3).abs() < 1e-12);
     // released from rest: a ≈ -g at the start
@@ -120,37 +101,31 @@ fn derive_the_falling_tennis_ball() {
         assert!(dir.read(&format!("tb/{plot}.svg")).starts_with("<svg"));
     }
     // forward differences, the course's loop, without plots
-    let j = json(
-        &dir,
-        &[
-            "derive",
-            &example("fallingtennisball02.txt"),
-            "--method",
-            "forward",
-            "--no-plots",
-            "--out",
-            "f",
-            "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "derive",
+        &example("data/fallingtennisball02.txt"),
+        "--method",
+        "forward",
+        "--no-plots",
+        "--out",
+        "f",
+        "--json",
+    ]);
     assert_eq!(j["method"], "forward");
 }
 
 #[test]
 fn diff_checks_the_symbolic_derivative_numerically() {
     let dir = Dir::new();
-    let j = json(
-        &dir,
-        &[
-            "diff",
-            "-F0*sin(2*pi*x/b)",
-            "--at",
-            "0.1",
-            "--set",
-            "F0=2,b=1",
-            "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "diff",
+        "-F0*sin(2*pi*x/b)",
+        "--at",
+        "0.1",
+        "--set",
+        "F0=2,b=1",
+        "--json",
+    ]);
     let exact = -2.0 * std::f64::consts::TAU * (std::f64::consts::TAU * 0.1).cos();
     assert!((num(&j, "/at/symbolic") - exact).abs() < 1e-12);
     assert!((num(&j, "/at/numeric") - exact).abs() < 1e-9);

@@ -4,32 +4,23 @@
 
 use crate::util::{Dir, at, num};
 
-fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
-    let out = dir.run(args);
-    out.assert_code(0);
-    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
-}
-
 #[test]
 fn lennard_jones_diagram_with_an_energy() {
     let dir = Dir::new();
-    let j = json(
-        &dir,
-        &[
-            "potential",
-            "U0*((a/r)^12-(b/r)^6)",
-            "--var",
-            "r",
-            "--range",
-            "0.8:3",
-            "--set",
-            "U0=1,a=1,b=1",
-            "--energy=-0.1",
-            "-o",
-            "lj",
-            "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "potential",
+        "U0*((a/r)^12-(b/r)^6)",
+        "--var",
+        "r",
+        "--range",
+        "0.8:3",
+        "--set",
+        "U0=1,a=1,b=1",
+        "--energy=-0.1",
+        "-o",
+        "lj",
+        "--json",
+    ]);
     assert!((num(&j, "/equilibria/0/x") - 2f64.powf(1.0 / 6.0)).abs() < 1e-12);
     assert_eq!(at(&j, "/equilibria/0/stability"), "stable");
     assert_eq!(j["equilibria"].as_array().unwrap().len(), 1);
@@ -76,7 +67,7 @@ fn force_given_energy_from_a_release() {
 #[test]
 fn no_equilibrium_is_an_empty_list_and_a_pole_is_reported() {
     let dir = Dir::new();
-    let j = json(&dir, &["potential", "2*x", "--range=-1:2", "--json"]);
+    let j = dir.json(&["potential", "2*x", "--range=-1:2", "--json"]);
     assert_eq!(j["equilibria"], serde_json::json!([]));
     let out = dir.run(&["potential", "1/x", "--range", "-1:2"]);
     out.assert_code(0);
@@ -86,20 +77,17 @@ fn no_equilibrium_is_an_empty_list_and_a_pole_is_reported() {
 
 #[test]
 fn gradient_of_a_potential_field() {
-    let j = json(
-        &Dir::new(),
-        &[
-            "potential",
-            "k*(x^2 + y^2)/2",
-            "--var",
-            "x,y",
-            "--set",
-            "k=2",
-            "--at",
-            "1,0; 0,3",
-            "--json",
-        ],
-    );
+    let j = Dir::new().json(&[
+        "potential",
+        "k*(x^2 + y^2)/2",
+        "--var",
+        "x,y",
+        "--set",
+        "k=2",
+        "--at",
+        "1,0; 0,3",
+        "--json",
+    ]);
     assert_eq!(at(&j, "/force/0"), "-k*x");
     assert_eq!(num(&j, "/at/1/force/1"), -6.0);
 }
@@ -135,30 +123,24 @@ fn potential_bad_input() {
 #[test]
 fn constant_power_and_average_power() {
     let dir = Dir::new();
-    let j = json(
-        &dir,
-        &[
-            "power",
-            "--power",
-            "20 kW",
-            "--mass",
-            "200 kg",
-            "--at",
-            "5 s",
-            "--until-speed",
-            "40 m/s",
-            "--out",
-            "p",
-            "--json",
-        ],
-    );
+    let j = dir.json(&[
+        "power",
+        "--power",
+        "20 kW",
+        "--mass",
+        "200 kg",
+        "--at",
+        "5 s",
+        "--until-speed",
+        "40 m/s",
+        "--out",
+        "p",
+        "--json",
+    ]);
     assert!((num(&j, "/at/0/v") - 1000f64.sqrt()).abs() < 1e-12);
     assert!((num(&j, "/until_speed/t") - 200.0 * 1600.0 / 40e3).abs() < 1e-12);
     assert!(dir.read("p/v_t.svg").starts_with("<svg"));
-    let j = json(
-        &dir,
-        &["power", "--work", "70.53 kJ", "--time", "24 h", "--json"],
-    );
+    let j = dir.json(&["power", "--work", "70.53 kJ", "--time", "24 h", "--json"]);
     assert!((num(&j, "/average_power") - 70530.0 / 86400.0).abs() < 1e-15);
     dir.run(&["power", "--power", "-1 W", "--mass", "1 kg"])
         .assert_bad_input(&["positive"]);
@@ -169,35 +151,29 @@ fn constant_power_and_average_power() {
 #[test]
 fn work_of_a_field_along_paths() {
     let dir = Dir::new();
-    let swirl = json(
-        &dir,
-        &[
-            "work",
-            "--field",
-            "-y, x",
-            "--path",
-            "cos(s), sin(s)",
-            "--param",
-            "s=0:2*pi",
-            "--json",
-        ],
-    );
+    let swirl = dir.json(&[
+        "work",
+        "--field",
+        "-y, x",
+        "--path",
+        "cos(s), sin(s)",
+        "--param",
+        "s=0:2*pi",
+        "--json",
+    ]);
     assert!((num(&swirl, "/work") - std::f64::consts::TAU).abs() < 1e-12);
     assert_eq!(at(&swirl, "/conservative"), false);
     assert_eq!(at(&swirl, "/closed"), true);
-    let g = json(
-        &dir,
-        &[
-            "work",
-            "--field",
-            "0, -m*g",
-            "--through",
-            "0,0; 3,0; 3,2",
-            "--set",
-            "m=2,g=9.81",
-            "--json",
-        ],
-    );
+    let g = dir.json(&[
+        "work",
+        "--field",
+        "0, -m*g",
+        "--through",
+        "0,0; 3,0; 3,2",
+        "--set",
+        "m=2,g=9.81",
+        "--json",
+    ]);
     assert!((num(&g, "/work") + 2.0 * 9.81 * 2.0).abs() < 1e-12);
     assert_eq!(at(&g, "/potential"), "g*m*y");
     dir.run(&["work", "--field", "x, y", "--through", "0,0; 1"])

@@ -7,10 +7,7 @@
 use crate::util::{Csv, Dir, at, num};
 
 fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
-    let mut all = vec!["friction"];
-    all.extend_from_slice(args);
-    all.push("--json");
-    dir.run(&all).json()
+    dir.json_with(&["friction"], args)
 }
 
 #[test]

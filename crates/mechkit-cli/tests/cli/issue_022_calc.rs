@@ -12,25 +12,7 @@
 //!   where they are known; `derive` likewise, from the data file's header;
 //! - counts agree with their nouns ("1 component").
 
-use crate::util::{Csv, Dir, examples, num};
-
-fn example(name: &str) -> String {
-    examples().join("data").join(name).display().to_string()
-}
-
-/// The files in `dir`, sorted, as names.
-fn files(dir: &Dir, sub: &str) -> Vec<String> {
-    let path = dir.path().join(sub);
-    let mut names: Vec<String> = std::fs::read_dir(&path)
-        .map(|entries| {
-            entries
-                .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-                .collect()
-        })
-        .unwrap_or_default();
-    names.sort();
-    names
-}
+use crate::util::{Csv, Dir, example, num};
 
 #[test]
 fn solve_uses_set_for_a_linear_system() {
@@ -124,12 +106,12 @@ fn nothing_is_written_without_out() {
         vec![
             "power", "--power", "20 kW", "--mass", "200 kg", "--at", "5 s",
         ],
-        vec!["derive", &example("fallingtennisball02.txt")],
-        vec!["work", &example("forcedata.d")],
-        vec!["impulse", &example("baseballforce.d")],
+        vec!["derive", &example("data/fallingtennisball02.txt")],
+        vec!["work", &example("data/forcedata.d")],
+        vec!["impulse", &example("data/baseballforce.d")],
     ] {
         dir.run(&args).assert_code(0);
-        assert_eq!(files(&dir, "."), Vec::<String>::new(), "{args:?}");
+        assert_eq!(dir.files("."), Vec::<String>::new(), "{args:?}");
     }
 }
 
@@ -138,7 +120,7 @@ fn work_writes_its_table_and_plot_into_out() {
     let dir = Dir::new();
     let out = dir.run(&[
         "work",
-        &example("forcedata.d"),
+        &example("data/forcedata.d"),
         "--mass",
         "1",
         "--v0",
@@ -149,7 +131,7 @@ fn work_writes_its_table_and_plot_into_out() {
     ]);
     out.assert_code(0);
     let j = out.json();
-    assert_eq!(files(&dir, "w"), ["W_x.svg", "work.csv", "work.units.json"]);
+    assert_eq!(dir.files("w"), ["W_x.svg", "work.csv", "work.units.json"]);
     assert!(j["csv"].as_str().unwrap().ends_with("work.csv"), "{j}");
     assert!(j["plot"].as_str().unwrap().ends_with("W_x.svg"), "{j}");
     let csv = Csv::parse(&dir.read("w/work.csv"));
@@ -163,17 +145,23 @@ fn work_writes_its_table_and_plot_into_out() {
     // --format png, and --no-plots
     dir.run(&[
         "work",
-        &example("forcedata.d"),
+        &example("data/forcedata.d"),
         "-o",
         "p",
         "--format",
         "png",
     ])
     .assert_code(0);
-    assert!(files(&dir, "p").contains(&"W_x.png".to_string()));
-    dir.run(&["work", &example("forcedata.d"), "-o", "n", "--no-plots"])
-        .assert_code(0);
-    assert_eq!(files(&dir, "n"), ["work.csv", "work.units.json"]);
+    assert!(dir.files("p").contains(&"W_x.png".to_string()));
+    dir.run(&[
+        "work",
+        &example("data/forcedata.d"),
+        "-o",
+        "n",
+        "--no-plots",
+    ])
+    .assert_code(0);
+    assert_eq!(dir.files("n"), ["work.csv", "work.units.json"]);
 }
 
 #[test]
@@ -181,7 +169,7 @@ fn impulse_writes_impulse_csv_and_j_t() {
     let dir = Dir::new();
     dir.run(&[
         "impulse",
-        &example("baseballforce.d"),
+        &example("data/baseballforce.d"),
         "--mass",
         "0.145 kg",
         "-o",
@@ -189,7 +177,7 @@ fn impulse_writes_impulse_csv_and_j_t() {
     ])
     .assert_code(0);
     assert_eq!(
-        files(&dir, "j"),
+        dir.files("j"),
         ["J_t.svg", "impulse.csv", "impulse.units.json"]
     );
     assert_eq!(
@@ -218,7 +206,7 @@ fn a_header_with_units_gives_the_columns_their_units() {
 
 #[test]
 fn the_largest_force_is_a_magnitude() {
-    let out = Dir::new().run(&["work", &example("forcedata.d")]);
+    let out = Dir::new().run(&["work", &example("data/forcedata.d")]);
     out.assert_code(0);
     assert!(
         out.stdout
@@ -227,7 +215,7 @@ fn the_largest_force_is_a_magnitude() {
         out.stdout
     );
     let j = Dir::new()
-        .run(&["work", &example("forcedata.d"), "--json"])
+        .run(&["work", &example("data/forcedata.d"), "--json"])
         .json();
     assert_eq!(
         (num(&j, "/peak/magnitude"), num(&j, "/peak/f")),
@@ -256,7 +244,7 @@ fn potential_writes_only_into_out_with_plain_axes() {
     ]);
     out.assert_code(0);
     assert_eq!(
-        files(&dir, "d"),
+        dir.files("d"),
         [
             "U_x.svg",
             "potential.csv",
@@ -365,7 +353,7 @@ fn derive_plots_are_named_and_labelled_like_the_csv() {
     );
     dir.run(&["derive", "drop.csv", "-o", "d"]).assert_code(0);
     assert_eq!(
-        files(&dir, "d"),
+        dir.files("d"),
         [
             "a_t.svg",
             "derived.csv",
@@ -384,8 +372,13 @@ fn derive_plots_are_named_and_labelled_like_the_csv() {
         "axes with units"
     );
     // the tennis ball's file has no header: no units, on the axes either
-    dir.run(&["derive", &example("fallingtennisball02.txt"), "-o", "tb"])
-        .assert_code(0);
+    dir.run(&[
+        "derive",
+        &example("data/fallingtennisball02.txt"),
+        "-o",
+        "tb",
+    ])
+    .assert_code(0);
     assert_eq!(
         dir.read_json("tb/derived.units.json"),
         serde_json::json!({"t": null, "x": null, "dx_dt": null, "d2x_dt2": null})
@@ -401,7 +394,7 @@ fn power_writes_its_curves_into_out() {
     ])
     .assert_code(0);
     assert_eq!(
-        files(&dir, "p"),
+        dir.files("p"),
         ["power.csv", "power.units.json", "v_t.svg", "x_t.svg"]
     );
     assert_eq!(

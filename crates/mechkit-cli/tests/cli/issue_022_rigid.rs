@@ -16,21 +16,7 @@
 //! - errors name the flag from the library's structured input (a tilt, a belt speed) and
 //!   count components in the singular and the plural.
 
-use std::path::Path;
-
 use crate::util::{Csv, Dir, at, num};
-
-/// The files in `dir` (names only, sorted).
-fn files(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .map(|d| {
-            d.map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-                .collect()
-        })
-        .unwrap_or_default();
-    names.sort();
-    names
-}
 
 #[test]
 fn rotation_from_the_centripetal_acceleration_and_the_radius() {
@@ -183,7 +169,7 @@ fn bead_at_an_unstable_top_says_where_a_push_takes_it_off() {
     let out = dir.run(&bead);
     assert!(out.stdout.contains("never leaves"), "{}", out.stdout);
     // no file was written: there was no -o
-    assert!(files(dir.path()).is_empty(), "{:?}", files(dir.path()));
+    assert!(dir.files(".").is_empty(), "{:?}", dir.files("."));
 }
 
 #[test]
@@ -207,13 +193,13 @@ fn rocket_and_bead_write_only_into_the_directory_asked_for() {
     assert!(at(&j, "/plots").is_null());
     dir.run(&["bead", "--circle", "1 m", "--speed", "1", "--t-max", "1"])
         .assert_code(0);
-    assert!(files(dir.path()).is_empty(), "{:?}", files(dir.path()));
+    assert!(dir.files(".").is_empty(), "{:?}", dir.files("."));
     // with -o: the CSV, its units and the plots named <y>_<x>
     let out = dir.run(&[&rocket[..], &["-o", "r"]].concat());
     out.assert_code(0)
         .assert_stderr_contains("wrote r/rocket.csv");
     assert_eq!(
-        files(&dir.path().join("r")),
+        dir.files("r"),
         [
             "m_t.svg",
             "rocket.csv",
@@ -232,10 +218,7 @@ fn rocket_and_bead_write_only_into_the_directory_asked_for() {
     // --no-plots: only the CSV
     dir.run(&[&rocket[..], &["-o", "n", "--no-plots"]].concat())
         .assert_code(0);
-    assert_eq!(
-        files(&dir.path().join("n")),
-        ["rocket.csv", "rocket.units.json"]
-    );
+    assert_eq!(dir.files("n"), ["rocket.csv", "rocket.units.json"]);
     let j = dir
         .run(&[
             "bead", "--circle", "1 m", "--speed", "1", "--t-max", "1", "-o", "b", "--json",
@@ -307,7 +290,7 @@ fn plots_are_named_without_parentheses_and_every_csv_has_units() {
         ("spin", &["omega_t.svg", "spin.csv", "spin.units.json"]),
     ];
     for (sub, names) in expected {
-        assert_eq!(files(&dir.path().join(sub)), names, "{sub}");
+        assert_eq!(dir.files(sub), names, "{sub}");
     }
     let units: serde_json::Value = serde_json::from_str(&dir.read("roll/roll.units.json")).unwrap();
     assert_eq!(units["omega"], "rad/s");

@@ -1,23 +1,18 @@
 //! `mechkit inertia BODYFILE` and `mechkit com BODYFILE`: body files with shapes, holes,
 //! meshes from OBJ files, units on the output, and their errors (located in the file).
 
-use crate::util::{Dir, Output, examples, num};
-
-fn json(out: &Output) -> serde_json::Value {
-    out.assert_code(0);
-    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
-}
+use crate::util::{Dir, examples, num};
 
 #[test]
 fn inertia_of_a_composite_about_points_and_axes() {
     let dir = Dir::new();
     let file = examples().join("bodies/rod_two_spheres.toml");
     let file = file.to_str().unwrap();
-    let j = json(&dir.run(&["inertia", file, "--axis", "0, 0, 1", "--json"]));
+    let j = dir.json(&["inertia", file, "--axis", "0, 0, 1", "--json"]);
     assert_eq!(num(&j, "/mass"), 2.0);
     assert!((num(&j, "/axis/moment") - 0.337_333_333_333).abs() < 1e-12);
     // about one end (x = -0.5 m): I_cm + M d² = 0.337333 + 2·0.25
-    let end = json(&dir.run(&[
+    let end = dir.json(&[
         "inertia",
         file,
         "--about",
@@ -25,14 +20,14 @@ fn inertia_of_a_composite_about_points_and_axes() {
         "--axis",
         "0,1,0",
         "--json",
-    ]));
+    ]);
     assert!((num(&end, "/axis/moment") - 0.837_333_333_333).abs() < 1e-12);
     assert!((num(&end, "/inertia_about/2/2") - 0.837_333_333_333).abs() < 1e-12);
     // principal moments ascending: the rod's own axis (x) has the smallest
     assert!((num(&j, "/principal_moments/0") - 0.004).abs() < 1e-15);
     assert!((num(&j, "/principal_axes/0/0") - 1.0).abs() < 1e-15);
     // in g·cm² and rescaled to 4 kg (everything doubles)
-    let g = json(&dir.run(&[
+    let g = dir.json(&[
         "inertia",
         file,
         "--in",
@@ -40,7 +35,7 @@ fn inertia_of_a_composite_about_points_and_axes() {
         "--total-mass",
         "4 kg",
         "--json",
-    ]));
+    ]);
     assert!((num(&g, "/inertia_cm/2/2") - 2.0 * 0.337_333_333_333e7).abs() < 1e-3);
     assert_eq!(g["unit"], "g*cm^2");
     // the text names the parts and the principal axes
@@ -58,7 +53,7 @@ fn inertia_of_a_composite_about_points_and_axes() {
 fn centre_of_mass_of_body_files_with_holes_and_meshes() {
     let dir = Dir::new();
     let cube = examples().join("bodies/cube_with_hole.toml");
-    let j = json(&dir.run(&["com", cube.to_str().unwrap(), "--json"]));
+    let j = dir.json(&["com", cube.to_str().unwrap(), "--json"]);
     assert!((num(&j, "/total_mass") - 7850.0 * (1e-3 - 0.125e-3)).abs() < 1e-9);
     assert!((num(&j, "/centre_of_mass/0") + 0.025 * 0.125 / 0.875).abs() < 1e-15);
     assert_eq!(j["parts"][1]["hole"], true);
@@ -71,20 +66,20 @@ fn centre_of_mass_of_body_files_with_holes_and_meshes() {
         "tet.toml",
         "[[part]]\nshape = \"mesh\"\nfile = \"tet.obj\"\ndensity = 6\nposition = [1, 2, 3]\n",
     );
-    let t = json(&dir.run(&["com", "tet.toml", "--json"]));
+    let t = dir.json(&["com", "tet.toml", "--json"]);
     assert!((num(&t, "/total_mass") - 1.0).abs() < 1e-15);
     for (k, c) in [1.25, 2.25, 3.25].iter().enumerate() {
         assert!((num(&t, &format!("/centre_of_mass/{k}")) - c).abs() < 1e-15);
     }
     // point masses inline
-    let em = json(&dir.run(&[
+    let em = dir.json(&[
         "com",
         "--mass",
         "5.972e24 kg@0, 0",
         "--mass",
         "7.342e22 kg@384400 km, 0",
         "--json",
-    ]));
+    ]);
     assert!((num(&em, "/centre_of_mass/0") - 4.6686e6).abs() < 1e3);
 }
 

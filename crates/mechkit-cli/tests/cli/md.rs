@@ -5,7 +5,7 @@
 use crate::util::Dir;
 
 fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
-    let mut all = vec![
+    let small = [
         "md",
         "--cells",
         "5",
@@ -14,9 +14,7 @@ fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
         "--thermo-every",
         "10",
     ];
-    all.extend_from_slice(args);
-    all.push("--json");
-    dir.run(&all).json()
+    dir.json_with(&small, args)
 }
 
 #[test]

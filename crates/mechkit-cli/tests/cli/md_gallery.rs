@@ -7,9 +7,7 @@
 //!   period later at −u_i(0), a period later back at u_i(0);
 //! - bad particle files and flags name the flag and the line.
 
-use std::path::Path;
-
-use crate::util::{Dir, examples};
+use crate::util::{Dir, example};
 
 /// The frames of an extended-XYZ file: per frame, per atom, `[x, y, z, vx, vy, vz]`.
 fn frames(text: &str) -> Vec<Vec<[f64; 6]>> {
@@ -35,16 +33,10 @@ fn frames(text: &str) -> Vec<Vec<[f64; 6]>> {
     out
 }
 
-fn example(name: &str) -> String {
-    let path = examples().join("md").join(name);
-    assert!(Path::new(&path).exists(), "{}", path.display());
-    path.to_string_lossy().into_owned()
-}
-
 #[test]
 fn lj_pair_turns_where_u_equals_e() {
     let dir = Dir::new();
-    let pair = example("lj_pair.csv");
+    let pair = example("md/lj_pair.csv");
     let out = dir
         .run(&[
             "md",
@@ -98,7 +90,7 @@ fn lj_pair_turns_where_u_equals_e() {
 #[test]
 fn spring_chain_lowest_mode_has_the_ring_frequency() {
     let dir = Dir::new();
-    let chain = example("spring_chain.csv");
+    let chain = example("md/spring_chain.csv");
     let (n, k, m, a) = (16.0f64, 1.0f64, 1.0f64, 0.1f64);
     let omega = 2.0 * (k / m).sqrt() * (std::f64::consts::PI / n).sin();
     let period = 2.0 * std::f64::consts::PI / omega;

@@ -45,7 +45,7 @@ fn png_size(path: &Path) -> (u32, u32) {
 
 fn sweep(dir: &Dir, set: &str, out: &str, extra: &[&str]) {
     let file = examples().join("sweep/throw.toml");
-    let mut args = vec![
+    let head = [
         "sweep",
         file.to_str().unwrap(),
         "--set",
@@ -55,8 +55,7 @@ fn sweep(dir: &Dir, set: &str, out: &str, extra: &[&str]) {
         "--out",
         out,
     ];
-    args.extend_from_slice(extra);
-    dir.run(&args).assert_code(0);
+    dir.run_with(&head, extra).assert_code(0);
 }
 
 #[test]

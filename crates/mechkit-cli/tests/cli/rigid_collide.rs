@@ -6,10 +6,7 @@
 use crate::util::{Dir, examples, num};
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let mut all = vec!["rigid-collide"];
-    all.extend_from_slice(args);
-    all.push("--json");
-    Dir::new().run(&all).json()
+    Dir::new().json_with(&["rigid-collide"], args)
 }
 
 #[test]

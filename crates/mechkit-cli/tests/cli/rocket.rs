@@ -18,12 +18,7 @@ const ROCKET: [&str; 9] = [
 ];
 
 fn json(dir: &Dir, extra: &[&str]) -> serde_json::Value {
-    let mut args = ROCKET.to_vec();
-    args.extend_from_slice(extra);
-    args.push("--json");
-    let out = dir.run(&args);
-    out.assert_code(0);
-    serde_json::from_str(&out.stdout).unwrap_or_else(|e| panic!("not JSON ({e}): {}", out.stdout))
+    dir.json_with(&ROCKET, extra)
 }
 
 #[test]

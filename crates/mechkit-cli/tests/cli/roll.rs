@@ -11,10 +11,7 @@ const SPHERE: [&str; 15] = [
 ];
 
 fn json(dir: &Dir, extra: &[&str]) -> serde_json::Value {
-    let mut args = SPHERE.to_vec();
-    args.extend_from_slice(extra);
-    args.push("--json");
-    dir.run(&args).json()
+    dir.json_with(&SPHERE, extra)
 }
 
 #[test]

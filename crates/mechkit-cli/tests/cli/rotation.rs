@@ -6,10 +6,7 @@
 use crate::util::{Dir, at, num};
 
 fn json(args: &[&str]) -> serde_json::Value {
-    let mut all = vec!["rotation"];
-    all.extend_from_slice(args);
-    all.push("--json");
-    Dir::new().run(&all).json()
+    Dir::new().json_with(&["rotation"], args)
 }
 
 #[test]

@@ -9,14 +9,13 @@ use crate::util::{self, Csv, Dir, at, examples, num};
 fn run_feather(extra: &[&str]) -> (Dir, util::Output) {
     let dir = Dir::new();
     let feather = examples().join("feather.toml");
-    let mut args = vec![
+    let head = [
         "run",
         feather.to_str().expect("a UTF-8 path"),
         "--out",
         "out",
     ];
-    args.extend_from_slice(extra);
-    let out = dir.run(&args);
+    let out = dir.run_with(&head, extra);
     (dir, out)
 }
 
@@ -135,6 +134,7 @@ fn check_accepts_every_example() {
     for sub in [
         examples(),
         examples().join("book"),
+        examples().join("md"),
         examples().join("rigid"),
         examples().join("sweep"),
         examples().join("../bench/workloads"),

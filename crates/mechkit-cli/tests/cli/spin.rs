@@ -8,10 +8,7 @@ use std::f64::consts::PI;
 use crate::util::{Dir, at, num};
 
 fn json(dir: &Dir, args: &[&str]) -> serde_json::Value {
-    let mut all = vec!["spin"];
-    all.extend_from_slice(args);
-    all.push("--json");
-    dir.run(&all).json()
+    dir.json_with(&["spin"], args)
 }
 
 /// K(m) by the midpoint rule on ∫₀^{π/2} dθ/√(1 − m sin²θ) (spectrally accurate for a
@@ -137,11 +134,7 @@ fn heavy_top_in_steady_precession() {
 #[test]
 fn bad_input_exits_2_naming_the_flag() {
     let dir = Dir::new();
-    let run = |extra: &[&str]| {
-        let mut args = vec!["spin", "--t-max", "10"];
-        args.extend_from_slice(extra);
-        dir.run(&args)
-    };
+    let run = |extra: &[&str]| dir.run_with(&["spin", "--t-max", "10"], extra);
     run(&["--moments", "1, 1, 3", "--omega", "0, 1, 0"]).assert_bad_input(&[
         "--moments",
         "triangle inequality",

@@ -168,9 +168,8 @@ fn bad_input_exits_2_naming_the_flag() {
     let dir = Dir::new();
     dir.create("throw.toml", THROW);
     let bad = |args: &[&str], needles: &[&str]| {
-        let mut all = vec!["sweep", "throw.toml"];
-        all.extend_from_slice(args);
-        dir.run(&all).assert_bad_input(needles);
+        dir.run_with(&["sweep", "throw.toml"], args)
+            .assert_bad_input(needles);
     };
     bad(
         &["--set", "v0=1:2"],

@@ -105,6 +105,23 @@ impl Dir {
         self.run_with_env(args, &[])
     }
 
+    /// Runs `mechkit` with `head` and then `tail`: a command with the arguments a test file
+    /// always gives it, then those of one case.
+    pub fn run_with(&self, head: &[&str], tail: &[&str]) -> Output {
+        self.run(&[head, tail].concat())
+    }
+
+    /// Runs `mechkit` with `args` (which ask for `--json`) and parses its standard output, after
+    /// checking that it exited 0.
+    pub fn json(&self, args: &[&str]) -> serde_json::Value {
+        self.run(args).json()
+    }
+
+    /// [`Dir::json`] of `head`, then `tail`, then `--json`.
+    pub fn json_with(&self, head: &[&str], tail: &[&str]) -> serde_json::Value {
+        self.json(&[head, tail, &["--json"]].concat())
+    }
+
     /// [`Dir::run`] with environment variables set.
     pub fn run_with_env(&self, args: &[&str], env: &[(&str, &str)]) -> Output {
         let out = Command::new(env!("CARGO_BIN_EXE_mechkit"))
@@ -126,6 +143,20 @@ impl Dir {
         fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()))
     }
 
+    /// The names of the files in the folder `sub` of the directory (`"."` for the directory
+    /// itself), sorted; none if it does not exist.
+    pub fn files(&self, sub: &str) -> Vec<String> {
+        let mut names: Vec<String> = fs::read_dir(self.path().join(sub))
+            .map(|entries| {
+                entries
+                    .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                    .collect()
+            })
+            .unwrap_or_default();
+        names.sort();
+        names
+    }
+
     /// Reads and parses a JSON file inside the directory.
     pub fn read_json(&self, name: &str) -> serde_json::Value {
         serde_json::from_str(&self.read(name)).unwrap_or_else(|e| panic!("{name} is not JSON: {e}"))
@@ -135,6 +166,14 @@ impl Dir {
 /// The repository's `examples` directory.
 pub fn examples() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+/// The file `path` under the repository's `examples` directory (e.g. `data/forcedata.d`), as
+/// an argument for the binary; it must exist.
+pub fn example(path: &str) -> String {
+    let path = examples().join(path);
+    assert!(path.exists(), "{}", path.display());
+    path.display().to_string()
 }
 
 /// A parsed CSV file of numbers: the header and the rows.

@@ -9,187 +9,18 @@
 //! tangential impulse that would stop the sliding is `μ |u_t|`; if it is at most `μ_f J_n` the
 //! contact sticks (tangential relative velocity zero), else it slides with `μ_f J_n` against
 //! the sliding. The bodies are particles (no spin); rolling spheres belong to rigid bodies.
+//!
+//! The coefficient of restitution is checked by [`Restitution`] (`resolve/restitution.rs`);
+//! what cannot be resolved is a [`CollisionError`] (`resolve/error.rs`).
 
-use thiserror::Error;
+mod error;
+mod restitution;
 
-use super::CollisionInput;
+pub use error::CollisionError;
+pub use restitution::Restitution;
+
+use super::{CmFrame, Collided, VelocityPair};
 use crate::Real;
-
-/// A coefficient of restitution, checked: `0 ≤ e ≤ 1`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Restitution(Real);
-
-impl Restitution {
-    /// `e = 1`: kinetic energy is conserved.
-    pub const ELASTIC: Restitution = Restitution(1.0);
-    /// `e = 0`: the bodies move on together along the normal.
-    pub const PERFECTLY_INELASTIC: Restitution = Restitution(0.0);
-
-    /// `e`, checked to be in `[0, 1]`.
-    pub fn new(e: Real) -> Result<Self, CollisionError> {
-        if (0.0..=1.0).contains(&e) {
-            Ok(Self(e))
-        } else {
-            Err(CollisionError::Restitution { e })
-        }
-    }
-
-    /// A preset by name (`elastic`, `perfectly-inelastic` or `plastic`) or a number.
-    pub fn parse(text: &str) -> Result<Self, CollisionError> {
-        match text.trim().to_ascii_lowercase().as_str() {
-            "elastic" => Ok(Self::ELASTIC),
-            "perfectly-inelastic" | "perfectly_inelastic" | "plastic" => {
-                Ok(Self::PERFECTLY_INELASTIC)
-            }
-            other => match other.parse::<Real>() {
-                Ok(e) => Self::new(e),
-                Err(_) => Err(CollisionError::RestitutionName {
-                    text: text.to_string(),
-                }),
-            },
-        }
-    }
-
-    /// The value.
-    pub fn value(self) -> Real {
-        self.0
-    }
-}
-
-/// Why a collision cannot be resolved.
-#[derive(Debug, Clone, PartialEq, Error)]
-#[non_exhaustive]
-pub enum CollisionError {
-    /// A mass that is not positive (or NaN).
-    #[error("mass {which} is {mass}; masses must be positive (use `inf` for an immovable wall)")]
-    Mass {
-        /// 1 or 2.
-        which: usize,
-        /// The value.
-        mass: Real,
-    },
-    /// Both masses infinite.
-    #[error("both bodies are immovable (infinite mass); at least one must have a finite mass")]
-    BothImmovable,
-    /// `e` outside `[0, 1]`.
-    #[error(
-        "the coefficient of restitution is {e}; it must be between 0 (perfectly inelastic) and 1 (elastic)"
-    )]
-    Restitution {
-        /// The value.
-        e: Real,
-    },
-    /// Not a number or a preset.
-    #[error(
-        "`{text}` is not a coefficient of restitution: give a number from 0 to 1, or elastic (1) or perfectly-inelastic (0); an inelastic collision needs its e, e.g. 0.5"
-    )]
-    RestitutionName {
-        /// What was given.
-        text: String,
-    },
-    /// A negative or NaN friction coefficient.
-    #[error("the friction coefficient is {mu}; it must be zero or positive")]
-    Friction {
-        /// The value.
-        mu: Real,
-    },
-    /// The normal has zero length, or the bodies are at the same point.
-    #[error("the contact normal has zero length (or the two centres coincide); give a direction")]
-    ZeroNormal,
-    /// Velocities and normal of different dimensions, or not 1 to 3.
-    #[error("the velocities and the normal must all have 1, 2 or 3 components, the same number")]
-    Dimension,
-    /// A value is not finite.
-    #[error("a velocity or normal component is not a finite number")]
-    NotFinite,
-    /// A vector with another number of components than the velocities.
-    #[error("{}", components(*input, *got, *expected))]
-    Components {
-        /// The vector.
-        input: CollisionInput,
-        /// Its number of components.
-        got: usize,
-        /// The number wanted (that of the other vector).
-        expected: usize,
-    },
-    /// A collision in 2-D or 3-D without its normal.
-    #[error(
-        "in {dim}-D the contact normal is needed: give the direction from body 1 to body 2, or the centres of the two spheres"
-    )]
-    NormalNeeded {
-        /// The dimension of the velocities.
-        dim: usize,
-    },
-    /// The two sphere centres are the same point.
-    #[error(
-        "the two centres coincide, so they give no direction from body 1 to body 2; give two different points"
-    )]
-    SameCentres,
-    /// Sphere centres with different numbers of components.
-    #[error(
-        "the centre of sphere 1 has {} but that of sphere 2 has {}; give both with the same number",
-        count(*r1),
-        count(*r2)
-    )]
-    CentresDiffer {
-        /// Components of the centre of sphere 1.
-        r1: usize,
-        /// Components of the centre of sphere 2.
-        r2: usize,
-    },
-    /// A gravitational acceleration that is not positive.
-    #[error("the gravitational acceleration is {g}; it must be positive, e.g. 9.81 m/s^2")]
-    Gravity {
-        /// The value.
-        g: Real,
-    },
-}
-
-/// `1 component`, `2 components`.
-fn count(n: usize) -> String {
-    format!("{n} component{}", if n == 1 { "" } else { "s" })
-}
-
-/// The message of [`CollisionError::Components`].
-fn components(input: CollisionInput, got: usize, expected: usize) -> String {
-    if got == 0 || got > 3 {
-        return format!("{input} has {}; give 1, 2 or 3", count(got));
-    }
-    match input {
-        CollisionInput::Velocity1 | CollisionInput::Velocity2 => {
-            let other = if input == CollisionInput::Velocity1 {
-                CollisionInput::Velocity2
-            } else {
-                CollisionInput::Velocity1
-            };
-            format!(
-                "{input} has {} but {other} has {expected}; give both with the same number of components (a single 0 is at rest)",
-                count(got)
-            )
-        }
-        _ => format!(
-            "{input} has {} but the velocities have {expected}; give as many as they have",
-            count(got)
-        ),
-    }
-}
-
-impl CollisionError {
-    /// The input the error is about, when it is about one.
-    pub fn input(&self) -> Option<CollisionInput> {
-        Some(match self {
-            Self::Mass { which: 1, .. } => CollisionInput::Mass1,
-            Self::Mass { .. } | Self::BothImmovable => CollisionInput::Mass2,
-            Self::Restitution { .. } | Self::RestitutionName { .. } => CollisionInput::Restitution,
-            Self::Friction { .. } => CollisionInput::Friction,
-            Self::ZeroNormal | Self::NormalNeeded { .. } => CollisionInput::Normal,
-            Self::SameCentres | Self::CentresDiffer { .. } => CollisionInput::Centres,
-            Self::Components { input, .. } => *input,
-            Self::Gravity { .. } => CollisionInput::Gravity,
-            Self::Dimension | Self::NotFinite => return None,
-        })
-    }
-}
 
 /// Two bodies about to collide.
 #[derive(Debug, Clone, PartialEq)]
@@ -210,51 +41,10 @@ pub struct Collision {
     pub friction: Real,
 }
 
-/// What a resolved collision did.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Outcome {
-    /// Velocity of body 1 after.
-    pub v1: Vec<Real>,
-    /// Velocity of body 2 after.
-    pub v2: Vec<Real>,
-    /// Impulse on body 2 (body 1 receives its opposite), N·s.
-    pub impulse: Vec<Real>,
-    /// Its normal part `J_n ≥ 0`.
-    pub normal_impulse: Real,
-    /// The magnitude of its tangential part.
-    pub tangential_impulse: Real,
-    /// Whether friction stopped the sliding (only with friction and a tangential velocity).
-    pub sticks: Option<bool>,
-    /// Approach speed `u·n` before.
-    pub approach_speed: Real,
-    /// Separation speed along the normal after (`e` times the approach speed).
-    pub separation_speed: Real,
-    /// Kinetic energy before (an immovable body counts for nothing).
-    pub kinetic_before: Real,
-    /// Kinetic energy after.
-    pub kinetic_after: Real,
-    /// Velocity of the centre of mass (that of the immovable body, if any).
-    pub v_cm: Vec<Real>,
-    /// Velocities relative to the centre of mass before: body 1, body 2.
-    pub cm_frame_before: [Vec<Real>; 2],
-    /// And after.
-    pub cm_frame_after: [Vec<Real>; 2],
-}
-
-impl Outcome {
-    /// Kinetic energy lost, `K_before - K_after ≥ 0`.
-    pub fn energy_lost(&self) -> Real {
-        self.kinetic_before - self.kinetic_after
-    }
-
-    /// The height each body rises after the collision when its whole speed turns into height
-    /// under gravity `g`: `h = |v|²/(2 g)`, the swing of a pendulum bob or of a ballistic
-    /// pendulum (a string or a track turns the velocity upward without work).
-    pub fn rise(&self, g: Real) -> [Real; 2] {
-        let h = |v: &[Real]| v.iter().map(|x| x * x).sum::<Real>() / (2.0 * g);
-        [h(&self.v1), h(&self.v2)]
-    }
-}
+/// What a resolved collision did: the same value as the report's [`Collided`] (the collision
+/// it resolved, the velocities, impulse and energies after, the centre-of-mass frame), without
+/// a rise until [`Collided::with_rise`] adds one.
+pub type Outcome = Collided;
 
 /// The result: resolved, or no collision because the bodies already separate.
 #[derive(Debug, Clone, PartialEq)]
@@ -409,20 +199,39 @@ impl Collision {
             &v1.iter().zip(&v2).map(|(a, b)| a - b).collect::<Vec<_>>(),
             &n,
         );
-        Ok(Resolution::Collided(Box::new(Outcome {
-            kinetic_before: kinetic(self.m1, &self.v1) + kinetic(self.m2, &self.v2),
-            kinetic_after: kinetic(self.m1, &v1) + kinetic(self.m2, &v2),
-            cm_frame_before: [rel(&self.v1), rel(&self.v2)],
-            cm_frame_after: [rel(&v1), rel(&v2)],
+        let kinetic_before = kinetic(self.m1, &self.v1) + kinetic(self.m2, &self.v2);
+        let kinetic_after = kinetic(self.m1, &v1) + kinetic(self.m2, &v2);
+        Ok(Resolution::Collided(Box::new(Collided {
+            collided: true,
+            m1: self.m1,
+            m2: self.m2,
+            restitution: e,
+            friction: self.friction,
+            v1_before: self.v1.clone(),
+            v2_before: self.v2.clone(),
+            cm_frame: CmFrame {
+                before: VelocityPair {
+                    v1: rel(&self.v1),
+                    v2: rel(&self.v2),
+                },
+                after: VelocityPair {
+                    v1: rel(&v1),
+                    v2: rel(&v2),
+                },
+            },
             v1,
             v2,
+            impulse,
             normal_impulse: jn,
             tangential_impulse: jt,
             sticks,
-            impulse,
             approach_speed: un,
             separation_speed: separation,
+            kinetic_before,
+            kinetic_after,
+            kinetic_lost: kinetic_before - kinetic_after,
             v_cm,
+            rise: None,
         })))
     }
 }
@@ -445,11 +254,11 @@ mod tests {
         let o = collided(&Collision::head_on(m1, v, m2, 0.0, Restitution::ELASTIC));
         assert!((o.v1[0] - (m1 - m2) / (m1 + m2) * v).abs() < 1e-15);
         assert!((o.v2[0] - 2.0 * m1 / (m1 + m2) * v).abs() < 1e-15);
-        assert!(o.energy_lost().abs() < 1e-15);
+        assert!(o.kinetic_lost.abs() < 1e-15);
         // in the CM frame each velocity is reversed
-        for k in 0..2 {
-            assert!((o.cm_frame_after[k][0] + o.cm_frame_before[k][0]).abs() < 1e-15);
-        }
+        let (before, after) = (&o.cm_frame.before, &o.cm_frame.after);
+        assert!((after.v1[0] + before.v1[0]).abs() < 1e-15);
+        assert!((after.v2[0] + before.v2[0]).abs() < 1e-15);
     }
 
     #[test]

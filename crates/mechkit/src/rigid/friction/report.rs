@@ -9,9 +9,11 @@ use super::spring_block::SpringBlock;
 use super::stick_slip::{Phase, PhaseEnd, Regime, StickSlipRun, StickSlipSample};
 use crate::Real;
 use crate::csv::{Column, Table};
-use crate::figure::{Band, LineStyle, PlotData, Series};
+use crate::figure::{LineStyle, PlotData, Series};
 use crate::ode::AdaptiveConfig;
-use crate::report::{Files, SimulationInfo};
+use crate::report::{Files, SimulationInfo, sample_table, shade};
+
+pub use crate::report::StartEnd;
 
 /// A block released at rest on a flat or inclined surface (forces down the slope positive),
 /// and the stick-slip run when one was asked for.
@@ -107,16 +109,6 @@ pub struct PhaseReport {
     pub t_end_closed_form: Option<Real>,
     /// The distance slid relative to the surface (m).
     pub slip_distance: Real,
-}
-
-/// An energy at the start and at the end (J).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct StartEnd {
-    /// At the start.
-    pub start: Real,
-    /// At the end.
-    pub end: Real,
 }
 
 /// The energy ledger of a stick-slip run (J).
@@ -251,14 +243,8 @@ impl StickSlipReport {
             slip_phases: phases.len() - stick_phases,
             phases,
             energy: StickSlipEnergy {
-                kinetic: StartEnd {
-                    start: b.kinetic.start,
-                    end: b.kinetic.end,
-                },
-                spring: StartEnd {
-                    start: spring.start,
-                    end: spring.end,
-                },
+                kinetic: StartEnd::new(b.kinetic.start, b.kinetic.end),
+                spring: StartEnd::new(spring.start, spring.end),
                 heat: run.heat(),
                 work_friction: run.work_friction(),
                 work_belt: run.work_belt(),
@@ -279,7 +265,7 @@ impl StickSlipReport {
     /// spring's force, friction, whether it sticks (1) or slips (0), the heat and the works
     /// of the belt and the anchor.
     pub fn table(&self) -> Table {
-        let mut table = Table::new([
+        let columns = [
             Column::new("t", "s"),
             Column::new("x", "m"),
             Column::new("v", "m/s"),
@@ -290,9 +276,9 @@ impl StickSlipReport {
             Column::new("heat", "J"),
             Column::new("work_belt", "J"),
             Column::new("work_anchor", "J"),
-        ]);
-        for s in &self.run.samples {
-            table.push(&[
+        ];
+        sample_table(columns, &self.run.samples, |s| {
+            [
                 s.t,
                 s.x,
                 s.v,
@@ -303,9 +289,8 @@ impl StickSlipReport {
                 s.heat,
                 s.work_belt,
                 s.work_anchor,
-            ]);
-        }
-        table
+            ]
+        })
     }
 
     /// The plots `x_t` (block and anchor), `v_t` (block and belt) and `forces_t` (spring,
@@ -318,16 +303,6 @@ impl StickSlipReport {
         let t_end = run.samples.last().map_or(0.0, |s| s.t);
         let flat = |y: Real| vec![(0.0, y), (t_end, y)];
         let bound = block.stick_bound();
-        let bands: Vec<Band> = run
-            .phases
-            .iter()
-            .filter(|p| p.regime == Regime::Stick)
-            .map(|p| Band {
-                from: p.start.0,
-                to: p.end.0,
-                label: "stick".to_string(),
-            })
-            .collect();
         let mut plots = vec![
             PlotData::new("x(t)", "x_t", "t [s]", "x [m]")
                 .with_series(Series::line("block", curve(&|s| s.x)))
@@ -345,9 +320,8 @@ impl StickSlipReport {
                 .with_series(Series::line("±μs N", flat(bound)).styled(LineStyle::Dashed))
                 .with_series(Series::line("±μs N", flat(-bound)).styled(LineStyle::Dashed)),
         ];
-        for p in &mut plots {
-            p.bands.clone_from(&bands);
-        }
+        let sticks = run.phases.iter().filter(|p| p.regime == Regime::Stick);
+        shade(&mut plots, "stick", sticks.map(|p| (p.start.0, p.end.0)));
         plots
     }
 }

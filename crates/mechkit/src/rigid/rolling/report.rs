@@ -13,9 +13,11 @@ use super::motion::RollingMotion;
 use super::run::{Contact, RollSample, RollingRun};
 use crate::Real;
 use crate::csv::{Column, Table};
-use crate::figure::{Band, LineStyle, PlotData, Series};
+use crate::figure::{LineStyle, PlotData, Series};
 use crate::ode::AdaptiveConfig;
-use crate::report::{Comparison, Files, SimulationInfo};
+use crate::report::{Comparison, Files, SimulationInfo, sample_table, shade};
+
+pub use crate::report::StartEnd;
 
 /// The body's numbers.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -82,16 +84,6 @@ pub struct PhaseReport {
     pub angular_acceleration: Real,
     /// The friction in the phase (N).
     pub friction: Real,
-}
-
-/// An energy at the start and at the end (J).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct StartEnd {
-    /// At the start.
-    pub start: Real,
-    /// At the end.
-    pub end: Real,
 }
 
 /// The energy ledger of a roll.
@@ -253,10 +245,7 @@ impl RollReport {
         let balance = &run.balance;
         let part = |name| {
             let p = balance.kinetic.part(name).expect("rolling splits K");
-            StartEnd {
-                start: p.start,
-                end: p.end,
-            }
+            StartEnd::new(p.start, p.end)
         };
         let u = balance.potential.as_ref().expect("gravity has a potential");
         let launch = m.launch_contact();
@@ -318,10 +307,7 @@ impl RollReport {
             energy: RollEnergy {
                 translational: part("translational"),
                 rotational: part("rotational"),
-                potential: StartEnd {
-                    start: u.start,
-                    end: u.end,
-                },
+                potential: StartEnd::new(u.start, u.end),
                 work_friction: balance.work_of("friction"),
                 residual: balance.residual(),
             },
@@ -340,7 +326,7 @@ impl RollReport {
     pub fn table(&self) -> Table {
         let m = &self.motion;
         let r = m.body.radius;
-        let mut table = Table::new([
+        let columns = [
             Column::new("t", "s"),
             Column::new("x", "m"),
             Column::new("v", "m/s"),
@@ -354,10 +340,10 @@ impl RollReport {
             Column::new("K_trans", "J"),
             Column::new("K_rot", "J"),
             Column::new("U", "J"),
-        ]);
-        for s in &self.run.samples {
+        ];
+        sample_table(columns, &self.run.samples, |s| {
             let (kt, kr) = m.kinetic(s.v, s.omega);
-            table.push(&[
+            [
                 s.t,
                 s.x,
                 s.v,
@@ -371,9 +357,8 @@ impl RollReport {
                 kt,
                 kr,
                 m.potential(s.x),
-            ]);
-        }
-        table
+            ]
+        })
     }
 
     /// The plots: `v_t` (v and ωR, meeting where rolling starts) and `energy_t` (the
@@ -389,16 +374,6 @@ impl RollReport {
         let curve = |f: &dyn Fn(&RollSample) -> Real| -> Vec<(Real, Real)> {
             run.samples.iter().map(|s| (s.t, f(s))).collect()
         };
-        let bands: Vec<Band> = run
-            .phases
-            .iter()
-            .filter(|p| p.contact == Contact::Rolling)
-            .map(|p| Band {
-                from: p.start.0,
-                to: p.end.0,
-                label: "rolling".to_string(),
-            })
-            .collect();
         let e0 = run.balance.energy().0;
         let mut plots = vec![
             PlotData::new("v and ωR", "v_t", "t [s]", "[m/s]")
@@ -422,9 +397,8 @@ impl RollReport {
                         .styled(LineStyle::Dashed),
                 ),
         ];
-        for p in &mut plots {
-            p.bands.clone_from(&bands);
-        }
+        let rolls = run.phases.iter().filter(|p| p.contact == Contact::Rolling);
+        shade(&mut plots, "rolling", rolls.map(|p| (p.start.0, p.end.0)));
         plots
     }
 }
