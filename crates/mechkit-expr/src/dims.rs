@@ -7,7 +7,7 @@ use crate::ast::{BinOp, Expr, Func};
 use crate::error::{ExprError, ExprErrorKind};
 use crate::formula::Formula;
 use crate::scope::builtin_constant;
-use crate::units::Dimension;
+use crate::units::{Dimension, MAX_WRITTEN_DENOMINATOR, Ratio, UnitSystem};
 
 /// The dimension of a (sub)formula, as far as it is known.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -91,6 +91,23 @@ impl Formula {
                 self.full_span(),
             )
         })
+    }
+
+    /// [`Formula::expect_dimension`] in a unit system: in SI the same; in reduced units, where
+    /// every quantity is a pure number, only that the formula is consistent in itself (a force
+    /// `sin(t)` is then as valid as `-x`).
+    pub fn expect_dimension_in(
+        &self,
+        units: UnitSystem,
+        want: Dimension,
+        what: &str,
+        dims: &dyn Fn(&str) -> Dim,
+        values: &dyn Fn(&str) -> Option<f64>,
+    ) -> Result<(), ExprError> {
+        match units {
+            UnitSystem::Si => self.expect_dimension(want, what, dims, values),
+            UnitSystem::Reduced => self.dimension_with(dims, values).map(|_| ()),
+        }
     }
 
     /// Checks that the formula has dimension `want`; the error says what it has instead.
@@ -188,7 +205,14 @@ fn infer(e: &Expr, env: &Env<'_>) -> Result<Dim, Failure> {
         Expr::Num(_) => Dim::Literal,
         Expr::Var(name) => match builtin_constant(name) {
             Some(_) if matches!(dims(name), Dim::Unknown) => Dim::NONE,
-            _ => dims(name),
+            _ => match dims(name) {
+                Dim::Known(d) if d.is_too_large() => {
+                    return Err(
+                        format!("`{name}` has a dimension whose exponent is too large").into(),
+                    );
+                }
+                d => d,
+            },
         },
         Expr::Neg(a) => infer(a, env)?,
         Expr::Not(a) => {
@@ -207,9 +231,14 @@ fn infer(e: &Expr, env: &Env<'_>) -> Result<Dim, Failure> {
                 BinOp::And | BinOp::Or => Dim::NONE,
                 BinOp::Mul | BinOp::Div => match (da, db) {
                     (Dim::Literal, Dim::Literal) => Dim::Literal,
-                    (Dim::Known(x), Dim::Known(y)) => {
-                        Dim::Known(if *op == BinOp::Mul { x * y } else { x / y })
-                    }
+                    (Dim::Known(x), Dim::Known(y)) => Dim::Known(
+                        if *op == BinOp::Mul {
+                            x.checked_mul(y)
+                        } else {
+                            x.checked_div(y)
+                        }
+                        .map_err(|err| too_large(err, e))?,
+                    ),
                     // A known dimensionless factor (pi, a ratio) keeps the other side as it is.
                     (Dim::Known(x), other) if x.is_none() && *op == BinOp::Mul => other,
                     (other, Dim::Known(y)) if y.is_none() => other,
@@ -227,8 +256,8 @@ fn infer(e: &Expr, env: &Env<'_>) -> Result<Dim, Failure> {
             match func {
                 Func::Abs | Func::Floor | Func::Ceil => ds[0],
                 Func::Sign | Func::Heaviside => Dim::NONE,
-                Func::Sqrt => root(ds[0], 2, &args[0])?,
-                Func::Cbrt => root(ds[0], 3, &args[0])?,
+                Func::Sqrt => root(ds[0], 2, e)?,
+                Func::Cbrt => root(ds[0], 3, e)?,
                 Func::Min | Func::Max => {
                     let mut acc = ds[0];
                     for (d, a) in ds.iter().zip(args).skip(1) {
@@ -250,20 +279,30 @@ fn infer(e: &Expr, env: &Env<'_>) -> Result<Dim, Failure> {
     })
 }
 
+/// The failure of a checked dimension operation in `e`.
+fn too_large(err: crate::units::DimensionError, e: &Expr) -> Failure {
+    Failure {
+        message: format!("the dimension of `{e}`: {err}"),
+        hint: Some(
+            "make the quantity dimensionless before raising it to a large power (divide it by \
+             a constant with its units)"
+                .into(),
+        ),
+    }
+}
+
 fn root(d: Dim, n: i32, e: &Expr) -> Result<Dim, Failure> {
     match d {
-        Dim::Known(x) => x.root(n).map(Dim::Known).ok_or_else(|| {
-            format!(
-                "the {} root of `{e}` ({}) has no dimension in powers of 1/6",
-                if n == 2 { "square" } else { "cube" },
-                x.describe()
-            )
-            .into()
-        }),
+        Dim::Known(x) => x
+            .pow_rational(Ratio::new(1, i64::from(n)).unwrap_or(Ratio::ONE))
+            .map(Dim::Known)
+            .map_err(|err| too_large(err, e)),
         other => Ok(other),
     }
 }
 
+/// The dimension of `a^b`: exact for a fixed exponent that is a fraction p/q with
+/// q ≤ [`MAX_WRITTEN_DENOMINATOR`] (`x^1.5` is `x^(3/2)`, `x^(1/3)`, `x^n` with `n = 3`).
 fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr, env: &Env<'_>) -> Result<Dim, Failure> {
     dimensionless("^", exponent, b)
         .map_err(|_| Failure::from(format!("the exponent `{b}` must be dimensionless")))?;
@@ -280,20 +319,28 @@ fn power(base: Dim, exponent: Dim, a: &Expr, b: &Expr, env: &Env<'_>) -> Result<
         )
         .into());
     };
-    for den in [1, 2, 3, 6] {
-        let num = p * f64::from(den);
-        if (num - num.round()).abs() < 1e-9
-            && num.abs() < 1000.0
-            && let Some(r) = d.pow_ratio(num.round() as i32, den)
-        {
-            return Ok(Dim::Known(r));
-        }
+    let whole = || Expr::Binary(BinOp::Pow, Box::new(a.clone()), Box::new(b.clone()));
+    match Ratio::from_f64(p, MAX_WRITTEN_DENOMINATOR) {
+        Some(r) => d
+            .pow_rational(r)
+            .map(Dim::Known)
+            .map_err(|err| too_large(err, &whole())),
+        None if p.is_finite() && p.abs() <= f64::from(i32::MAX) => Err(Failure {
+            message: format!(
+                "`{a}` ({}) raised to {p} has no exact dimension: a power of a quantity with \
+                 units must be a fraction p/q with q at most {MAX_WRITTEN_DENOMINATOR}",
+                d.describe()
+            ),
+            hint: Some(format!(
+                "write the power as a fraction, e.g. `{a}^(3/2)`, or make `{a}` dimensionless \
+                 (divide it by a constant with its units)"
+            )),
+        }),
+        None => Err(too_large(
+            crate::units::DimensionError::ExponentTooLarge,
+            &whole(),
+        )),
     }
-    Err(format!(
-        "`{a}` ({}) raised to {p} has no dimension in powers of 1/6",
-        d.describe()
-    )
-    .into())
 }
 
 #[cfg(test)]
@@ -353,7 +400,17 @@ mod tests {
             dim("sqrt(x)*sqrt(x)").unwrap(),
             Dim::Known(Dimension::LENGTH)
         );
-        assert!(dim("x^0.1").is_err());
+        assert_eq!(
+            dim("x^0.1").unwrap(),
+            Dim::Known(Dimension::LENGTH.pow_ratio(1, 10).unwrap())
+        );
+        assert!(
+            dim("x^pi")
+                .unwrap_err()
+                .message()
+                .contains("no exact dimension")
+        );
+        assert!(dim("x^0.3333333").is_err());
         assert!(dim("x^t").is_err());
         let f = Formula::parse("x^n").unwrap();
         let with_n = f
@@ -361,6 +418,84 @@ mod tests {
             .unwrap();
         assert_eq!(with_n, Dim::Known(Dimension::LENGTH.powi(3)));
         assert!(dim("x < t").is_err());
+    }
+
+    #[test]
+    fn rational_powers() {
+        let m = |num, den| Dim::Known(Dimension::LENGTH.pow_ratio(num, den).unwrap());
+        assert_eq!(dim("x^1.5").unwrap(), m(3, 2));
+        assert_eq!(dim("x^(3/2)").unwrap(), m(3, 2));
+        assert_eq!(dim("x^-1.5").unwrap(), m(-3, 2));
+        assert_eq!(dim("sqrt(x^3)").unwrap(), m(3, 2));
+        assert_eq!(dim("sqrt(sqrt(x))").unwrap(), m(1, 4));
+        assert_eq!(dim("cbrt(x)").unwrap(), m(1, 3));
+        assert_eq!(dim("cbrt(x)^3").unwrap(), m(1, 1));
+        assert_eq!(dim("x^(1/3)*x^(2/3)").unwrap(), m(1, 1));
+        // a Hertz contact: k in N/m^(3/2) times a length to the 3/2 is a force
+        let hertz = Dim::Known(Dimension::FORCE / Dimension::LENGTH.pow_ratio(3, 2).unwrap());
+        let names = |n: &str| if n == "kh" { hertz } else { dims(n) };
+        let f = Formula::parse("kh*max(0, -x)^1.5").unwrap();
+        assert_eq!(f.dimension(&names).unwrap(), Dim::Known(Dimension::FORCE));
+        let wrong = Formula::parse("kh*max(0, -x)^2").unwrap();
+        let e = wrong
+            .expect_dimension(Dimension::FORCE, "a force", &names, &|_| None)
+            .unwrap_err();
+        assert!(e.message().contains("kg*m^(3/2)/s^2"), "{e}");
+    }
+
+    #[test]
+    fn huge_powers_are_exact_or_refused() {
+        assert_eq!(
+            dim("(((x^12)^12)^12)^12").unwrap(),
+            Dim::Known(Dimension::LENGTH.checked_powi(20_736).unwrap())
+        );
+        // energy and force stay apart however large the powers
+        assert_ne!(dim("k*x^2*x^5000"), dim("k*x*x^5000"));
+        for src in [
+            "(((((((((x^12)^12)^12)^12)^12)^12)^12)^12)^12)",
+            "((x^2000)^2000)^2000",
+            "x^1e12",
+            "x^3000000000*x^3000000000",
+        ] {
+            let e = dim(src).unwrap_err();
+            assert!(e.message().contains("exponent too large"), "{src}: {e}");
+        }
+        let mut deep = "x".to_string();
+        for _ in 0..32 {
+            deep = format!("sqrt({deep})");
+        }
+        assert!(
+            dim(&deep)
+                .unwrap_err()
+                .message()
+                .contains("exponent too large")
+        );
+    }
+
+    #[test]
+    fn reduced_units_need_no_particular_dimension() {
+        let f = Formula::parse("sin(t)").unwrap();
+        let none = |_: &str| Dim::Unknown;
+        assert!(
+            f.expect_dimension(Dimension::FORCE, "a force", &none, &|_| None)
+                .is_err()
+        );
+        assert!(
+            f.expect_dimension_in(
+                UnitSystem::Reduced,
+                Dimension::FORCE,
+                "a force",
+                &none,
+                &|_| None
+            )
+            .is_ok()
+        );
+        assert!(
+            f.expect_dimension_in(UnitSystem::Si, Dimension::FORCE, "a force", &none, &|_| {
+                None
+            })
+            .is_err()
+        );
     }
 
     #[test]

@@ -46,6 +46,7 @@ mod issue_022;
 mod issue_022_calc;
 mod issue_022_mass;
 mod issue_022_rigid;
+mod issue_023_units;
 mod limits;
 mod mass;
 mod md;

@@ -1,41 +1,108 @@
-//! Physical dimensions as integer exponents of the SI base units.
+//! Physical dimensions as exact rational exponents of the SI base units.
 
 use std::fmt;
 use std::ops::{Div, Mul};
 
+use super::ratio::Ratio;
+
 /// Exponents of the seven SI base units, in the order m, kg, s, A, K, mol, cd.
 ///
-/// Exponents may be halves and thirds (`t^(3/2)` in the constant-power motion, `sqrt(2*P/m)`),
-/// so they are stored in sixths. Angles are dimensionless (radians), as in SI.
+/// Exponents are exact fractions ([`Ratio`]): `m^(3/2)` in a Hertz contact stiffness
+/// `N/m^(3/2)`, `s^(1/2)`, `t^(3/2)` in the constant-power motion. Angles are dimensionless
+/// (radians), as in SI.
+///
+/// Arithmetic never wraps or saturates. A numerator or denominator that would reach 2^31 is
+/// an error from the checked operations ([`Dimension::checked_mul`],
+/// [`Dimension::pow_rational`], …), which every path from user input uses; the operators
+/// `*` and `/` and [`Dimension::powi`], meant for the fixed dimensions of the code, give
+/// [`Dimension::TOO_LARGE`] instead, which equals no real dimension and prints as such.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct Dimension([i16; 7]);
-
-/// Exponents are stored as multiples of 1/`DEN`.
-const DEN: i16 = 6;
+pub struct Dimension {
+    exponents: [Ratio; 7],
+    too_large: bool,
+}
 
 const BASE_SYMBOLS: [&str; 7] = ["m", "kg", "s", "A", "K", "mol", "cd"];
+
+/// A dimension whose exponents would leave the exact range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum DimensionError {
+    /// An exponent's numerator or denominator would reach 2^31.
+    ExponentTooLarge,
+}
+
+impl fmt::Display for DimensionError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DimensionError::ExponentTooLarge => write!(
+                f,
+                "exponent too large: a dimension's exponents are exact fractions whose \
+                 numerator and denominator stay below 2^31 = 2147483648"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for DimensionError {}
 
 impl Dimension {
     /// The dimension with these whole-number exponents of m, kg, s, A, K, mol, cd.
     pub const fn base(e: [i8; 7]) -> Dimension {
-        let mut out = [0i16; 7];
+        let mut exponents = [Ratio::ZERO; 7];
         let mut i = 0;
         while i < 7 {
-            out[i] = e[i] as i16 * DEN;
+            exponents[i] = Ratio::int(e[i] as i32);
             i += 1;
         }
-        Dimension(out)
+        Dimension {
+            exponents,
+            too_large: false,
+        }
     }
 
-    /// The exponent of base unit `i` (0 = m, 1 = kg, 2 = s, …) as a reduced fraction.
-    pub fn exponent(self, i: usize) -> (i32, i32) {
-        let num = i32::from(self.0[i]);
-        let g = gcd(num.unsigned_abs(), DEN as u32).max(1) as i32;
-        (num / g, i32::from(DEN) / g)
+    /// The dimension with these exact exponents of m, kg, s, A, K, mol, cd.
+    ///
+    /// ```
+    /// use mechkit_expr::units::{Dimension, Ratio};
+    /// let half = Ratio::new(1, 2).unwrap();
+    /// let z = Ratio::ZERO;
+    /// let d = Dimension::from_exponents([half, z, z, z, z, z, z]);
+    /// assert_eq!(d, Dimension::LENGTH.root(2).unwrap());
+    /// assert_eq!(d.to_string(), "m^(1/2)");
+    /// ```
+    pub const fn from_exponents(exponents: [Ratio; 7]) -> Dimension {
+        Dimension {
+            exponents,
+            too_large: false,
+        }
     }
+
+    /// The exponent of base unit `i` (0 = m, 1 = kg, 2 = s, …) as a reduced fraction
+    /// `(numerator, denominator)`; `(0, 0)` in [`Dimension::TOO_LARGE`].
+    pub fn exponent(self, i: usize) -> (i32, i32) {
+        if self.too_large {
+            return (0, 0);
+        }
+        let r = self.exponents[i];
+        (r.num(), r.den())
+    }
+
+    /// The exponent of base unit `i` (0 = m, 1 = kg, 2 = s, …); `None` in
+    /// [`Dimension::TOO_LARGE`].
+    pub fn exponent_ratio(self, i: usize) -> Option<Ratio> {
+        (!self.too_large).then_some(self.exponents[i])
+    }
+
+    /// What the unchecked operations give when an exponent would leave the exact range: equal
+    /// to no real dimension, displayed as "(exponent too large)".
+    pub const TOO_LARGE: Dimension = Dimension {
+        exponents: [Ratio::ZERO; 7],
+        too_large: true,
+    };
 
     /// No dimension (pure numbers, angles).
-    pub const NONE: Dimension = Dimension([0; 7]);
+    pub const NONE: Dimension = Dimension::base([0; 7]);
     /// Length (m).
     pub const LENGTH: Dimension = Dimension::base([1, 0, 0, 0, 0, 0, 0]);
     /// Mass (kg).
@@ -86,34 +153,82 @@ impl Dimension {
         self == Dimension::NONE
     }
 
-    /// Raised to an integer power.
-    #[must_use]
-    pub fn powi(self, n: i32) -> Dimension {
-        let mut out = self.0;
-        for e in &mut out {
-            *e = (i32::from(*e) * n).clamp(-30_000, 30_000) as i16;
-        }
-        Dimension(out)
+    /// Whether an unchecked operation overflowed ([`Dimension::TOO_LARGE`]).
+    pub fn is_too_large(self) -> bool {
+        self.too_large
     }
 
-    /// The `n`-th root, if the exponents stay multiples of 1/6.
+    fn checked(self) -> Result<Dimension, DimensionError> {
+        if self.too_large {
+            Err(DimensionError::ExponentTooLarge)
+        } else {
+            Ok(self)
+        }
+    }
+
+    fn map(
+        self,
+        rhs: Dimension,
+        op: impl Fn(Ratio, Ratio) -> Option<Ratio>,
+    ) -> Result<Dimension, DimensionError> {
+        let (a, b) = (self.checked()?, rhs.checked()?);
+        let mut out = a;
+        for (e, r) in out.exponents.iter_mut().zip(b.exponents) {
+            *e = op(*e, r).ok_or(DimensionError::ExponentTooLarge)?;
+        }
+        Ok(out)
+    }
+
+    /// `self * rhs`, or an error if an exponent leaves the exact range.
+    pub fn checked_mul(self, rhs: Dimension) -> Result<Dimension, DimensionError> {
+        self.map(rhs, Ratio::checked_add)
+    }
+
+    /// `self / rhs`, or an error if an exponent leaves the exact range.
+    pub fn checked_div(self, rhs: Dimension) -> Result<Dimension, DimensionError> {
+        self.map(rhs, |a, b| a.checked_add(b.checked_neg()?))
+    }
+
+    /// Raised to the exact power `p`, or an error if an exponent leaves the exact range.
+    ///
+    /// ```
+    /// use mechkit_expr::units::{Dimension, Ratio};
+    /// let m3 = Dimension::LENGTH.powi(3);
+    /// let half = Ratio::new(1, 2).unwrap();
+    /// assert_eq!(m3.pow_rational(half).unwrap().to_string(), "m^(3/2)");
+    /// let huge = Ratio::int(1 << 20);
+    /// assert!(Dimension::LENGTH.pow_rational(huge).unwrap().pow_rational(huge).is_err());
+    /// ```
+    pub fn pow_rational(self, p: Ratio) -> Result<Dimension, DimensionError> {
+        let mut out = self.checked()?;
+        for e in &mut out.exponents {
+            *e = e.checked_mul(p).ok_or(DimensionError::ExponentTooLarge)?;
+        }
+        Ok(out)
+    }
+
+    /// Raised to the integer power `n`, or an error if an exponent leaves the exact range.
+    pub fn checked_powi(self, n: i32) -> Result<Dimension, DimensionError> {
+        self.pow_rational(Ratio::int(n))
+    }
+
+    /// Raised to an integer power; [`Dimension::TOO_LARGE`] if an exponent leaves the exact
+    /// range (use [`Dimension::checked_powi`] on dimensions that come from input).
+    #[must_use]
+    pub fn powi(self, n: i32) -> Dimension {
+        self.checked_powi(n).unwrap_or(Dimension::TOO_LARGE)
+    }
+
+    /// The `n`-th root; `None` if `n` is 0 or an exponent leaves the exact range.
     pub fn root(self, n: i32) -> Option<Dimension> {
         self.pow_ratio(1, n)
     }
 
-    /// Raised to the rational power `num/den` (e.g. 1/2 for a square root), if the exponents
-    /// stay multiples of 1/6.
+    /// Raised to the rational power `num/den` (e.g. 1/2 for a square root); `None` if `den`
+    /// is 0 or an exponent leaves the exact range.
     pub fn pow_ratio(self, num: i32, den: i32) -> Option<Dimension> {
-        assert!(den > 0, "denominator must be positive");
-        let mut out = self.0;
-        for e in &mut out {
-            let v = i32::from(*e) * num;
-            if v % den != 0 || (v / den).abs() > 30_000 {
-                return None;
-            }
-            *e = (v / den) as i16;
-        }
-        Some(Dimension(out))
+        self.pow_rational(Ratio::new(i64::from(num), i64::from(den))?)
+            .ok()
     }
 
     /// A name for the kind of quantity, where it has a common one.
@@ -134,6 +249,9 @@ impl Dimension {
 
     /// The dimension in base units with its name, e.g. "kg*m/s^2 (force, N)".
     pub fn describe(self) -> String {
+        if self.too_large {
+            return self.to_string();
+        }
         match (self.quantity_name(), self.derived_symbol()) {
             (Some(q), Some(s)) => format!("{self} ({q}, {s})"),
             (Some(q), None) => format!("{self} ({q})"),
@@ -190,27 +308,31 @@ const NAMED: &[(Dimension, &str, Option<&str>)] = &[
 
 impl Mul for Dimension {
     type Output = Dimension;
+    /// The product; [`Dimension::TOO_LARGE`] if an exponent leaves the exact range (use
+    /// [`Dimension::checked_mul`] on dimensions that come from input).
     fn mul(self, rhs: Dimension) -> Dimension {
-        let mut out = self.0;
-        for (e, r) in out.iter_mut().zip(rhs.0) {
-            *e = e.saturating_add(r).clamp(-30_000, 30_000);
-        }
-        Dimension(out)
+        self.checked_mul(rhs).unwrap_or(Dimension::TOO_LARGE)
     }
 }
 
 impl Div for Dimension {
     type Output = Dimension;
+    /// The quotient; [`Dimension::TOO_LARGE`] if an exponent leaves the exact range (use
+    /// [`Dimension::checked_div`] on dimensions that come from input).
     fn div(self, rhs: Dimension) -> Dimension {
-        self * rhs.powi(-1)
+        self.checked_div(rhs).unwrap_or(Dimension::TOO_LARGE)
     }
 }
 
 impl fmt::Display for Dimension {
-    /// Base units, numerator then denominator: `kg*m/s^2`, `1/s`, `1` for none.
+    /// Base units, numerator then denominator: `kg*m/s^2`, `1/s`, `1` for none; fractional
+    /// powers in parentheses, `kg/(m^(1/2)*s^2)`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         // kg reads better first (kg*m/s^2, kg*m^2/s^2).
         const ORDER: [usize; 7] = [1, 0, 2, 3, 4, 5, 6];
+        if self.too_large {
+            return write!(f, "(exponent too large)");
+        }
         let part = |positive: bool| -> Vec<String> {
             ORDER
                 .iter()
@@ -239,13 +361,6 @@ impl fmt::Display for Dimension {
     }
 }
 
-fn gcd(mut a: u32, mut b: u32) -> u32 {
-    while b != 0 {
-        (a, b) = (b, a % b);
-    }
-    a
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -271,10 +386,62 @@ mod tests {
             Some(Dimension::VELOCITY)
         );
         assert_eq!(Dimension::LENGTH.root(2).unwrap().to_string(), "m^(1/2)");
-        assert_eq!(Dimension::LENGTH.root(4), None);
+        assert_eq!(Dimension::LENGTH.root(4).unwrap().to_string(), "m^(1/4)");
         assert_eq!(
             Dimension::TIME.pow_ratio(-3, 2).unwrap().to_string(),
             "1/s^(3/2)"
         );
+        assert_eq!(Dimension::TIME.pow_ratio(1, 0), None);
+        // a Hertz contact stiffness times a length to the 3/2 is a force
+        let hertz = Dimension::FORCE / Dimension::LENGTH.pow_ratio(3, 2).unwrap();
+        assert_eq!(hertz.to_string(), "kg/(m^(1/2)*s^2)");
+        assert_eq!(
+            hertz * Dimension::LENGTH.pow_ratio(3, 2).unwrap(),
+            Dimension::FORCE
+        );
+        assert_eq!(
+            Dimension::LENGTH.pow_ratio(1, 3).unwrap() * Dimension::LENGTH.pow_ratio(1, 6).unwrap(),
+            Dimension::LENGTH.root(2).unwrap()
+        );
+    }
+
+    #[test]
+    fn large_exponents_are_exact_or_refused() {
+        let mut d = Dimension::LENGTH;
+        for _ in 0..4 {
+            d = d.checked_powi(12).unwrap();
+        }
+        assert_eq!(d.to_string(), "m^20736");
+        assert_ne!(d, Dimension::LENGTH.powi(5000));
+        // an energy never passes for a force, however large the powers
+        let big = Dimension::LENGTH.powi(1 << 30);
+        assert_ne!(big * Dimension::ENERGY, big * Dimension::FORCE);
+        assert_eq!(big.checked_mul(big), Err(DimensionError::ExponentTooLarge));
+        assert_eq!(
+            Dimension::LENGTH
+                .checked_powi(i32::MIN)
+                .unwrap()
+                .checked_div(Dimension::LENGTH),
+            Err(DimensionError::ExponentTooLarge)
+        );
+        assert!(
+            DimensionError::ExponentTooLarge
+                .to_string()
+                .starts_with("exponent too large")
+        );
+        // the unchecked operators give TOO_LARGE, which equals no real dimension
+        let over = big * big;
+        assert!(over.is_too_large());
+        assert_ne!(over, Dimension::NONE);
+        assert_eq!(over.to_string(), "(exponent too large)");
+        assert_eq!(over.exponent_ratio(0), None);
+        assert!((over * Dimension::LENGTH).is_too_large());
+        assert!(over.checked_mul(Dimension::NONE).is_err());
+        // denominators overflow too: 2^31 square roots
+        let mut r = Some(Dimension::LENGTH);
+        for _ in 0..31 {
+            r = r.and_then(|d| d.root(2));
+        }
+        assert_eq!(r, None);
     }
 }

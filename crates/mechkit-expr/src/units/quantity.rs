@@ -52,6 +52,20 @@ impl Quantity {
         Ok(Quantity::new(number * unit.factor, unit.dim))
     }
 
+    /// Where the unit of `"<number> <unit>"` starts: the byte index after the leading number
+    /// and the spaces that follow it; `None` if the text does not start with a number.
+    ///
+    /// ```
+    /// use mechkit_expr::units::Quantity;
+    /// assert_eq!(Quantity::unit_start("2.5e3 m/s"), Some(6));
+    /// assert_eq!(Quantity::unit_start(" 3"), Some(2));
+    /// assert_eq!(Quantity::unit_start("m"), None);
+    /// ```
+    pub fn unit_start(text: &str) -> Option<usize> {
+        let (_, end) = leading_number(text)?;
+        Some(end + (text[end..].len() - text[end..].trim_start().len()))
+    }
+
     /// This quantity expressed in `unit` (e.g. metres per second in km/h); `None` if the
     /// dimensions differ.
     pub fn value_in(&self, unit: &Unit) -> Option<f64> {
@@ -80,7 +94,16 @@ pub struct Unit {
 
 impl Unit {
     /// Parses a unit expression: names joined by `*`, `·`, spaces or `/`, powers `^n` (also
-    /// `^-1`, `^(-1)`, `²`, `³`), parentheses, and `1` as in `1/s`.
+    /// `^-1`, `^(-1)`, `²`, `³`) and rational powers (`^1.5`, `^(3/2)`, `^(-1/2)`),
+    /// parentheses, and `1` as in `1/s`.
+    ///
+    /// ```
+    /// use mechkit_expr::units::{Dimension, Unit};
+    /// let hertz = Unit::parse("N/m^1.5").unwrap();
+    /// assert_eq!(hertz, Unit::parse("N/m^(3/2)").unwrap());
+    /// assert_eq!(hertz.dim.to_string(), "kg/(m^(1/2)*s^2)");
+    /// assert_eq!(hertz.dim * Dimension::LENGTH.pow_ratio(3, 2).unwrap(), Dimension::FORCE);
+    /// ```
     pub fn parse(text: &str) -> Result<Unit, UnitError> {
         parse_unit_at(text, 0)
     }
@@ -101,6 +124,17 @@ pub enum UnitErrorKind {
     },
     /// Malformed unit expression; says what was expected.
     Syntax(String),
+    /// A power that is not a short decimal or fraction, or out of range (`m^0.333333`,
+    /// `m^99`, `m^3/2` for `m^(3/2)`).
+    Power {
+        /// What is wrong with it.
+        message: String,
+        /// What would fix it.
+        hint: String,
+    },
+    /// A unit whose exponents or size leave the exact or floating-point range
+    /// (`(((km^12)^12)^12)^12`); says which.
+    TooLarge(String),
 }
 
 /// An error reading a quantity or unit, pointing into the text.
@@ -121,6 +155,9 @@ impl UnitError {
             UnitErrorKind::NoNumber => format!("`{}` does not start with a number", self.source),
             UnitErrorKind::UnknownUnit { name, .. } => format!("unknown unit `{name}`"),
             UnitErrorKind::Syntax(expected) => format!("expected {expected} in the unit"),
+            UnitErrorKind::Power { message, .. } | UnitErrorKind::TooLarge(message) => {
+                message.clone()
+            }
         }
     }
 
@@ -130,7 +167,9 @@ impl UnitError {
             UnitErrorKind::UnknownUnit { suggestions, .. } => did_you_mean(suggestions)
                 .or_else(|| Some("units: m, kg, g, s, N, J, W, km/h, rpm, deg, eV, u, Å, AU, … (see docs/scenario.md)".into())),
             UnitErrorKind::NoNumber => Some("write a number followed by its unit, e.g. \"9.8 m/s^2\"".into()),
-            UnitErrorKind::Syntax(_) => Some("units combine with `*`, `/` and `^`, e.g. \"kg*m/s^2\" or \"30 1/m\"".into()),
+            UnitErrorKind::Syntax(_) => Some("units combine with `*`, `/` and `^`, e.g. \"kg*m/s^2\", \"30 1/m\" or \"1e5 N/m^(3/2)\"".into()),
+            UnitErrorKind::Power { hint, .. } => Some(hint.clone()),
+            UnitErrorKind::TooLarge(_) => Some("write the unit with smaller powers".into()),
         }
     }
 
@@ -264,6 +303,85 @@ mod tests {
         assert!(Quantity::parse("3 m^99").is_err());
         assert!(Quantity::parse("3 (m").is_err());
         assert!(Quantity::parse("3 m $").is_err());
+    }
+
+    #[test]
+    fn rational_powers() {
+        let hertz = q("1e5 N/m^1.5");
+        assert_eq!(hertz, q("1e5 N/m^(3/2)"));
+        assert_eq!(hertz.dim.to_string(), "kg/(m^(1/2)*s^2)");
+        let m32 = Dimension::LENGTH.pow_ratio(3, 2).unwrap();
+        assert_eq!(hertz.dim * m32, Dimension::FORCE);
+        assert_eq!(q("1 m^(3/2)").dim, m32);
+        assert_eq!(q("1 m^-1.5"), q("1 m^(-3/2)"));
+        assert_eq!(q("1 m^-1.5").dim, m32.powi(-1));
+        assert_eq!(q("1 m**1.5").dim, m32);
+        assert_eq!(q("1 m^( 3 / 2 )").dim, m32);
+        assert_eq!(q("1 s^0.5").dim.to_string(), "s^(1/2)");
+        assert_eq!(q("1 kg^(1/2)").dim.to_string(), "kg^(1/2)");
+        assert_eq!(q("1 m^0.25").dim.to_string(), "m^(1/4)");
+        assert_eq!(q("1 m^(6/4)").dim, m32);
+        // exact: two halves make a whole, no rounding
+        assert_eq!(q("1 m^0.5*m^0.5").dim, Dimension::LENGTH);
+        assert_eq!(q("1 m^(1/3)*m^(1/3)*m^(1/3)").dim, Dimension::LENGTH);
+        // sizes follow: 1 km^1.5 is 1000^1.5 m^1.5
+        assert_relative_eq!(q("1 km^1.5").value, 1000f64.powf(1.5));
+        assert_relative_eq!(q("2 N/cm^(3/2)").value, 2.0 / 0.01f64.powf(1.5));
+    }
+
+    #[test]
+    fn nested_powers_are_exact() {
+        let d = q("1 (((m^12)^12)^12)^12").dim;
+        assert_eq!(d.to_string(), "m^20736");
+        assert_eq!(d, Dimension::LENGTH.checked_powi(20_736).unwrap());
+        // an energy never passes as a force
+        assert_ne!(
+            q("1 J*(((m^12)^12)^12)^12").dim,
+            q("1 N*(((m^12)^12)^12)^12").dim
+        );
+        // sizes that leave floating point are refused, not infinite
+        let e = Quantity::parse("1 (((km^12)^12)^12)^12").unwrap_err();
+        assert!(matches!(e.kind, UnitErrorKind::TooLarge(_)), "{e}");
+        assert!(
+            e.message().contains("too large to hold in floating point"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn bad_powers_say_why() {
+        let e = Quantity::parse("3 m^0.333333").unwrap_err();
+        assert!(matches!(e.kind, UnitErrorKind::Power { .. }), "{e}");
+        assert!(e.message().contains("q at most 1000"), "{e}");
+        assert!(e.hint().unwrap().contains("m^(1/3)"), "{e}");
+        assert_eq!(e.span, Span::new(4, 12));
+
+        let e = Quantity::parse("1e5 N/m^3/2").unwrap_err();
+        assert!(e.message().contains("needs parentheses"), "{e}");
+        assert_eq!(e.hint().unwrap(), "write `^(3/2)`");
+        assert_eq!(e.span, Span::new(8, 11));
+
+        let e = Quantity::parse("3 m^99").unwrap_err();
+        assert!(e.message().contains("out of range"), "{e}");
+        let e = Quantity::parse("3 m^(25/2)").unwrap_err();
+        assert!(e.message().contains("out of range"), "{e}");
+        for (bad, says) in [
+            ("3 m^x", "expected a number after `^`, found `x`"),
+            ("3 m^", "found the end"),
+            ("3 m^(1/0)", "not a fraction of whole numbers"),
+            ("3 m^(1.5/2)", "not a fraction of whole numbers"),
+            ("3 m^(3/-2)", "not a fraction of whole numbers"),
+            ("3 m^1.2.3", "not a short decimal"),
+            ("3 m^1.", "not a short decimal"),
+            ("3 m^(1/2000)", "q at most 1000"),
+        ] {
+            let e = Quantity::parse(bad).unwrap_err();
+            assert!(e.message().contains(says), "{bad}: {e}");
+        }
+        assert!(matches!(
+            Quantity::parse("3 m^(3/2").unwrap_err().kind,
+            UnitErrorKind::Syntax(_)
+        ));
     }
 
     #[test]

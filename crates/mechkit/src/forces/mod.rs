@@ -11,6 +11,7 @@
 //! | [`LinearDrag`] | `-b (v - w)` | — |
 //! | [`QuadraticDrag`] | `-D |v - w| (v - w)` | — |
 //! | [`ExpressionForce`] | a formula per component | — |
+//! | [`PairForce`] | `-dU/dr` along the line of centres, for each pair (derived symbolically) | `U(r)` per pair |
 //! | [`ContactForce`] | `F_e(δ) n̂` while overlapping by `δ > 0`: `k δ` or `k δ^(3/2)` (sphere pairs, walls) | `k δ²/2` or `(2/5) k δ^(5/2)` |
 //! | [`ContactDamper`] | its damping: `c δ̇` or `α F_e δ̇` along `n̂`, total clamped at `≥ 0` | — |
 //!
@@ -26,6 +27,7 @@ mod emit;
 mod expression;
 mod force;
 mod gravity;
+mod pair;
 mod set;
 mod spring;
 mod wind;
@@ -45,6 +47,7 @@ pub use emit::ForceEmitter;
 pub use expression::ExpressionForce;
 pub use force::{Force, Target};
 pub use gravity::{Attractor, NewtonianGravity, UniformGravity};
+pub use pair::{PairError, PairForce, RadialPotential};
 pub use set::ForceSet;
 pub use spring::{Spring, SpringEnds};
 pub use wind::Wind;

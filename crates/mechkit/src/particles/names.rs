@@ -1,6 +1,7 @@
 //! Name resolution: what `x`, `feather.v`, `K` or `work.air` mean where a formula is used, and
 //! compiling formulas against those meanings.
 
+use mechkit_expr::units::UnitSystem;
 use mechkit_expr::{Binding, Dim, ExprError, Formula, Scope};
 
 use super::state_expr::StateExpr;
@@ -26,6 +27,8 @@ pub struct NameContext<'a> {
     pub level: VarLevel,
     /// What the bodies' coordinates are (positions, or angles about fixed axes).
     pub coordinates: Coordinates,
+    /// The units of the scenario: in reduced units state names have no dimension to check.
+    pub units: UnitSystem,
 }
 
 impl NameContext<'_> {
@@ -182,7 +185,7 @@ impl NameContext<'_> {
             return *d;
         }
         self.resolve(name)
-            .map_or(Dim::Unknown, |v| Dim::Known(self.coordinates.dimension(v)))
+            .map_or(Dim::Unknown, |v| self.coordinates.dim_in(v, self.units))
     }
 
     /// Compiles `formula`: constants are folded, state names become slots.
@@ -257,6 +260,7 @@ mod tests {
             bare: Some(BodyRef::Local),
             level,
             coordinates: Coordinates::Cartesian,
+            units: UnitSystem::Si,
         }
     }
 
@@ -313,5 +317,10 @@ mod tests {
         assert!(err.to_string().contains("forces cannot use"), "{err}");
         let err = c.compile(&Formula::parse("x + t").unwrap()).unwrap_err();
         assert!(err.to_string().contains("cannot add"), "{err}");
+        let reduced = NameContext {
+            units: UnitSystem::Reduced,
+            ..c
+        };
+        assert!(reduced.compile(&Formula::parse("x + t").unwrap()).is_ok());
     }
 }

@@ -18,7 +18,8 @@
 //! Body quantities are written `name.x`; a bare `x` means the body a force acts on, or the only
 //! body of a one-body scenario. ¹ Not available inside forces (they would depend on forces).
 
-use mechkit_expr::units::Dimension;
+use mechkit_expr::Dim;
+use mechkit_expr::units::{Dimension, UnitSystem};
 
 use super::kinematics::{Kinematics, dot, norm};
 use super::sample::Sample;
@@ -131,6 +132,28 @@ impl Coordinates {
         }
     }
 }
+
+impl Coordinates {
+    /// The dimension a formula sees for a state quantity: its dimension in SI units; in
+    /// reduced units none that could conflict (a pure number of unstated scale, so
+    /// `(b.x - a.x)^-12 - (b.x - a.x)^-6` is a valid formula).
+    pub fn dim_in(self, var: StateVar, units: UnitSystem) -> Dim {
+        match units {
+            UnitSystem::Si => Dim::Known(self.dimension(var)),
+            UnitSystem::Reduced => Dim::Unknown,
+        }
+    }
+
+    /// The unit to label a state quantity with: [`Coordinates::unit`] in SI, `1` in reduced
+    /// units.
+    pub fn unit_in(self, var: StateVar, units: UnitSystem) -> &'static str {
+        match units {
+            UnitSystem::Si => self.unit(var),
+            UnitSystem::Reduced => UnitSystem::REDUCED_UNIT,
+        }
+    }
+}
+
 pub(crate) const VAXES: [&str; 3] = ["vx", "vy", "vz"];
 pub(crate) const AAXES: [&str; 3] = ["ax", "ay", "az"];
 

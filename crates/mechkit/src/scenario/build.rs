@@ -40,6 +40,7 @@ const TOP_KEYS: &[&str] = &[
     "plane",
     "rigid_body",
     "torque",
+    "units",
 ];
 const BODY_KEYS: &[&str] = &["name", "mass", "position", "velocity", "radius"];
 
@@ -58,7 +59,11 @@ pub(crate) fn build_with(
     text: &str,
     overrides: &[ConstantOverride],
 ) -> Result<Scenario, ScenarioError> {
-    let src = Source { name, text };
+    let mut src = Source {
+        name,
+        text,
+        units: mechkit_expr::units::UnitSystem::Si,
+    };
     let doc = DeTable::parse(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
         let message = e.message().trim();
@@ -74,6 +79,7 @@ pub(crate) fn build_with(
         src.error(ErrorKind::Syntax, format!("invalid TOML: {message}"), span)
             .with_hint(hint)
     })?;
+    src.units = super::values::read_units(&Table::new(src, doc.get_ref(), 0..0, "the scenario"))?;
     let root = Table::new(src, doc.get_ref(), 0..0, "the scenario");
     root.check_keys(TOP_KEYS)?;
     let mut warnings = Vec::new();
@@ -262,6 +268,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
         level: VarLevel::Derived,
         coordinates: system.coordinates(),
+        units: root.src.units,
     };
     let (stop, t_max, max_steps) = read_stop(root, env, &names)?;
     let mut events = read_events(root, &names)?;
@@ -297,6 +304,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         plots,
         energy_bars,
         warnings,
+        units: root.src.units,
         source_hash: super::provenance::fnv1a(root.src.text.as_bytes()),
     })
 }

@@ -32,6 +32,9 @@ pub struct CheckReport {
     pub plots: Vec<String>,
     /// Warnings about the setup.
     pub warnings: Vec<String>,
+    /// `"reduced"` for a scenario in reduced units (its numbers are not SI); absent in SI.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units: Option<&'static str>,
 }
 
 /// A constant.
@@ -65,6 +68,7 @@ impl Scenario {
     /// What the scenario sets up (`mechkit check`).
     pub fn check_report(&self) -> CheckReport {
         let sys = &self.system;
+        let reduced = self.units == mechkit_expr::units::UnitSystem::Reduced;
         CheckReport {
             title: self.title.clone(),
             dimensions: self.dim,
@@ -85,7 +89,12 @@ impl Scenario {
                 })
                 .collect(),
             forces: sys.forces().iter().map(|f| f.name().to_string()).collect(),
-            method: self.stepping.describe(),
+            method: match &self.stepping {
+                crate::simulate::Stepping::Fixed { method, dt } if reduced => {
+                    format!("{method} with dt = {dt}")
+                }
+                other => other.describe(),
+            },
             events: self
                 .events
                 .iter()
@@ -103,6 +112,7 @@ impl Scenario {
                 .collect(),
             plots: self.plots.iter().map(|p| p.spec.clone()).collect(),
             warnings: self.warnings.clone(),
+            units: reduced.then_some(self.units.name()),
         }
     }
 }
@@ -122,8 +132,17 @@ impl CheckReport {
             plural(self.bodies.len(), "body", "bodies"),
             plural(self.forces.len(), "force", "forces")
         );
+        // SI units after numbers, none in reduced units
+        let (kg, s) = if self.units.is_some() {
+            ("", "")
+        } else {
+            (" kg", " s")
+        };
+        if let Some(u) = self.units {
+            let _ = writeln!(text, "  in {u} units");
+        }
         for b in &self.bodies {
-            let _ = writeln!(text, "  body {}: {} kg", b.name, b.mass);
+            let _ = writeln!(text, "  body {}: {}{kg}", b.name, b.mass);
         }
         for f in &self.forces {
             let _ = writeln!(text, "  force {f}");
@@ -141,9 +160,9 @@ impl CheckReport {
             );
         }
         let _ = match (&self.stop_when, self.t_max) {
-            (Some(c), Some(t)) => writeln!(text, "  stops when `{c}` or at t = {t} s"),
+            (Some(c), Some(t)) => writeln!(text, "  stops when `{c}` or at t = {t}{s}"),
             (Some(c), None) => writeln!(text, "  stops when `{c}`"),
-            (None, Some(t)) => writeln!(text, "  stops at t = {t} s"),
+            (None, Some(t)) => writeln!(text, "  stops at t = {t}{s}"),
             (None, None) => Ok(()),
         };
         for (name, source) in &self.observables {

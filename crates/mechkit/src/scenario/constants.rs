@@ -68,6 +68,19 @@ pub(crate) fn constants_with(
         };
         let (mut v, mut d) = resolve_any(&t.src, name, value, env)?;
         if let Some(o) = overrides.iter().find(|o| o.name == name) {
+            if let Some(given) = o.dim
+                && t.src.units == mechkit_expr::units::UnitSystem::Reduced
+            {
+                return Err(ScenarioError::new(
+                    ErrorKind::Unit,
+                    format!(
+                        "the value given for `{name}` in --set has units ({}), but the scenario \
+                         is in reduced units (`units = \"reduced\"`)",
+                        given.describe()
+                    ),
+                )
+                .with_hint(format!("give `{name}` as a pure number, e.g. `{name}=1.5`")));
+            }
             (v, d) = o.apply(d)?;
         }
         out.push((name.to_string(), v, d));

@@ -9,11 +9,12 @@ use toml::de::{DeTable, DeValue};
 
 use super::error::{ErrorKind, Location, ScenarioError};
 
-/// The scenario text and its name, for locating errors.
+/// The scenario text and its name, for locating errors, and its `units`.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Source<'a> {
     pub name: &'a str,
     pub text: &'a str,
+    pub units: mechkit_expr::units::UnitSystem,
 }
 
 impl Source<'_> {

@@ -61,10 +61,15 @@ impl Summary {
             ENERGY_BARS,
             ENERGY_BARS,
             format!(
-                "work-energy residual Σ W + events − ΔK = {:.3e} J",
-                self.work_energy_residual
+                "work-energy residual Σ W + events − ΔK = {:.3e}{}",
+                self.work_energy_residual,
+                if self.is_reduced() { "" } else { " J" }
             ),
-            "energy [J]",
+            if self.is_reduced() {
+                "energy [1]"
+            } else {
+                "energy [J]"
+            },
         );
         plot.bars = bars;
         plot

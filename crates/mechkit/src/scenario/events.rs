@@ -1,5 +1,6 @@
-//! `[[event]]`: things that happen during a run, located between steps; recorded, or ending
-//! the run, or changing the state (a bounce).
+//! `[[event]]`: things that happen during a run, located between steps (or, with
+//! `check = "step-end"`, tested only at step ends); recorded, or ending the run, or changing
+//! the state (a bounce).
 
 use mechkit_expr::Formula;
 use mechkit_expr::units::Dimension;
@@ -7,7 +8,7 @@ use toml::de::DeValue;
 
 use super::doc::Table;
 use super::error::{ErrorKind, ScenarioError};
-use super::stop::condition;
+use super::stop::{condition, read_check};
 use super::values::formula_error;
 use crate::Real;
 use crate::particles::{BodyRef, NameContext, StateExpr, StateVar, VarLevel};
@@ -22,6 +23,7 @@ const KEYS: &[&str] = &[
     "count",
     "max_count",
     "set",
+    "check",
 ];
 
 pub(crate) fn read_events(
@@ -130,7 +132,11 @@ pub(crate) fn read_events(
                     .with_hint("`record` (the default: note it and go on) or `stop` (end the run there); to change the state, add `set = { vy = \"-e*vy\" }`"));
             }
         };
-        let mut event = event;
+        let mut event = if read_check(t)? {
+            event.at_step_ends()
+        } else {
+            event
+        };
         match t.count("count")? {
             Some((0, span)) => {
                 return Err(t
@@ -243,7 +249,8 @@ fn with_set(
         let expr = names
             .compile(&f)
             .map_err(|e| formula_error(&t.src, &span, &e))?;
-        f.expect_dimension(
+        f.expect_dimension_in(
+            names.units,
             want,
             &format!("the new value of `{target}`"),
             &|n| names.dim_of(n),

@@ -1,5 +1,7 @@
 //! `[[force]]` tables: one builder per kind.
 
+mod pair;
+
 use std::ops::Range;
 
 use mechkit_expr::Formula;
@@ -46,6 +48,11 @@ pub(crate) const KINDS: &[(&str, &[&str], &str)] = &[
         &["F"],
         "a formula of t, x, v, m, … per component",
     ),
+    (
+        "pair",
+        &["between", "U", "cutoff"],
+        "-dU/dr along the line of centres, from a potential U(r) of the separation, between every pair of the bodies in `between`",
+    ),
 ];
 
 const ALIASES: &[(&str, &str)] = &[
@@ -55,6 +62,8 @@ const ALIASES: &[(&str, &str)] = &[
     ("drag", "quadratic-drag"),
     ("viscous-drag", "linear-drag"),
     ("formula", "expression"),
+    ("potential", "pair"),
+    ("pair-potential", "pair"),
 ];
 
 /// What a force table needs from the rest of the scenario.
@@ -227,6 +236,7 @@ pub(crate) fn build_force(
             }
         }
         "expression" => expression(t, ctx, name, targets)?,
+        "pair" => pair::pair(t, ctx, name, on.is_some())?,
         _ => unreachable!("kind {kind} is listed in KINDS"),
     })
 }
@@ -290,6 +300,7 @@ fn compile_components(
         bare: Some(BodyRef::Local),
         level: VarLevel::Kinematic,
         coordinates: crate::particles::Coordinates::Cartesian,
+        units: t.src.units,
     };
     let mut out = Vec::new();
     for (text, span) in items {
@@ -297,8 +308,10 @@ fn compile_components(
         let expr = names
             .compile(&f)
             .map_err(|e| formula_error(&t.src, &span, &e))?;
-        f.expect_dimension(want, what, &|n| names.dim_of(n), &|n| names.constant(n))
-            .map_err(|e| formula_error(&t.src, &span, &e))?;
+        f.expect_dimension_in(names.units, want, what, &|n| names.dim_of(n), &|n| {
+            names.constant(n)
+        })
+        .map_err(|e| formula_error(&t.src, &span, &e))?;
         out.push(expr);
     }
     Ok(Some(out))

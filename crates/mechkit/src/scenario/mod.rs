@@ -74,8 +74,8 @@ pub use error::{ErrorKind, Location, ScenarioError};
 pub use limits::{DEFAULT_MAX_OUTPUT, MAX_SCENARIO_BYTES, format_size, parse_size};
 pub use observe::Observable;
 pub use output::{
-    FLUSH_INTERVAL, StreamFile, csv_columns, csv_header, output_limit_message, push_number,
-    write_atomic,
+    FLUSH_INTERVAL, StreamFile, csv_columns, csv_columns_in, csv_header, output_limit_message,
+    push_number, write_atomic,
 };
 pub use plot::{OutputTimes, PlotSpec, SeriesSpec};
 pub use provenance::Provenance;
@@ -140,6 +140,8 @@ pub struct Scenario {
     pub energy_bars: bool,
     /// Warnings about the setup.
     pub warnings: Vec<String>,
+    /// `units`: SI, or reduced units (every value a pure number; outputs labelled `1`).
+    pub units: mechkit_expr::units::UnitSystem,
     /// FNV-1a of the scenario text (the summary's provenance).
     pub source_hash: u64,
 }

@@ -182,6 +182,22 @@ pub fn csv_columns(sys: &ParticleSystem, has_potential: bool) -> Vec<Column> {
     cols
 }
 
+/// [`csv_columns`] labelled in the scenario's units: as they are in SI, every unit `1` in
+/// reduced units (`units = "reduced"`).
+pub fn csv_columns_in(
+    sys: &ParticleSystem,
+    has_potential: bool,
+    units: mechkit_expr::units::UnitSystem,
+) -> Vec<Column> {
+    let mut cols = csv_columns(sys, has_potential);
+    for c in &mut cols {
+        if let Some(u) = &mut c.unit {
+            *u = units.label(u).to_string();
+        }
+    }
+    cols
+}
+
 /// The trajectory's column names ([`csv_columns`] without the units).
 pub fn csv_header(sys: &ParticleSystem, has_potential: bool) -> Vec<String> {
     csv_columns(sys, has_potential)

@@ -262,7 +262,7 @@ impl PlotSpec {
             })
         };
         let x = resolve(x_name)?;
-        let x_label = format!("{x_name} [{}]", local.coordinates.unit(x));
+        let x_label = format!("{x_name} [{}]", local.coordinates.unit_in(x, local.units));
         let n_bodies = names.bodies.len();
         // `label` names the quantity when it is not the plot's own (energy plots); a series per
         // body is then labelled with both.
@@ -304,7 +304,7 @@ impl PlotSpec {
             return Ok(PlotSpec {
                 spec: spec.to_string(),
                 x_label,
-                y_label: "energy [J]".into(),
+                y_label: format!("energy [{}]", local.units.label("J")),
                 series,
                 x_name: x_name.to_string(),
                 analytic: None,
@@ -314,7 +314,7 @@ impl PlotSpec {
         Ok(PlotSpec {
             spec: spec.to_string(),
             x_label,
-            y_label: format!("{y_name} [{}]", local.coordinates.unit(y)),
+            y_label: format!("{y_name} [{}]", local.coordinates.unit_in(y, local.units)),
             series: expand(y, None),
             x_name: x_name.to_string(),
             analytic: None,

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use super::error::{ErrorKind, ScenarioError};
 use super::observe::ObservableSet;
-use super::output::{CsvWriter, Keep, csv_columns, csv_header, write_atomic};
+use super::output::{CsvWriter, Keep, csv_columns_in, csv_header, write_atomic};
 use super::plot::PlotRecorder;
 use super::provenance::Provenance;
 use super::summary::Summary;
@@ -117,7 +117,8 @@ impl Scenario {
             observables.values(),
             warnings,
             Provenance::of(&report, self.source_hash),
-        );
+        )
+        .in_units(self.units);
         let mut plots = plots.into_data();
         if self.energy_bars {
             plots.push(summary.energy_bars());
@@ -152,7 +153,8 @@ impl Scenario {
         )
         .map_err(|e| io_error("write", &csv_path, &e))?;
         let units_path = dir.join(crate::csv::units_file_name("trajectory"));
-        let units = crate::csv::units_json(&csv_columns(&self.system, has_potential));
+        let units =
+            crate::csv::units_json(&csv_columns_in(&self.system, has_potential, self.units));
         write_atomic(&units_path, units.as_bytes())
             .map_err(|e| io_error("write", &units_path, &e))?;
         let result = self.run_with(Some(&mut csv));

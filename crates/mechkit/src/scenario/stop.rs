@@ -11,7 +11,7 @@ use crate::Real;
 use crate::particles::{NameContext, StateExpr};
 use crate::simulate::Condition;
 
-const STOP_KEYS: &[&str] = &["when", "t_max", "max_steps"];
+const STOP_KEYS: &[&str] = &["when", "check", "t_max", "max_steps"];
 
 type Stop = (Option<Condition>, Option<Real>, Option<u64>);
 
@@ -43,11 +43,46 @@ pub(crate) fn read_stop(
         }
         other => other.map(|(n, _)| n),
     };
+    let step_end = read_check(&t)?;
     let condition = match t.string("when")? {
-        None => None,
-        Some((text, span)) => Some(condition(&t, text, &span, names, "a stop condition")?),
+        None => {
+            if t.get("check").is_some() {
+                return Err(t
+                    .src
+                    .error(
+                        ErrorKind::Invalid,
+                        "`check` says how the condition `when` is tested, and there is no `when`",
+                        t.key_span("check"),
+                    )
+                    .with_hint("add `when = \"x > 3\"`, or remove `check`"));
+            }
+            None
+        }
+        Some((text, span)) => {
+            let c = condition(&t, text, &span, names, "a stop condition")?;
+            Some(if step_end { c.at_step_ends() } else { c })
+        }
     };
     Ok((condition, t_max, max_steps))
+}
+
+/// `check`: `"located"` (the default: the crossing is found inside the step) or `"step-end"`
+/// (tested only at step ends, as a textbook loop does); returns whether it is `"step-end"`.
+pub(crate) fn read_check(t: &Table<'_, '_>) -> Result<bool, ScenarioError> {
+    match t.string("check")? {
+        None | Some(("located", _)) => Ok(false),
+        Some(("step-end", _)) => Ok(true),
+        Some((other, span)) => Err(t
+            .src
+            .error(
+                ErrorKind::Invalid,
+                format!("unknown check `{other}`"),
+                span,
+            )
+            .with_hint(
+                "`located` (the default: the crossing is found inside the step) or `step-end` (tested only where a step ends, like a textbook `while` loop; may overshoot by a step)",
+            )),
+    }
 }
 
 fn compile_state(

@@ -153,6 +153,11 @@ pub struct Summary {
     /// impulses angular impulses (N m s). Absent for particles.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub coordinates: Option<&'static str>,
+    /// `"reduced"` for a scenario in reduced units (`units = "reduced"`): every number is in
+    /// the scenario's own units, not SI, and every unit in `observable_units` and in the
+    /// trajectory's units file is `"1"`. Absent in SI units.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub units: Option<&'static str>,
     /// The scenario file.
     pub scenario: String,
     /// Integration method.
@@ -360,6 +365,7 @@ impl Summary {
             title: title.to_string(),
             coordinates: (sys.coordinates() == crate::particles::Coordinates::Angle)
                 .then_some("angle"),
+            units: None,
             scenario: scenario.to_string(),
             method: report.method.name().to_string(),
             dt: report.dt,
@@ -472,6 +478,26 @@ impl Summary {
             warnings,
             files: Files::default(),
         }
+    }
+
+    /// The summary labelled in `units`: in reduced units `units` is `"reduced"` and every
+    /// observable's unit `"1"`; in SI unchanged.
+    #[must_use]
+    pub fn in_units(mut self, units: mechkit_expr::units::UnitSystem) -> Self {
+        if units == mechkit_expr::units::UnitSystem::Reduced {
+            self.units = Some(units.name());
+            self.observable_units = self
+                .observables
+                .keys()
+                .map(|n| (n.clone(), units.label("").to_string()))
+                .collect();
+        }
+        self
+    }
+
+    /// Whether the numbers are in reduced units (printed without SI units).
+    pub fn is_reduced(&self) -> bool {
+        self.units == Some(mechkit_expr::units::UnitSystem::Reduced.name())
     }
 
     /// Pretty JSON, ending with a newline.

@@ -7,8 +7,13 @@ use crate::Real;
 
 impl Summary {
     /// A short report for people: final state, stop reason, energy ledger, observables
-    /// (warnings are left to the caller, for stderr).
+    /// (warnings are left to the caller, for stderr). Numbers carry SI units, none in reduced
+    /// units.
     pub fn to_text(&self) -> String {
+        let reduced = self.is_reduced();
+        // the SI unit after a number (" m/s"), or nothing in reduced units
+        let u = |si: &'static str| if reduced { "" } else { si };
+        let sec = u(" s");
         let mut s = String::new();
         let _ = writeln!(s, "{}", self.title);
         let c = &self.step_control;
@@ -20,7 +25,7 @@ impl Summary {
             };
             let _ = writeln!(
                 s,
-                "  {}, adaptive ({tol}): {} steps accepted, {} rejected, {} evaluations; step {} … {} s; t = {} → {} s, stopped by {}",
+                "  {}, adaptive ({tol}): {} steps accepted, {} rejected, {} evaluations; step {} … {}{sec}; t = {} → {}{sec}, stopped by {}",
                 self.method,
                 c.accepted,
                 c.rejected,
@@ -34,7 +39,7 @@ impl Summary {
         } else {
             let _ = writeln!(
                 s,
-                "  {} with dt = {} s: {} steps, t = {} → {} s, stopped by {}",
+                "  {} with dt = {}{sec}: {} steps, t = {} → {}{sec}, stopped by {}",
                 self.method,
                 num(self.dt),
                 self.steps,
@@ -51,7 +56,7 @@ impl Summary {
             };
             let detail = if e.terminal {
                 format!(
-                    " (last step before it: t = {} s), ended the run",
+                    " (last step before it: t = {}{sec}), ended the run",
                     num(e.last_step.t)
                 )
             } else {
@@ -59,7 +64,7 @@ impl Summary {
             };
             let _ = writeln!(
                 s,
-                "  event `{}`{occurrence} at t = {} s{detail}",
+                "  event `{}`{occurrence} at t = {}{sec}{detail}",
                 e.name,
                 num(e.t)
             );
@@ -82,7 +87,15 @@ impl Summary {
         let _ = writeln!(s, "final state");
         let angle = self.coordinates == Some("angle");
         for (name, b) in &self.bodies {
-            if angle {
+            if angle && reduced {
+                let _ = writeln!(
+                    s,
+                    "  {name}: theta {}, omega {} (I = {} about the axis)",
+                    vec_text(&b.position),
+                    vec_text(&b.velocity),
+                    num(b.mass)
+                );
+            } else if angle {
                 let _ = writeln!(
                     s,
                     "  {name}: theta {} rad, omega {} rad/s (I = {} kg m² about the axis)",
@@ -93,9 +106,11 @@ impl Summary {
             } else {
                 let _ = writeln!(
                     s,
-                    "  {name}: position {} m, velocity {} m/s",
+                    "  {name}: position {}{}, velocity {}{}",
                     vec_text(&b.position),
-                    vec_text(&b.velocity)
+                    u(" m"),
+                    vec_text(&b.velocity),
+                    u(" m/s")
                 );
             }
         }
@@ -103,18 +118,22 @@ impl Summary {
             let c = &self.centre_of_mass;
             let _ = writeln!(
                 s,
-                "centre of mass (M = {} kg)\n  position {} → {} m, velocity {} → {} m/s",
+                "centre of mass (M = {}{})\n  position {} → {}{}, velocity {} → {}{}",
                 num(c.total_mass),
+                u(" kg"),
                 vec_text(&c.start.position),
                 vec_text(&c.end.position),
+                u(" m"),
                 vec_text(&c.start.velocity),
-                vec_text(&c.end.velocity)
+                vec_text(&c.end.velocity),
+                u(" m/s")
             );
             let _ = writeln!(
                 s,
-                "  kinetic energy about it {} → {} J",
+                "  kinetic energy about it {} → {}{}",
                 num(c.internal_kinetic_start),
-                num(c.internal_kinetic_end)
+                num(c.internal_kinetic_end),
+                u(" J")
             );
         }
         let p = &self.momentum;
@@ -122,10 +141,11 @@ impl Summary {
             let _ = writeln!(
                 s,
                 "{}\n  total                  {} → {}\n  impulse of the forces  {}",
-                if angle {
-                    "angular momentum about the axes (kg m²/s)"
-                } else {
-                    "momentum (kg·m/s)"
+                match (angle, reduced) {
+                    (true, false) => "angular momentum about the axes (kg m²/s)",
+                    (true, true) => "angular momentum about the axes",
+                    (false, false) => "momentum (kg·m/s)",
+                    (false, true) => "momentum",
                 },
                 vec_text(&p.start),
                 vec_text(&p.end),
@@ -135,7 +155,7 @@ impl Summary {
                 let _ = writeln!(s, "  changed by events      {}", vec_text(&p.events_change));
             }
         }
-        let _ = writeln!(s, "energy ledger (J)");
+        let _ = writeln!(s, "energy ledger{}", if reduced { "" } else { " (J)" });
         for (name, w) in &self.work {
             let _ = writeln!(s, "  work of {name:<16} {}", num(*w));
         }
@@ -188,7 +208,10 @@ impl Summary {
         if !self.observables.is_empty() {
             let _ = writeln!(s, "observables");
             for (name, v) in &self.observables {
-                let unit = self.observable_units.get(name).filter(|u| !u.is_empty());
+                let unit = self
+                    .observable_units
+                    .get(name)
+                    .filter(|u| !u.is_empty() && !reduced);
                 match unit {
                     Some(u) => {
                         let _ = writeln!(s, "  {name} = {} {u}", num(*v));

@@ -1,10 +1,11 @@
 //! Values in scenario files: plain numbers (SI), quantities with units (`"9.8 m/s^2"`), or
 //! formulas of the constants (`"g"`, `"2*k"`, `"m*g*Dmg"` with `m` the body's mass), each
-//! checked against the dimension its key needs.
+//! checked against the dimension its key needs. In reduced units (`units = "reduced"`) every
+//! value is a pure number and a quantity with a unit is refused.
 
 use std::ops::Range;
 
-use mechkit_expr::units::{Dimension, Quantity, UnitErrorKind};
+use mechkit_expr::units::{Dimension, Quantity, UnitErrorKind, UnitSystem};
 use mechkit_expr::{Dim, ExprError, ExprErrorKind, Formula, nearest};
 use toml::de::DeValue;
 
@@ -45,6 +46,28 @@ impl ValueEnv<'_> {
     }
 }
 
+/// The top-level `units` key: `"SI"` (the default) or `"reduced"`.
+pub(crate) fn read_units(root: &Table<'_, '_>) -> Result<UnitSystem, ScenarioError> {
+    let Some(v) = root.get("units") else {
+        return Ok(UnitSystem::Si);
+    };
+    let DeValue::String(name) = v.get_ref() else {
+        return Err(root.wrong_type("units", v, "a string, \"SI\" or \"reduced\""));
+    };
+    UnitSystem::from_name(name).ok_or_else(|| {
+        root.src
+            .error(
+                ErrorKind::Invalid,
+                format!("unknown unit system `{name}`"),
+                v.span(),
+            )
+            .with_hint(
+                "write `units = \"SI\"` (values with units, converted to SI; the default) or \
+                 `units = \"reduced\"` (every value a pure number)",
+            )
+    })
+}
+
 /// Names a dimension for messages: "kg (mass)".
 pub(crate) fn dim_text(d: Dimension) -> String {
     d.describe()
@@ -77,6 +100,11 @@ pub(crate) fn resolve(
     want: Dimension,
     env: ValueEnv<'_>,
 ) -> Result<Real, ScenarioError> {
+    let want_example = if src.units == UnitSystem::Reduced {
+        "1.5"
+    } else {
+        example(want)
+    };
     let (value, dim) = resolve_any(src, key, v, env).map_err(|e| {
         if e.kind == ErrorKind::WrongType {
             let got = e
@@ -87,15 +115,15 @@ pub(crate) fn resolve(
             src.error(
                 ErrorKind::WrongType,
                 format!(
-                    "`{key}` must be a number or a string such as \"{}\", not {got}",
-                    example(want)
+                    "`{key}` must be a number or a string such as \"{want_example}\", not {got}"
                 ),
                 v.span(),
             )
-            .with_hint(format!(
-                "write `{key} = \"{}\"` (a plain number is in SI units)",
-                example(want)
-            ))
+            .with_hint(if src.units == UnitSystem::Reduced {
+                format!("write `{key} = {want_example}` (the scenario is in reduced units)")
+            } else {
+                format!("write `{key} = \"{want_example}\"` (a plain number is in SI units)")
+            })
         } else {
             e
         }
@@ -211,6 +239,7 @@ fn resolve_text(
     let located = |s: mechkit_expr::Span| (start + s.start)..(start + s.end.max(s.start + 1));
     match Quantity::parse(text) {
         Ok(q) if is_plain_number(text) => Ok((q.value, Dim::Unknown)),
+        Ok(_) if src.units == UnitSystem::Reduced => Err(reduced_with_unit(src, text, start)),
         Ok(q) => Ok((q.value, Dim::Known(q.dim))),
         Err(unit_error) => {
             if matches!(unit_error.kind, UnitErrorKind::NoNumber) || Formula::parse(text).is_ok() {
@@ -233,6 +262,24 @@ fn resolve_text(
             Err(e)
         }
     }
+}
+
+/// A quantity with a unit (`"2.5 m"`) in a scenario in reduced units, located at the unit.
+fn reduced_with_unit(src: &Source<'_>, text: &str, start: usize) -> ScenarioError {
+    let at = Quantity::unit_start(text).unwrap_or(0);
+    let (number, unit) = (text[..at].trim(), text[at..].trim_end());
+    src.error(
+        ErrorKind::Unit,
+        format!(
+            "the scenario is in reduced units (`units = \"reduced\"`), so values are pure numbers, \
+             but this one has the unit `{unit}`"
+        ),
+        (start + at)..(start + at + unit.len().max(1)),
+    )
+    .with_hint(format!(
+        "write the number alone (`{number}`) in the scenario's reduced units, or remove \
+         `units = \"reduced\"` to give values with SI units"
+    ))
 }
 
 fn resolve_formula(

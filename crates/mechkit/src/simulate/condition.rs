@@ -14,6 +14,9 @@ type EncloseFn = dyn Fn(&StateJets<'_>, &ParticleSystem) -> Option<Jet> + Send +
 /// A condition on the state: it holds where its event function `g` is positive (or
 /// non-negative, when inclusive). `g` should be continuous where possible (`x < 0` has
 /// `g = -x`), so the crossing can be located precisely.
+///
+/// A condition is located inside steps unless it is marked [`Condition::at_step_ends`]: it is
+/// then tested only where a step ends, as a textbook `while` loop tests it.
 #[derive(Clone)]
 pub struct Condition {
     description: String,
@@ -21,6 +24,7 @@ pub struct Condition {
     enclosure: Option<Arc<EncloseFn>>,
     inclusive: bool,
     needs_forces: bool,
+    step_end: bool,
 }
 
 impl fmt::Debug for Condition {
@@ -49,7 +53,24 @@ impl Condition {
             enclosure: None,
             inclusive,
             needs_forces,
+            step_end: false,
         }
+    }
+
+    /// The same condition tested only at the ends of steps, unlocated: an event on it fires at
+    /// the end of the first step where its function has crossed (a stop condition: the first
+    /// step end where it holds), as a textbook `while` loop checks its condition, and may
+    /// overshoot the crossing by up to a step. A step cut short by another event's state
+    /// change or stop is not a step end for it.
+    #[must_use]
+    pub fn at_step_ends(mut self) -> Self {
+        self.step_end = true;
+        self
+    }
+
+    /// Whether it is tested only at step ends ([`Condition::at_step_ends`]).
+    pub fn is_checked_at_step_ends(&self) -> bool {
+        self.step_end
     }
 
     /// The same condition with an enclosure of its event function: `enclose(j, sys)` bounds

@@ -200,6 +200,19 @@ impl Event {
         self.condition.needs_forces()
     }
 
+    /// Tests the event only at step ends, unlocated ([`Condition::at_step_ends`]): it fires at
+    /// the end of the first step over which its function crossed, not at the crossing.
+    #[must_use]
+    pub fn at_step_ends(mut self) -> Self {
+        self.condition = self.condition.at_step_ends();
+        self
+    }
+
+    /// Whether it is tested only at step ends.
+    pub fn is_checked_at_step_ends(&self) -> bool {
+        self.condition.is_checked_at_step_ends()
+    }
+
     /// Whether it is the stop condition of `[stop] when`.
     pub fn is_stop_condition(&self) -> bool {
         matches!(self.trigger, Trigger::Holds { .. })

@@ -90,6 +90,9 @@ pub static CASES: &[Case] = &[
     units!("unknown_unit", "3 mps"),
     units!("no_number", "abc"),
     units!("bad_power", "3 m^^2"),
+    units!("fractional_power_without_parentheses", "1e5 N/m^3/2"),
+    units!("inexact_power", "1 m^0.333333"),
+    units!("unit_too_large", "1 (((km^12)^12)^12)^12"),
     units!("trailing_operator", "3 m/"),
     units!("incompatible_conversion", "3 m/s", "--to", "s"),
 ];

@@ -55,6 +55,18 @@ pub static CASES: &[Case] = &[
     ),
     check!("output_every_zero", ball_and!("[output]\nevery = 0\n")),
     check!(
+        "unknown_event_check",
+        ball_and!("[[event]]\nname = \"e\"\nfunction = \"x\"\ncheck = \"end\"\n")
+    ),
+    check!(
+        "pair_potential_undefined_name",
+        "dimensions = 1\n[constants]\neps = \"1e-21 J\"\ns = \"0.34 nm\"\n[[body]]\nname = \"a\"\nmass = \"40 u\"\n[[body]]\nname = \"b\"\nmass = \"40 u\"\nposition = \"0.4 nm\"\n[[force]]\nkind = \"pair\"\nbetween = [\"a\", \"b\"]\nU = \"4*eps*(s/r)^12 - x\"\n[integrator]\ndt = \"1 fs\"\n[stop]\nt_max = \"1 ps\"\n"
+    ),
+    check!(
+        "pair_potential_not_an_energy",
+        "dimensions = 1\n[constants]\neps = \"1e-21 J\"\n[[body]]\nname = \"a\"\nmass = \"40 u\"\n[[body]]\nname = \"b\"\nmass = \"40 u\"\nposition = \"0.4 nm\"\n[[force]]\nkind = \"pair\"\nbetween = \"all\"\nU = \"eps/r\"\n[integrator]\ndt = \"1 fs\"\n[stop]\nt_max = \"1 ps\"\n"
+    ),
+    check!(
         "restitution_out_of_range",
         "dimensions = 2\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\nradius = \"1 cm\"\n[contact]\nrestitution = 1.5\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n"
     ),

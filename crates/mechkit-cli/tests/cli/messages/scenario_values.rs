@@ -67,6 +67,32 @@ pub static CASES: &[Case] = &[
     },
     Case {
         area: "scenario value",
+        kind: "unit_in_reduced_units",
+        files: &[(
+            "s.toml",
+            Text(concat!(
+                "units = \"reduced\"\n",
+                body_with!("mass = \"1 kg\"")
+            )),
+        )],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "scenario value",
+        kind: "unknown_unit_system",
+        files: &[(
+            "s.toml",
+            Text(concat!(
+                "units = \"metric\"\n",
+                body_with!("mass = \"1 kg\"")
+            )),
+        )],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "scenario value",
         kind: "no_number",
         files: &[("s.toml", Text(body_with!("mass = \"kg\"")))],
         args: &["check", "s.toml"],

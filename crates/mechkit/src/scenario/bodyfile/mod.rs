@@ -101,7 +101,11 @@ impl BodyFile {
     /// files.
     #[allow(clippy::should_implement_trait)]
     pub fn from_str(name: &str, text: &str, dir: Option<&Path>) -> Result<BodyFile, ScenarioError> {
-        let src = Source { name, text };
+        let src = Source {
+            name,
+            text,
+            units: mechkit_expr::units::UnitSystem::Si,
+        };
         let doc = DeTable::parse(text).map_err(|e| {
             src.error(
                 ErrorKind::Syntax,

@@ -316,13 +316,18 @@ fn applied(
             bare: Some(BodyRef::Local),
             level: VarLevel::Kinematic,
             coordinates: Coordinates::Angle,
+            units: t.src.units,
         };
         let expr = names
             .compile(&f)
             .map_err(|e| formula_error(&t.src, &v.span(), &e))?;
-        f.expect_dimension(Dimension::ENERGY, "a torque", &|n| names.dim_of(n), &|n| {
-            names.constant(n)
-        })
+        f.expect_dimension_in(
+            names.units,
+            Dimension::ENERGY,
+            "a torque",
+            &|n| names.dim_of(n),
+            &|n| names.constant(n),
+        )
         .map_err(|e| formula_error(&t.src, &v.span(), &e))?;
         return Ok(Box::new(ExpressionForce::new(name, vec![b], vec![expr])));
     }

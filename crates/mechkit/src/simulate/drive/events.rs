@@ -3,10 +3,15 @@
 //! one event finder ([`crate::ode::events::find`], with the particles' events as
 //! `simulate/prove.rs` gives them): the points at which the scan must look, and the scan from
 //! the last firing to the step's end.
+//!
+//! Events checked at step ends only ([`Event::at_step_ends`](crate::simulate::Event::at_step_ends))
+//! are hidden from the finder: they are neither proven nor sampled inside a step. When the scan
+//! reaches the step's end, each fires if going from its side at the last step end to its side
+//! at this one fires it, together with any located event firing there.
 
 use crate::Real;
 use crate::ode::events::drive::{AfterFiring, Model};
-use crate::ode::events::find::Fired;
+use crate::ode::events::find::{Fired, Firing};
 use crate::particles::SampleKind;
 use crate::simulate::observe::Observer;
 use crate::simulate::probe::Step;
@@ -84,6 +89,7 @@ impl Run<'_> {
     /// no sign change is missed, and, for events that cannot be proven, evenly spaced ones
     /// (as many as contacts ask for).
     pub fn prove_points(&mut self) {
+        self.refresh_located();
         let (t_a, t_b) = (self.ends.t0, self.ends.t1);
         if self.any_provable {
             self.engine
@@ -93,7 +99,7 @@ impl Run<'_> {
         }
         let mut proving = Proving {
             events: self.events,
-            enabled: &self.book.enabled,
+            enabled: &self.located,
             sys: self.sys,
             work: matches!(self.engine, Engine::Adaptive { .. }),
             ends: (&self.ends.y0, &self.state.y, t_b - t_a),
@@ -109,11 +115,52 @@ impl Run<'_> {
     }
 
     /// The first firing in the step after `t_scan` (where the event functions are `g_scan`
-    /// and the sides `sides_scan`), if any.
+    /// and the sides `sides_scan`), if any: of the located events, and at the step's end of
+    /// the events checked there.
     pub fn scan_from(&mut self, t_scan: Real) -> Option<Fired> {
+        self.refresh_located();
+        let located = self.locate_from(t_scan);
+        if self.step_end_events.is_empty() {
+            return located;
+        }
+        let t_b = self.ends.t1;
+        match located {
+            Some(fired) if fired.firing.t < t_b => Some(fired),
+            Some(mut fired) => {
+                let list = &mut fired.firing.events;
+                list.extend(self.at_step_end());
+                list.sort_unstable();
+                list.dedup();
+                Some(fired)
+            }
+            None => {
+                let events = self.at_step_end();
+                (!events.is_empty()).then(|| Fired {
+                    firing: Firing { t: t_b, events },
+                    values: self.g_b.clone(),
+                })
+            }
+        }
+    }
+
+    /// The events checked at step ends that fire at the end of this step: from their sides at
+    /// the last step end (`sides`) to their values here (`g_b`).
+    fn at_step_end(&self) -> Vec<usize> {
+        self.step_end_events
+            .iter()
+            .copied()
+            .filter(|&i| {
+                self.book.enabled[i]
+                    && self.events[i].fires(self.sides[i], self.sides[i].after(self.g_b[i]))
+            })
+            .collect()
+    }
+
+    /// The first firing of a located event in the step after `t_scan`.
+    fn locate_from(&mut self, t_scan: Real) -> Option<Fired> {
         let mut sampling = Sampling {
             events: self.events,
-            enabled: &self.book.enabled,
+            enabled: &self.located,
             step: Step {
                 sys: self.sys,
                 ws: &self.ws,

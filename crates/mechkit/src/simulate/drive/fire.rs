@@ -176,6 +176,7 @@ impl Run<'_> {
     /// After a state change at `te`: the sides of the events from the new state (`fired`
     /// re-armed when the change turned their function back), and the engine restarted there.
     fn rearm(&mut self, te: Real, fired: &[usize], at_values: &[Real]) {
+        let last_step_end = (!self.step_end_events.is_empty()).then(|| self.sides.clone());
         values_ahead(
             (self.events, fired),
             self.sys,
@@ -193,6 +194,18 @@ impl Run<'_> {
             (at_values, &self.g_a, &self.g_b),
             &mut self.sides,
         );
+        if let Some(before) = last_step_end {
+            // events checked at step ends: a change at the step's end is seen from the new
+            // state; a step cut short inside is no step end, so they keep their last sides
+            let at_end = te == self.ends.t1;
+            for &i in &self.step_end_events {
+                self.sides[i] = if at_end {
+                    before[i].after(self.g_a[i])
+                } else {
+                    before[i]
+                };
+            }
+        }
         self.engine.restart(&self.state, self.ledger.work());
         self.hand_over();
         self.fixed_origin = te;
@@ -213,7 +226,9 @@ impl Run<'_> {
         if te == self.ends.t1 {
             let before = self.sides_scan.iter().zip(&self.g_b);
             for (i, (side, (scanned, g))) in self.sides.iter_mut().zip(before).enumerate() {
-                *side = if fired.contains(&i) {
+                // an event checked at step ends keeps the side it fired to: it fires again only
+                // after a step end on the other side
+                *side = if fired.contains(&i) && !self.events[i].is_checked_at_step_ends() {
                     Side::Zero
                 } else {
                     scanned.after(*g)

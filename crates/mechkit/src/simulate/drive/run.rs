@@ -68,6 +68,11 @@ pub(super) struct Run<'r> {
     /// The events' sides at the start of the step.
     pub sides: Vec<Side>,
     pub book: EventBook,
+    /// The events the finder locates inside the steps: those still enabled that are not
+    /// checked at step ends only ([`Event::at_step_ends`]); refreshed before each use.
+    pub located: Vec<bool>,
+    /// The events checked at step ends only, in declaration order.
+    pub step_end_events: Vec<usize>,
     /// Whether an event function reads the forces (each interior sample costs an evaluation).
     pub forces_for_events: bool,
     /// Interior sample points per step of an event function that cannot be enclosed.
@@ -165,7 +170,10 @@ impl<'r> Run<'r> {
         sys.evaluate(t0, q, v, &mut eval_a, &mut scratch);
         let names: Vec<String> = sys.forces().iter().map(|f| f.name().to_string()).collect();
         let ledger = EnergyLedger::start(names, t0, &eval_a);
-        let forces_for_events = events.iter().any(Event::needs_forces);
+        // events checked at step ends only are never sampled inside a step: they need neither
+        // the step's polynomial nor forces at interior points
+        let located = |e: &&Event| !e.is_checked_at_step_ends();
+        let forces_for_events = events.iter().filter(located).any(Event::needs_forces);
         Ok(Run {
             sim,
             sys,
@@ -190,9 +198,16 @@ impl<'r> Run<'r> {
             g_b: vec![Real::NAN; m],
             sides: Vec::new(),
             book: EventBook::new(m),
+            located: vec![false; m],
+            step_end_events: (0..m)
+                .filter(|&i| events[i].is_checked_at_step_ends())
+                .collect(),
             forces_for_events,
             interior: if forces_for_events { 1 } else { 7 },
-            any_provable: events.iter().any(|e| e.condition().is_provable()),
+            any_provable: events
+                .iter()
+                .filter(located)
+                .any(|e| e.condition().is_provable()),
             dydt: vec![0.0; n2],
             grid: None,
             probe: Probe::new(t0, n2, nf),
@@ -229,6 +244,14 @@ impl<'r> Run<'r> {
             ));
             self.book.at_start(e, i, t0, &self.state.y);
             self.stop_reason = Some(StopReason::Event);
+        }
+    }
+
+    /// Sets [`Run::located`] from the events still enabled.
+    pub fn refresh_located(&mut self) {
+        let enabled = self.book.enabled.iter().zip(self.events);
+        for (l, (on, e)) in self.located.iter_mut().zip(enabled) {
+            *l = *on && !e.is_checked_at_step_ends();
         }
     }
 
