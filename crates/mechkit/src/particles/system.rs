@@ -57,11 +57,25 @@ pub enum SystemError {
     AngleNotOneDimensional(usize),
 }
 
+/// A coordinate after the bodies' positions: the angle of a rigid body in a plane (its
+/// "mass" the moment of inertia about the centre of mass), or a mode of a joint (a frozen
+/// coordinate: infinite inertia, changed only by events).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Extra {
+    /// Its name in outputs (`ladder.theta`, `wall.mode`).
+    pub name: String,
+    /// The body it turns, for an angle.
+    pub body: Option<usize>,
+    /// Moment of inertia about the centre of mass (kg m²); 0 for a mode.
+    pub inertia: Real,
+}
+
 /// Bodies and forces in 1, 2 or 3 dimensions.
 #[derive(Debug)]
 pub struct ParticleSystem {
     dim: usize,
     bodies: Vec<Body>,
+    extras: Vec<Extra>,
     mass: Vec<Real>,
     inv_mass: Vec<Real>,
     forces: ForceSet,
@@ -89,6 +103,7 @@ pub struct ParticleSystem {
 pub struct ParticleSystemBuilder {
     dim: usize,
     bodies: Vec<Body>,
+    extras: Vec<Extra>,
     forces: ForceSet,
     coordinates: Coordinates,
 }
@@ -108,6 +123,29 @@ impl ParticleSystemBuilder {
     #[must_use]
     pub fn force(mut self, force: impl Force + 'static) -> Self {
         self.forces.push(Box::new(force));
+        self
+    }
+
+    /// Adds an angle coordinate to body `body`, a rigid body in a plane with moment of
+    /// inertia `inertia` about its centre of mass; returns its index among the extras.
+    #[must_use]
+    pub fn rotor(mut self, name: impl Into<String>, body: usize, inertia: Real) -> Self {
+        self.extras.push(Extra {
+            name: name.into(),
+            body: Some(body),
+            inertia,
+        });
+        self
+    }
+
+    /// Adds a frozen mode coordinate (changed only by events).
+    #[must_use]
+    pub fn mode(mut self, name: impl Into<String>) -> Self {
+        self.extras.push(Extra {
+            name: name.into(),
+            body: None,
+            inertia: 0.0,
+        });
         self
     }
 
@@ -162,16 +200,32 @@ impl ParticleSystemBuilder {
                 });
             }
         }
+        for e in &self.extras {
+            if e.body.is_some() && !(e.inertia > 0.0 && e.inertia.is_finite()) {
+                return Err(SystemError::BadMass {
+                    name: e.name.clone(),
+                    mass: e.inertia,
+                });
+            }
+        }
         let mass: Vec<Real> = self.bodies.iter().map(|b| b.mass).collect();
         let inv_mass = self
             .bodies
             .iter()
             .flat_map(|b| std::iter::repeat_n(1.0 / b.mass, self.dim))
+            .chain(self.extras.iter().map(|e| {
+                if e.body.is_some() {
+                    1.0 / e.inertia
+                } else {
+                    0.0
+                }
+            }))
             .collect();
         let velocity_dependent = self.forces.velocity_dependent();
         Ok(ParticleSystem {
             dim: self.dim,
             bodies: self.bodies,
+            extras: self.extras,
             mass,
             inv_mass,
             forces: self.forces,
@@ -203,6 +257,27 @@ impl ParticleSystem {
     /// The bodies.
     pub fn bodies(&self) -> &[Body] {
         &self.bodies
+    }
+
+    /// The coordinates after the bodies' positions (angles of rigid bodies, joint modes).
+    pub fn extras(&self) -> &[Extra] {
+        &self.extras
+    }
+
+    /// Index in `q` of the first extra coordinate.
+    pub fn extras_start(&self) -> usize {
+        self.dim * self.bodies.len()
+    }
+
+    /// Rotational kinetic energy `Σ ½ I ω²` of the rigid bodies.
+    pub fn rotational_kinetic_energy(&self, v: &[Real]) -> Real {
+        let start = self.extras_start();
+        self.extras
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| e.body.is_some())
+            .map(|(i, e)| 0.5 * e.inertia * v[start + i] * v[start + i])
+            .sum()
     }
 
     /// Masses, one per body.
@@ -242,16 +317,18 @@ impl ParticleSystem {
         }
     }
 
-    /// Kinetic energy `Σ m v²/2`.
+    /// Kinetic energy `Σ m v²/2` (and `Σ I ω²/2` of the rigid bodies).
     pub fn kinetic_energy(&self, v: &[Real]) -> Real {
-        self.mass
-            .iter()
-            .enumerate()
-            .map(|(i, m)| {
-                let vi = &v[i * self.dim..(i + 1) * self.dim];
-                0.5 * m * dot(vi, vi)
-            })
-            .sum()
+        self.rotational_kinetic_energy(v)
+            + self
+                .mass
+                .iter()
+                .enumerate()
+                .map(|(i, m)| {
+                    let vi = &v[i * self.dim..(i + 1) * self.dim];
+                    0.5 * m * dot(vi, vi)
+                })
+                .sum::<Real>()
     }
 
     /// Evaluates accelerations, the power and potential of each force, and the energies at a
@@ -272,8 +349,21 @@ impl ParticleSystem {
         out.net.resize(nf * self.dim, 0.0);
         scratch.resize(n, 0.0);
         let k = self.kinematics(t, q, v);
-        self.forces
-            .total_and_power_into(&k, &mut out.a, &mut out.power, &mut out.net, scratch);
+        let report = if self.forces.has_constraints() {
+            out.constraint.resize(nf * 5, Real::NAN);
+            Some(&mut out.constraint[..])
+        } else {
+            out.constraint.clear();
+            None
+        };
+        self.forces.total_power_report(
+            &k,
+            &mut out.a,
+            &mut out.power,
+            &mut out.net,
+            scratch,
+            report,
+        );
         for (a, w) in out.a.iter_mut().zip(&self.inv_mass) {
             *a *= w;
         }
@@ -287,6 +377,7 @@ impl ParticleSystem {
         }
         out.potential_total = total;
         out.kinetic = self.kinetic_energy(v);
+        out.kinetic_rotation = self.rotational_kinetic_energy(v);
         out.momentum.clear();
         out.momentum.resize(self.dim, 0.0);
         for (m, body) in self.mass.iter().zip(v.chunks_exact(self.dim)) {
@@ -299,7 +390,7 @@ impl ParticleSystem {
 
 impl SecondOrderSystem for ParticleSystem {
     fn dof(&self) -> usize {
-        self.dim * self.bodies.len()
+        self.dim * self.bodies.len() + self.extras.len()
     }
 
     #[inline]

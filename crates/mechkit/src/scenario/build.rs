@@ -40,6 +40,8 @@ const TOP_KEYS: &[&str] = &[
     "plane",
     "rigid_body",
     "torque",
+    "joint",
+    "stabilisation",
 ];
 const BODY_KEYS: &[&str] = &["name", "mass", "position", "velocity", "radius"];
 
@@ -101,6 +103,34 @@ pub(crate) fn build_with(
     };
 
     let rigid_tables = root.tables("rigid_body")?;
+    if (!rigid_tables.is_empty() || root.get("joint").is_some()) && dim == 2 {
+        let constants = constants_with(
+            &root,
+            &[RESERVED, super::rigid::RIGID_RESERVED].concat(),
+            overrides,
+        )?;
+        return super::planar::build_planar(name, &root, title, constants, &rigid_tables);
+    }
+    if !rigid_tables.is_empty() && dim == 3 {
+        return Err(src
+            .error(
+                ErrorKind::Invalid,
+                "free rigid bodies in scenarios move in a plane for now: `dimensions` must be 2",
+                root.key_span("dimensions"),
+            )
+            .with_hint("for a free body in space use `mechkit spin` (torque-free, Euler's equations); hinged bodies: leave out `dimensions`"));
+    }
+    if let Some(v) = root.get("joint") {
+        return Err(src
+            .error(
+                ErrorKind::Invalid,
+                "[[joint]]s join bodies of a plane: the scenario needs `dimensions = 2`",
+                v.span(),
+            )
+            .with_hint(
+                "set `dimensions = 2`; joints hold [[body]] particles and [[rigid_body]]s",
+            ));
+    }
     if !rigid_tables.is_empty() {
         let constants = constants_with(
             &root,
@@ -214,6 +244,7 @@ pub(crate) fn build_with(
             forces: force_names,
             events: contacts.events,
             warnings,
+            planar: crate::particles::PlanarNames::default(),
         },
     )
 }
@@ -232,6 +263,8 @@ pub(crate) struct Model<'n> {
     /// Events the model brings (collisions, a wheel stopping), after those of `[[event]]`.
     pub events: Vec<crate::simulate::Event>,
     pub warnings: Vec<String>,
+    /// Rigid bodies and joints of a planar mechanism.
+    pub planar: crate::particles::PlanarNames,
 }
 
 /// Reads `[stop]`, `[[event]]`, `[observe]` and `[output]` against the model's names.
@@ -248,6 +281,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         forces,
         events: model_events,
         mut warnings,
+        planar,
     } = m;
     let env = ValueEnv {
         constants: &constants,
@@ -262,6 +296,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
         level: VarLevel::Derived,
         coordinates: system.coordinates(),
+        planar: &planar,
     };
     let (stop, t_max, max_steps) = read_stop(root, env, &names)?;
     let mut events = read_events(root, &names)?;
@@ -298,6 +333,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         energy_bars,
         warnings,
         source_hash: super::provenance::fnv1a(root.src.text.as_bytes()),
+        planar,
     })
 }
 
@@ -339,7 +375,7 @@ pub(crate) fn body_name(
         .with_hint("every body needs its own name: formulas and output columns use it"))
 }
 
-type Bodies = (
+pub(crate) type Bodies = (
     Vec<String>,
     Vec<Real>,
     Vec<Real>,
@@ -347,7 +383,7 @@ type Bodies = (
     Vec<Option<Real>>,
 );
 
-fn bodies(
+pub(crate) fn bodies(
     root: &Table<'_, '_>,
     dim: usize,
     constants: &[Constant],

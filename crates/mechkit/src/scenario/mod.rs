@@ -52,6 +52,7 @@ mod integrator;
 mod limits;
 mod observe;
 mod output;
+mod planar;
 mod plot;
 mod provenance;
 mod rigid;
@@ -142,6 +143,8 @@ pub struct Scenario {
     pub warnings: Vec<String>,
     /// FNV-1a of the scenario text (the summary's provenance).
     pub source_hash: u64,
+    /// The names of a planar mechanism's rigid bodies and joints (empty otherwise).
+    pub planar: crate::particles::PlanarNames,
 }
 
 impl Scenario {

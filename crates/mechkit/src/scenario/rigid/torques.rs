@@ -316,6 +316,7 @@ fn applied(
             bare: Some(BodyRef::Local),
             level: VarLevel::Kinematic,
             coordinates: Coordinates::Angle,
+            planar: &crate::particles::PlanarNames::NONE,
         };
         let expr = names
             .compile(&f)

@@ -176,6 +176,7 @@ fn plot_spec(s: &Scenario, spec: &str) -> Result<PlotSpec, SweepError> {
         bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
         level: VarLevel::Derived,
         coordinates: s.system.coordinates(),
+        planar: &s.planar,
     };
     PlotSpec::parse(spec, &names).map_err(|(message, hint)| {
         SweepError::Options(format!("--plot: {message}\n  = hint: {hint}"))
