@@ -14,7 +14,7 @@ mod vars;
 
 pub use enclosure::StateJets;
 pub use kinematics::{Kinematics, dot, norm};
-pub use names::{NameContext, PlanarNames, RigidName};
+pub use names::{NO_PLANAR, NameContext, PlanarNames, RigidName};
 pub use sample::{Evaluation, Sample, SampleKind};
 pub use state_expr::StateExpr;
 pub use system::{Body, Extra, ParticleSystem, ParticleSystemBuilder, SystemError};

@@ -21,15 +21,13 @@ pub struct PlanarNames {
     pub modes: Vec<(String, usize)>,
 }
 
-impl PlanarNames {
-    /// No rigid bodies, no joints.
-    pub const NONE: PlanarNames = PlanarNames {
-        rigid: Vec::new(),
-        joints: Vec::new(),
-        extras: 0,
-        modes: Vec::new(),
-    };
-}
+/// No rigid bodies, no joints.
+pub static NO_PLANAR: PlanarNames = PlanarNames {
+    rigid: Vec::new(),
+    joints: Vec::new(),
+    extras: 0,
+    modes: Vec::new(),
+};
 
 /// A rigid body of a planar mechanism, as formulas name it.
 #[derive(Debug, Clone)]
@@ -369,7 +367,7 @@ mod tests {
             bare: Some(BodyRef::Local),
             level,
             coordinates: Coordinates::Cartesian,
-            planar: &crate::particles::PlanarNames::NONE,
+            planar: &crate::particles::NO_PLANAR,
         }
     }
 

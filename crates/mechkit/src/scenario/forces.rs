@@ -290,7 +290,7 @@ fn compile_components(
         bare: Some(BodyRef::Local),
         level: VarLevel::Kinematic,
         coordinates: crate::particles::Coordinates::Cartesian,
-        planar: &crate::particles::PlanarNames::NONE,
+        planar: &crate::particles::NO_PLANAR,
     };
     let mut out = Vec::new();
     for (text, span) in items {

@@ -362,6 +362,19 @@ struct Names<'a> {
 }
 
 impl Names<'_> {
+    /// The bodies as the solver sees them (masses left at 1: for geometry only).
+    fn bodies(&self) -> Vec<PlanarBody> {
+        let n = self.names.len();
+        (0..n)
+            .map(|b| PlanarBody {
+                x: 2 * b,
+                angle: b.checked_sub(self.n_particles).map(|k| 2 * n + k),
+                inv_mass: 1.0,
+                inv_inertia: 1.0,
+            })
+            .collect()
+    }
+
     /// `"body"` (its centre of mass) or `"body.point"`.
     fn anchor(&self, text: &str) -> Result<Anchor, String> {
         let (body, point) = match text.split_once('.') {
@@ -578,17 +591,9 @@ fn read_joint(
                 ));
             }
             let c = position(centre, q, angle);
-            let tangent = |p: [Real; 2]| {
-                ((p[0] - c[0]).powi(2) + (p[1] - c[1]).powi(2) - radius * radius)
-                    .max(0.0)
-                    .sqrt()
-            };
             let (pa, pb) = (position(a, q, angle), position(b, q, angle));
-            let length = match scalar(t, "length", Dimension::LENGTH, env)? {
-                Some(l) => l,
-                None => tangent(pa) + tangent(pb),
-            };
-            if tangent(pa) <= 0.0 || tangent(pb) <= 0.0 {
+            let outside = |p: [Real; 2]| (p[0] - c[0]).hypot(p[1] - c[1]) > radius;
+            if !outside(pa) || !outside(pb) {
                 return Err(src
                     .error(
                         ErrorKind::Invalid,
@@ -597,16 +602,40 @@ fn read_joint(
                     )
                     .with_hint("place the ends farther from the centre than `radius`"));
             }
-            let wheel = wheel.map(|w| {
-                let sense = if pb[0] >= c[0] { 1.0 } else { -1.0 };
-                (first_mode - ctx.rigid.len() + (w - ctx.n_particles), sense)
-            });
+            let sense = if pb[0] >= pa[0] { 1.0 } else { -1.0 };
+            let length = match scalar(t, "length", Dimension::LENGTH, env)? {
+                Some(l) => l,
+                None => {
+                    let zero = vec![0.0; 2 * ctx.names.len() + ctx.rigid.len()];
+                    let mut qq = q.to_vec();
+                    qq.extend(ctx.rigid.iter().map(|r| r.theta));
+                    let probe = Mechanism::new(
+                        ctx.bodies(),
+                        vec![Joint {
+                            name: String::new(),
+                            kind: JointKind::Pulley {
+                                a,
+                                b,
+                                centre,
+                                radius,
+                                length: 0.0,
+                                sense,
+                                wheel: None,
+                            },
+                        }],
+                        qq.len(),
+                    );
+                    probe.pulley_length(&qq, &zero)
+                }
+            };
+            let wheel = wheel.map(|w| first_mode - ctx.rigid.len() + (w - ctx.n_particles));
             JointKind::Pulley {
                 a,
                 b,
                 centre,
                 radius,
                 length,
+                sense,
                 wheel,
             }
         }

@@ -83,10 +83,11 @@ pub enum JointKind {
         /// Friction along the line.
         friction: Friction,
     },
-    /// An ideal string over a pulley of radius `radius` centred at `centre`: the tangent
-    /// lengths from the pulley to the two ends add up to `length`. With `wheel`, the string
-    /// does not slip on the pulley's rim: the wheel's angle (coordinate index) turns by the
-    /// string's travel over `radius` (`sense` +1 when `b` hangs on the right of the centre).
+    /// An ideal string over the top of a pulley of radius `radius` centred at `centre`, from
+    /// `a` to `b`: the two straight pieces and the arc between their tangent points add up to
+    /// `length`. `sense` is +1 when `b` hangs on the right of `a` (seen with `y` up), −1 on the
+    /// left. With `wheel` (the index of a rigid body's angle in `q`) the string does not slip on
+    /// the rim: the wheel turns by the string's travel over `radius`.
     Pulley {
         /// First end.
         a: Anchor,
@@ -96,10 +97,12 @@ pub enum JointKind {
         centre: Anchor,
         /// Radius (m).
         radius: Real,
-        /// Sum of the two tangent lengths (m).
+        /// The string's length (m).
         length: Real,
-        /// The wheel's angle coordinate and the sense of its turning.
-        wheel: Option<(usize, Real)>,
+        /// +1 when `b` is on the right of `a`, −1 on the left.
+        sense: Real,
+        /// The wheel's angle coordinate.
+        wheel: Option<usize>,
     },
 }
 

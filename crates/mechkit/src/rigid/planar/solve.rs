@@ -191,30 +191,33 @@ impl Mechanism {
                     centre,
                     radius,
                     length,
+                    sense,
                     wheel,
                 } => {
                     let c = self.point(centre, q, v);
                     let mut row = Row::new(ji);
-                    let mut total = 0.0;
-                    let mut travel_b = Row::new(ji);
-                    for (end, anchor) in [a, b].into_iter().enumerate() {
-                        let p = self.point(anchor, q, v);
-                        total += Self::tangent(&p, &c, radius, &mut row);
-                        if end == 1 {
-                            Self::tangent(&p, &c, radius, &mut travel_b);
-                        }
+                    let (pa, pb) = (self.point(a, q, v), self.point(b, q, v));
+                    let (la, psi_a) = Self::segment(&pa, &c, radius, -sense, &mut row);
+                    let mut travel = Row::new(ji);
+                    let (lb, psi_b) = Self::segment(&pb, &c, radius, sense, &mut travel);
+                    for k in 0..travel.n {
+                        row.push(travel.idx[k], travel.j[k]);
                     }
-                    row.c = Some(total - length);
+                    row.bias += travel.bias;
+                    row.jv += travel.jv;
+                    let wrap = (sense * (psi_a - psi_b)).rem_euclid(std::f64::consts::TAU);
+                    row.c = Some(la + lb + radius * wrap - length);
                     rows.push(row);
-                    if let Some((angle, sense)) = wheel {
+                    if let Some(angle) = wheel {
+                        // no slip on the rim: R ω + sense · (the string's travel at b) = 0
                         let mut w = Row::new(ji);
                         w.push(angle, radius);
                         w.jv += radius * v[angle];
-                        for k in 0..travel_b.n {
-                            w.push(travel_b.idx[k], sense * travel_b.j[k]);
+                        for k in 0..travel.n {
+                            w.push(travel.idx[k], sense * travel.j[k]);
                         }
-                        w.bias += sense * travel_b.bias;
-                        w.jv += sense * travel_b.jv;
+                        w.bias += sense * travel.bias;
+                        w.jv += sense * travel.jv;
                         rows.push(w);
                     }
                 }
@@ -223,20 +226,24 @@ impl Mechanism {
         rows
     }
 
-    /// Adds the tangent length `ℓ = √(|p − c|² − R²)` from the pulley to `p` into `row`;
-    /// returns `ℓ`.
-    fn tangent(p: &Point, c: &Point, radius: Real, row: &mut Row) -> Real {
+    /// Adds the straight piece of a pulley's string from its tangent point to `p` into `row`
+    /// (the string's length grows along the piece's direction `t̂`, whatever the wrap does:
+    /// `∂L/∂p = t̂`); `side` is +1 for the piece on the right of the centre, −1 on the left.
+    /// Returns the piece's length and the angle of its tangent point.
+    fn segment(p: &Point, c: &Point, radius: Real, side: Real, row: &mut Row) -> (Real, Real) {
         let d = [p.p[0] - c.p[0], p.p[1] - c.p[1]];
         let dd = [p.vel[0] - c.vel[0], p.vel[1] - c.vel[1]];
-        let l = (dot2(d, d) - radius * radius)
-            .max(Real::MIN_POSITIVE)
-            .sqrt();
-        let u = [d[0] / l, d[1] / l];
+        let r = d[0].hypot(d[1]).max(Real::MIN_POSITIVE);
+        let psi = d[1].atan2(d[0]) + side * (radius / r).clamp(-1.0, 1.0).acos();
+        let tp = [radius * psi.cos(), radius * psi.sin()];
+        let piece = [d[0] - tp[0], d[1] - tp[1]];
+        let l = piece[0].hypot(piece[1]).max(Real::MIN_POSITIVE);
+        let u = [piece[0] / l, piece[1] / l];
         p.add(row, u, 1.0);
         c.add(row, u, -1.0);
-        let ldot = dot2(d, dd) / l;
-        row.bias += (dot2(dd, dd) - ldot * ldot) / l;
-        l
+        let ud = dot2(u, dd);
+        row.bias += (dot2(dd, dd) - ud * ud) / l;
+        (l, psi)
     }
 
     fn distance_row(
@@ -260,6 +267,12 @@ impl Mechanism {
         row.bias += (dot2(dd, dd) - ud * ud) / l;
         row.c = Some(l - length);
         row
+    }
+
+    /// The length of the string of a mechanism whose only joint is a pulley (the reader's
+    /// default length: the string as placed at the start).
+    pub fn pulley_length(&self, q: &[Real], v: &[Real]) -> Real {
+        self.rows(q, v).first().and_then(|r| r.c).unwrap_or(0.0)
     }
 
     /// The multipliers of the engaged constraints under the applied generalised forces.
@@ -354,17 +367,12 @@ impl Mechanism {
                     gap,
                 ]
             }
-            JointKind::Pulley { a, centre, .. } => {
-                let (pa, c) = (self.point(a, q, v), self.point(centre, q, v));
-                let d = [pa.p[0] - c.p[0], pa.p[1] - c.p[1]];
-                let l = d[0].hypot(d[1]).max(Real::MIN_POSITIVE);
-                let drift = s
-                    .rows
-                    .iter()
-                    .find(|r| r.joint == joint)
-                    .and_then(|r| r.c)
-                    .unwrap_or(0.0);
-                [l0 * d[0] / l, l0 * d[1] / l, -l0, 0.0, drift]
+            JointKind::Pulley { .. } => {
+                let row = s.rows.iter().find(|r| r.joint == joint);
+                // the force on `a` is the tension along its piece, towards the pulley
+                let (fx, fy) = row.map_or((0.0, 0.0), |r| (r.j[0] * l0, r.j[1] * l0));
+                let drift = row.and_then(|r| r.c).unwrap_or(0.0);
+                [fx, fy, -l0, 0.0, drift]
             }
         }
     }

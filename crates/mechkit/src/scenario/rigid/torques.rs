@@ -316,7 +316,7 @@ fn applied(
             bare: Some(BodyRef::Local),
             level: VarLevel::Kinematic,
             coordinates: Coordinates::Angle,
-            planar: &crate::particles::PlanarNames::NONE,
+            planar: &crate::particles::NO_PLANAR,
         };
         let expr = names
             .compile(&f)
