@@ -215,8 +215,13 @@ impl StateVar {
     pub fn dimension(self) -> Dimension {
         match self {
             StateVar::Time => Dimension::TIME,
-            StateVar::Position(..) | StateVar::Distance(_) => Dimension::LENGTH,
-            StateVar::Velocity(..) | StateVar::Speed(_) => Dimension::VELOCITY,
+            StateVar::Position(..)
+            | StateVar::Distance(_)
+            | StateVar::PointPosition(..)
+            | StateVar::Constraint(_, 4) => Dimension::LENGTH,
+            StateVar::Velocity(..) | StateVar::Speed(_) | StateVar::PointVelocity(..) => {
+                Dimension::VELOCITY
+            }
             StateVar::Mass(_) => Dimension::MASS,
             StateVar::Acceleration(..) | StateVar::AccelerationMagnitude(_) => {
                 Dimension::ACCELERATION
@@ -225,15 +230,13 @@ impl StateVar {
             | StateVar::Kinetic
             | StateVar::Potential
             | StateVar::Energy
-            | StateVar::Work(_) => Dimension::ENERGY,
+            | StateVar::Work(_)
+            | StateVar::RigidKinetic(_)
+            | StateVar::KineticRotation => Dimension::ENERGY,
             StateVar::Power(_) => Dimension::POWER,
             StateVar::Coordinate(_) => Dimension::NONE,
             StateVar::CoordinateRate(_) => Dimension::FREQUENCY,
             StateVar::CoordinateAccel(_) => Dimension::base([0, 0, -2, 0, 0, 0, 0]),
-            StateVar::PointPosition(..) => Dimension::LENGTH,
-            StateVar::PointVelocity(..) => Dimension::VELOCITY,
-            StateVar::RigidKinetic(_) | StateVar::KineticRotation => Dimension::ENERGY,
-            StateVar::Constraint(_, 4) => Dimension::LENGTH,
             StateVar::Constraint(..) => Dimension::FORCE,
         }
     }
@@ -242,16 +245,17 @@ impl StateVar {
     pub fn unit(self) -> &'static str {
         match self {
             StateVar::Time => "s",
-            StateVar::Position(..) | StateVar::Distance(_) => "m",
-            StateVar::Velocity(..) | StateVar::Speed(_) => "m/s",
+            StateVar::Position(..)
+            | StateVar::Distance(_)
+            | StateVar::PointPosition(..)
+            | StateVar::Constraint(_, 4) => "m",
+            StateVar::Velocity(..) | StateVar::Speed(_) | StateVar::PointVelocity(..) => "m/s",
             StateVar::Mass(_) => "kg",
             StateVar::Acceleration(..) | StateVar::AccelerationMagnitude(_) => "m/s²",
             StateVar::Power(_) => "W",
             StateVar::Coordinate(_) => "rad",
             StateVar::CoordinateRate(_) => "rad/s",
             StateVar::CoordinateAccel(_) => "rad/s²",
-            StateVar::PointPosition(..) | StateVar::Constraint(_, 4) => "m",
-            StateVar::PointVelocity(..) => "m/s",
             StateVar::Constraint(..) => "N",
             _ => "J",
         }

@@ -108,7 +108,7 @@ pub(crate) fn build_planar(
     let mut modes: Vec<String> = Vec::new();
     let mut joints = Vec::new();
     let ctx = Names {
-        names: &names,
+        bodies: &names,
         n_particles,
         rigid: &rigid,
         env,
@@ -355,7 +355,7 @@ fn read_rigid(
 
 /// What joints refer to.
 struct Names<'a> {
-    names: &'a [String],
+    bodies: &'a [String],
     n_particles: usize,
     rigid: &'a [Rigid],
     env: ValueEnv<'a>,
@@ -363,8 +363,8 @@ struct Names<'a> {
 
 impl Names<'_> {
     /// The bodies as the solver sees them (masses left at 1: for geometry only).
-    fn bodies(&self) -> Vec<PlanarBody> {
-        let n = self.names.len();
+    fn solver_bodies(&self) -> Vec<PlanarBody> {
+        let n = self.bodies.len();
         (0..n)
             .map(|b| PlanarBody {
                 x: 2 * b,
@@ -381,10 +381,10 @@ impl Names<'_> {
             Some((b, p)) => (b, Some(p)),
             None => (text, None),
         };
-        let Some(b) = self.names.iter().position(|n| n == body) else {
+        let Some(b) = self.bodies.iter().position(|n| n == body) else {
             return Err(format!(
                 "`{body}` is not a body; the bodies are: {}",
-                self.names.join(", ")
+                self.bodies.join(", ")
             ));
         };
         let Some(point) = point else {
@@ -493,12 +493,11 @@ fn read_joint(
         first_mode + modes.len() - 1
     };
     let length_or = |key: &str, a: Anchor, b: Anchor| -> Result<Real, ScenarioError> {
-        let l = match scalar(t, key, Dimension::LENGTH, env)? {
-            Some(l) => l,
-            None => {
-                let (pa, pb) = (position(a, q, angle), position(b, q, angle));
-                (pa[0] - pb[0]).hypot(pa[1] - pb[1])
-            }
+        let l = if let Some(l) = scalar(t, key, Dimension::LENGTH, env)? {
+            l
+        } else {
+            let (pa, pb) = (position(a, q, angle), position(b, q, angle));
+            (pa[0] - pb[0]).hypot(pa[1] - pb[1])
         };
         if !(l > 0.0 && l.is_finite()) {
             return Err(src
@@ -560,7 +559,7 @@ fn read_joint(
             let (a, b) = (need("a", "\"m1\"")?, need("b", "\"m2\"")?);
             let wheel = match t.string("wheel")? {
                 Some((w, span)) => {
-                    let body = ctx.names.iter().position(|n| n == w).filter(|&i| i >= ctx.n_particles).ok_or_else(|| {
+                    let body = ctx.bodies.iter().position(|n| n == w).filter(|&i| i >= ctx.n_particles).ok_or_else(|| {
                         src.error(ErrorKind::Invalid, format!("`{w}` is not a rigid body"), span.clone())
                             .with_hint("the wheel is a [[rigid_body]] (a disk) hinged at the pulley's centre")
                     })?;
@@ -603,14 +602,15 @@ fn read_joint(
                     .with_hint("place the ends farther from the centre than `radius`"));
             }
             let sense = if pb[0] >= pa[0] { 1.0 } else { -1.0 };
-            let length = match scalar(t, "length", Dimension::LENGTH, env)? {
-                Some(l) => l,
-                None => {
-                    let zero = vec![0.0; 2 * ctx.names.len() + ctx.rigid.len()];
+            let length = if let Some(l) = scalar(t, "length", Dimension::LENGTH, env)? {
+                l
+            } else {
+                {
+                    let zero = vec![0.0; 2 * ctx.bodies.len() + ctx.rigid.len()];
                     let mut qq = q.to_vec();
                     qq.extend(ctx.rigid.iter().map(|r| r.theta));
                     let probe = Mechanism::new(
-                        ctx.bodies(),
+                        ctx.solver_bodies(),
                         vec![Joint {
                             name: String::new(),
                             kind: JointKind::Pulley {

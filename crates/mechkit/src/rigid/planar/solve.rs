@@ -170,14 +170,13 @@ impl Mechanism {
                                     let idx = trow.idx[k];
                                     let slot = (0..nrow.n).find(|&m| nrow.idx[m] == idx);
                                     let f = -mu_k * s * trow.j[k];
-                                    match slot {
-                                        Some(m) => nrow.d[m] += f,
-                                        None => {
-                                            nrow.idx[nrow.n] = idx;
-                                            nrow.j[nrow.n] = 0.0;
-                                            nrow.d[nrow.n] = f;
-                                            nrow.n += 1;
-                                        }
+                                    if let Some(m) = slot {
+                                        nrow.d[m] += f;
+                                    } else {
+                                        nrow.idx[nrow.n] = idx;
+                                        nrow.j[nrow.n] = 0.0;
+                                        nrow.d[nrow.n] = f;
+                                        nrow.n += 1;
                                     }
                                 }
                                 rows.push(nrow);
@@ -305,7 +304,7 @@ impl Mechanism {
     }
 
     /// Adds joint `joint`'s constraint forces `Dᵀλ` into `out`.
-    pub(crate) fn add_forces(&self, s: &Solution, joint: usize, out: &mut [Real]) {
+    pub(crate) fn add_forces(s: &Solution, joint: usize, out: &mut [Real]) {
         for (r, l) in s.rows.iter().zip(&s.lambda) {
             if r.joint == joint {
                 for e in 0..r.n {
@@ -465,9 +464,9 @@ impl Mechanism {
     /// sticking where the contact point is at rest and static friction holds, else sliding.
     pub fn initial_modes(&self, sys: &ParticleSystem, q: &mut [Real], v: &mut [Real], tol: Real) {
         for (ji, joint) in self.joints.iter().enumerate() {
-            let mode = match joint.kind {
-                JointKind::Contact { mode, .. } | JointKind::String { mode, .. } => mode,
-                _ => continue,
+            let (JointKind::Contact { mode, .. } | JointKind::String { mode, .. }) = joint.kind
+            else {
+                continue;
             };
             q[mode] = if self.gap(ji, q) <= tol { 1.0 } else { 0.0 };
             if let JointKind::Contact {
@@ -517,8 +516,13 @@ impl Mechanism {
         let mut events = Vec::new();
         for (ji, joint) in self.joints.iter().enumerate() {
             let name = joint.name.clone();
-            let field =
-                move |s: &Sample<'_>, k: usize| s.eval.constraint[(first_force + ji) * 5 + k];
+            let field = move |s: &Sample<'_>, k: usize| {
+                s.eval
+                    .constraint
+                    .get((first_force + ji) * 5 + k)
+                    .copied()
+                    .unwrap_or(Real::NAN)
+            };
             let (mode, what) = match joint.kind {
                 JointKind::Contact { mode, .. } => (mode, ("lets go", "touches")),
                 JointKind::String { mode, .. } => (mode, ("goes slack", "goes taut")),
@@ -694,7 +698,7 @@ impl Force for JointForce {
 
     fn add_constraint_forces(&self, k: &Kinematics<'_>, applied: &[Real], out: &mut [Real]) {
         let s = self.mechanism.solve(k.x, k.v, applied);
-        self.mechanism.add_forces(&s, self.joint, out);
+        Mechanism::add_forces(&s, self.joint, out);
     }
 
     fn constraint_report(&self, k: &Kinematics<'_>, applied: &[Real]) -> [Real; 5] {
