@@ -42,6 +42,12 @@ pub trait Force: Debug + Send + Sync {
         false
     }
 
+    /// Power that is not `F·v` of its force (the kinetic energy an ejected mass carries
+    /// away); 0 for ordinary forces.
+    fn extra_power(&self, _k: &Kinematics<'_>) -> Real {
+        0.0
+    }
+
     /// Whether it is a constraint force (a joint): it is then evaluated after every other
     /// force, from their sum, by [`Force::add_constraint_forces`].
     fn constraint(&self) -> bool {

@@ -28,6 +28,7 @@ mod force;
 mod gravity;
 mod set;
 mod spring;
+mod thrust;
 mod wind;
 
 pub mod terminal;
@@ -47,4 +48,5 @@ pub use force::{Force, Target};
 pub use gravity::{Attractor, NewtonianGravity, UniformGravity};
 pub use set::ForceSet;
 pub use spring::{Spring, SpringEnds};
+pub use thrust::{Exhaust, Thrust};
 pub use wind::Wind;

@@ -121,7 +121,7 @@ impl ForceSet {
                 if !pass {
                     f.add_forces(k, scratch);
                 }
-                *p = dot(scratch, k.v);
+                *p = dot(scratch, k.v) + f.extra_power(k);
                 for (o, s) in out.iter_mut().zip(scratch.iter()) {
                     *o += s;
                 }

@@ -130,7 +130,7 @@ impl StateVar {
             StateVar::Distance(r) => j.norm(body(r)?, |b, i| j.position(b, i)),
             StateVar::Mass(r) => Jet::constant(j.mass(body(r)?)),
             StateVar::BodyKinetic(r) => j.kinetic(body(r)?),
-            StateVar::Coordinate(i) => j.coordinate(i),
+            StateVar::Coordinate(i) | StateVar::VariableMass(i) => j.coordinate(i),
             StateVar::CoordinateRate(i) => j.coordinate_rate(i),
             StateVar::Kinetic if j.n != j.dim * j.bodies() => return None,
             StateVar::Kinetic => (0..j.bodies())

@@ -16,6 +16,8 @@ pub struct PlanarNames {
     pub joints: Vec<(String, usize)>,
     /// Number of coordinates after the bodies' positions (angles, modes).
     pub extras: usize,
+    /// `(body, index in q)` of the bodies whose mass varies (`rocket.m` reads the coordinate).
+    pub masses: Vec<(usize, usize)>,
     /// The joints' mode coordinates by name (`wall.touching`, `rope.taut`, `foot.sliding`)
     /// and their index in `q`.
     pub modes: Vec<(String, usize)>,
@@ -27,6 +29,7 @@ pub static NO_PLANAR: PlanarNames = PlanarNames {
     joints: Vec::new(),
     extras: 0,
     modes: Vec::new(),
+    masses: Vec::new(),
 };
 
 /// A rigid body of a planar mechanism, as formulas name it.
@@ -138,6 +141,11 @@ impl NameContext<'_> {
             BodyRef::Index(i) => Some(i),
             BodyRef::Local => None,
         };
+        if field == "m"
+            && let Some((_, i)) = self.planar.masses.iter().find(|(b, _)| Some(*b) == body)
+        {
+            return Some(StateVar::VariableMass(*i));
+        }
         if let Some(rigid) = self.planar.rigid.iter().find(|r| Some(r.body) == body) {
             match field {
                 "theta" => return Some(StateVar::Coordinate(rigid.angle)),

@@ -68,6 +68,9 @@ pub struct Extra {
     pub body: Option<usize>,
     /// Moment of inertia about the centre of mass (kg m²); 0 for a mode.
     pub inertia: Real,
+    /// The body whose mass it is, for a variable mass (its rate is `dm/dt`, changed only by
+    /// events: a burn ending).
+    pub mass_of: Option<usize>,
 }
 
 /// Bodies and forces in 1, 2 or 3 dimensions.
@@ -81,6 +84,8 @@ pub struct ParticleSystem {
     forces: ForceSet,
     velocity_dependent: bool,
     coordinates: Coordinates,
+    /// `(body, index in q)` of the variable masses.
+    variable: Vec<(usize, usize)>,
 }
 
 /// Builds a [`ParticleSystem`].
@@ -134,6 +139,7 @@ impl ParticleSystemBuilder {
             name: name.into(),
             body: Some(body),
             inertia,
+            mass_of: None,
         });
         self
     }
@@ -145,6 +151,19 @@ impl ParticleSystemBuilder {
             name: name.into(),
             body: None,
             inertia: 0.0,
+            mass_of: None,
+        });
+        self
+    }
+
+    /// Makes the mass of body `body` a coordinate (its value the mass, its rate `dm/dt`).
+    #[must_use]
+    pub fn variable_mass(mut self, name: impl Into<String>, body: usize) -> Self {
+        self.extras.push(Extra {
+            name: name.into(),
+            body: None,
+            inertia: 0.0,
+            mass_of: Some(body),
         });
         self
     }
@@ -222,7 +241,15 @@ impl ParticleSystemBuilder {
             }))
             .collect();
         let velocity_dependent = self.forces.velocity_dependent();
+        let start = self.dim * self.bodies.len();
+        let variable = self
+            .extras
+            .iter()
+            .enumerate()
+            .filter_map(|(i, e)| e.mass_of.map(|b| (b, start + i)))
+            .collect();
         Ok(ParticleSystem {
+            variable,
             dim: self.dim,
             bodies: self.bodies,
             extras: self.extras,
@@ -306,6 +333,20 @@ impl ParticleSystem {
         self.forces.iter().any(|f| f.potential(&k).is_some())
     }
 
+    /// Whether some body's mass varies (a rocket).
+    pub fn has_variable_mass(&self) -> bool {
+        !self.variable.is_empty()
+    }
+
+    /// The masses at a state (the variable ones read from `q`).
+    pub fn masses_at(&self, q: &[Real], out: &mut Vec<Real>) {
+        out.clear();
+        out.extend_from_slice(&self.mass);
+        for &(b, i) in &self.variable {
+            out[b] = q[i];
+        }
+    }
+
     /// The force view of a state.
     pub fn kinematics<'a>(&'a self, t: Real, q: &'a [Real], v: &'a [Real]) -> Kinematics<'a> {
         Kinematics {
@@ -348,7 +389,21 @@ impl ParticleSystem {
         out.potential.resize(nf, Real::NAN);
         out.net.resize(nf * self.dim, 0.0);
         scratch.resize(n, 0.0);
-        let k = self.kinematics(t, q, v);
+        let mut current = Vec::new();
+        if self.has_variable_mass() {
+            self.masses_at(q, &mut current);
+        }
+        let k = if self.has_variable_mass() {
+            Kinematics {
+                t,
+                dim: self.dim,
+                x: q,
+                v,
+                mass: &current,
+            }
+        } else {
+            self.kinematics(t, q, v)
+        };
         let report = if self.forces.has_constraints() {
             out.constraint.resize(nf * 5, Real::NAN);
             Some(&mut out.constraint[..])
@@ -367,6 +422,7 @@ impl ParticleSystem {
         for (a, w) in out.a.iter_mut().zip(&self.inv_mass) {
             *a *= w;
         }
+        self.rescale_variable(k.mass, &mut out.a);
         let mut total = None;
         for (i, f) in self.forces.iter().enumerate() {
             let u = f.potential(&k);
@@ -376,13 +432,34 @@ impl ParticleSystem {
             }
         }
         out.potential_total = total;
-        out.kinetic = self.kinetic_energy(v);
+        out.kinetic = self.rotational_kinetic_energy(v)
+            + k.mass
+                .iter()
+                .enumerate()
+                .map(|(i, m)| {
+                    let vi = &v[i * self.dim..(i + 1) * self.dim];
+                    0.5 * m * dot(vi, vi)
+                })
+                .sum::<Real>();
         out.kinetic_rotation = self.rotational_kinetic_energy(v);
         out.momentum.clear();
         out.momentum.resize(self.dim, 0.0);
-        for (m, body) in self.mass.iter().zip(v.chunks_exact(self.dim)) {
+        for (m, body) in k.mass.iter().zip(v.chunks_exact(self.dim)) {
             for (p, vk) in out.momentum.iter_mut().zip(body) {
                 *p += m * vk;
+            }
+        }
+    }
+}
+
+impl ParticleSystem {
+    /// `a` was divided by the starting masses: divide the variable bodies' by their current
+    /// masses instead.
+    fn rescale_variable(&self, current: &[Real], a: &mut [Real]) {
+        for &(b, _) in &self.variable {
+            let f = self.mass[b] / current[b];
+            for ak in &mut a[b * self.dim..(b + 1) * self.dim] {
+                *ak *= f;
             }
         }
     }
@@ -395,6 +472,23 @@ impl SecondOrderSystem for ParticleSystem {
 
     #[inline]
     fn accel_into(&self, t: Real, q: &[Real], v: &[Real], a: &mut [Real]) {
+        if self.has_variable_mass() {
+            let mut current = Vec::new();
+            self.masses_at(q, &mut current);
+            let k = Kinematics {
+                t,
+                dim: self.dim,
+                x: q,
+                v,
+                mass: &current,
+            };
+            self.forces.total_into(&k, a);
+            for (ai, w) in a.iter_mut().zip(&self.inv_mass) {
+                *ai *= w;
+            }
+            self.rescale_variable(&current, a);
+            return;
+        }
         let k = self.kinematics(t, q, v);
         self.forces.total_into(&k, a);
         for (ai, w) in a.iter_mut().zip(&self.inv_mass) {

@@ -79,6 +79,8 @@ pub enum StateVar {
     RigidKinetic(PointRef),
     /// Rotational kinetic energy of all the rigid bodies.
     KineticRotation,
+    /// The mass of a body whose mass varies: coordinate `i` of `q`.
+    VariableMass(usize),
     /// Field `k` of what constraint force `i` reports
     /// ([`crate::rigid::planar::REPORT_FIELDS`]).
     Constraint(usize, usize),
@@ -208,6 +210,7 @@ impl StateVar {
                 | StateVar::CoordinateRate(_)
                 | StateVar::PointPosition(..)
                 | StateVar::PointVelocity(..)
+                | StateVar::VariableMass(_)
         )
     }
 
@@ -222,7 +225,7 @@ impl StateVar {
             StateVar::Velocity(..) | StateVar::Speed(_) | StateVar::PointVelocity(..) => {
                 Dimension::VELOCITY
             }
-            StateVar::Mass(_) => Dimension::MASS,
+            StateVar::Mass(_) | StateVar::VariableMass(_) => Dimension::MASS,
             StateVar::Acceleration(..) | StateVar::AccelerationMagnitude(_) => {
                 Dimension::ACCELERATION
             }
@@ -250,7 +253,7 @@ impl StateVar {
             | StateVar::PointPosition(..)
             | StateVar::Constraint(_, 4) => "m",
             StateVar::Velocity(..) | StateVar::Speed(_) | StateVar::PointVelocity(..) => "m/s",
-            StateVar::Mass(_) => "kg",
+            StateVar::Mass(_) | StateVar::VariableMass(_) => "kg",
             StateVar::Acceleration(..) | StateVar::AccelerationMagnitude(_) => "m/s²",
             StateVar::Power(_) => "W",
             StateVar::Coordinate(_) => "rad",
@@ -290,7 +293,7 @@ impl StateVar {
             StateVar::Speed(_) => norm(k.velocity(self.body(local))),
             StateVar::Distance(_) => norm(k.position(self.body(local))),
             StateVar::Mass(_) => k.mass[self.body(local)],
-            StateVar::Coordinate(i) => k.x[i],
+            StateVar::Coordinate(i) | StateVar::VariableMass(i) => k.x[i],
             StateVar::CoordinateRate(i) => k.v[i],
             StateVar::PointPosition(p, i) => p.value(k.x, k.v, d, i, false),
             StateVar::PointVelocity(p, i) => p.value(k.x, k.v, d, i, true),

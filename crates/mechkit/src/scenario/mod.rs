@@ -56,6 +56,7 @@ mod planar;
 mod plot;
 mod provenance;
 mod rigid;
+mod rocket;
 mod run;
 mod stop;
 mod summary;

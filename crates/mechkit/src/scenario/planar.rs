@@ -73,6 +73,22 @@ pub(crate) fn build_planar(
     } else {
         (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new())
     };
+    for t in root.tables("body")? {
+        if let Some(key) = super::build::ROCKET_KEYS
+            .iter()
+            .find(|k| t.get(k).is_some())
+        {
+            return Err(src
+                .error(
+                    ErrorKind::Invalid,
+                    format!(
+                        "`{key}`: a body that ejects mass is not yet part of a mechanism in a plane"
+                    ),
+                    t.key_span(key),
+                )
+                .with_hint("run the rocket in a scenario without [[rigid_body]] and [[joint]]"));
+        }
+    }
     let n_particles = names.len();
     let dir = std::path::Path::new(name).parent();
     let mut rigid = Vec::new();
@@ -238,6 +254,7 @@ pub(crate) fn build_planar(
             .enumerate()
             .map(|(i, m)| (m.clone(), angle_of(rigid.len()) + i))
             .collect(),
+        masses: Vec::new(),
     };
     assemble(
         root,

@@ -217,3 +217,53 @@ fn string_goes_slack_where_the_tension_vanishes_and_taut_again() {
     let x = &taut.state["ball"].position;
     close(x[0].hypot(x[1]), 1.0, 1e-6);
 }
+
+#[test]
+fn rocket_speed_and_height_at_burnout_are_tsiolkovskys() {
+    let g = 9.81_f64;
+    for (m0, m1, rate, u) in [
+        (1000.0_f64, 300.0_f64, 10.0_f64, 2500.0_f64),
+        (50.0, 20.0, 1.5, 800.0),
+    ] {
+        let s = run(
+            "rocket.toml",
+            &format!("m0 = {m0} kg, m1 = {m1} kg, mass_rate = {rate} kg/s, u = {u} m/s"),
+        );
+        let tb = (m0 - m1) / rate;
+        let v = u * (m0 / m1).ln() - g * tb;
+        let x = u * tb - u * m1 / rate * (m0 / m1).ln() - g * tb * tb / 2.0;
+        close(s.observables["t_burnout"], tb, 1e-9 * tb);
+        close(s.observables["v_burnout"], v, 1e-8 * v);
+        close(s.observables["h_burnout"], x, 1e-8 * x);
+        // the exhaust carries away ½ ṁ v² per second: the ledger closes
+        close(
+            s.work_energy_residual,
+            0.0,
+            1e-9 * s.kinetic_energy.end.unwrap_or(1.0),
+        );
+    }
+}
+
+#[test]
+fn rocket_coasts_after_burnout() {
+    let text = std::fs::read_to_string(workspace().join("examples/rocket.toml"))
+        .unwrap()
+        .replace("action = \"stop\"", "")
+        .replace("t_max = \"1000 s\"", "t_max = \"100 s\"");
+    let s = run_text(&text);
+    let (m0, m1, rate, u, g) = (1000.0_f64, 300.0, 10.0, 2500.0, 9.81);
+    let tb = (m0 - m1) / rate;
+    let vb = u * (m0 / m1).ln() - g * tb;
+    close(
+        s.bodies["rocket"].velocity[0],
+        vb - g * (100.0 - tb),
+        1e-7 * vb,
+    );
+    assert_eq!(
+        s.events
+            .iter()
+            .filter(|e| e.name == "rocket burnout")
+            .count(),
+        1
+    );
+}
