@@ -75,14 +75,12 @@ pub(crate) fn read_rockets(
                 )
                 .with_hint("the body burns from `mass` down to `burnout_mass`: the dry mass is the smaller"));
         }
-        let direction = match vector(t, "thrust_direction", Dimension::NONE, dim, env)? {
-            Some(d) => d,
-            None => {
+        let direction =
+            vector(t, "thrust_direction", Dimension::NONE, dim, env)?.unwrap_or_else(|| {
                 let mut up = vec![0.0; dim];
                 up[dim - 1] = 1.0;
                 up
-            }
-        };
+            });
         let len = direction.iter().map(|x| x * x).sum::<Real>().sqrt();
         if !(len > 0.0 && len.is_finite()) {
             return Err(t
