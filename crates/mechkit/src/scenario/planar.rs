@@ -27,9 +27,9 @@ const PLANAR_RIGID_KEYS: &[&str] = &[
 ];
 const JOINT_KEYS: &[&str] = &[
     "name", "kind", "a", "b", "on", "length", "radius", "surface", "mu", "mu_s", "mu_k", "rolling",
-    "centre", "center", "wheel",
+    "centre", "center", "wheel", "y",
 ];
-const JOINT_KINDS: &[&str] = &["hinge", "rod", "string", "contact", "pulley"];
+const JOINT_KINDS: &[&str] = &["hinge", "rod", "string", "contact", "pulley", "curve"];
 
 /// A rigid body as read, before the system is built.
 struct Rigid {
@@ -570,6 +570,35 @@ fn read_joint(
                 normal,
                 mode,
                 friction,
+            }
+        }
+        "curve" | "track" | "wire" => {
+            let on = need("on", "\"bead\"")?;
+            let (text, span) = t.string("y")?.ok_or_else(|| {
+                t.missing("y", "\"x^2/2\"")
+                    .with_hint("the curve as `y = f(x)`: a formula of `x` and the constants")
+            })?;
+            let parsed = mechkit_expr::parse(text).map_err(|e| {
+                src.error(
+                    ErrorKind::Invalid,
+                    format!("the curve `y`: {e}"),
+                    span.clone(),
+                )
+            })?;
+            let constants: Vec<(String, Real)> =
+                env.constants.iter().map(|c| (c.0.clone(), c.1)).collect();
+            let curve =
+                crate::rigid::planar::Curve::new(&parsed.expr, &constants).map_err(|name| {
+                    src.error(
+                        ErrorKind::Invalid,
+                        format!("the curve `y` uses `{name}`, which is neither `x` nor a constant"),
+                        span.clone(),
+                    )
+                    .with_hint("write y as a formula of x and the [constants]: \"x^2/(2*R)\"")
+                })?;
+            JointKind::Curve {
+                on,
+                curve: std::sync::Arc::new(curve),
             }
         }
         "pulley" => {

@@ -267,3 +267,55 @@ fn rocket_coasts_after_burnout() {
         1
     );
 }
+
+const BEAD: &str = r#"
+dimensions = 2
+[constants]
+k = "0.5 1/m"
+g = "9.81 m/s^2"
+x0 = "0.01 m"
+[[body]]
+name = "bead"
+mass = "0.1 kg"
+position = ["x0", "k*x0^2"]
+[[force]]
+kind = "uniform-gravity"
+g = "g"
+[[joint]]
+name = "wire"
+kind = "curve"
+on = "bead"
+y = "k*x^2"
+[integrator]
+method = "dop853"
+rtol = 1e-11
+atol = 1e-13
+[stop]
+t_max = "20 s"
+[[event]]
+name = "turn"
+function = "bead.vx"
+direction = "falling"
+[observe]
+energy_error = "max(E) - min(E)"
+off_wire = "max(abs(wire.drift))"
+"#;
+
+#[test]
+fn bead_on_a_parabola_oscillates_at_sqrt_2kg() {
+    // y = k x²: small oscillations have ω² = 2 k g
+    let s = run_text(BEAD);
+    let times: Vec<f64> = s
+        .events
+        .iter()
+        .filter(|e| e.name == "turn")
+        .map(|e| e.t)
+        .collect();
+    let period = (times[times.len() - 1] - times[0]) / (times.len() - 1) as f64;
+    let expected = 2.0 * std::f64::consts::PI / (2.0_f64 * 0.5 * 9.81).sqrt();
+    // the amplitude is 1 cm: the nonlinearity shifts the period by ~ (k x0)² relative
+    close(period, expected, 1e-4 * expected);
+    assert!(s.observables["energy_error"] < 1e-10);
+    assert!(s.observables["off_wire"] < 1e-10);
+    close(s.work["wire"], 0.0, 1e-10);
+}

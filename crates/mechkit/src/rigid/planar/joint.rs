@@ -1,6 +1,55 @@
 //! The joints of a planar mechanism and the constraint rows they contribute.
 
+use std::sync::Arc;
+
+use mechkit_expr::{Expr, MapScope, Program, Sym};
+
 use crate::Real;
+
+/// A curve `y = f(x)` of the plane, with `f'` and `f''` derived symbolically and compiled.
+#[derive(Debug, Clone)]
+pub struct Curve {
+    source: String,
+    programs: [Program; 3],
+}
+
+impl PartialEq for Curve {
+    fn eq(&self, other: &Self) -> bool {
+        self.source == other.source
+    }
+}
+
+impl Curve {
+    /// `y = f(x)` given by `f`, a formula of `x` and of the names in `constants`; `Err` names
+    /// a name that is neither.
+    pub fn new(f: &Expr, constants: &[(String, Real)]) -> Result<Self, String> {
+        let mut scope = MapScope::new();
+        for (name, value) in constants {
+            scope = scope.constant(name, *value);
+        }
+        let scope = scope.slot("x", 0);
+        let d1 = Sym::from_expr(f).diff("x");
+        let d2 = d1.diff("x");
+        let programs = [
+            Program::compile(f, &scope)?.native(),
+            Program::compile(&d1.to_expr(), &scope)?.native(),
+            Program::compile(&d2.to_expr(), &scope)?.native(),
+        ];
+        Ok(Self {
+            source: Sym::from_expr(f).to_string(),
+            programs,
+        })
+    }
+
+    /// `f(x)`, `f'(x)`, `f''(x)`.
+    pub fn eval(&self, x: Real) -> [Real; 3] {
+        [
+            self.programs[0].eval(&[x]),
+            self.programs[1].eval(&[x]),
+            self.programs[2].eval(&[x]),
+        ]
+    }
+}
 
 /// A point a joint holds: fixed in the world, or fixed in a body.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -82,6 +131,14 @@ pub enum JointKind {
         mode: usize,
         /// Friction along the line.
         friction: Friction,
+    },
+    /// A point kept on the curve `y = f(x)` (a bead on a wire, a car on a track); the curve
+    /// pushes both ways.
+    Curve {
+        /// The point.
+        on: Anchor,
+        /// The curve.
+        curve: Arc<Curve>,
     },
     /// An ideal string over the top of a pulley of radius `radius` centred at `centre`, from
     /// `a` to `b`: the two straight pieces and the arc between their tangent points add up to

@@ -27,5 +27,5 @@
 mod joint;
 mod solve;
 
-pub use joint::{Anchor, Friction, Joint, JointKind};
+pub use joint::{Anchor, Curve, Friction, Joint, JointKind};
 pub use solve::{JointForce, Mechanism, PlanarBody, REPORT_FIELDS};

@@ -184,6 +184,16 @@ impl Mechanism {
                         }
                     }
                 }
+                JointKind::Curve { on, ref curve } => {
+                    let p = self.point(on, q, v);
+                    let [f, f1, f2] = curve.eval(p.p[0]);
+                    let mut row = Row::new(ji);
+                    // C = y - f(x): J = (-f', 1) at the point; d/dt of J adds -f'' ẋ²
+                    p.add(&mut row, [-f1, 1.0], 1.0);
+                    row.bias -= f2 * p.vel[0] * p.vel[0];
+                    row.c = Some(p.p[1] - f);
+                    rows.push(row);
+                }
                 JointKind::Pulley {
                     a,
                     b,
@@ -365,6 +375,14 @@ impl Mechanism {
                     f,
                     gap,
                 ]
+            }
+            JointKind::Curve { on, ref curve } => {
+                let p = self.point(on, q, v);
+                let [f, f1, _] = curve.eval(p.p[0]);
+                let n = [-f1, 1.0];
+                let len = n[0].hypot(n[1]);
+                // the curve's force on the point: λ (-f', 1), its normal force λ √(1 + f'²)
+                [l0 * n[0], l0 * n[1], l0 * len, 0.0, (p.p[1] - f) / len]
             }
             JointKind::Pulley { .. } => {
                 let row = s.rows.iter().find(|r| r.joint == joint);
@@ -719,7 +737,7 @@ impl Joint {
             JointKind::Hinge { a, b }
             | JointKind::Rod { a, b, .. }
             | JointKind::String { a, b, .. } => world(a) || world(b),
-            JointKind::Contact { .. } | JointKind::Pulley { .. } => true,
+            JointKind::Contact { .. } | JointKind::Pulley { .. } | JointKind::Curve { .. } => true,
         }
     }
 }
