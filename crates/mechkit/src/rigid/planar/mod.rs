@@ -24,8 +24,10 @@
 //! when its sliding speed reaches zero, if static friction can then hold it (else it slides
 //! back the other way). Rolling without slipping is a disk's contact that sticks.
 
+mod at;
 mod joint;
 mod solve;
 
+pub use at::AppliedAt;
 pub use joint::{Anchor, Curve, Friction, Joint, JointKind};
 pub use solve::{JointForce, Mechanism, PlanarBody, REPORT_FIELDS};
