@@ -41,6 +41,30 @@ pub trait Force: Debug + Send + Sync {
     fn internal(&self) -> bool {
         false
     }
+
+    /// Power that is not `F·v` of its force (the kinetic energy an ejected mass carries
+    /// away); 0 for ordinary forces.
+    fn extra_power(&self, _k: &Kinematics<'_>) -> Real {
+        0.0
+    }
+
+    /// Whether it is a constraint force (a joint): it is then evaluated after every other
+    /// force, from their sum, by [`Force::add_constraint_forces`].
+    fn constraint(&self) -> bool {
+        false
+    }
+
+    /// For a constraint force: adds its force into `out`, given the sum `applied` of the
+    /// forces that are not constraints.
+    fn add_constraint_forces(&self, k: &Kinematics<'_>, _applied: &[Real], out: &mut [Real]) {
+        self.add_forces(k, out);
+    }
+
+    /// For a constraint force: what it reports (force components, normal force or tension,
+    /// friction, violation: [`crate::rigid::planar::REPORT_FIELDS`]); NaN for other forces.
+    fn constraint_report(&self, _k: &Kinematics<'_>, _applied: &[Real]) -> [Real; 5] {
+        [Real::NAN; 5]
+    }
 }
 
 /// A body a single-body force acts on, with the force's coefficient for that body (a drag

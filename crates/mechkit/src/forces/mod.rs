@@ -30,6 +30,7 @@ mod gravity;
 mod pair;
 mod set;
 mod spring;
+mod thrust;
 mod wind;
 
 pub mod terminal;
@@ -50,4 +51,5 @@ pub use gravity::{Attractor, NewtonianGravity, UniformGravity};
 pub use pair::{PairError, PairForce, RadialPotential};
 pub use set::ForceSet;
 pub use spring::{Spring, SpringEnds};
+pub use thrust::{Exhaust, Thrust};
 pub use wind::Wind;

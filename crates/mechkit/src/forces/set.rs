@@ -50,14 +50,34 @@ impl ForceSet {
     /// Sets `out` to the total force.
     pub fn total_into(&self, k: &Kinematics<'_>, out: &mut [Real]) {
         out.fill(0.0);
-        for f in &self.forces {
+        for f in self.forces.iter().filter(|f| !f.constraint()) {
+            f.add_forces(k, out);
+        }
+        if self.has_constraints() {
+            let applied = out.to_vec();
+            for f in self.forces.iter().filter(|f| f.constraint()) {
+                f.add_constraint_forces(k, &applied, out);
+            }
+        }
+    }
+
+    /// Sets `out` to the sum of the forces that are not constraints.
+    pub fn applied_into(&self, k: &Kinematics<'_>, out: &mut [Real]) {
+        out.fill(0.0);
+        for f in self.forces.iter().filter(|f| !f.constraint()) {
             f.add_forces(k, out);
         }
     }
 
+    /// Whether some force is a constraint (a joint).
+    pub fn has_constraints(&self) -> bool {
+        self.forces.iter().any(|f| f.constraint())
+    }
+
     /// Sets `out` to the total force, `power[i]` to the power `F_i·v` of force `i` and
     /// `net[i*dim..]` to its net force summed over the bodies; `scratch` holds one force at a
-    /// time.
+    /// time. Constraint forces come after the others, from their sum; `report` gets each
+    /// constraint's report (5 values per force, NaN for the others) when given.
     pub fn total_and_power_into(
         &self,
         k: &Kinematics<'_>,
@@ -66,20 +86,51 @@ impl ForceSet {
         net: &mut [Real],
         scratch: &mut [Real],
     ) {
+        self.total_power_report(k, out, power, net, scratch, None);
+    }
+
+    /// [`ForceSet::total_and_power_into`] with the constraints' reports.
+    pub(crate) fn total_power_report(
+        &self,
+        k: &Kinematics<'_>,
+        out: &mut [Real],
+        power: &mut [Real],
+        net: &mut [Real],
+        scratch: &mut [Real],
+        mut report: Option<&mut [Real]>,
+    ) {
         out.fill(0.0);
         let d = k.dim;
-        for (i, (f, p)) in self.forces.iter().zip(power.iter_mut()).enumerate() {
-            scratch.fill(0.0);
-            f.add_forces(k, scratch);
-            *p = dot(scratch, k.v);
-            for (o, s) in out.iter_mut().zip(scratch.iter()) {
-                *o += s;
-            }
-            let n = &mut net[i * d..(i + 1) * d];
-            n.fill(0.0);
-            for body in scratch.chunks_exact(d) {
-                for (nk, fk) in n.iter_mut().zip(body) {
-                    *nk += fk;
+        let n_pos = d * k.n_bodies();
+        let mut applied: Option<Vec<Real>> = None;
+        for pass in [false, true] {
+            for (i, (f, p)) in self.forces.iter().zip(power.iter_mut()).enumerate() {
+                if f.constraint() != pass {
+                    continue;
+                }
+                scratch.fill(0.0);
+                if pass {
+                    let applied = applied.get_or_insert_with(|| out.to_vec());
+                    f.add_constraint_forces(k, applied, scratch);
+                    if let Some(r) = report.as_deref_mut() {
+                        r[i * 5..i * 5 + 5].copy_from_slice(&f.constraint_report(k, applied));
+                    }
+                } else if let Some(r) = report.as_deref_mut() {
+                    r[i * 5..i * 5 + 5].fill(Real::NAN);
+                }
+                if !pass {
+                    f.add_forces(k, scratch);
+                }
+                *p = dot(scratch, k.v) + f.extra_power(k);
+                for (o, s) in out.iter_mut().zip(scratch.iter()) {
+                    *o += s;
+                }
+                let n = &mut net[i * d..(i + 1) * d];
+                n.fill(0.0);
+                for body in scratch[..n_pos].chunks_exact(d) {
+                    for (nk, fk) in n.iter_mut().zip(body) {
+                        *nk += fk;
+                    }
                 }
             }
         }

@@ -16,7 +16,7 @@ pub struct StateJets<'a> {
     poly: &'a StepPolynomial,
     s: Interval,
     dim: usize,
-    /// Number of position coordinates (velocities follow them in the polynomial).
+    /// Number of coordinates (velocities follow them in the polynomial).
     n: usize,
     mass: &'a [Real],
     /// Whether the work of each force follows the velocities in the polynomial.
@@ -25,20 +25,21 @@ pub struct StateJets<'a> {
 
 impl<'a> StateJets<'a> {
     /// The state of a system in `dim` dimensions with body masses `mass`, over the fractions
-    /// `s` of the step whose interpolant is `poly` (`[q, v]`, then the work of each force
-    /// when `work`).
+    /// `s` of the step whose interpolant is `poly` (`[q, v]` with `dof` coordinates, then the
+    /// work of each force when `work`).
     pub fn new(
         poly: &'a StepPolynomial,
         s: Interval,
         dim: usize,
         mass: &'a [Real],
+        dof: usize,
         work: bool,
     ) -> Self {
         Self {
             poly,
             s,
             dim,
-            n: dim * mass.len(),
+            n: dof,
             mass,
             work,
         }
@@ -57,6 +58,16 @@ impl<'a> StateJets<'a> {
     /// Position component `i` of body `b`.
     pub fn position(&self, b: usize, i: usize) -> Jet {
         self.poly.enclose(b * self.dim + i, self.s)
+    }
+
+    /// Coordinate `i` of `q` (an angle, a mode).
+    pub fn coordinate(&self, i: usize) -> Jet {
+        self.poly.enclose(i, self.s)
+    }
+
+    /// Rate of coordinate `i`.
+    pub fn coordinate_rate(&self, i: usize) -> Jet {
+        self.poly.enclose(self.n + i, self.s)
     }
 
     /// Velocity component `i` of body `b`.
@@ -119,6 +130,9 @@ impl StateVar {
             StateVar::Distance(r) => j.norm(body(r)?, |b, i| j.position(b, i)),
             StateVar::Mass(r) => Jet::constant(j.mass(body(r)?)),
             StateVar::BodyKinetic(r) => j.kinetic(body(r)?),
+            StateVar::Coordinate(i) | StateVar::VariableMass(i) => j.coordinate(i),
+            StateVar::CoordinateRate(i) => j.coordinate_rate(i),
+            StateVar::Kinetic if j.n != j.dim * j.bodies() => return None,
             StateVar::Kinetic => (0..j.bodies())
                 .map(|b| j.kinetic(b))
                 .reduce(|a, c| a + c)

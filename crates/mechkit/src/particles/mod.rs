@@ -14,8 +14,8 @@ mod vars;
 
 pub use enclosure::StateJets;
 pub use kinematics::{Kinematics, dot, norm};
-pub use names::NameContext;
+pub use names::{NO_PLANAR, NameContext, PlanarNames, RigidName};
 pub use sample::{Evaluation, Sample, SampleKind};
 pub use state_expr::StateExpr;
-pub use system::{Body, ParticleSystem, ParticleSystemBuilder, SystemError};
-pub use vars::{BodyRef, Coordinates, StateVar, VarLevel};
+pub use system::{Body, Extra, ParticleSystem, ParticleSystemBuilder, SystemError};
+pub use vars::{BodyRef, Coordinates, PointRef, StateVar, VarLevel};

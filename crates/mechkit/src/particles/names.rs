@@ -5,8 +5,49 @@ use mechkit_expr::units::UnitSystem;
 use mechkit_expr::{Binding, Dim, ExprError, Formula, Scope};
 
 use super::state_expr::StateExpr;
-use super::vars::{AAXES, ANGLE, AXES, BodyRef, Coordinates, StateVar, VAXES, VarLevel};
+use super::vars::{AAXES, ANGLE, AXES, BodyRef, Coordinates, PointRef, StateVar, VAXES, VarLevel};
 use crate::Real;
+
+/// The names a planar mechanism adds: the rigid bodies' angles and points, the joints.
+#[derive(Debug, Clone, Default)]
+pub struct PlanarNames {
+    /// The rigid bodies.
+    pub rigid: Vec<RigidName>,
+    /// Each joint's name and the index of its force in the system.
+    pub joints: Vec<(String, usize)>,
+    /// Number of coordinates after the bodies' positions (angles, modes).
+    pub extras: usize,
+    /// `(body, index in q)` of the bodies whose mass varies (`rocket.m` reads the coordinate).
+    pub masses: Vec<(usize, usize)>,
+    /// The joints' mode coordinates by name (`wall.touching`, `rope.taut`, `foot.sliding`)
+    /// and their index in `q`.
+    pub modes: Vec<(String, usize)>,
+}
+
+/// No rigid bodies, no joints.
+pub static NO_PLANAR: PlanarNames = PlanarNames {
+    rigid: Vec::new(),
+    joints: Vec::new(),
+    extras: 0,
+    modes: Vec::new(),
+    masses: Vec::new(),
+};
+
+/// A rigid body of a planar mechanism, as formulas name it.
+#[derive(Debug, Clone)]
+pub struct RigidName {
+    /// Body index.
+    pub body: usize,
+    /// Index of its angle in `q`.
+    pub angle: usize,
+    /// Moment of inertia about the centre of mass (kg m²).
+    pub inertia: Real,
+    /// Named points, body frame, from the centre of mass.
+    pub points: Vec<(String, [Real; 2])>,
+}
+
+const RIGID_FIELDS: [&str; 3] = ["theta", "omega", "I"];
+const POINT_FIELDS: [&str; 4] = ["x", "y", "vx", "vy"];
 
 /// What names mean where a formula is used: the system's bodies and forces, the constants,
 /// whether bare names refer to a local body, and how much of the state may be used.
@@ -29,6 +70,8 @@ pub struct NameContext<'a> {
     pub coordinates: Coordinates,
     /// The units of the scenario: in reduced units state names have no dimension to check.
     pub units: UnitSystem,
+    /// Rigid bodies and joints of a planar mechanism.
+    pub planar: &'a PlanarNames,
 }
 
 impl NameContext<'_> {
@@ -38,12 +81,27 @@ impl NameContext<'_> {
             return Some(StateVar::Time);
         }
         let derived = self.level == VarLevel::Derived;
+        if let Some((_, i)) = self.planar.modes.iter().find(|(m, _)| m == name) {
+            return Some(StateVar::Coordinate(*i));
+        }
         if derived {
             match name {
                 "K" => return Some(StateVar::Kinetic),
                 "U" => return Some(StateVar::Potential),
                 "E" => return Some(StateVar::Energy),
+                "K_rot" if !self.planar.rigid.is_empty() => {
+                    return Some(StateVar::KineticRotation);
+                }
                 _ => {}
+            }
+            if let Some((joint, field)) = name.rsplit_once('.')
+                && let Some((_, force)) = self.planar.joints.iter().find(|(j, _)| j == joint)
+            {
+                let k = crate::rigid::planar::REPORT_FIELDS
+                    .iter()
+                    .position(|f| *f == field)
+                    .or((field == "T").then_some(2))?;
+                return Some(StateVar::Constraint(*force, k));
             }
             for (prefix, power) in [("work.", false), ("power.", true)] {
                 if let Some(force) = name.strip_prefix(prefix) {
@@ -57,16 +115,55 @@ impl NameContext<'_> {
             }
         }
         let (body, field) = match name.rsplit_once('.') {
-            Some((body, field)) => {
-                let i = self.bodies.iter().position(|b| b == body)?;
-                (BodyRef::Index(i), field)
-            }
+            Some((body, field)) => match self.bodies.iter().position(|b| b == body) {
+                Some(i) => (BodyRef::Index(i), field),
+                None => return self.point(body, field),
+            },
             None => (self.bare?, name),
         };
         self.body_field(body, field, derived)
     }
 
+    /// `body.point.x`: a named point of a rigid body.
+    fn point(&self, body_point: &str, field: &str) -> Option<StateVar> {
+        let (body, point) = body_point.split_once('.')?;
+        let i = self.bodies.iter().position(|b| b == body)?;
+        let rigid = self.planar.rigid.iter().find(|r| r.body == i)?;
+        let r = rigid.points.iter().find(|(n, _)| n == point)?.1;
+        let p = PointRef::new(i, rigid.angle, r);
+        let k = POINT_FIELDS.iter().position(|f| *f == field)?;
+        Some(if k < 2 {
+            StateVar::PointPosition(p, k)
+        } else {
+            StateVar::PointVelocity(p, k - 2)
+        })
+    }
+
     fn body_field(&self, b: BodyRef, field: &str, derived: bool) -> Option<StateVar> {
+        let body = match b {
+            BodyRef::Index(i) => Some(i),
+            BodyRef::Local => None,
+        };
+        if field == "m"
+            && let Some((_, i)) = self.planar.masses.iter().find(|(b, _)| Some(*b) == body)
+        {
+            return Some(StateVar::VariableMass(*i));
+        }
+        if let Some(rigid) = self.planar.rigid.iter().find(|r| Some(r.body) == body) {
+            match field {
+                "theta" => return Some(StateVar::Coordinate(rigid.angle)),
+                "omega" => return Some(StateVar::CoordinateRate(rigid.angle)),
+                "alpha" if derived => return Some(StateVar::CoordinateAccel(rigid.angle)),
+                "K" if derived => {
+                    return Some(StateVar::RigidKinetic(PointRef::new(
+                        rigid.body,
+                        rigid.angle,
+                        [rigid.inertia, 0.0],
+                    )));
+                }
+                _ => {}
+            }
+        }
         if self.coordinates == Coordinates::Angle {
             return match field {
                 "theta" => Some(StateVar::Position(b, 0)),
@@ -135,7 +232,28 @@ impl NameContext<'_> {
         for body in self.bodies {
             out.extend(fields.iter().map(|f| format!("{body}.{f}")));
         }
+        for rigid in &self.planar.rigid {
+            let body = &self.bodies[rigid.body];
+            out.extend(RIGID_FIELDS[..2].iter().map(|f| format!("{body}.{f}")));
+            if derived {
+                out.push(format!("{body}.alpha"));
+            }
+            for (p, _) in &rigid.points {
+                out.extend(POINT_FIELDS.iter().map(|f| format!("{body}.{p}.{f}")));
+            }
+        }
+        out.extend(self.planar.modes.iter().map(|(m, _)| m.clone()));
         if derived {
+            for (j, _) in &self.planar.joints {
+                out.extend(
+                    crate::rigid::planar::REPORT_FIELDS
+                        .iter()
+                        .map(|f| format!("{j}.{f}")),
+                );
+            }
+            if !self.planar.rigid.is_empty() {
+                out.push("K_rot".into());
+            }
             out.extend(["K", "U", "E"].map(String::from));
             for f in self.forces {
                 out.push(format!("work.{f}"));
@@ -261,6 +379,7 @@ mod tests {
             level,
             coordinates: Coordinates::Cartesian,
             units: UnitSystem::Si,
+            planar: &crate::particles::NO_PLANAR,
         }
     }
 

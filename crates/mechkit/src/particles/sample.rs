@@ -21,6 +21,12 @@ pub struct Evaluation {
     pub net: Vec<Real>,
     /// Total momentum `Σ m v`, `dim` components.
     pub momentum: Vec<Real>,
+    /// What each constraint force (joint) reports, 5 values per force
+    /// ([`crate::rigid::planar::REPORT_FIELDS`]); NaN for the other forces. Empty when the
+    /// system has no constraints.
+    pub constraint: Vec<Real>,
+    /// Rotational kinetic energy `Σ ½ I ω²` of the rigid bodies (0 without any).
+    pub kinetic_rotation: Real,
 }
 
 /// The state at one instant with its derived quantities, as passed to observers.

@@ -50,9 +50,15 @@ impl StateExpr {
 
     /// Whether it reads velocities.
     pub fn reads_velocity(&self) -> bool {
-        self.vars
-            .iter()
-            .any(|v| matches!(v, StateVar::Velocity(..) | StateVar::Speed(_)))
+        self.vars.iter().any(|v| {
+            matches!(
+                v,
+                StateVar::Velocity(..)
+                    | StateVar::Speed(_)
+                    | StateVar::CoordinateRate(_)
+                    | StateVar::PointVelocity(..)
+            )
+        })
     }
 
     /// The value, if it reads no state at all.

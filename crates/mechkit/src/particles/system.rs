@@ -57,16 +57,35 @@ pub enum SystemError {
     AngleNotOneDimensional(usize),
 }
 
+/// A coordinate after the bodies' positions: the angle of a rigid body in a plane (its
+/// "mass" the moment of inertia about the centre of mass), or a mode of a joint (a frozen
+/// coordinate: infinite inertia, changed only by events).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Extra {
+    /// Its name in outputs (`ladder.theta`, `wall.mode`).
+    pub name: String,
+    /// The body it turns, for an angle.
+    pub body: Option<usize>,
+    /// Moment of inertia about the centre of mass (kg m²); 0 for a mode.
+    pub inertia: Real,
+    /// The body whose mass it is, for a variable mass (its rate is `dm/dt`, changed only by
+    /// events: a burn ending).
+    pub mass_of: Option<usize>,
+}
+
 /// Bodies and forces in 1, 2 or 3 dimensions.
 #[derive(Debug)]
 pub struct ParticleSystem {
     dim: usize,
     bodies: Vec<Body>,
+    extras: Vec<Extra>,
     mass: Vec<Real>,
     inv_mass: Vec<Real>,
     forces: ForceSet,
     velocity_dependent: bool,
     coordinates: Coordinates,
+    /// `(body, index in q)` of the variable masses.
+    variable: Vec<(usize, usize)>,
 }
 
 /// Builds a [`ParticleSystem`].
@@ -89,6 +108,7 @@ pub struct ParticleSystem {
 pub struct ParticleSystemBuilder {
     dim: usize,
     bodies: Vec<Body>,
+    extras: Vec<Extra>,
     forces: ForceSet,
     coordinates: Coordinates,
 }
@@ -108,6 +128,43 @@ impl ParticleSystemBuilder {
     #[must_use]
     pub fn force(mut self, force: impl Force + 'static) -> Self {
         self.forces.push(Box::new(force));
+        self
+    }
+
+    /// Adds an angle coordinate to body `body`, a rigid body in a plane with moment of
+    /// inertia `inertia` about its centre of mass; returns its index among the extras.
+    #[must_use]
+    pub fn rotor(mut self, name: impl Into<String>, body: usize, inertia: Real) -> Self {
+        self.extras.push(Extra {
+            name: name.into(),
+            body: Some(body),
+            inertia,
+            mass_of: None,
+        });
+        self
+    }
+
+    /// Adds a frozen mode coordinate (changed only by events).
+    #[must_use]
+    pub fn mode(mut self, name: impl Into<String>) -> Self {
+        self.extras.push(Extra {
+            name: name.into(),
+            body: None,
+            inertia: 0.0,
+            mass_of: None,
+        });
+        self
+    }
+
+    /// Makes the mass of body `body` a coordinate (its value the mass, its rate `dm/dt`).
+    #[must_use]
+    pub fn variable_mass(mut self, name: impl Into<String>, body: usize) -> Self {
+        self.extras.push(Extra {
+            name: name.into(),
+            body: None,
+            inertia: 0.0,
+            mass_of: Some(body),
+        });
         self
     }
 
@@ -162,16 +219,40 @@ impl ParticleSystemBuilder {
                 });
             }
         }
+        for e in &self.extras {
+            if e.body.is_some() && !(e.inertia > 0.0 && e.inertia.is_finite()) {
+                return Err(SystemError::BadMass {
+                    name: e.name.clone(),
+                    mass: e.inertia,
+                });
+            }
+        }
         let mass: Vec<Real> = self.bodies.iter().map(|b| b.mass).collect();
         let inv_mass = self
             .bodies
             .iter()
             .flat_map(|b| std::iter::repeat_n(1.0 / b.mass, self.dim))
+            .chain(self.extras.iter().map(|e| {
+                if e.body.is_some() {
+                    1.0 / e.inertia
+                } else {
+                    0.0
+                }
+            }))
             .collect();
         let velocity_dependent = self.forces.velocity_dependent();
+        let start = self.dim * self.bodies.len();
+        let variable = self
+            .extras
+            .iter()
+            .enumerate()
+            .filter_map(|(i, e)| e.mass_of.map(|b| (b, start + i)))
+            .collect();
         Ok(ParticleSystem {
+            variable,
             dim: self.dim,
             bodies: self.bodies,
+            extras: self.extras,
             mass,
             inv_mass,
             forces: self.forces,
@@ -205,6 +286,27 @@ impl ParticleSystem {
         &self.bodies
     }
 
+    /// The coordinates after the bodies' positions (angles of rigid bodies, joint modes).
+    pub fn extras(&self) -> &[Extra] {
+        &self.extras
+    }
+
+    /// Index in `q` of the first extra coordinate.
+    pub fn extras_start(&self) -> usize {
+        self.dim * self.bodies.len()
+    }
+
+    /// Rotational kinetic energy `Σ ½ I ω²` of the rigid bodies.
+    pub fn rotational_kinetic_energy(&self, v: &[Real]) -> Real {
+        let start = self.extras_start();
+        self.extras
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| e.body.is_some())
+            .map(|(i, e)| 0.5 * e.inertia * v[start + i] * v[start + i])
+            .sum()
+    }
+
     /// Masses, one per body.
     pub fn masses(&self) -> &[Real] {
         &self.mass
@@ -231,6 +333,20 @@ impl ParticleSystem {
         self.forces.iter().any(|f| f.potential(&k).is_some())
     }
 
+    /// Whether some body's mass varies (a rocket).
+    pub fn has_variable_mass(&self) -> bool {
+        !self.variable.is_empty()
+    }
+
+    /// The masses at a state (the variable ones read from `q`).
+    pub fn masses_at(&self, q: &[Real], out: &mut Vec<Real>) {
+        out.clear();
+        out.extend_from_slice(&self.mass);
+        for &(b, i) in &self.variable {
+            out[b] = q[i];
+        }
+    }
+
     /// The force view of a state.
     pub fn kinematics<'a>(&'a self, t: Real, q: &'a [Real], v: &'a [Real]) -> Kinematics<'a> {
         Kinematics {
@@ -242,16 +358,18 @@ impl ParticleSystem {
         }
     }
 
-    /// Kinetic energy `Σ m v²/2`.
+    /// Kinetic energy `Σ m v²/2` (and `Σ I ω²/2` of the rigid bodies).
     pub fn kinetic_energy(&self, v: &[Real]) -> Real {
-        self.mass
-            .iter()
-            .enumerate()
-            .map(|(i, m)| {
-                let vi = &v[i * self.dim..(i + 1) * self.dim];
-                0.5 * m * dot(vi, vi)
-            })
-            .sum()
+        self.rotational_kinetic_energy(v)
+            + self
+                .mass
+                .iter()
+                .enumerate()
+                .map(|(i, m)| {
+                    let vi = &v[i * self.dim..(i + 1) * self.dim];
+                    0.5 * m * dot(vi, vi)
+                })
+                .sum::<Real>()
     }
 
     /// Evaluates accelerations, the power and potential of each force, and the energies at a
@@ -271,12 +389,40 @@ impl ParticleSystem {
         out.potential.resize(nf, Real::NAN);
         out.net.resize(nf * self.dim, 0.0);
         scratch.resize(n, 0.0);
-        let k = self.kinematics(t, q, v);
-        self.forces
-            .total_and_power_into(&k, &mut out.a, &mut out.power, &mut out.net, scratch);
+        let mut current = Vec::new();
+        if self.has_variable_mass() {
+            self.masses_at(q, &mut current);
+        }
+        let k = if self.has_variable_mass() {
+            Kinematics {
+                t,
+                dim: self.dim,
+                x: q,
+                v,
+                mass: &current,
+            }
+        } else {
+            self.kinematics(t, q, v)
+        };
+        let report = if self.forces.has_constraints() {
+            out.constraint.resize(nf * 5, Real::NAN);
+            Some(&mut out.constraint[..])
+        } else {
+            out.constraint.clear();
+            None
+        };
+        self.forces.total_power_report(
+            &k,
+            &mut out.a,
+            &mut out.power,
+            &mut out.net,
+            scratch,
+            report,
+        );
         for (a, w) in out.a.iter_mut().zip(&self.inv_mass) {
             *a *= w;
         }
+        self.rescale_variable(k.mass, &mut out.a);
         let mut total = None;
         for (i, f) in self.forces.iter().enumerate() {
             let u = f.potential(&k);
@@ -286,10 +432,19 @@ impl ParticleSystem {
             }
         }
         out.potential_total = total;
-        out.kinetic = self.kinetic_energy(v);
+        out.kinetic = self.rotational_kinetic_energy(v)
+            + k.mass
+                .iter()
+                .enumerate()
+                .map(|(i, m)| {
+                    let vi = &v[i * self.dim..(i + 1) * self.dim];
+                    0.5 * m * dot(vi, vi)
+                })
+                .sum::<Real>();
+        out.kinetic_rotation = self.rotational_kinetic_energy(v);
         out.momentum.clear();
         out.momentum.resize(self.dim, 0.0);
-        for (m, body) in self.mass.iter().zip(v.chunks_exact(self.dim)) {
+        for (m, body) in k.mass.iter().zip(v.chunks_exact(self.dim)) {
             for (p, vk) in out.momentum.iter_mut().zip(body) {
                 *p += m * vk;
             }
@@ -297,13 +452,43 @@ impl ParticleSystem {
     }
 }
 
+impl ParticleSystem {
+    /// `a` was divided by the starting masses: divide the variable bodies' by their current
+    /// masses instead.
+    fn rescale_variable(&self, current: &[Real], a: &mut [Real]) {
+        for &(b, _) in &self.variable {
+            let f = self.mass[b] / current[b];
+            for ak in &mut a[b * self.dim..(b + 1) * self.dim] {
+                *ak *= f;
+            }
+        }
+    }
+}
+
 impl SecondOrderSystem for ParticleSystem {
     fn dof(&self) -> usize {
-        self.dim * self.bodies.len()
+        self.dim * self.bodies.len() + self.extras.len()
     }
 
     #[inline]
     fn accel_into(&self, t: Real, q: &[Real], v: &[Real], a: &mut [Real]) {
+        if self.has_variable_mass() {
+            let mut current = Vec::new();
+            self.masses_at(q, &mut current);
+            let k = Kinematics {
+                t,
+                dim: self.dim,
+                x: q,
+                v,
+                mass: &current,
+            };
+            self.forces.total_into(&k, a);
+            for (ai, w) in a.iter_mut().zip(&self.inv_mass) {
+                *ai *= w;
+            }
+            self.rescale_variable(&current, a);
+            return;
+        }
         let k = self.kinematics(t, q, v);
         self.forces.total_into(&k, a);
         for (ai, w) in a.iter_mut().zip(&self.inv_mass) {

@@ -66,6 +66,67 @@ pub enum StateVar {
     Work(usize),
     /// Power of force `i`.
     Power(usize),
+    /// Coordinate `i` of `q` (the angle of a rigid body in a plane).
+    Coordinate(usize),
+    /// Rate of coordinate `i` (an angular velocity).
+    CoordinateRate(usize),
+    /// Second derivative of coordinate `i` (an angular acceleration).
+    CoordinateAccel(usize),
+    /// Component of the position of a body point.
+    PointPosition(PointRef, usize),
+    /// Component of the velocity of a body point.
+    PointVelocity(PointRef, usize),
+    /// Kinetic energy of a rigid body, `½ m v² + ½ I ω²`.
+    RigidKinetic(PointRef),
+    /// Rotational kinetic energy of all the rigid bodies.
+    KineticRotation,
+    /// The mass of a body whose mass varies: coordinate `i` of `q`.
+    VariableMass(usize),
+    /// Field `k` of what constraint force `i` reports
+    /// ([`crate::rigid::planar::REPORT_FIELDS`]).
+    Constraint(usize, usize),
+}
+
+/// A point of a rigid body in a plane: body `body`, turned by the angle coordinate `angle`,
+/// at `r` from its centre of mass in the body frame (stored as bits so the type is `Eq`);
+/// `r` holds the moment of inertia in its first component for [`StateVar::RigidKinetic`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PointRef {
+    /// Body index.
+    pub body: usize,
+    /// Index of the body's angle in `q`.
+    pub angle: usize,
+    r: [u64; 2],
+}
+
+impl PointRef {
+    /// The point `r` (body frame) of body `body` with angle coordinate `angle`.
+    pub fn new(body: usize, angle: usize, r: [Real; 2]) -> Self {
+        Self {
+            body,
+            angle,
+            r: [r[0].to_bits(), r[1].to_bits()],
+        }
+    }
+
+    /// The offset from the centre of mass, body frame.
+    pub fn r(self) -> [Real; 2] {
+        [Real::from_bits(self.r[0]), Real::from_bits(self.r[1])]
+    }
+
+    /// World position (`rate` false) or velocity (true) component `i` at a state.
+    pub fn value(self, x: &[Real], v: &[Real], dim: usize, i: usize, rate: bool) -> Real {
+        let r = self.r();
+        let (s, c) = x[self.angle].sin_cos();
+        let w = [c * r[0] - s * r[1], s * r[0] + c * r[1]];
+        let b = self.body * dim + i;
+        if rate {
+            let omega = v[self.angle];
+            v[b] + omega * [-w[1], w[0]][i]
+        } else {
+            x[b] + w[i]
+        }
+    }
 }
 
 /// Which names a formula may use.
@@ -168,6 +229,11 @@ impl StateVar {
                 | StateVar::Speed(_)
                 | StateVar::Distance(_)
                 | StateVar::Mass(_)
+                | StateVar::Coordinate(_)
+                | StateVar::CoordinateRate(_)
+                | StateVar::PointPosition(..)
+                | StateVar::PointVelocity(..)
+                | StateVar::VariableMass(_)
         )
     }
 
@@ -175,9 +241,14 @@ impl StateVar {
     pub fn dimension(self) -> Dimension {
         match self {
             StateVar::Time => Dimension::TIME,
-            StateVar::Position(..) | StateVar::Distance(_) => Dimension::LENGTH,
-            StateVar::Velocity(..) | StateVar::Speed(_) => Dimension::VELOCITY,
-            StateVar::Mass(_) => Dimension::MASS,
+            StateVar::Position(..)
+            | StateVar::Distance(_)
+            | StateVar::PointPosition(..)
+            | StateVar::Constraint(_, 4) => Dimension::LENGTH,
+            StateVar::Velocity(..) | StateVar::Speed(_) | StateVar::PointVelocity(..) => {
+                Dimension::VELOCITY
+            }
+            StateVar::Mass(_) | StateVar::VariableMass(_) => Dimension::MASS,
             StateVar::Acceleration(..) | StateVar::AccelerationMagnitude(_) => {
                 Dimension::ACCELERATION
             }
@@ -185,8 +256,14 @@ impl StateVar {
             | StateVar::Kinetic
             | StateVar::Potential
             | StateVar::Energy
-            | StateVar::Work(_) => Dimension::ENERGY,
+            | StateVar::Work(_)
+            | StateVar::RigidKinetic(_)
+            | StateVar::KineticRotation => Dimension::ENERGY,
             StateVar::Power(_) => Dimension::POWER,
+            StateVar::Coordinate(_) => Dimension::NONE,
+            StateVar::CoordinateRate(_) => Dimension::FREQUENCY,
+            StateVar::CoordinateAccel(_) => Dimension::base([0, 0, -2, 0, 0, 0, 0]),
+            StateVar::Constraint(..) => Dimension::FORCE,
         }
     }
 
@@ -194,11 +271,18 @@ impl StateVar {
     pub fn unit(self) -> &'static str {
         match self {
             StateVar::Time => "s",
-            StateVar::Position(..) | StateVar::Distance(_) => "m",
-            StateVar::Velocity(..) | StateVar::Speed(_) => "m/s",
-            StateVar::Mass(_) => "kg",
+            StateVar::Position(..)
+            | StateVar::Distance(_)
+            | StateVar::PointPosition(..)
+            | StateVar::Constraint(_, 4) => "m",
+            StateVar::Velocity(..) | StateVar::Speed(_) | StateVar::PointVelocity(..) => "m/s",
+            StateVar::Mass(_) | StateVar::VariableMass(_) => "kg",
             StateVar::Acceleration(..) | StateVar::AccelerationMagnitude(_) => "m/s²",
             StateVar::Power(_) => "W",
+            StateVar::Coordinate(_) => "rad",
+            StateVar::CoordinateRate(_) => "rad/s",
+            StateVar::CoordinateAccel(_) => "rad/s²",
+            StateVar::Constraint(..) => "N",
             _ => "J",
         }
     }
@@ -232,6 +316,10 @@ impl StateVar {
             StateVar::Speed(_) => norm(k.velocity(self.body(local))),
             StateVar::Distance(_) => norm(k.position(self.body(local))),
             StateVar::Mass(_) => k.mass[self.body(local)],
+            StateVar::Coordinate(i) | StateVar::VariableMass(i) => k.x[i],
+            StateVar::CoordinateRate(i) => k.v[i],
+            StateVar::PointPosition(p, i) => p.value(k.x, k.v, d, i, false),
+            StateVar::PointVelocity(p, i) => p.value(k.x, k.v, d, i, true),
             other => panic!("{other:?} is not a kinematic quantity"),
         }
     }
@@ -251,6 +339,19 @@ impl StateVar {
             StateVar::Energy => s.energy(),
             StateVar::Work(i) => s.work[i],
             StateVar::Power(i) => s.eval.power[i],
+            StateVar::CoordinateAccel(i) => s.eval.a[i],
+            StateVar::KineticRotation => s.eval.kinetic_rotation,
+            StateVar::Constraint(i, k) => s
+                .eval
+                .constraint
+                .get(i * 5 + k)
+                .copied()
+                .unwrap_or(Real::NAN),
+            StateVar::RigidKinetic(p) => {
+                let v = &s.v[p.body * dim..(p.body + 1) * dim];
+                let inertia = p.r()[0];
+                0.5 * mass[p.body] * dot(v, v) + 0.5 * inertia * s.v[p.angle] * s.v[p.angle]
+            }
             kin => kin.value_kinematic(
                 &Kinematics {
                     t: s.t,

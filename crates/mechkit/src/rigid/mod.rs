@@ -19,6 +19,7 @@ pub mod friction;
 pub mod impact;
 mod input;
 pub mod kinematics;
+pub mod planar;
 pub mod rolling;
 pub mod rotation;
 

@@ -41,8 +41,27 @@ const TOP_KEYS: &[&str] = &[
     "rigid_body",
     "torque",
     "units",
+    "joint",
+    "stabilisation",
 ];
-const BODY_KEYS: &[&str] = &["name", "mass", "position", "velocity", "radius"];
+const BODY_KEYS: &[&str] = &[
+    "name",
+    "mass",
+    "position",
+    "velocity",
+    "radius",
+    "mass_rate",
+    "exhaust_speed",
+    "burnout_mass",
+    "thrust_direction",
+];
+/// The keys of a body that ejects mass (a rocket).
+pub(crate) const ROCKET_KEYS: [&str; 4] = [
+    "mass_rate",
+    "exhaust_speed",
+    "burnout_mass",
+    "thrust_direction",
+];
 
 /// State names a constant may not take (formulas would become ambiguous).
 pub(crate) const RESERVED: &[&str] = &[
@@ -107,6 +126,34 @@ pub(crate) fn build_with(
     };
 
     let rigid_tables = root.tables("rigid_body")?;
+    if (!rigid_tables.is_empty() || root.get("joint").is_some()) && dim == 2 {
+        let constants = constants_with(
+            &root,
+            &[RESERVED, super::rigid::RIGID_RESERVED].concat(),
+            overrides,
+        )?;
+        return super::planar::build_planar(name, &root, title, constants, &rigid_tables);
+    }
+    if !rigid_tables.is_empty() && dim == 3 {
+        return Err(src
+            .error(
+                ErrorKind::Invalid,
+                "free rigid bodies in scenarios move in a plane for now: `dimensions` must be 2",
+                root.key_span("dimensions"),
+            )
+            .with_hint("for a free body in space use `mechkit spin` (torque-free, Euler's equations); hinged bodies: leave out `dimensions`"));
+    }
+    if let Some(v) = root.get("joint") {
+        return Err(src
+            .error(
+                ErrorKind::Invalid,
+                "[[joint]]s join bodies of a plane: the scenario needs `dimensions = 2`",
+                v.span(),
+            )
+            .with_hint(
+                "set `dimensions = 2`; joints hold [[body]] particles and [[rigid_body]]s",
+            ));
+    }
     if !rigid_tables.is_empty() {
         let constants = constants_with(
             &root,
@@ -165,6 +212,54 @@ pub(crate) fn build_with(
         force_names.push(f.name().to_string());
         builder = builder.boxed_force(f);
     }
+    let rockets = super::rocket::read_rockets(&root, dim, &bodies, &masses, &constants)?;
+    let first_extra = dim * bodies.len();
+    let mut extra_q = Vec::new();
+    let mut extra_v = Vec::new();
+    let mut rocket_events = Vec::new();
+    let mut variable = Vec::new();
+    for (k, r) in rockets.iter().enumerate() {
+        let coord = first_extra + k;
+        let name = &bodies[r.body];
+        let (thrust, exhaust) = if rockets.len() == 1 {
+            ("thrust".to_string(), "exhaust".to_string())
+        } else {
+            (format!("{name}_thrust"), format!("{name}_exhaust"))
+        };
+        for n in [&thrust, &exhaust] {
+            if force_names.contains(n) {
+                return Err(src
+                    .error(ErrorKind::Invalid, format!("a force is named `{n}`, the name of the rocket's own entry in the ledger"), root.key_span("force"))
+                    .with_hint("rename that [[force]]: a body with `mass_rate` brings its `thrust` and `exhaust`"));
+            }
+        }
+        builder = builder
+            .force(crate::forces::Thrust::new(
+                thrust.clone(),
+                r.body,
+                coord,
+                r.exhaust_speed,
+                r.direction.clone(),
+            ))
+            .force(crate::forces::Exhaust::new(exhaust.clone(), r.body, coord));
+        force_names.push(thrust);
+        force_names.push(exhaust);
+        builder = builder.variable_mass(format!("{name}.m"), r.body);
+        extra_q.push(masses[r.body]);
+        extra_v.push(-r.rate);
+        variable.push((r.body, coord));
+        let m1 = r.burnout_mass;
+        rocket_events.push(
+            crate::simulate::Event::new(format!("{name} burnout"), move |s, _| s.q[coord] - m1)
+                .direction(crate::simulate::Direction::Falling)
+                .max_count(1)
+                .set(move |s, _, y| {
+                    let n = s.q.len();
+                    y[coord] = m1;
+                    y[n + coord] = 0.0;
+                }),
+        );
+    }
     let contacts = read_contacts(
         &root,
         &Spheres {
@@ -191,6 +286,10 @@ pub(crate) fn build_with(
     let system = builder
         .build()
         .map_err(|e| ScenarioError::new(ErrorKind::Invalid, e.to_string()))?;
+    let mut q = q;
+    let mut v = v;
+    q.extend(extra_q);
+    v.extend(extra_v);
 
     let env = ValueEnv {
         constants: &constants,
@@ -218,8 +317,13 @@ pub(crate) fn build_with(
             stepping,
             bodies,
             forces: force_names,
-            events: contacts.events,
+            events: contacts.events.into_iter().chain(rocket_events).collect(),
             warnings,
+            planar: crate::particles::PlanarNames {
+                masses: variable,
+                extras: rockets.len(),
+                ..Default::default()
+            },
         },
     )
 }
@@ -238,6 +342,8 @@ pub(crate) struct Model<'n> {
     /// Events the model brings (collisions, a wheel stopping), after those of `[[event]]`.
     pub events: Vec<crate::simulate::Event>,
     pub warnings: Vec<String>,
+    /// Rigid bodies and joints of a planar mechanism.
+    pub planar: crate::particles::PlanarNames,
 }
 
 /// Reads `[stop]`, `[[event]]`, `[observe]` and `[output]` against the model's names.
@@ -254,6 +360,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         forces,
         events: model_events,
         mut warnings,
+        planar,
     } = m;
     let env = ValueEnv {
         constants: &constants,
@@ -269,6 +376,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         level: VarLevel::Derived,
         coordinates: system.coordinates(),
         units: root.src.units,
+        planar: &planar,
     };
     let (stop, t_max, max_steps) = read_stop(root, env, &names)?;
     let mut events = read_events(root, &names)?;
@@ -306,6 +414,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         warnings,
         units: root.src.units,
         source_hash: super::provenance::fnv1a(root.src.text.as_bytes()),
+        planar,
     })
 }
 
@@ -347,7 +456,7 @@ pub(crate) fn body_name(
         .with_hint("every body needs its own name: formulas and output columns use it"))
 }
 
-type Bodies = (
+pub(crate) type Bodies = (
     Vec<String>,
     Vec<Real>,
     Vec<Real>,
@@ -355,7 +464,7 @@ type Bodies = (
     Vec<Option<Real>>,
 );
 
-fn bodies(
+pub(crate) fn bodies(
     root: &Table<'_, '_>,
     dim: usize,
     constants: &[Constant],

@@ -201,7 +201,7 @@ fn with_set(
         ..*names
     };
     let dim = names.dim;
-    let dof = dim * names.bodies.len();
+    let dof = dim * names.bodies.len() + names.planar.extras;
     let mut assignments: Vec<(usize, StateExpr)> = Vec::new();
     let mut described = Vec::new();
     for (key, value) in sub.entries {
@@ -209,6 +209,8 @@ fn with_set(
         let (index, want) = match kinematic.resolve(target) {
             Some(StateVar::Position(b, i)) => (body(b) * dim + i, Dimension::LENGTH),
             Some(StateVar::Velocity(b, i)) => (dof + body(b) * dim + i, Dimension::VELOCITY),
+            Some(StateVar::Coordinate(i)) => (i, Dimension::NONE),
+            Some(StateVar::CoordinateRate(i)) => (dof + i, Dimension::FREQUENCY),
             _ => {
                 return Err(t
                     .src

@@ -301,6 +301,7 @@ fn compile_components(
         level: VarLevel::Kinematic,
         coordinates: crate::particles::Coordinates::Cartesian,
         units: t.src.units,
+        planar: &crate::particles::NO_PLANAR,
     };
     let mut out = Vec::new();
     for (text, span) in items {

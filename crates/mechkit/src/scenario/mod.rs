@@ -52,9 +52,11 @@ mod integrator;
 mod limits;
 mod observe;
 mod output;
+mod planar;
 mod plot;
 mod provenance;
 mod rigid;
+mod rocket;
 mod run;
 mod stop;
 mod summary;
@@ -144,6 +146,8 @@ pub struct Scenario {
     pub units: mechkit_expr::units::UnitSystem,
     /// FNV-1a of the scenario text (the summary's provenance).
     pub source_hash: u64,
+    /// The names of a planar mechanism's rigid bodies and joints (empty otherwise).
+    pub planar: crate::particles::PlanarNames,
 }
 
 impl Scenario {

@@ -154,6 +154,10 @@ pub fn csv_columns(sys: &ParticleSystem, has_potential: bool) -> Vec<Column> {
                 .map(|a| Column::new(format!("{}.{a}", b.name), v_unit)),
         );
     }
+    for e in sys.extras().iter().filter(|e| e.body.is_some()) {
+        cols.push(Column::new(format!("{}.theta", e.name), "rad"));
+        cols.push(Column::new(format!("{}.omega", e.name), "rad/s"));
+    }
     if sys.bodies().len() > 1 {
         for (prefix, unit) in [("", "m"), ("v", "m/s"), ("a", "m/s^2")] {
             cols.extend(
@@ -163,6 +167,9 @@ pub fn csv_columns(sys: &ParticleSystem, has_potential: bool) -> Vec<Column> {
         }
         cols.push(Column::new("K_cm", "J"));
         cols.push(Column::new("K_internal", "J"));
+    }
+    if sys.extras().iter().any(|e| e.body.is_some()) {
+        cols.push(Column::new("K_rot", "J"));
     }
     cols.push(Column::new("K", "J"));
     if has_potential {
@@ -241,6 +248,9 @@ pub(crate) struct CsvWriter {
     out: StreamFile,
     keep: Keep,
     dim: usize,
+    bodies: usize,
+    /// Indices in `q` of the rigid bodies' angles.
+    rotors: Vec<usize>,
     /// The masses, when there are two or more bodies (for the centre-of-mass columns).
     masses: Option<Vec<Real>>,
     has_potential: bool,
@@ -271,6 +281,14 @@ impl CsvWriter {
             out,
             keep,
             dim: sys.dim(),
+            bodies: sys.bodies().len(),
+            rotors: sys
+                .extras()
+                .iter()
+                .enumerate()
+                .filter(|(_, e)| e.body.is_some())
+                .map(|(i, _)| sys.extras_start() + i)
+                .collect(),
             masses: (sys.masses().len() > 1).then(|| sys.masses().to_vec()),
             has_potential,
             last_t: None,
@@ -283,8 +301,7 @@ impl CsvWriter {
     fn write(&mut self, s: &Sample<'_>) {
         self.line.clear();
         push_number(&mut self.line, s.t);
-        let n = s.q.len() / self.dim;
-        for b in 0..n {
+        for b in 0..self.bodies {
             for &x in s.q[b * self.dim..(b + 1) * self.dim]
                 .iter()
                 .chain(&s.v[b * self.dim..(b + 1) * self.dim])
@@ -293,9 +310,19 @@ impl CsvWriter {
                 push_number(&mut self.line, x);
             }
         }
+        for &i in &self.rotors {
+            for x in [s.q[i], s.v[i]] {
+                self.line.push(',');
+                push_number(&mut self.line, x);
+            }
+        }
         if let Some(masses) = self.masses.take() {
             self.push_centre_of_mass(&masses, s);
             self.masses = Some(masses);
+        }
+        if !self.rotors.is_empty() {
+            self.line.push(',');
+            push_number(&mut self.line, s.eval.kinetic_rotation);
         }
         self.line.push(',');
         push_number(&mut self.line, s.eval.kinetic);

@@ -42,6 +42,21 @@ pub struct BodySummary {
     pub velocity: Vec<Real>,
     /// Final speed (m/s).
     pub speed: Real,
+    /// A rigid body's final angle (rad) and angular velocity (rad/s), and its moment of
+    /// inertia about the centre of mass (kg m²).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rotation: Option<Rotation>,
+}
+
+/// A rigid body's turning at the end of the run.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Rotation {
+    /// Angle (rad).
+    pub theta: Real,
+    /// Angular velocity (rad/s).
+    pub omega: Real,
+    /// Moment of inertia about the centre of mass (kg m²).
+    pub inertia: Real,
 }
 
 /// Start and end values.
@@ -296,11 +311,12 @@ pub struct CentreOfMass {
 }
 
 fn centre_of_mass(sys: &ParticleSystem, q: &[Real], v: &[Real]) -> (BodyState, Real) {
+    let n = sys.extras_start();
     let p = PointMasses::new(
         sys.dim(),
         sys.masses().to_vec(),
-        q.to_vec(),
-        Some(v.to_vec()),
+        q[..n].to_vec(),
+        Some(v[..n].to_vec()),
     )
     .expect("a built system has positive masses and matching coordinates")
     .summary();
@@ -347,6 +363,16 @@ impl Summary {
             .map(|(i, b)| {
                 let vel = v[i * d..(i + 1) * d].to_vec();
                 let speed = vel.iter().map(|x| x * x).sum::<Real>().sqrt();
+                let start = sys.extras_start();
+                let rotation = sys
+                    .extras()
+                    .iter()
+                    .position(|e| e.body == Some(i))
+                    .map(|k| Rotation {
+                        theta: q[start + k],
+                        omega: v[start + k],
+                        inertia: sys.extras()[k].inertia,
+                    });
                 (
                     b.name.clone(),
                     BodySummary {
@@ -354,6 +380,7 @@ impl Summary {
                         position: q[i * d..(i + 1) * d].to_vec(),
                         velocity: vel,
                         speed,
+                        rotation,
                     },
                 )
             })

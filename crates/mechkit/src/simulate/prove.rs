@@ -57,9 +57,11 @@ impl Bounds for Proving<'_> {
 
     fn enclose(&mut self, i: usize, poly: &StepPolynomial, s: Interval) -> Option<Jet> {
         let (dim, mass) = (self.sys.dim(), self.sys.masses());
-        self.events[i]
-            .condition()
-            .enclose(&StateJets::new(poly, s, dim, mass, self.work), self.sys)
+        let dof = crate::ode::SecondOrderSystem::dof(self.sys);
+        self.events[i].condition().enclose(
+            &StateJets::new(poly, s, dim, mass, dof, self.work),
+            self.sys,
+        )
     }
 
     fn samples_asked(&self, i: usize) -> usize {

@@ -1,5 +1,6 @@
 mod errors;
 mod examples;
+mod planar;
 mod rigid;
 mod run;
 mod sweep;

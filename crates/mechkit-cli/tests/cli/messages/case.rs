@@ -132,6 +132,7 @@ pub fn all_cases() -> impl Iterator<Item = &'static Case> {
         super::cli_flags::CASES,
         super::commands::CASES,
         super::runtime::CASES,
+        super::planar::CASES,
         super::limits::CASES,
     ]
     .into_iter()

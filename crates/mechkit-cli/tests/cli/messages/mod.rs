@@ -24,6 +24,7 @@ mod data;
 mod image;
 mod limits;
 mod md;
+mod planar;
 mod runtime;
 mod scenario;
 mod scenario_values;

@@ -133,6 +133,7 @@ fn potential(t: &Table<'_, '_>, ctx: &ForceContext<'_>) -> Result<RadialPotentia
         level: VarLevel::Kinematic,
         coordinates: Coordinates::Cartesian,
         units: t.src.units,
+        planar: &crate::particles::NO_PLANAR,
     }
     .dim_of(SEPARATION);
     let dims = |n: &str| {

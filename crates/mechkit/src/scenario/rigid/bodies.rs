@@ -118,7 +118,7 @@ pub(crate) fn read_rigid_bodies(
     Ok(out)
 }
 
-fn mass_properties(
+pub(crate) fn mass_properties(
     t: &Table<'_, '_>,
     env: ValueEnv<'_>,
     dir: Option<&Path>,

@@ -97,6 +97,7 @@ pub(crate) fn build_rigid(
             forces: force_names,
             events,
             warnings,
+            planar: crate::particles::PlanarNames::default(),
         },
     )
 }

@@ -3,7 +3,7 @@
 //! coordinates ([`crate::particles::Coordinates::Angle`]): formulas use `theta`, `omega`,
 //! `alpha`, `I` instead of `x`, `v`, `a`, `m`.
 
-mod bodies;
+pub(crate) mod bodies;
 mod build;
 mod torques;
 

@@ -317,6 +317,7 @@ fn applied(
             level: VarLevel::Kinematic,
             coordinates: Coordinates::Angle,
             units: t.src.units,
+            planar: &crate::particles::NO_PLANAR,
         };
         let expr = names
             .compile(&f)

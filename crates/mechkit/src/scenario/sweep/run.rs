@@ -177,6 +177,7 @@ fn plot_spec(s: &Scenario, spec: &str) -> Result<PlotSpec, SweepError> {
         level: VarLevel::Derived,
         coordinates: s.system.coordinates(),
         units: s.units,
+        planar: &s.planar,
     };
     PlotSpec::parse(spec, &names).map_err(|(message, hint)| {
         SweepError::Options(format!("--plot: {message}\n  = hint: {hint}"))

@@ -169,6 +169,30 @@ impl Run<'_> {
         );
         emit(observers, &post)?;
         event_values(self.events, &post, self.sys, &mut self.g_a);
+        // a stop condition that the change itself makes true (a joint letting go, a mode
+        // switched) ends the run at the change, as it would have at a crossing
+        let stop = (0..self.events.len()).find(|&i| {
+            let c = self.events[i].condition();
+            self.events[i].is_stop_condition()
+                && self.book.enabled[i]
+                && !c.holds_for(at_values[i])
+                && c.holds_for(self.g_a[i])
+        });
+        if let Some(i) = stop {
+            let outcome = self.book.fire(
+                self.events,
+                &[i],
+                te,
+                &self.state.y,
+                (self.ends.t0, &self.ends.y0),
+                (te, &self.state.y),
+                self.step_scale,
+                self.steps,
+                &mut self.warnings,
+            );
+            self.stop_reason = outcome.stop.or(Some(StopReason::Event));
+            return Ok(());
+        }
         self.rearm(te, fired, at_values);
         Ok(())
     }

@@ -1,0 +1,277 @@
+//! The joints of a planar mechanism and the constraint rows they contribute.
+
+use std::sync::Arc;
+
+use mechkit_expr::{Expr, MapScope, Program, Sym};
+
+use crate::Real;
+
+/// A curve `y = f(x)` of the plane, with `f'` and `f''` derived symbolically and compiled.
+#[derive(Debug, Clone)]
+pub struct Curve {
+    source: String,
+    programs: [Program; 3],
+}
+
+impl PartialEq for Curve {
+    fn eq(&self, other: &Self) -> bool {
+        self.source == other.source
+    }
+}
+
+impl Curve {
+    /// `y = f(x)` given by `f`, a formula of `x` and of the names in `constants`; `Err` names
+    /// a name that is neither.
+    pub fn new(f: &Expr, constants: &[(String, Real)]) -> Result<Self, String> {
+        let mut scope = MapScope::new();
+        for (name, value) in constants {
+            scope = scope.constant(name, *value);
+        }
+        let scope = scope.slot("x", 0);
+        let d1 = Sym::from_expr(f).diff("x");
+        let d2 = d1.diff("x");
+        let programs = [
+            Program::compile(f, &scope)?.native(),
+            Program::compile(&d1.to_expr(), &scope)?.native(),
+            Program::compile(&d2.to_expr(), &scope)?.native(),
+        ];
+        Ok(Self {
+            source: Sym::from_expr(f).to_string(),
+            programs,
+        })
+    }
+
+    /// `f(x)`, `f'(x)`, `f''(x)`.
+    pub fn eval(&self, x: Real) -> [Real; 3] {
+        [
+            self.programs[0].eval(&[x]),
+            self.programs[1].eval(&[x]),
+            self.programs[2].eval(&[x]),
+        ]
+    }
+}
+
+/// A point a joint holds: fixed in the world, or fixed in a body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Anchor {
+    /// A fixed point of the plane (m).
+    World([Real; 2]),
+    /// A point of body `body` (index in the particle system), `r` from its centre of mass in
+    /// the body's own frame (the frame the body is described in, turned by its angle `θ`).
+    Body {
+        /// Body index.
+        body: usize,
+        /// Offset from the centre of mass in the body frame (m).
+        r: [Real; 2],
+    },
+}
+
+/// Friction of a contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Friction {
+    /// A smooth surface: only the normal force.
+    None,
+    /// Coulomb friction with static and kinetic coefficients; `mode` is the state coordinate
+    /// holding 0 while the contact sticks and the sliding direction ±1 while it slides.
+    Coulomb {
+        /// Static coefficient.
+        mu_s: Real,
+        /// Kinetic coefficient.
+        mu_k: Real,
+        /// Index of the mode coordinate in `q`.
+        mode: usize,
+    },
+    /// The contact point never slides (rolling without slipping, whatever the force).
+    NoSlip,
+}
+
+/// What a joint does.
+#[derive(Debug, Clone, PartialEq)]
+pub enum JointKind {
+    /// A pin: the two points coincide.
+    Hinge {
+        /// First point.
+        a: Anchor,
+        /// Second point.
+        b: Anchor,
+    },
+    /// A massless rigid rod: the points keep their distance.
+    Rod {
+        /// First end.
+        a: Anchor,
+        /// Second end.
+        b: Anchor,
+        /// Length (m).
+        length: Real,
+    },
+    /// An inextensible massless string: the distance is at most `length`; it pulls only while
+    /// taut (`mode` holds 1 while taut, 0 while slack).
+    String {
+        /// First end.
+        a: Anchor,
+        /// Second end.
+        b: Anchor,
+        /// Length (m).
+        length: Real,
+        /// Index of the mode coordinate in `q`.
+        mode: usize,
+    },
+    /// A point (or a disk of radius `radius` around it) on the positive side of a fixed line,
+    /// pushed by the line's normal force while touching (`mode` 1) and free while apart (0).
+    Contact {
+        /// The body point (a disk's centre).
+        on: Anchor,
+        /// Radius of the disk (0 for a point).
+        radius: Real,
+        /// A point of the line.
+        point: [Real; 2],
+        /// The line's unit normal, towards the side the body is on.
+        normal: [Real; 2],
+        /// Index of the touching-mode coordinate in `q`.
+        mode: usize,
+        /// Friction along the line.
+        friction: Friction,
+    },
+    /// A point kept on the curve `y = f(x)` (a bead on a wire, a car on a track); the curve
+    /// pushes both ways.
+    Curve {
+        /// The point.
+        on: Anchor,
+        /// The curve.
+        curve: Arc<Curve>,
+    },
+    /// An ideal string over the top of a pulley of radius `radius` centred at `centre`, from
+    /// `a` to `b`: the two straight pieces and the arc between their tangent points add up to
+    /// `length`. `sense` is +1 when `b` hangs on the right of `a` (seen with `y` up), −1 on the
+    /// left. With `wheel` (the index of a rigid body's angle in `q`) the string does not slip on
+    /// the rim: the wheel turns by the string's travel over `radius`.
+    Pulley {
+        /// First end.
+        a: Anchor,
+        /// Second end.
+        b: Anchor,
+        /// The pulley's centre.
+        centre: Anchor,
+        /// Radius (m).
+        radius: Real,
+        /// The string's length (m).
+        length: Real,
+        /// +1 when `b` is on the right of `a`, −1 on the left.
+        sense: Real,
+        /// The wheel's angle coordinate.
+        wheel: Option<usize>,
+    },
+}
+
+/// A named joint.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Joint {
+    /// Name (as in the energy ledger and in formulas: `name.N`).
+    pub name: String,
+    /// What it does.
+    pub kind: JointKind,
+}
+
+/// One scalar constraint at the acceleration level: `J a + bias = 0` (with stabilisation).
+#[derive(Debug, Clone)]
+pub(crate) struct Row {
+    /// Coordinates it involves.
+    pub idx: [usize; 9],
+    /// `∂C/∂q` (or the velocity constraint's row).
+    pub j: [Real; 9],
+    /// The direction its force acts in (`J`, except a sliding contact's normal row).
+    pub d: [Real; 9],
+    pub n: usize,
+    /// `J̇ v`.
+    pub bias: Real,
+    /// `J v`.
+    pub jv: Real,
+    /// The constraint's value, for rows at the position level.
+    pub c: Option<Real>,
+    /// The joint it belongs to.
+    pub joint: usize,
+}
+
+impl Row {
+    pub(crate) fn new(joint: usize) -> Self {
+        Self {
+            idx: [0; 9],
+            j: [0.0; 9],
+            d: [0.0; 9],
+            n: 0,
+            bias: 0.0,
+            jv: 0.0,
+            c: None,
+            joint,
+        }
+    }
+
+    pub(crate) fn push(&mut self, idx: usize, j: Real) {
+        if let Some(k) = self.idx[..self.n].iter().position(|&i| i == idx) {
+            self.j[k] += j;
+            self.d[k] += j;
+            return;
+        }
+        self.idx[self.n] = idx;
+        self.j[self.n] = j;
+        self.d[self.n] = j;
+        self.n += 1;
+    }
+
+    /// `self · x` over the row's entries.
+    pub(crate) fn dot(&self, x: &[Real]) -> Real {
+        (0..self.n).map(|k| self.j[k] * x[self.idx[k]]).sum()
+    }
+}
+
+/// A point's kinematics in the world.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Point {
+    pub p: [Real; 2],
+    pub vel: [Real; 2],
+    /// World offset from the body's centre of mass (zero for world points).
+    pub w: [Real; 2],
+    pub omega: Real,
+    /// `(x index, angle index)` of the body, if any.
+    pub coords: Option<(usize, Option<usize>)>,
+}
+
+pub(crate) fn perp(w: [Real; 2]) -> [Real; 2] {
+    [-w[1], w[0]]
+}
+
+pub(crate) fn dot2(a: [Real; 2], b: [Real; 2]) -> Real {
+    a[0] * b[0] + a[1] * b[1]
+}
+
+impl Point {
+    /// The same material point, moved by `offset` in the world (a disk's contact point).
+    pub(crate) fn shifted(self, offset: [Real; 2]) -> Self {
+        let w = [self.w[0] + offset[0], self.w[1] + offset[1]];
+        let pw = perp(w);
+        let base = [
+            self.vel[0] - self.omega * perp(self.w)[0],
+            self.vel[1] - self.omega * perp(self.w)[1],
+        ];
+        Self {
+            p: [self.p[0] + offset[0], self.p[1] + offset[1]],
+            vel: [base[0] + self.omega * pw[0], base[1] + self.omega * pw[1]],
+            w,
+            omega: self.omega,
+            coords: self.coords,
+        }
+    }
+
+    /// Adds `sign · u·p` to `row`: its Jacobian entries, `J̇ v` (for a fixed `u`) and `J v`.
+    pub(crate) fn add(&self, row: &mut Row, u: [Real; 2], sign: Real) {
+        if let Some((x, angle)) = self.coords {
+            row.push(x, sign * u[0]);
+            row.push(x + 1, sign * u[1]);
+            if let Some(a) = angle {
+                row.push(a, sign * dot2(u, perp(self.w)));
+            }
+        }
+        row.bias += sign * -self.omega * self.omega * dot2(u, self.w);
+        row.jv += sign * dot2(u, self.vel);
+    }
+}
