@@ -235,6 +235,22 @@ pub(crate) fn build_planar(
         .fold(0.0_f64, |m, x| m.max(x.abs()))
         .max(1.0);
     mechanism.initial_modes(&system, &mut q, &mut v, 1e-9 * scale);
+    if let Some((ji, c)) = mechanism.violation(&q, &v, 1e-6 * scale) {
+        let joint = &mechanism.joints()[ji];
+        let span = joint_tables
+            .get(ji)
+            .map_or_else(|| root.span.clone(), |t| t.span.clone());
+        return Err(src
+            .error(
+                ErrorKind::Invalid,
+                format!(
+                    "the joint `{}` does not hold at the start: its constraint is off by {c} m",
+                    joint.name
+                ),
+                span,
+            )
+            .with_hint("place the bodies where the joint holds them (a contact on or above its surface, a string no longer than its `length`, a rod's ends at its `length`), or leave `length` out to take the distance at the start"));
+    }
     let events = mechanism.events(first_joint);
     let planar = PlanarNames {
         rigid: rigid

@@ -62,6 +62,12 @@ pub static CASES: &[Case] = &[
         "dimensions = 3\n[[rigid_body]]\nname = \"top\"\nmass = \"1 kg\"\ninertia = \"1 kg m^2\"\n[integrator]\ndt = \"1 ms\"\n"
     ),
     check!(
+        "joint_violated_at_the_start",
+        rod_and!(
+            "[[joint]]\nkind = \"contact\"\non = \"rod.tip\"\nsurface = { point = [\"0 m\", \"1 m\"] }\n"
+        )
+    ),
+    check!(
         "planar_rigid_body_without_inertia",
         "dimensions = 2\n[[rigid_body]]\nname = \"disk\"\nmass = \"1 kg\"\n[integrator]\ndt = \"1 ms\"\n"
     ),

@@ -278,6 +278,15 @@ impl Mechanism {
         row
     }
 
+    /// The first engaged joint whose constraint is violated by more than `tol` at a state
+    /// (a body inside its surface, a string stretched past its length, a rod or hinge not
+    /// closed), with the violation.
+    pub fn violation(&self, q: &[Real], v: &[Real], tol: Real) -> Option<(usize, Real)> {
+        self.rows(q, v)
+            .iter()
+            .find_map(|r| r.c.filter(|c| c.abs() > tol).map(|c| (r.joint, c)))
+    }
+
     /// The length of the string of a mechanism whose only joint is a pulley (the reader's
     /// default length: the string as placed at the start).
     pub fn pulley_length(&self, q: &[Real], v: &[Real]) -> Real {
