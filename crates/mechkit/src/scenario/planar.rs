@@ -577,6 +577,10 @@ fn read_joint(
                 ));
             }
             let (point, normal) = surface(t, env, &kind_span)?;
+            let point = match surface_body(t, ctx)? {
+                Some(body) => Anchor::Body { body, r: point },
+                None => Anchor::World(point),
+            };
             let mode = new_mode("touching");
             let friction = friction(t, env, &mut new_mode)?;
             JointKind::Contact {
@@ -724,6 +728,43 @@ fn key_or(t: &Table<'_, '_>, key: &str, other: &Range<usize>) -> Range<usize> {
         .map_or_else(|| other.clone(), toml::Spanned::span)
 }
 
+/// `surface.on`: the particle whose surface it is (its `point` is then from that particle's
+/// position), or none for a fixed surface.
+fn surface_body(t: &Table<'_, '_>, ctx: &Names<'_>) -> Result<Option<usize>, ScenarioError> {
+    let Some(s) = t.table("surface")? else {
+        return Ok(None);
+    };
+    let Some((name, span)) = s.string("on")? else {
+        return Ok(None);
+    };
+    match ctx.bodies.iter().position(|b| b == name) {
+        Some(b) if b < ctx.n_particles => Ok(Some(b)),
+        Some(_) => Err(s
+            .src
+            .error(
+                ErrorKind::Invalid,
+                format!(
+                    "`{name}` is a rigid body: a surface on a turning body is not supported yet"
+                ),
+                span,
+            )
+            .with_hint(
+                "carry the surface on a [[body]] (a cart, a block: it moves without turning)",
+            )),
+        None => Err(s
+            .src
+            .error(
+                ErrorKind::Invalid,
+                format!(
+                    "`{name}` is not a body; the bodies are: {}",
+                    ctx.bodies.join(", ")
+                ),
+                span,
+            )
+            .with_hint("`on` names the [[body]] that carries the surface")),
+    }
+}
+
 /// `surface = { point = [x, y], normal = [nx, ny] }` or `{ point, angle }` (the line's
 /// inclination; the normal is the direction turned a quarter turn counter-clockwise). The
 /// default is the floor `y = 0` with its normal up.
@@ -735,7 +776,7 @@ fn surface(
     let Some(s) = t.table("surface")? else {
         return Ok(([0.0; 2], [0.0, 1.0]));
     };
-    s.check_keys(&["point", "normal", "angle"])?;
+    s.check_keys(&["point", "normal", "angle", "on"])?;
     let point = vector(&s, "point", Dimension::LENGTH, 2, env)?.unwrap_or_else(|| vec![0.0; 2]);
     let normal = match (
         vector(&s, "normal", Dimension::NONE, 2, env)?,

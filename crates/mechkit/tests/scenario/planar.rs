@@ -364,3 +364,22 @@ fn a_force_at_a_body_point_turns_the_body_by_its_torque() {
     assert!(s.bodies["rod"].rotation.unwrap().theta > 0.5);
     close(s.work["axle"], 0.0, 1e-9);
 }
+
+#[test]
+fn block_on_a_pulled_cart_rides_along_or_slides_back() {
+    let (m, big_m, mu_s, mu_k, g) = (1.0_f64, 4.0_f64, 0.4_f64, 0.3_f64, 9.81_f64);
+    let limit = mu_s * g * (m + big_m);
+    for f in [0.5 * limit, 0.999 * limit, 1.001 * limit, 2.0 * limit] {
+        let s = run("friction/block_on_cart.toml", &format!("F = {f} N"));
+        let (ab, ac) = if f <= limit {
+            (f / (m + big_m), f / (m + big_m))
+        } else {
+            (mu_k * g, (f - mu_k * m * g) / big_m)
+        };
+        close(s.observables["a_block"], ab, 1e-7);
+        close(s.observables["a_cart"], ac, 1e-7);
+        close(s.observables["slid"], 0.5 * (ac - ab), 1e-7);
+        // friction between the two is internal: the momentum changes only by the pull
+        close(s.momentum.end[0], f * 1.0, 1e-6 * f);
+    }
+}

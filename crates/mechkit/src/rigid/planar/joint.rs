@@ -123,8 +123,9 @@ pub enum JointKind {
         on: Anchor,
         /// Radius of the disk (0 for a point).
         radius: Real,
-        /// A point of the line.
-        point: [Real; 2],
+        /// A point of the line: fixed, or a point of a particle (the surface of a body that
+        /// moves without turning: a block on a cart).
+        point: Anchor,
         /// The line's unit normal, towards the side the body is on.
         normal: [Real; 2],
         /// Index of the touching-mode coordinate in `q`.

@@ -146,13 +146,16 @@ impl Mechanism {
                         continue;
                     }
                     let p = self.point(on, q, v);
+                    let base = self.point(point, q, v);
                     let mut nrow = Row::new(ji);
                     p.add(&mut nrow, normal, 1.0);
-                    nrow.c = Some(dot2([p.p[0] - point[0], p.p[1] - point[1]], normal) - radius);
+                    base.add(&mut nrow, normal, -1.0);
+                    nrow.c = Some(dot2([p.p[0] - base.p[0], p.p[1] - base.p[1]], normal) - radius);
                     let tangent = [normal[1], -normal[0]];
                     let contact = p.shifted([-radius * normal[0], -radius * normal[1]]);
                     let mut trow = Row::new(ji);
                     contact.add(&mut trow, tangent, 1.0);
+                    base.add(&mut trow, tangent, -1.0);
                     match friction {
                         Friction::None => rows.push(nrow),
                         Friction::NoSlip => {
@@ -376,7 +379,8 @@ impl Mechanism {
                     _ => lambdas.get(1).copied().unwrap_or(0.0),
                 };
                 let p = self.point(on, q, v);
-                let gap = dot2([p.p[0] - point[0], p.p[1] - point[1]], normal) - radius;
+                let base = self.point(point, q, v);
+                let gap = dot2([p.p[0] - base.p[0], p.p[1] - base.p[1]], normal) - radius;
                 [
                     l0 * normal[0] + f * tangent[0],
                     l0 * normal[1] + f * tangent[1],
@@ -443,8 +447,8 @@ impl Mechanism {
                 normal,
                 ..
             } => {
-                let p = self.point(on, q, &zero);
-                dot2([p.p[0] - point[0], p.p[1] - point[1]], normal) - radius
+                let (p, base) = (self.point(on, q, &zero), self.point(point, q, &zero));
+                dot2([p.p[0] - base.p[0], p.p[1] - base.p[1]], normal) - radius
             }
             JointKind::String { a, b, length, .. } => {
                 let (pa, pb) = (self.point(a, q, &zero), self.point(b, q, &zero));
@@ -458,13 +462,21 @@ impl Mechanism {
     /// at the contact).
     pub(crate) fn slip(&self, joint: usize, q: &[Real], v: &[Real]) -> Real {
         if let JointKind::Contact {
-            on, radius, normal, ..
+            on,
+            radius,
+            normal,
+            point,
+            ..
         } = self.joints[joint].kind
         {
             let p = self
                 .point(on, q, v)
                 .shifted([-radius * normal[0], -radius * normal[1]]);
-            dot2(p.vel, [normal[1], -normal[0]])
+            let base = self.point(point, q, v);
+            dot2(
+                [p.vel[0] - base.vel[0], p.vel[1] - base.vel[1]],
+                [normal[1], -normal[0]],
+            )
         } else {
             0.0
         }
@@ -746,7 +758,8 @@ impl Joint {
             JointKind::Hinge { a, b }
             | JointKind::Rod { a, b, .. }
             | JointKind::String { a, b, .. } => world(a) || world(b),
-            JointKind::Contact { .. } | JointKind::Pulley { .. } | JointKind::Curve { .. } => true,
+            JointKind::Contact { point, .. } => world(&point),
+            JointKind::Pulley { .. } | JointKind::Curve { .. } => true,
         }
     }
 }
