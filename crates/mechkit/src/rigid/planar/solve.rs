@@ -758,7 +758,7 @@ impl Joint {
             JointKind::Hinge { a, b }
             | JointKind::Rod { a, b, .. }
             | JointKind::String { a, b, .. } => world(a) || world(b),
-            JointKind::Contact { point, .. } => world(&point),
+            JointKind::Contact { point, .. } => world(point),
             JointKind::Pulley { .. } | JointKind::Curve { .. } => true,
         }
     }
