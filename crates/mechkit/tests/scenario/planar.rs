@@ -383,3 +383,13 @@ fn block_on_a_pulled_cart_rides_along_or_slides_back() {
         close(s.momentum.end[0], f * 1.0, 1e-6 * f);
     }
 }
+
+#[test]
+fn book_rod_hits_block_as_a_scenario() {
+    // c16-B6: ω0 = 5.42494 rad/s, perfectly inelastic v = ω0 L/(1 + 3m/M) = 2.71247 m/s
+    let s = run("book/c16-B6-rod-hits-block.toml", "");
+    let omega0 = (3.0_f64 * 9.81).sqrt();
+    close(s.observables["omega0"], omega0, 1e-8);
+    close(s.observables["v_inelastic"], omega0 / 2.0, 1e-8);
+    assert_eq!(s.stop_reason, "event");
+}
