@@ -144,10 +144,12 @@ impl NameContext<'_> {
             BodyRef::Index(i) => Some(i),
             BodyRef::Local => None,
         };
-        if field == "m"
-            && let Some((_, i)) = self.planar.masses.iter().find(|(b, _)| Some(*b) == body)
-        {
-            return Some(StateVar::VariableMass(*i));
+        if let Some(&(b, i)) = self.planar.masses.iter().find(|(b, _)| Some(*b) == body) {
+            match field {
+                "m" => return Some(StateVar::VariableMass(i)),
+                "K" if derived => return Some(StateVar::VariableKinetic(b, i)),
+                _ => {}
+            }
         }
         if let Some(rigid) = self.planar.rigid.iter().find(|r| Some(r.body) == body) {
             match field {

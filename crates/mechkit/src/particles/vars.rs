@@ -82,6 +82,8 @@ pub enum StateVar {
     KineticRotation,
     /// The mass of a body whose mass varies: coordinate `i` of `q`.
     VariableMass(usize),
+    /// The kinetic energy `½ m v²` of body `.0`, whose mass is coordinate `.1` of `q`.
+    VariableKinetic(usize, usize),
     /// Field `k` of what constraint force `i` reports
     /// ([`crate::rigid::planar::REPORT_FIELDS`]).
     Constraint(usize, usize),
@@ -258,6 +260,7 @@ impl StateVar {
             | StateVar::Energy
             | StateVar::Work(_)
             | StateVar::RigidKinetic(_)
+            | StateVar::VariableKinetic(..)
             | StateVar::KineticRotation => Dimension::ENERGY,
             StateVar::Power(_) => Dimension::POWER,
             StateVar::Coordinate(_) => Dimension::NONE,
@@ -341,6 +344,10 @@ impl StateVar {
             StateVar::Power(i) => s.eval.power[i],
             StateVar::CoordinateAccel(i) => s.eval.a[i],
             StateVar::KineticRotation => s.eval.kinetic_rotation,
+            StateVar::VariableKinetic(b, i) => {
+                let v = &s.v[b * dim..(b + 1) * dim];
+                0.5 * s.q[i] * dot(v, v)
+            }
             StateVar::Constraint(i, k) => s
                 .eval
                 .constraint

@@ -158,6 +158,9 @@ pub fn csv_columns(sys: &ParticleSystem, has_potential: bool) -> Vec<Column> {
         cols.push(Column::new(format!("{}.theta", e.name), "rad"));
         cols.push(Column::new(format!("{}.omega", e.name), "rad/s"));
     }
+    for e in sys.extras().iter().filter(|e| e.mass_of.is_some()) {
+        cols.push(Column::new(e.name.clone(), "kg"));
+    }
     if sys.bodies().len() > 1 {
         for (prefix, unit) in [("", "m"), ("v", "m/s"), ("a", "m/s^2")] {
             cols.extend(
@@ -251,6 +254,8 @@ pub(crate) struct CsvWriter {
     bodies: usize,
     /// Indices in `q` of the rigid bodies' angles.
     rotors: Vec<usize>,
+    /// Indices in `q` of the variable masses.
+    variable_masses: Vec<usize>,
     /// The masses, when there are two or more bodies (for the centre-of-mass columns).
     masses: Option<Vec<Real>>,
     has_potential: bool,
@@ -289,6 +294,13 @@ impl CsvWriter {
                 .filter(|(_, e)| e.body.is_some())
                 .map(|(i, _)| sys.extras_start() + i)
                 .collect(),
+            variable_masses: sys
+                .extras()
+                .iter()
+                .enumerate()
+                .filter(|(_, e)| e.mass_of.is_some())
+                .map(|(i, _)| sys.extras_start() + i)
+                .collect(),
             masses: (sys.masses().len() > 1).then(|| sys.masses().to_vec()),
             has_potential,
             last_t: None,
@@ -315,6 +327,10 @@ impl CsvWriter {
                 self.line.push(',');
                 push_number(&mut self.line, x);
             }
+        }
+        for &i in &self.variable_masses {
+            self.line.push(',');
+            push_number(&mut self.line, s.q[i]);
         }
         if let Some(masses) = self.masses.take() {
             self.push_centre_of_mass(&masses, s);

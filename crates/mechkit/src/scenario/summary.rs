@@ -376,7 +376,12 @@ impl Summary {
                 (
                     b.name.clone(),
                     BodySummary {
-                        mass: b.mass,
+                        // a body that ejects mass ends with what is left
+                        mass: sys
+                            .extras()
+                            .iter()
+                            .position(|e| e.mass_of == Some(i))
+                            .map_or(b.mass, |k| q[start + k]),
                         position: q[i * d..(i + 1) * d].to_vec(),
                         velocity: vel,
                         speed,

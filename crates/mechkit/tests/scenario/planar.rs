@@ -393,3 +393,14 @@ fn book_rod_hits_block_as_a_scenario() {
     close(s.observables["v_inelastic"], omega0 / 2.0, 1e-8);
     assert_eq!(s.stop_reason, "event");
 }
+
+#[test]
+fn a_rockets_mass_and_kinetic_energy_are_the_current_ones() {
+    let text = std::fs::read_to_string(workspace().join("examples/rocket.toml")).unwrap()
+        + "k_end = \"final(rocket.K)\"\nm_end = \"final(rocket.m)\"\n";
+    let s = run_text(&text);
+    let v = s.observables["v_burnout"];
+    close(s.observables["m_end"], 300.0, 1e-9);
+    close(s.observables["k_end"], 0.5 * 300.0 * v * v, 1e-6);
+    close(s.bodies["rocket"].mass, 300.0, 1e-9);
+}
