@@ -153,6 +153,9 @@ fn reduced_dimension(r: Reduction, d: Dim) -> Dim {
 pub(crate) fn unit_text(d: Dimension) -> String {
     if d.is_none() {
         String::new()
+    } else if d == Dimension::FREQUENCY {
+        // a frequency or an angular velocity (rad/s): neither name is safe
+        "1/s".to_string()
     } else {
         d.derived_symbol()
             .map_or_else(|| d.to_string(), str::to_string)
