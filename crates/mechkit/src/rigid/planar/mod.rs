@@ -25,9 +25,13 @@
 //! back the other way). Rolling without slipping is a disk's contact that sticks.
 
 mod at;
+mod force;
+mod gauss;
 mod joint;
+mod modes;
 mod solve;
 
 pub use at::AppliedAt;
+pub use force::JointForce;
 pub use joint::{Anchor, Curve, Friction, Joint, JointKind};
-pub use solve::{JointForce, Mechanism, PlanarBody, REPORT_FIELDS};
+pub use solve::{Mechanism, PlanarBody, REPORT_FIELDS};

@@ -1,0 +1,80 @@
+//! Each joint of a planar mechanism as a force of the particle system ([`JointForce`]).
+
+use std::sync::Arc;
+
+use super::joint::{Anchor, Joint, JointKind};
+use super::solve::Mechanism;
+use crate::Real;
+use crate::forces::Force;
+use crate::particles::Kinematics;
+
+/// One joint of a mechanism as a force of the particle system: the constraint forces of that
+/// joint, given the applied forces (every force that is not a joint).
+#[derive(Debug, Clone)]
+pub struct JointForce {
+    mechanism: Arc<Mechanism>,
+    joint: usize,
+    bodies: Vec<usize>,
+}
+
+impl JointForce {
+    /// Joint `joint` of `mechanism`, acting on `bodies`.
+    pub fn new(mechanism: Arc<Mechanism>, joint: usize, bodies: Vec<usize>) -> Self {
+        Self {
+            mechanism,
+            joint,
+            bodies,
+        }
+    }
+}
+
+impl Force for JointForce {
+    fn name(&self) -> &str {
+        &self.mechanism.joints[self.joint].name
+    }
+
+    fn add_forces(&self, k: &Kinematics<'_>, out: &mut [Real]) {
+        let applied = vec![0.0; out.len()];
+        self.add_constraint_forces(k, &applied, out);
+    }
+
+    fn velocity_dependent(&self) -> bool {
+        true
+    }
+
+    fn bodies(&self) -> Vec<usize> {
+        self.bodies.clone()
+    }
+
+    fn constraint(&self) -> bool {
+        true
+    }
+
+    fn add_constraint_forces(&self, k: &Kinematics<'_>, applied: &[Real], out: &mut [Real]) {
+        let s = self.mechanism.solve(k.x, k.v, applied);
+        Mechanism::add_forces(&s, self.joint, out);
+    }
+
+    fn constraint_report(&self, k: &Kinematics<'_>, applied: &[Real]) -> [Real; 5] {
+        let s = self.mechanism.solve(k.x, k.v, applied);
+        self.mechanism.report(&s, self.joint, k.x, k.v)
+    }
+
+    fn internal(&self) -> bool {
+        !self.mechanism.joints[self.joint].touches_world()
+    }
+}
+
+impl Joint {
+    /// Whether it holds a body to the world (and so can change the momentum).
+    pub fn touches_world(&self) -> bool {
+        let world = |a: &Anchor| matches!(a, Anchor::World(_));
+        match &self.kind {
+            JointKind::Hinge { a, b }
+            | JointKind::Rod { a, b, .. }
+            | JointKind::String { a, b, .. } => world(a) || world(b),
+            JointKind::Contact { point, .. } => world(point),
+            JointKind::Pulley { .. } | JointKind::Curve { .. } => true,
+        }
+    }
+}

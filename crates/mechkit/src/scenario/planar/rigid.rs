@@ -1,0 +1,126 @@
+//! Reading a `[[rigid_body]]` in a plane: its mass, moment of inertia, initial state and named
+//! points.
+
+use mechkit_expr::units::Dimension;
+use toml::de::DeValue;
+
+use crate::Real;
+use crate::scenario::build::body_name;
+use crate::scenario::doc::Table;
+use crate::scenario::error::{ErrorKind, ScenarioError};
+use crate::scenario::rigid::bodies::mass_properties;
+use crate::scenario::values::{ValueEnv, scalar, vector};
+
+const PLANAR_RIGID_KEYS: &[&str] = &[
+    "name", "free", "part", "body", "mass", "inertia", "position", "velocity", "theta", "omega",
+    "points",
+];
+
+/// A rigid body as read, before the system is built.
+pub(super) struct Rigid {
+    pub(super) name: String,
+    pub(super) mass: Real,
+    pub(super) inertia: Real,
+    pub(super) position: [Real; 2],
+    pub(super) velocity: [Real; 2],
+    pub(super) theta: Real,
+    pub(super) omega: Real,
+    pub(super) points: Vec<(String, [Real; 2])>,
+}
+
+/// Reads the `[[rigid_body]]` `t`, the `index`th of `count`, whose name must differ from
+/// `taken`; `dir` is where its `body` file is looked for.
+pub(super) fn read_rigid(
+    t: &Table<'_, '_>,
+    index: usize,
+    count: usize,
+    taken: &[String],
+    env: ValueEnv<'_>,
+    dir: Option<&std::path::Path>,
+) -> Result<Rigid, ScenarioError> {
+    t.check_keys(PLANAR_RIGID_KEYS)?;
+    let name = body_name(t, index, count, taken, "theta")?;
+    if let Some(v) = t.get("free")
+        && !matches!(v.get_ref(), DeValue::Boolean(true))
+    {
+        return Err(t
+            .src
+            .error(
+                ErrorKind::Invalid,
+                "`free` must be true: in a plane every rigid body is free unless a [[joint]] holds it",
+                v.span(),
+            )
+            .with_hint("hinge it with a [[joint]] of kind \"hinge\", or leave out `dimensions` for a body turning about a fixed axis"));
+    }
+    // the body frame's origin: the centre of mass, or the parts' frame
+    let (mass, inertia, cm) = if t.get("inertia").is_some() {
+        let mass = scalar(t, "mass", Dimension::MASS, env)?
+            .ok_or_else(|| t.missing("mass", "\"1 kg\""))?;
+        let inertia = scalar(t, "inertia", Dimension::MOMENT_OF_INERTIA, env)?.unwrap_or(0.0);
+        (mass, inertia, [0.0, 0.0])
+    } else if t.get("mass").is_some() {
+        return Err(t
+            .missing("inertia", "\"0.5 kg m^2\"")
+            .with_hint("give the moment of inertia about the centre of mass, or describe the body by `[[rigid_body.part]]` tables or a `body` file"));
+    } else {
+        let props = mass_properties(t, env, dir)?;
+        let c = props.centre_of_mass;
+        (props.mass, props.inertia[(2, 2)], [c[0], c[1]])
+    };
+    for (key, value, span) in [
+        ("mass", mass, t.key_span("mass")),
+        ("inertia", inertia, t.key_span("inertia")),
+    ] {
+        if !(value > 0.0 && value.is_finite()) {
+            return Err(t
+                .src
+                .error(
+                    ErrorKind::Invalid,
+                    format!("the {key} of rigid body `{name}` must be positive, not {value}"),
+                    span,
+                )
+                .with_hint("a particle (no rotation) is a [[body]]; a rigid body needs a mass and a moment of inertia about its centre of mass"));
+        }
+    }
+    let two = |key: &str, want: Dimension| -> Result<[Real; 2], ScenarioError> {
+        Ok(vector(t, key, want, 2, env)?.map_or([0.0; 2], |v| [v[0], v[1]]))
+    };
+    let mut points = Vec::new();
+    if let Some(p) = t.table("points")? {
+        for (key, _) in p.entries {
+            let point: &str = key.get_ref();
+            let valid = point
+                .chars()
+                .next()
+                .is_some_and(|c| c.is_alphabetic() || c == '_')
+                && point.chars().all(|c| c.is_alphanumeric() || c == '_');
+            if !valid
+                || [
+                    "x", "y", "vx", "vy", "theta", "omega", "alpha", "K", "m", "v", "r",
+                ]
+                .contains(&point)
+            {
+                return Err(t
+                    .src
+                    .error(
+                        ErrorKind::Invalid,
+                        format!("`{point}` cannot name a point: formulas would read `{name}.{point}` as something else"),
+                        key.span(),
+                    )
+                    .with_hint("a letter or `_` then letters, digits or `_`, not a field name such as x or theta"));
+            }
+            let r = vector(&p, point, Dimension::LENGTH, 2, env)?.unwrap_or_default();
+            points.push((point.to_string(), [r[0] - cm[0], r[1] - cm[1]]));
+        }
+    }
+    Ok(Rigid {
+        name,
+        mass,
+        inertia,
+        position: two("position", Dimension::LENGTH)?,
+        velocity: two("velocity", Dimension::VELOCITY)?,
+        theta: scalar(t, "theta", Dimension::NONE, env)?.unwrap_or(0.0),
+        omega: scalar(t, "omega", Dimension::FREQUENCY, env)?.unwrap_or(0.0),
+        points,
+    })
+}
