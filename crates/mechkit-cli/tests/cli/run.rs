@@ -134,6 +134,7 @@ fn check_accepts_every_example() {
     for sub in [
         examples(),
         examples().join("book"),
+        examples().join("friction"),
         examples().join("md"),
         examples().join("rigid"),
         examples().join("sweep"),
