@@ -306,28 +306,26 @@ pub(super) fn read_joint(
             let length = if let Some(l) = scalar(t, "length", Dimension::LENGTH, env)? {
                 l
             } else {
-                {
-                    let zero = vec![0.0; 2 * ctx.bodies.len() + ctx.rigid.len()];
-                    let mut qq = q.to_vec();
-                    qq.extend(ctx.rigid.iter().map(|r| r.theta));
-                    let probe = Mechanism::new(
-                        ctx.solver_bodies(),
-                        vec![Joint {
-                            name: String::new(),
-                            kind: JointKind::Pulley {
-                                a,
-                                b,
-                                centre,
-                                radius,
-                                length: 0.0,
-                                sense,
-                                wheel: None,
-                            },
-                        }],
-                        qq.len(),
-                    );
-                    probe.pulley_length(&qq, &zero)
-                }
+                let zero = vec![0.0; 2 * ctx.bodies.len() + ctx.rigid.len()];
+                let mut qq = q.to_vec();
+                qq.extend(ctx.rigid.iter().map(|r| r.theta));
+                let probe = Mechanism::new(
+                    ctx.solver_bodies(),
+                    vec![Joint {
+                        name: String::new(),
+                        kind: JointKind::Pulley {
+                            a,
+                            b,
+                            centre,
+                            radius,
+                            length: 0.0,
+                            sense,
+                            wheel: None,
+                        },
+                    }],
+                    qq.len(),
+                );
+                probe.pulley_length(&qq, &zero)
             };
             let wheel = wheel.map(|w| first_mode - ctx.rigid.len() + (w - ctx.n_particles));
             JointKind::Pulley {
