@@ -51,12 +51,12 @@ impl Force for JointForce {
     }
 
     fn add_constraint_forces(&self, k: &Kinematics<'_>, applied: &[Real], out: &mut [Real]) {
-        let s = self.mechanism.solve(k.x, k.v, applied);
+        let s = self.mechanism.solved(k.x, k.v, applied);
         Mechanism::add_forces(&s, self.joint, out);
     }
 
     fn constraint_report(&self, k: &Kinematics<'_>, applied: &[Real]) -> [Real; 5] {
-        let s = self.mechanism.solve(k.x, k.v, applied);
+        let s = self.mechanism.solved(k.x, k.v, applied);
         self.mechanism.report(&s, self.joint, k.x, k.v)
     }
 

@@ -1,6 +1,8 @@
 //! The constraint solver of a planar mechanism: its bodies, the rows of its engaged joints,
 //! and the multipliers, forces, reports and impulses they give.
 
+use std::sync::{Arc, Mutex};
+
 use super::gauss::gauss;
 use super::joint::{Anchor, Friction, Joint, JointKind, Point, Row, dot2, perp};
 use crate::Real;
@@ -24,12 +26,15 @@ pub struct PlanarBody {
 }
 
 /// Bodies and joints, with the stabilisation time constant.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct Mechanism {
     bodies: Vec<PlanarBody>,
     pub(super) joints: Vec<Joint>,
     tau: std::sync::OnceLock<Real>,
     inv_mass: Vec<Real>,
+    /// The last solution and the state and applied forces it was solved for (`[q, v,
+    /// applied]`): every joint's force of one evaluation shares one solve.
+    last: Mutex<(Vec<Real>, Option<Arc<Solution>>)>,
 }
 
 /// The rows and multipliers at one state.
@@ -56,6 +61,7 @@ impl Mechanism {
             joints,
             tau: std::sync::OnceLock::new(),
             inv_mass,
+            last: Mutex::new((Vec::new(), None)),
         }
     }
 
@@ -290,6 +296,31 @@ impl Mechanism {
     /// default length: the string as placed at the start).
     pub fn pulley_length(&self, q: &[Real], v: &[Real]) -> Real {
         self.rows(q, v).first().and_then(|r| r.c).unwrap_or(0.0)
+    }
+
+    /// [`Mechanism::solve`], remembered: the joints of one evaluation ask for the same state
+    /// and applied forces, and only the first solves.
+    pub(crate) fn solved(&self, q: &[Real], v: &[Real], applied: &[Real]) -> Arc<Solution> {
+        let mut last = self
+            .last
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let (key, solution) = &mut *last;
+        let (n, m) = (q.len(), v.len());
+        let same = key.len() == n + m + applied.len()
+            && key[..n] == *q
+            && key[n..n + m] == *v
+            && key[n + m..] == *applied;
+        if let (true, Some(s)) = (same, solution.as_ref()) {
+            return Arc::clone(s);
+        }
+        let s = Arc::new(self.solve(q, v, applied));
+        key.clear();
+        key.extend_from_slice(q);
+        key.extend_from_slice(v);
+        key.extend_from_slice(applied);
+        *solution = Some(Arc::clone(&s));
+        s
     }
 
     /// The multipliers of the engaged constraints under the applied generalised forces.
