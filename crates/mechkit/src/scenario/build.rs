@@ -212,54 +212,14 @@ pub(crate) fn build_with(
         force_names.push(f.name().to_string());
         builder = builder.boxed_force(f);
     }
-    let rockets = super::rocket::read_rockets(&root, dim, &bodies, &masses, &constants)?;
-    let first_extra = dim * bodies.len();
-    let mut extra_q = Vec::new();
-    let mut extra_v = Vec::new();
-    let mut rocket_events = Vec::new();
-    let mut variable = Vec::new();
-    for (k, r) in rockets.iter().enumerate() {
-        let coord = first_extra + k;
-        let name = &bodies[r.body];
-        let (thrust, exhaust) = if rockets.len() == 1 {
-            ("thrust".to_string(), "exhaust".to_string())
-        } else {
-            (format!("{name}_thrust"), format!("{name}_exhaust"))
-        };
-        for n in [&thrust, &exhaust] {
-            if force_names.contains(n) {
-                return Err(src
-                    .error(ErrorKind::Invalid, format!("a force is named `{n}`, the name of the rocket's own entry in the ledger"), root.key_span("force"))
-                    .with_hint("rename that [[force]]: a body with `mass_rate` brings its `thrust` and `exhaust`"));
-            }
-        }
-        builder = builder
-            .force(crate::forces::Thrust::new(
-                thrust.clone(),
-                r.body,
-                coord,
-                r.exhaust_speed,
-                r.direction.clone(),
-            ))
-            .force(crate::forces::Exhaust::new(exhaust.clone(), r.body, coord));
-        force_names.push(thrust);
-        force_names.push(exhaust);
-        builder = builder.variable_mass(format!("{name}.m"), r.body);
-        extra_q.push(masses[r.body]);
-        extra_v.push(-r.rate);
-        variable.push((r.body, coord));
-        let m1 = r.burnout_mass;
-        rocket_events.push(
-            crate::simulate::Event::new(format!("{name} burnout"), move |s, _| s.q[coord] - m1)
-                .direction(crate::simulate::Direction::Falling)
-                .max_count(1)
-                .set(move |s, _, y| {
-                    let n = s.q.len();
-                    y[coord] = m1;
-                    y[n + coord] = 0.0;
-                }),
-        );
-    }
+    let (mut builder, rockets) = super::rocket::add_rockets(
+        &root,
+        dim,
+        (&bodies, &masses),
+        &constants,
+        builder,
+        &mut force_names,
+    )?;
     let contacts = read_contacts(
         &root,
         &Spheres {
@@ -288,8 +248,8 @@ pub(crate) fn build_with(
         .map_err(|e| ScenarioError::new(ErrorKind::Invalid, e.to_string()))?;
     let mut q = q;
     let mut v = v;
-    q.extend(extra_q);
-    v.extend(extra_v);
+    q.extend(&rockets.q);
+    v.extend(&rockets.v);
 
     let env = ValueEnv {
         constants: &constants,
@@ -317,11 +277,11 @@ pub(crate) fn build_with(
             stepping,
             bodies,
             forces: force_names,
-            events: contacts.events.into_iter().chain(rocket_events).collect(),
+            events: contacts.events.into_iter().chain(rockets.events).collect(),
             warnings,
             planar: crate::particles::PlanarNames {
-                masses: variable,
-                extras: rockets.len(),
+                extras: rockets.variable.len(),
+                masses: rockets.variable,
                 ..Default::default()
             },
         },

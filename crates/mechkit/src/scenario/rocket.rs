@@ -8,6 +8,8 @@ use super::doc::Table;
 use super::error::{ErrorKind, ScenarioError};
 use super::values::{Constant, ValueEnv, scalar, vector};
 use crate::Real;
+use crate::particles::ParticleSystemBuilder;
+use crate::simulate::{Direction, Event};
 
 /// A body that ejects mass.
 pub(crate) struct RocketBody {
@@ -22,8 +24,87 @@ pub(crate) struct RocketBody {
     pub direction: Vec<Real>,
 }
 
+/// What the rockets add to a particle system after its bodies' coordinates: one mass
+/// coordinate each (`q` the starting mass, `v` the rate), their burnout events, and
+/// `(body, index in q)` of each mass.
+pub(crate) struct Rockets {
+    pub q: Vec<Real>,
+    pub v: Vec<Real>,
+    pub events: Vec<Event>,
+    pub variable: Vec<(usize, usize)>,
+}
+
+/// Reads the rockets among the `[[body]]`s and adds to `builder` their thrust and exhaust
+/// (named in `force_names`) and their mass coordinates.
+pub(crate) fn add_rockets(
+    root: &Table<'_, '_>,
+    dim: usize,
+    (bodies, masses): (&[String], &[Real]),
+    constants: &[Constant],
+    mut builder: ParticleSystemBuilder,
+    force_names: &mut Vec<String>,
+) -> Result<(ParticleSystemBuilder, Rockets), ScenarioError> {
+    let rockets = read_rockets(root, dim, bodies, masses, constants)?;
+    let first_extra = dim * bodies.len();
+    let mut out = Rockets {
+        q: Vec::new(),
+        v: Vec::new(),
+        events: Vec::new(),
+        variable: Vec::new(),
+    };
+    for (k, r) in rockets.iter().enumerate() {
+        let coord = first_extra + k;
+        let name = &bodies[r.body];
+        let (thrust, exhaust) = if rockets.len() == 1 {
+            ("thrust".to_string(), "exhaust".to_string())
+        } else {
+            (format!("{name}_thrust"), format!("{name}_exhaust"))
+        };
+        if let Some(n) = [&thrust, &exhaust]
+            .into_iter()
+            .find(|n| force_names.contains(n))
+        {
+            return Err(root
+                .src
+                .error(
+                    ErrorKind::Invalid,
+                    format!("a force is named `{n}`, the name of the rocket's own entry in the ledger"),
+                    root.key_span("force"),
+                )
+                .with_hint("rename that [[force]]: a body with `mass_rate` brings its `thrust` and `exhaust`"));
+        }
+        builder = builder
+            .force(crate::forces::Thrust::new(
+                thrust.clone(),
+                r.body,
+                coord,
+                r.exhaust_speed,
+                r.direction.clone(),
+            ))
+            .force(crate::forces::Exhaust::new(exhaust.clone(), r.body, coord))
+            .variable_mass(format!("{name}.m"), r.body);
+        force_names.push(thrust);
+        force_names.push(exhaust);
+        out.q.push(masses[r.body]);
+        out.v.push(-r.rate);
+        out.variable.push((r.body, coord));
+        let m1 = r.burnout_mass;
+        out.events.push(
+            Event::new(format!("{name} burnout"), move |s, _| s.q[coord] - m1)
+                .direction(Direction::Falling)
+                .max_count(1)
+                .set(move |s, _, y| {
+                    let n = s.q.len();
+                    y[coord] = m1;
+                    y[n + coord] = 0.0;
+                }),
+        );
+    }
+    Ok((builder, out))
+}
+
 /// Reads the rocket keys of every `[[body]]` (bodies without them are not rockets).
-pub(crate) fn read_rockets(
+fn read_rockets(
     root: &Table<'_, '_>,
     dim: usize,
     names: &[String],
