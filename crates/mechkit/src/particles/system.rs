@@ -390,20 +390,7 @@ impl ParticleSystem {
         out.net.resize(nf * self.dim, 0.0);
         scratch.resize(n, 0.0);
         let mut current = Vec::new();
-        if self.has_variable_mass() {
-            self.masses_at(q, &mut current);
-        }
-        let k = if self.has_variable_mass() {
-            Kinematics {
-                t,
-                dim: self.dim,
-                x: q,
-                v,
-                mass: &current,
-            }
-        } else {
-            self.kinematics(t, q, v)
-        };
+        let k = self.kinematics_with(t, q, v, &mut current);
         let report = if self.forces.has_constraints() {
             out.constraint.resize(nf * 5, Real::NAN);
             Some(&mut out.constraint[..])
@@ -453,6 +440,28 @@ impl ParticleSystem {
 }
 
 impl ParticleSystem {
+    /// The force view of a state with the current masses (read from `q` into `current` when
+    /// some mass varies; `current` stays empty, unallocated, otherwise).
+    fn kinematics_with<'a>(
+        &'a self,
+        t: Real,
+        q: &'a [Real],
+        v: &'a [Real],
+        current: &'a mut Vec<Real>,
+    ) -> Kinematics<'a> {
+        if !self.has_variable_mass() {
+            return self.kinematics(t, q, v);
+        }
+        self.masses_at(q, current);
+        Kinematics {
+            t,
+            dim: self.dim,
+            x: q,
+            v,
+            mass: current,
+        }
+    }
+
     /// `a` was divided by the starting masses: divide the variable bodies' by their current
     /// masses instead.
     fn rescale_variable(&self, current: &[Real], a: &mut [Real]) {
@@ -472,28 +481,13 @@ impl SecondOrderSystem for ParticleSystem {
 
     #[inline]
     fn accel_into(&self, t: Real, q: &[Real], v: &[Real], a: &mut [Real]) {
-        if self.has_variable_mass() {
-            let mut current = Vec::new();
-            self.masses_at(q, &mut current);
-            let k = Kinematics {
-                t,
-                dim: self.dim,
-                x: q,
-                v,
-                mass: &current,
-            };
-            self.forces.total_into(&k, a);
-            for (ai, w) in a.iter_mut().zip(&self.inv_mass) {
-                *ai *= w;
-            }
-            self.rescale_variable(&current, a);
-            return;
-        }
-        let k = self.kinematics(t, q, v);
+        let mut current = Vec::new();
+        let k = self.kinematics_with(t, q, v, &mut current);
         self.forces.total_into(&k, a);
         for (ai, w) in a.iter_mut().zip(&self.inv_mass) {
             *ai *= w;
         }
+        self.rescale_variable(k.mass, a);
     }
 
     fn velocity_dependent(&self) -> bool {
