@@ -28,6 +28,18 @@ fn run_text(text: &str) -> Summary {
         .summary
 }
 
+/// The mean time between the occurrences of the event `name` (more than five of them).
+fn mean_period(s: &Summary, name: &str) -> f64 {
+    let times: Vec<f64> = s
+        .events
+        .iter()
+        .filter(|e| e.name == name)
+        .map(|e| e.t)
+        .collect();
+    assert!(times.len() > 5, "{name}: {} occurrences", times.len());
+    (times[times.len() - 1] - times[0]) / (times.len() - 1) as f64
+}
+
 fn close(a: f64, b: f64, tol: f64) {
     assert!((a - b).abs() <= tol, "{a} vs {b} (tolerance {tol})");
 }
@@ -139,14 +151,7 @@ fn double_pendulum_small_oscillations_have_the_normal_mode_frequencies() {
         .run()
         .unwrap()
         .summary;
-        let times: Vec<f64> = s
-            .events
-            .iter()
-            .filter(|e| e.name == "turn")
-            .map(|e| e.t)
-            .collect();
-        assert!(times.len() > 5);
-        let period = (times[times.len() - 1] - times[0]) / (times.len() - 1) as f64;
+        let period = mean_period(&s, "turn");
         let expected = 2.0 * std::f64::consts::PI / (w2 * g / l).sqrt();
         close(period, expected, 1e-5 * expected);
     }
@@ -305,13 +310,7 @@ off_wire = "max(abs(wire.drift))"
 fn bead_on_a_parabola_oscillates_at_sqrt_2kg() {
     // y = k x²: small oscillations have ω² = 2 k g
     let s = run_text(BEAD);
-    let times: Vec<f64> = s
-        .events
-        .iter()
-        .filter(|e| e.name == "turn")
-        .map(|e| e.t)
-        .collect();
-    let period = (times[times.len() - 1] - times[0]) / (times.len() - 1) as f64;
+    let period = mean_period(&s, "turn");
     let expected = 2.0 * std::f64::consts::PI / (2.0_f64 * 0.5 * 9.81).sqrt();
     // the amplitude is 1 cm: the nonlinearity shifts the period by ~ (k x0)² relative
     close(period, expected, 1e-4 * expected);

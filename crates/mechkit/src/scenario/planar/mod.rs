@@ -1,6 +1,7 @@
 //! A scenario in a plane (`dimensions = 2`) with free `[[rigid_body]]`s and `[[joint]]`s: a
 //! planar mechanism ([`crate::rigid::planar`]) run as one particle system.
 
+mod contact;
 mod forces;
 mod joints;
 mod rigid;
