@@ -5,7 +5,10 @@ use mechkit_expr::units::UnitSystem;
 use mechkit_expr::{Binding, Dim, ExprError, Formula, Scope};
 
 use super::state_expr::StateExpr;
-use super::vars::{AAXES, ANGLE, AXES, BodyRef, Coordinates, PointRef, StateVar, VAXES, VarLevel};
+use super::vars::{
+    AAXES, ANGLE, AXES, BodyRef, Coordinates, PointRef, SpinField, SpinRef, StateVar, VAXES,
+    VarLevel,
+};
 use crate::Real;
 
 /// The names a planar mechanism adds: the rigid bodies' angles and points, the joints.
@@ -42,12 +45,42 @@ pub struct RigidName {
     pub angle: usize,
     /// Moment of inertia about the centre of mass (kg m²).
     pub inertia: Real,
-    /// Named points, body frame, from the centre of mass.
-    pub points: Vec<(String, [Real; 2])>,
+    /// Named points, body frame, from the centre of mass (`z` is 0 in a plane).
+    pub points: Vec<(String, [Real; 3])>,
+    /// For a body turning in space: its orientation coordinates and inertia tensor (`angle`
+    /// is then the index of its first quaternion component, `inertia` unused).
+    pub spin: Option<SpinRef>,
 }
 
 const RIGID_FIELDS: [&str; 3] = ["theta", "omega", "I"];
 const POINT_FIELDS: [&str; 4] = ["x", "y", "vx", "vy"];
+const SPACE_POINT_FIELDS: [&str; 6] = ["x", "y", "z", "vx", "vy", "vz"];
+
+/// The names of a rigid body turning in space, with what they are, kinematic ones first.
+pub(crate) const SPIN_FIELDS: [(&str, SpinField); 19] = [
+    ("wx", SpinField::Omega(0)),
+    ("wy", SpinField::Omega(1)),
+    ("wz", SpinField::Omega(2)),
+    ("omega", SpinField::Speed),
+    ("w1", SpinField::OmegaBody(0)),
+    ("w2", SpinField::OmegaBody(1)),
+    ("w3", SpinField::OmegaBody(2)),
+    ("q0", SpinField::Quaternion(0)),
+    ("q1", SpinField::Quaternion(1)),
+    ("q2", SpinField::Quaternion(2)),
+    ("q3", SpinField::Quaternion(3)),
+    ("Lx", SpinField::Momentum(0)),
+    ("Ly", SpinField::Momentum(1)),
+    ("Lz", SpinField::Momentum(2)),
+    ("L", SpinField::MomentumMagnitude),
+    ("alphax", SpinField::Alpha(0)),
+    ("alphay", SpinField::Alpha(1)),
+    ("alphaz", SpinField::Alpha(2)),
+    ("K", SpinField::Kinetic),
+];
+
+/// How many of [`SPIN_FIELDS`] a force may read (the rest need accelerations or energies).
+const SPIN_KINEMATIC: usize = 15;
 
 /// What names mean where a formula is used: the system's bodies and forces, the constants,
 /// whether bare names refer to a local body, and how much of the state may be used.
@@ -130,7 +163,16 @@ impl NameContext<'_> {
         let i = self.bodies.iter().position(|b| b == body)?;
         let rigid = self.planar.rigid.iter().find(|r| r.body == i)?;
         let r = rigid.points.iter().find(|(n, _)| n == point)?.1;
-        let p = PointRef::new(i, rigid.angle, r);
+        if rigid.spin.is_some() {
+            let p = PointRef::spatial(i, rigid.angle, r);
+            let k = SPACE_POINT_FIELDS.iter().position(|f| *f == field)?;
+            return Some(if k < 3 {
+                StateVar::PointPosition(p, k)
+            } else {
+                StateVar::PointVelocity(p, k - 3)
+            });
+        }
+        let p = PointRef::new(i, rigid.angle, [r[0], r[1]]);
         let k = POINT_FIELDS.iter().position(|f| *f == field)?;
         Some(if k < 2 {
             StateVar::PointPosition(p, k)
@@ -152,6 +194,16 @@ impl NameContext<'_> {
             }
         }
         if let Some(rigid) = self.planar.rigid.iter().find(|r| Some(r.body) == body) {
+            if let Some(spin) = rigid.spin {
+                let n = if derived {
+                    SPIN_FIELDS.len()
+                } else {
+                    SPIN_KINEMATIC
+                };
+                if let Some((_, f)) = SPIN_FIELDS[..n].iter().find(|(n, _)| *n == field) {
+                    return Some(StateVar::Spin(spin, *f));
+                }
+            }
             match field {
                 "theta" => return Some(StateVar::Coordinate(rigid.angle)),
                 "omega" => return Some(StateVar::CoordinateRate(rigid.angle)),
@@ -236,6 +288,18 @@ impl NameContext<'_> {
         }
         for rigid in &self.planar.rigid {
             let body = &self.bodies[rigid.body];
+            if rigid.spin.is_some() {
+                let n = if derived {
+                    SPIN_FIELDS.len()
+                } else {
+                    SPIN_KINEMATIC
+                };
+                out.extend(SPIN_FIELDS[..n].iter().map(|(f, _)| format!("{body}.{f}")));
+                for (p, _) in &rigid.points {
+                    out.extend(SPACE_POINT_FIELDS.iter().map(|f| format!("{body}.{p}.{f}")));
+                }
+                continue;
+            }
             out.extend(RIGID_FIELDS[..2].iter().map(|f| format!("{body}.{f}")));
             if derived {
                 out.push(format!("{body}.alpha"));

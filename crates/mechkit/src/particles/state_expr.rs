@@ -57,7 +57,7 @@ impl StateExpr {
                     | StateVar::Speed(_)
                     | StateVar::CoordinateRate(_)
                     | StateVar::PointVelocity(..)
-            )
+            ) || matches!(v, StateVar::Spin(_, f) if !matches!(f, super::SpinField::Quaternion(_)))
         })
     }
 

@@ -4,6 +4,7 @@ use thiserror::Error;
 
 use super::kinematics::{Kinematics, dot};
 use super::sample::Evaluation;
+use super::spin::{Mat3, Spinner};
 use super::vars::Coordinates;
 use crate::Real;
 use crate::forces::{Force, ForceSet};
@@ -52,6 +53,12 @@ pub enum SystemError {
     /// No bodies.
     #[error("the system has no bodies")]
     Empty,
+    /// An inertia tensor that is not symmetric positive definite.
+    #[error("the inertia tensor of `{0}` must be symmetric with positive principal moments")]
+    BadInertia(String),
+    /// A rigid body turning in space outside 3 dimensions.
+    #[error("a rigid body turns in space only in 3 dimensions, not {0}")]
+    SpinNotThreeDimensional(usize),
     /// Angle coordinates in more than one dimension.
     #[error("angle coordinates have one angle per body (dimension 1), not {0}")]
     AngleNotOneDimensional(usize),
@@ -71,6 +78,9 @@ pub struct Extra {
     /// The body whose mass it is, for a variable mass (its rate is `dm/dt`, changed only by
     /// events: a burn ending).
     pub mass_of: Option<usize>,
+    /// The body whose orientation it is a component of, for a rigid body in space (four
+    /// coordinates: a quaternion, see [`super::spin`]).
+    pub orientation: Option<usize>,
 }
 
 /// Bodies and forces in 1, 2 or 3 dimensions.
@@ -86,6 +96,8 @@ pub struct ParticleSystem {
     coordinates: Coordinates,
     /// `(body, index in q)` of the variable masses.
     variable: Vec<(usize, usize)>,
+    /// The rigid bodies turning in space.
+    spinners: Vec<Spinner>,
 }
 
 /// Builds a [`ParticleSystem`].
@@ -111,6 +123,7 @@ pub struct ParticleSystemBuilder {
     extras: Vec<Extra>,
     forces: ForceSet,
     coordinates: Coordinates,
+    spin_inertia: Vec<(usize, Mat3)>,
 }
 
 impl ParticleSystemBuilder {
@@ -140,7 +153,26 @@ impl ParticleSystemBuilder {
             body: Some(body),
             inertia,
             mass_of: None,
+            orientation: None,
         });
+        self
+    }
+
+    /// Adds the orientation of body `body`, a rigid body in space whose inertia tensor about
+    /// the centre of mass is `inertia` (body frame): four coordinates `name.q0` … `name.q3`, a
+    /// quaternion (body → world) whose rate gives the angular velocity ([`super::spin`]).
+    #[must_use]
+    pub fn spinner(mut self, name: &str, body: usize, inertia: Mat3) -> Self {
+        for k in 0..4 {
+            self.extras.push(Extra {
+                name: format!("{name}.q{k}"),
+                body: None,
+                inertia: 0.0,
+                mass_of: None,
+                orientation: Some(body),
+            });
+        }
+        self.spin_inertia.push((body, inertia));
         self
     }
 
@@ -152,6 +184,7 @@ impl ParticleSystemBuilder {
             body: None,
             inertia: 0.0,
             mass_of: None,
+            orientation: None,
         });
         self
     }
@@ -164,6 +197,7 @@ impl ParticleSystemBuilder {
             body: None,
             inertia: 0.0,
             mass_of: Some(body),
+            orientation: None,
         });
         self
     }
@@ -227,6 +261,34 @@ impl ParticleSystemBuilder {
                 });
             }
         }
+        let start = self.dim * self.bodies.len();
+        let mut spinners = Vec::new();
+        for (body, inertia) in &self.spin_inertia {
+            if self.dim != 3 {
+                return Err(SystemError::SpinNotThreeDimensional(self.dim));
+            }
+            let name = || {
+                self.bodies
+                    .get(*body)
+                    .map_or(String::new(), |b| b.name.clone())
+            };
+            if *body >= self.bodies.len() {
+                return Err(SystemError::NoSuchBody {
+                    force: "orientation".into(),
+                    body: *body,
+                    n: self.bodies.len(),
+                });
+            }
+            let first = self
+                .extras
+                .iter()
+                .position(|e| e.orientation == Some(*body))
+                .map_or(0, |k| start + k);
+            spinners.push(
+                Spinner::new(*body, first, *inertia)
+                    .ok_or_else(|| SystemError::BadInertia(name()))?,
+            );
+        }
         let mass: Vec<Real> = self.bodies.iter().map(|b| b.mass).collect();
         let inv_mass = self
             .bodies
@@ -235,13 +297,15 @@ impl ParticleSystemBuilder {
             .chain(self.extras.iter().map(|e| {
                 if e.body.is_some() {
                     1.0 / e.inertia
+                } else if e.orientation.is_some() {
+                    // the spinners' step leaves accelerations there
+                    1.0
                 } else {
                     0.0
                 }
             }))
             .collect();
-        let velocity_dependent = self.forces.velocity_dependent();
-        let start = self.dim * self.bodies.len();
+        let velocity_dependent = self.forces.velocity_dependent() || !spinners.is_empty();
         let variable = self
             .extras
             .iter()
@@ -258,6 +322,7 @@ impl ParticleSystemBuilder {
             forces: self.forces,
             velocity_dependent,
             coordinates: self.coordinates,
+            spinners,
         })
     }
 }
@@ -296,15 +361,48 @@ impl ParticleSystem {
         self.dim * self.bodies.len()
     }
 
-    /// Rotational kinetic energy `Σ ½ I ω²` of the rigid bodies.
-    pub fn rotational_kinetic_energy(&self, v: &[Real]) -> Real {
+    /// Rotational kinetic energy `Σ ½ I ω²` of the rigid bodies in a plane, and `Σ ½ ω·Iω`
+    /// of those turning in space (which reads their orientation from `q`).
+    pub fn rotational_kinetic_energy(&self, q: &[Real], v: &[Real]) -> Real {
         let start = self.extras_start();
-        self.extras
+        let planar: Real = self
+            .extras
             .iter()
             .enumerate()
             .filter(|(_, e)| e.body.is_some())
             .map(|(i, e)| 0.5 * e.inertia * v[start + i] * v[start + i])
-            .sum()
+            .sum();
+        planar
+            + self
+                .spinners
+                .iter()
+                .map(|s| {
+                    let (qq, qd) = s.of(q, v);
+                    s.kinetic(qq, qd)
+                })
+                .sum::<Real>()
+    }
+
+    /// The rigid bodies turning in space.
+    pub fn spinners(&self) -> &[Spinner] {
+        &self.spinners
+    }
+
+    /// Whether some body turns (a rigid body in a plane or in space).
+    pub fn has_rotation(&self) -> bool {
+        !self.spinners.is_empty() || self.extras.iter().any(|e| e.body.is_some())
+    }
+
+    /// Replaces the generalized forces on the spinners' coordinates in `a` by their `q̈`
+    /// (Euler's equations); before the division by the masses, which leaves them.
+    #[inline]
+    fn turn(&self, q: &[Real], v: &[Real], a: &mut [Real]) {
+        for s in &self.spinners {
+            let (qq, qd) = s.of(q, v);
+            let f = s.first;
+            let out = s.accel(qq, qd, [a[f], a[f + 1], a[f + 2], a[f + 3]]);
+            a[f..f + 4].copy_from_slice(&out);
+        }
     }
 
     /// Masses, one per body.
@@ -358,9 +456,9 @@ impl ParticleSystem {
         }
     }
 
-    /// Kinetic energy `Σ m v²/2` (and `Σ I ω²/2` of the rigid bodies).
-    pub fn kinetic_energy(&self, v: &[Real]) -> Real {
-        self.rotational_kinetic_energy(v)
+    /// Kinetic energy `Σ m v²/2` (and `Σ I ω²/2` of the rigid bodies) at `(q, v)`.
+    pub fn kinetic_energy(&self, q: &[Real], v: &[Real]) -> Real {
+        self.rotational_kinetic_energy(q, v)
             + self
                 .mass
                 .iter()
@@ -406,6 +504,7 @@ impl ParticleSystem {
             scratch,
             report,
         );
+        self.turn(q, v, &mut out.a);
         for (a, w) in out.a.iter_mut().zip(&self.inv_mass) {
             *a *= w;
         }
@@ -419,7 +518,8 @@ impl ParticleSystem {
             }
         }
         out.potential_total = total;
-        out.kinetic = self.rotational_kinetic_energy(v)
+        out.kinetic_rotation = self.rotational_kinetic_energy(q, v);
+        out.kinetic = out.kinetic_rotation
             + k.mass
                 .iter()
                 .enumerate()
@@ -428,7 +528,6 @@ impl ParticleSystem {
                     0.5 * m * dot(vi, vi)
                 })
                 .sum::<Real>();
-        out.kinetic_rotation = self.rotational_kinetic_energy(v);
         out.momentum.clear();
         out.momentum.resize(self.dim, 0.0);
         for (m, body) in k.mass.iter().zip(v.chunks_exact(self.dim)) {
@@ -484,6 +583,7 @@ impl SecondOrderSystem for ParticleSystem {
         let mut current = Vec::new();
         let k = self.kinematics_with(t, q, v, &mut current);
         self.forces.total_into(&k, a);
+        self.turn(q, v, a);
         for (ai, w) in a.iter_mut().zip(&self.inv_mass) {
             *ai *= w;
         }

@@ -23,6 +23,7 @@ use mechkit_expr::units::{Dimension, UnitSystem};
 
 use super::kinematics::{Kinematics, dot, norm};
 use super::sample::Sample;
+use super::spin::{self, Mat3, Quat};
 use crate::Real;
 
 /// Which body a name refers to.
@@ -87,18 +88,116 @@ pub enum StateVar {
     /// Field `k` of what constraint force `i` reports
     /// ([`crate::rigid::planar::REPORT_FIELDS`]).
     Constraint(usize, usize),
+    /// A quantity of a rigid body turning in space.
+    Spin(SpinRef, SpinField),
 }
 
-/// A point of a rigid body in a plane: body `body`, turned by the angle coordinate `angle`,
-/// at `r` from its centre of mass in the body frame (stored as bits so the type is `Eq`);
-/// `r` holds the moment of inertia in its first component for [`StateVar::RigidKinetic`].
+/// What of a rigid body turning in space ([`StateVar::Spin`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SpinField {
+    /// Angular velocity component, world frame (`wx`, `wy`, `wz`).
+    Omega(usize),
+    /// Angular velocity component along a body axis (`w1`, `w2`, `w3`).
+    OmegaBody(usize),
+    /// Angular speed `|ω|` (`omega`).
+    Speed,
+    /// Component of the unit orientation quaternion, body → world (`q0` … `q3`).
+    Quaternion(usize),
+    /// Angular acceleration component, world frame (`alphax`, …).
+    Alpha(usize),
+    /// Angular momentum about the centre of mass, world frame (`Lx`, …).
+    Momentum(usize),
+    /// Its magnitude (`L`).
+    MomentumMagnitude,
+    /// Kinetic energy of the body, `½ m v² + ½ ω·Iω` (`K`).
+    Kinetic,
+}
+
+/// A rigid body turning in space: body `body`, its orientation coordinates from `first` in
+/// `q`, its inertia tensor about the centre of mass in the body frame (stored as bits so the
+/// type is `Eq`: `xx, yy, zz, xy, xz, yz`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SpinRef {
+    /// Body index.
+    pub body: usize,
+    /// Index of `q₀` in `q`.
+    pub first: usize,
+    inertia: [u64; 6],
+}
+
+impl SpinRef {
+    /// Body `body` with orientation coordinates from `first` and inertia tensor `inertia`.
+    pub fn new(body: usize, first: usize, inertia: &Mat3) -> Self {
+        let i = inertia;
+        Self {
+            body,
+            first,
+            inertia: [i[0][0], i[1][1], i[2][2], i[0][1], i[0][2], i[1][2]].map(Real::to_bits),
+        }
+    }
+
+    /// The inertia tensor.
+    pub fn inertia(self) -> Mat3 {
+        let [xx, yy, zz, xy, xz, yz] = self.inertia.map(Real::from_bits);
+        [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]]
+    }
+
+    fn quat(self, x: &[Real]) -> Quat {
+        let f = self.first;
+        [x[f], x[f + 1], x[f + 2], x[f + 3]]
+    }
+
+    /// The value of `field` at a state (`a` the accelerations, for [`SpinField::Alpha`]).
+    pub fn value(
+        self,
+        field: SpinField,
+        x: &[Real],
+        v: &[Real],
+        a: &[Real],
+        mass: Real,
+        dim: usize,
+    ) -> Real {
+        let (q, qd) = (self.quat(x), self.quat(v));
+        match field {
+            SpinField::Omega(i) => spin::omega_world(q, qd)[i],
+            SpinField::OmegaBody(i) => spin::omega_body(q, qd)[i],
+            SpinField::Speed => norm(&spin::omega_body(q, qd)),
+            SpinField::Quaternion(i) => q[i] / spin::norm2(q).sqrt(),
+            SpinField::Alpha(i) => {
+                let n = spin::norm2(q);
+                let p = spin::mul(spin::conj(q), self.quat(a));
+                let w = spin::omega_body(q, qd);
+                let nd = 2.0 * q.iter().zip(qd).map(|(a, b)| a * b).sum::<Real>();
+                let wd = [0, 1, 2].map(|k| 2.0 * p[k + 1] / n - w[k] * nd / n);
+                spin::rotate(q, wd)[i]
+            }
+            SpinField::Momentum(i) => {
+                spin::rotate(q, spin::mat_vec(&self.inertia(), spin::omega_body(q, qd)))[i]
+            }
+            SpinField::MomentumMagnitude => {
+                norm(&spin::mat_vec(&self.inertia(), spin::omega_body(q, qd)))
+            }
+            SpinField::Kinetic => {
+                let w = spin::omega_body(q, qd);
+                let vc = &v[self.body * dim..(self.body + 1) * dim];
+                0.5 * mass * dot(vc, vc) + 0.5 * spin::dot3(w, spin::mat_vec(&self.inertia(), w))
+            }
+        }
+    }
+}
+
+/// A point of a rigid body: body `body`, turned by the angle coordinate `angle` (in a plane)
+/// or by the quaternion from coordinate `angle` on (in space), at `r` from its centre of mass
+/// in the body frame (stored as bits so the type is `Eq`); `r` holds the moment of inertia
+/// in its first component for [`StateVar::RigidKinetic`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct PointRef {
     /// Body index.
     pub body: usize,
-    /// Index of the body's angle in `q`.
+    /// Index of the body's angle (or first quaternion component) in `q`.
     pub angle: usize,
-    r: [u64; 2],
+    r: [u64; 3],
+    spatial: bool,
 }
 
 impl PointRef {
@@ -107,17 +206,41 @@ impl PointRef {
         Self {
             body,
             angle,
-            r: [r[0].to_bits(), r[1].to_bits()],
+            r: [r[0].to_bits(), r[1].to_bits(), 0],
+            spatial: false,
         }
     }
 
-    /// The offset from the centre of mass, body frame.
+    /// The point `r` (body frame) of body `body` turning in space, its quaternion from
+    /// coordinate `first`.
+    pub fn spatial(body: usize, first: usize, r: [Real; 3]) -> Self {
+        Self {
+            body,
+            angle: first,
+            r: r.map(Real::to_bits),
+            spatial: true,
+        }
+    }
+
+    /// The offset from the centre of mass, body frame (in a plane).
     pub fn r(self) -> [Real; 2] {
         [Real::from_bits(self.r[0]), Real::from_bits(self.r[1])]
     }
 
     /// World position (`rate` false) or velocity (true) component `i` at a state.
     pub fn value(self, x: &[Real], v: &[Real], dim: usize, i: usize, rate: bool) -> Real {
+        if self.spatial {
+            let f = self.angle;
+            let q = [x[f], x[f + 1], x[f + 2], x[f + 3]];
+            let w = spin::rotate(q, self.r.map(Real::from_bits));
+            let b = self.body * dim + i;
+            return if rate {
+                let omega = spin::omega_world(q, [v[f], v[f + 1], v[f + 2], v[f + 3]]);
+                v[b] + spin::cross(omega, w)[i]
+            } else {
+                x[b] + w[i]
+            };
+        }
         let r = self.r();
         let (s, c) = x[self.angle].sin_cos();
         let w = [c * r[0] - s * r[1], s * r[0] + c * r[1]];
@@ -236,7 +359,7 @@ impl StateVar {
                 | StateVar::PointPosition(..)
                 | StateVar::PointVelocity(..)
                 | StateVar::VariableMass(_)
-        )
+        ) || matches!(self, StateVar::Spin(_, f) if !matches!(f, SpinField::Alpha(_) | SpinField::Kinetic))
     }
 
     /// Its dimension.
@@ -267,6 +390,17 @@ impl StateVar {
             StateVar::CoordinateRate(_) => Dimension::FREQUENCY,
             StateVar::CoordinateAccel(_) => Dimension::base([0, 0, -2, 0, 0, 0, 0]),
             StateVar::Constraint(..) => Dimension::FORCE,
+            StateVar::Spin(_, f) => match f {
+                SpinField::Omega(_) | SpinField::OmegaBody(_) | SpinField::Speed => {
+                    Dimension::FREQUENCY
+                }
+                SpinField::Quaternion(_) => Dimension::NONE,
+                SpinField::Alpha(_) => Dimension::base([0, 0, -2, 0, 0, 0, 0]),
+                SpinField::Momentum(_) | SpinField::MomentumMagnitude => {
+                    Dimension::ANGULAR_MOMENTUM
+                }
+                SpinField::Kinetic => Dimension::ENERGY,
+            },
         }
     }
 
@@ -286,6 +420,13 @@ impl StateVar {
             StateVar::CoordinateRate(_) => "rad/s",
             StateVar::CoordinateAccel(_) => "rad/s²",
             StateVar::Constraint(..) => "N",
+            StateVar::Spin(_, f) => match f {
+                SpinField::Omega(_) | SpinField::OmegaBody(_) | SpinField::Speed => "rad/s",
+                SpinField::Quaternion(_) => "1",
+                SpinField::Alpha(_) => "rad/s²",
+                SpinField::Momentum(_) | SpinField::MomentumMagnitude => "kg m²/s",
+                SpinField::Kinetic => "J",
+            },
             _ => "J",
         }
     }
@@ -323,6 +464,9 @@ impl StateVar {
             StateVar::CoordinateRate(i) => k.v[i],
             StateVar::PointPosition(p, i) => p.value(k.x, k.v, d, i, false),
             StateVar::PointVelocity(p, i) => p.value(k.x, k.v, d, i, true),
+            StateVar::Spin(s, f) if self.is_kinematic() => {
+                s.value(f, k.x, k.v, &[], k.mass[s.body], d)
+            }
             other => panic!("{other:?} is not a kinematic quantity"),
         }
     }
@@ -354,6 +498,9 @@ impl StateVar {
                 .get(i * 5 + k)
                 .copied()
                 .unwrap_or(Real::NAN),
+            StateVar::Spin(r, f @ (SpinField::Alpha(_) | SpinField::Kinetic)) => {
+                r.value(f, s.q, s.v, &s.eval.a, mass[r.body], dim)
+            }
             StateVar::RigidKinetic(p) => {
                 let v = &s.v[p.body * dim..(p.body + 1) * dim];
                 let inertia = p.r()[0];

@@ -12,6 +12,7 @@
 //! leaving a surface, a wheel stopping) are events of the one driver
 //! ([`crate::ode::run_to_event`]), located inside a step, never detected a step late.
 
+pub mod at;
 pub mod constrained;
 pub mod fixed_axis;
 pub mod free3d;

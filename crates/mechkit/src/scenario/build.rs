@@ -135,13 +135,12 @@ pub(crate) fn build_with(
         return super::planar::build_planar(name, &root, title, constants, &rigid_tables);
     }
     if !rigid_tables.is_empty() && dim == 3 {
-        return Err(src
-            .error(
-                ErrorKind::Invalid,
-                "free rigid bodies in scenarios move in a plane for now: `dimensions` must be 2",
-                root.key_span("dimensions"),
-            )
-            .with_hint("for a free body in space use `mechkit spin` (torque-free, Euler's equations); hinged bodies: leave out `dimensions`"));
+        let constants = constants_with(
+            &root,
+            &[RESERVED, super::rigid::RIGID_RESERVED].concat(),
+            overrides,
+        )?;
+        return super::spatial::build_spatial(name, &root, title, constants, &rigid_tables);
     }
     if let Some(v) = root.get("joint") {
         return Err(src
@@ -190,6 +189,7 @@ pub(crate) fn build_with(
         bodies: &bodies,
         masses: &masses,
         constants: &constants,
+        rigid: &crate::particles::NO_PLANAR,
     };
     let mut builder = ParticleSystem::builder(dim);
     for (b, m) in bodies.iter().zip(&masses) {

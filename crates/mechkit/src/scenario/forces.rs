@@ -1,6 +1,9 @@
 //! `[[force]]` tables: one builder per kind.
 
 mod pair;
+mod rigid;
+
+pub(crate) use rigid::force_at;
 
 use std::ops::Range;
 
@@ -49,6 +52,11 @@ pub(crate) const KINDS: &[(&str, &[&str], &str)] = &[
         "a formula of t, x, v, m, … per component",
     ),
     (
+        "torque",
+        &["T"],
+        "a torque T on a rigid body (`on`): its z component in a plane, its world components in space",
+    ),
+    (
         "pair",
         &["between", "U", "cutoff"],
         "-dU/dr along the line of centres, from a potential U(r) of the separation, between every pair of the bodies in `between`",
@@ -72,6 +80,8 @@ pub(crate) struct ForceContext<'c> {
     pub bodies: &'c [String],
     pub masses: &'c [Real],
     pub constants: &'c [Constant],
+    /// The rigid bodies whose angles and angular velocities formulas may read.
+    pub rigid: &'c crate::particles::PlanarNames,
 }
 
 impl ForceContext<'_> {
@@ -237,6 +247,7 @@ pub(crate) fn build_force(
         }
         "expression" => expression(t, ctx, name, targets)?,
         "pair" => pair::pair(t, ctx, name, on.is_some())?,
+        "torque" => rigid::torque(t, ctx, name, on.as_deref())?,
         _ => unreachable!("kind {kind} is listed in KINDS"),
     })
 }
@@ -289,7 +300,20 @@ fn compile_components(
     want: Dimension,
     what: &str,
 ) -> Result<Option<Vec<crate::particles::StateExpr>>, ScenarioError> {
-    let Some(items) = formula_components(t, key, ctx.dim)? else {
+    compile_n(t, ctx, key, want, what, ctx.dim)
+}
+
+/// `count` formulas under `key` of dimension `want`, compiled with bare names meaning the
+/// body they act on.
+pub(crate) fn compile_n(
+    t: &Table<'_, '_>,
+    ctx: &ForceContext<'_>,
+    key: &str,
+    want: Dimension,
+    what: &str,
+    count: usize,
+) -> Result<Option<Vec<crate::particles::StateExpr>>, ScenarioError> {
+    let Some(items) = formula_components(t, key, count)? else {
         return Ok(None);
     };
     let names = NameContext {
@@ -301,7 +325,7 @@ fn compile_components(
         level: VarLevel::Kinematic,
         coordinates: crate::particles::Coordinates::Cartesian,
         units: t.src.units,
-        planar: &crate::particles::NO_PLANAR,
+        planar: ctx.rigid,
     };
     let mut out = Vec::new();
     for (text, span) in items {

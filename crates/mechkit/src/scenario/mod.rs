@@ -58,6 +58,7 @@ mod provenance;
 mod rigid;
 mod rocket;
 mod run;
+mod spatial;
 mod stop;
 mod summary;
 pub mod sweep;
@@ -84,7 +85,7 @@ pub use provenance::Provenance;
 pub use run::RunOutput;
 pub use summary::{
     BodyState, BodySummary, CentreOfMass, DivergenceSummary, EnergySummary, EventSummary, Files,
-    MomentumSummary, StartEnd, StepControl, Summary, TimedState,
+    MomentumSummary, Rotation, SpinSummary, StartEnd, StepControl, Summary, TimedState,
 };
 pub use sweep::ConstantOverride;
 

@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 
 use crate::Real;
 use crate::csv::Column;
-use crate::particles::{ParticleSystem, Sample, SampleKind};
+use crate::particles::{ParticleSystem, Sample, SampleKind, spin};
 use crate::simulate::{Observer, ObserverError, StopReason};
 
 use crate::csv::partial_path as temp_path;
@@ -158,6 +158,11 @@ pub fn csv_columns(sys: &ParticleSystem, has_potential: bool) -> Vec<Column> {
         cols.push(Column::new(format!("{}.theta", e.name), "rad"));
         cols.push(Column::new(format!("{}.omega", e.name), "rad/s"));
     }
+    for sp in sys.spinners() {
+        let b = &sys.bodies()[sp.body].name;
+        cols.extend((0..4).map(|k| Column::new(format!("{b}.q{k}"), "1")));
+        cols.extend(["wx", "wy", "wz"].map(|w| Column::new(format!("{b}.{w}"), "rad/s")));
+    }
     for e in sys.extras().iter().filter(|e| e.mass_of.is_some()) {
         cols.push(Column::new(e.name.clone(), "kg"));
     }
@@ -171,7 +176,7 @@ pub fn csv_columns(sys: &ParticleSystem, has_potential: bool) -> Vec<Column> {
         cols.push(Column::new("K_cm", "J"));
         cols.push(Column::new("K_internal", "J"));
     }
-    if sys.extras().iter().any(|e| e.body.is_some()) {
+    if sys.has_rotation() {
         cols.push(Column::new("K_rot", "J"));
     }
     cols.push(Column::new("K", "J"));
@@ -254,6 +259,8 @@ pub(crate) struct CsvWriter {
     bodies: usize,
     /// Indices in `q` of the rigid bodies' angles.
     rotors: Vec<usize>,
+    /// The first orientation coordinate of each rigid body turning in space.
+    spinners: Vec<usize>,
     /// Indices in `q` of the variable masses.
     variable_masses: Vec<usize>,
     /// The masses, when there are two or more bodies (for the centre-of-mass columns).
@@ -287,6 +294,7 @@ impl CsvWriter {
             keep,
             dim: sys.dim(),
             bodies: sys.bodies().len(),
+            spinners: sys.spinners().iter().map(|s| s.first).collect(),
             rotors: sys
                 .extras()
                 .iter()
@@ -328,6 +336,15 @@ impl CsvWriter {
                 push_number(&mut self.line, x);
             }
         }
+        for &f in &self.spinners {
+            let q = [s.q[f], s.q[f + 1], s.q[f + 2], s.q[f + 3]];
+            let n = spin::norm2(q).sqrt();
+            let w = spin::omega_world(q, [s.v[f], s.v[f + 1], s.v[f + 2], s.v[f + 3]]);
+            for x in q.iter().map(|x| x / n).chain(w) {
+                self.line.push(',');
+                push_number(&mut self.line, x);
+            }
+        }
         for &i in &self.variable_masses {
             self.line.push(',');
             push_number(&mut self.line, s.q[i]);
@@ -336,7 +353,7 @@ impl CsvWriter {
             self.push_centre_of_mass(&masses, s);
             self.masses = Some(masses);
         }
-        if !self.rotors.is_empty() {
+        if !self.rotors.is_empty() || !self.spinners.is_empty() {
             self.line.push(',');
             push_number(&mut self.line, s.eval.kinetic_rotation);
         }

@@ -113,6 +113,27 @@ impl Summary {
                     u(" m/s")
                 );
             }
+            if let Some(r) = &b.rotation {
+                let _ = writeln!(
+                    s,
+                    "    angle {}{}, angular velocity {}{}",
+                    num(r.theta),
+                    u(" rad"),
+                    num(r.omega),
+                    u(" rad/s")
+                );
+            }
+            if let Some(r) = &b.spin {
+                let _ = writeln!(
+                    s,
+                    "    orientation {}, angular velocity {}{}, angular momentum {}{}",
+                    vec_text(&r.orientation),
+                    vec_text(&r.omega),
+                    u(" rad/s"),
+                    vec_text(&r.angular_momentum),
+                    u(" kg m²/s")
+                );
+            }
         }
         if self.bodies.len() > 1 && !angle {
             let c = &self.centre_of_mass;

@@ -93,6 +93,7 @@ impl Fused {
     ) -> Option<Fused> {
         if !matches!(method, Method::Euler | Method::EulerCromer)
             || sys.coordinates() != Coordinates::Cartesian
+            || !sys.spinners().is_empty()
         {
             return None;
         }

@@ -58,8 +58,8 @@ pub static CASES: &[Case] = &[
         "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[[joint]]\nkind = \"rod\"\na = \"ball\"\nb = \"0 m\"\n[integrator]\ndt = \"1 ms\"\n"
     ),
     check!(
-        "free_rigid_body_in_space",
-        "dimensions = 3\n[[rigid_body]]\nname = \"top\"\nmass = \"1 kg\"\ninertia = \"1 kg m^2\"\n[integrator]\ndt = \"1 ms\"\n"
+        "rigid_body_in_space_with_impossible_moments",
+        "dimensions = 3\n[[rigid_body]]\nname = \"top\"\nmass = \"1 kg\"\ninertia = [\"1 kg m^2\", \"1 kg m^2\", \"3 kg m^2\"]\n[integrator]\ndt = \"1 ms\"\n"
     ),
     check!(
         "joint_violated_at_the_start",

@@ -24,14 +24,13 @@
 //! when its sliding speed reaches zero, if static friction can then hold it (else it slides
 //! back the other way). Rolling without slipping is a disk's contact that sticks.
 
-mod at;
 mod force;
 mod gauss;
 mod joint;
 mod modes;
 mod solve;
 
-pub use at::AppliedAt;
+pub use super::at::AppliedAt;
 pub use force::JointForce;
 pub use joint::{Anchor, Curve, Friction, Joint, JointKind};
 pub use solve::{Mechanism, PlanarBody, REPORT_FIELDS};

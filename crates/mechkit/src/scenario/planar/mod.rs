@@ -2,7 +2,6 @@
 //! planar mechanism ([`crate::rigid::planar`]) run as one particle system.
 
 mod contact;
-mod forces;
 mod joints;
 mod rigid;
 
@@ -14,14 +13,13 @@ use super::Scenario;
 use super::build::{Model, assemble, bodies};
 use super::doc::Table;
 use super::error::{ErrorKind, ScenarioError};
-use super::forces::ForceContext;
+use super::forces::{ForceContext, force_at};
 use super::integrator::read_integrator;
 use super::values::{Constant, ValueEnv, scalar};
 use crate::ode::State;
 use crate::particles::{ParticleSystem, PlanarNames, RigidName};
 use crate::rigid::planar::{Joint, JointForce, Mechanism, PlanarBody};
 use crate::simulate::Stepping;
-use forces::force_at;
 use joints::{Names, read_joint};
 use rigid::read_rigid;
 
@@ -130,11 +128,32 @@ pub(crate) fn build_planar(
     let dof = 2 * n_bodies + rigid.len() + modes.len();
     let mechanism = Arc::new(Mechanism::new(planar_bodies, joints, dof));
 
+    let rigid_names: Vec<RigidName> = rigid
+        .iter()
+        .enumerate()
+        .map(|(k, r)| RigidName {
+            body: n_particles + k,
+            angle: angle_of(k),
+            inertia: r.inertia,
+            points: r
+                .points
+                .iter()
+                .map(|(n, p)| (n.clone(), [p[0], p[1], 0.0]))
+                .collect(),
+            spin: None,
+        })
+        .collect();
+    // what force formulas may read: the bodies' angles and angular velocities
+    let turning = PlanarNames {
+        rigid: rigid_names.clone(),
+        ..PlanarNames::default()
+    };
     let fctx = ForceContext {
         dim: 2,
         bodies: &names,
         masses: &masses,
         constants: &constants,
+        rigid: &turning,
     };
     let mut builder = ParticleSystem::builder(2);
     for (b, m) in names.iter().zip(&masses) {
@@ -142,7 +161,7 @@ pub(crate) fn build_planar(
     }
     let mut force_names: Vec<String> = Vec::new();
     for (i, t) in root.tables("force")?.iter().enumerate() {
-        let f = force_at(t, &fctx, i, &ctx, n_bodies)?;
+        let f = force_at(t, &fctx, i)?;
         if force_names.iter().any(|n| n == f.name()) || names.iter().any(|n| n == f.name()) {
             return Err(src
                 .error(
@@ -235,16 +254,7 @@ pub(crate) fn build_planar(
     }
     let events = mechanism.events(first_joint);
     let planar = PlanarNames {
-        rigid: rigid
-            .iter()
-            .enumerate()
-            .map(|(k, r)| RigidName {
-                body: n_particles + k,
-                angle: angle_of(k),
-                inertia: r.inertia,
-                points: r.points.clone(),
-            })
-            .collect(),
+        rigid: rigid_names,
         joints: joint_names,
         extras: rigid.len() + modes.len(),
         modes: modes

@@ -7,6 +7,10 @@ use serde::Serialize;
 
 use crate::mass::PointMasses;
 
+mod bodies;
+
+pub use bodies::{BodySummary, Rotation, SpinSummary};
+
 use super::provenance::Provenance;
 use crate::Real;
 use crate::ode::Tolerance;
@@ -29,34 +33,6 @@ pub struct TimedState {
     pub t: Real,
     /// State of each body.
     pub state: BTreeMap<String, BodyState>,
-}
-
-/// A body at the end of the run.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct BodySummary {
-    /// Mass (kg).
-    pub mass: Real,
-    /// Final position (m).
-    pub position: Vec<Real>,
-    /// Final velocity (m/s).
-    pub velocity: Vec<Real>,
-    /// Final speed (m/s).
-    pub speed: Real,
-    /// A rigid body's final angle (rad) and angular velocity (rad/s), and its moment of
-    /// inertia about the centre of mass (kg m²).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub rotation: Option<Rotation>,
-}
-
-/// A rigid body's turning at the end of the run.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Rotation {
-    /// Angle (rad).
-    pub theta: Real,
-    /// Angular velocity (rad/s).
-    pub omega: Real,
-    /// Moment of inertia about the centre of mass (kg m²).
-    pub inertia: Real,
 }
 
 /// Start and end values.
@@ -356,40 +332,7 @@ impl Summary {
     ) -> Self {
         let (q, v) = report.final_state.qv();
         let d = sys.dim();
-        let bodies = sys
-            .bodies()
-            .iter()
-            .enumerate()
-            .map(|(i, b)| {
-                let vel = v[i * d..(i + 1) * d].to_vec();
-                let speed = vel.iter().map(|x| x * x).sum::<Real>().sqrt();
-                let start = sys.extras_start();
-                let rotation = sys
-                    .extras()
-                    .iter()
-                    .position(|e| e.body == Some(i))
-                    .map(|k| Rotation {
-                        theta: q[start + k],
-                        omega: v[start + k],
-                        inertia: sys.extras()[k].inertia,
-                    });
-                (
-                    b.name.clone(),
-                    BodySummary {
-                        // a body that ejects mass ends with what is left
-                        mass: sys
-                            .extras()
-                            .iter()
-                            .position(|e| e.mass_of == Some(i))
-                            .map_or(b.mass, |k| q[start + k]),
-                        position: q[i * d..(i + 1) * d].to_vec(),
-                        velocity: vel,
-                        speed,
-                        rotation,
-                    },
-                )
-            })
-            .collect();
+        let bodies = bodies::bodies(sys, q, v);
         let l = &report.ledger;
         let (e0, e1) = l.energy();
         Summary {
