@@ -61,9 +61,13 @@ pub trait Force: Debug + Send + Sync {
     }
 
     /// For a constraint force: what it reports (force components, normal force or tension,
-    /// friction, violation: [`crate::rigid::planar::REPORT_FIELDS`]); NaN for other forces.
-    fn constraint_report(&self, _k: &Kinematics<'_>, _applied: &[Real]) -> [Real; 5] {
-        [Real::NAN; 5]
+    /// friction, violation: [`crate::rigid::mechanism::REPORT_FIELDS`]); NaN for other forces.
+    fn constraint_report(
+        &self,
+        _k: &Kinematics<'_>,
+        _applied: &[Real],
+    ) -> [Real; crate::rigid::mechanism::REPORT_LEN] {
+        [Real::NAN; crate::rigid::mechanism::REPORT_LEN]
     }
 }
 

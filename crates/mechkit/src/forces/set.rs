@@ -4,6 +4,7 @@ use super::force::Force;
 use crate::Real;
 use crate::particles::Kinematics;
 use crate::particles::dot;
+use crate::rigid::mechanism::REPORT_LEN as LEN;
 
 /// The forces of a system.
 #[derive(Debug, Default)]
@@ -113,10 +114,10 @@ impl ForceSet {
                     let applied = applied.get_or_insert_with(|| out.to_vec());
                     f.add_constraint_forces(k, applied, scratch);
                     if let Some(r) = report.as_deref_mut() {
-                        r[i * 5..i * 5 + 5].copy_from_slice(&f.constraint_report(k, applied));
+                        r[i * LEN..(i + 1) * LEN].copy_from_slice(&f.constraint_report(k, applied));
                     }
                 } else if let Some(r) = report.as_deref_mut() {
-                    r[i * 5..i * 5 + 5].fill(Real::NAN);
+                    r[i * LEN..(i + 1) * LEN].fill(Real::NAN);
                 }
                 if !pass {
                     f.add_forces(k, scratch);

@@ -130,7 +130,7 @@ impl NameContext<'_> {
             if let Some((joint, field)) = name.rsplit_once('.')
                 && let Some((_, force)) = self.planar.joints.iter().find(|(j, _)| j == joint)
             {
-                let k = crate::rigid::planar::REPORT_FIELDS
+                let k = crate::rigid::mechanism::REPORT_FIELDS
                     .iter()
                     .position(|f| *f == field)
                     .or((field == "T").then_some(2))?;
@@ -312,7 +312,7 @@ impl NameContext<'_> {
         if derived {
             for (j, _) in &self.planar.joints {
                 out.extend(
-                    crate::rigid::planar::REPORT_FIELDS
+                    crate::rigid::mechanism::REPORT_FIELDS
                         .iter()
                         .map(|f| format!("{j}.{f}")),
                 );

@@ -22,7 +22,7 @@ pub struct Evaluation {
     /// Total momentum `Σ m v`, `dim` components.
     pub momentum: Vec<Real>,
     /// What each constraint force (joint) reports, 5 values per force
-    /// ([`crate::rigid::planar::REPORT_FIELDS`]); NaN for the other forces. Empty when the
+    /// ([`crate::rigid::mechanism::REPORT_FIELDS`]); NaN for the other forces. Empty when the
     /// system has no constraints.
     pub constraint: Vec<Real>,
     /// Rotational kinetic energy `Σ ½ I ω²` of the rigid bodies (0 without any).

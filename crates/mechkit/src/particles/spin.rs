@@ -208,6 +208,14 @@ impl Spinner {
         out
     }
 
+    /// The part of `q̈` that the generalized force `f` adds (linear in `f`): the response a
+    /// constraint solver needs.
+    pub fn response(&self, q: Quat, f: Quat) -> Quat {
+        let tau = unrotate(q, force_torque(q, f));
+        let wd = mat_vec(&self.inv_inertia, tau);
+        mul(q, pure(wd)).map(|x| 0.5 * x)
+    }
+
     /// Rotational kinetic energy `½ ω·Iω`.
     pub fn kinetic(&self, q: Quat, qd: Quat) -> Real {
         let w = omega_body(q, qd);

@@ -490,7 +490,8 @@ impl ParticleSystem {
         let mut current = Vec::new();
         let k = self.kinematics_with(t, q, v, &mut current);
         let report = if self.forces.has_constraints() {
-            out.constraint.resize(nf * 5, Real::NAN);
+            out.constraint
+                .resize(nf * crate::rigid::mechanism::REPORT_LEN, Real::NAN);
             Some(&mut out.constraint[..])
         } else {
             out.constraint.clear();

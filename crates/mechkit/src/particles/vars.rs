@@ -86,7 +86,7 @@ pub enum StateVar {
     /// The kinetic energy `½ m v²` of body `.0`, whose mass is coordinate `.1` of `q`.
     VariableKinetic(usize, usize),
     /// Field `k` of what constraint force `i` reports
-    /// ([`crate::rigid::planar::REPORT_FIELDS`]).
+    /// ([`crate::rigid::mechanism::REPORT_FIELDS`]).
     Constraint(usize, usize),
     /// A quantity of a rigid body turning in space.
     Spin(SpinRef, SpinField),
@@ -495,7 +495,7 @@ impl StateVar {
             StateVar::Constraint(i, k) => s
                 .eval
                 .constraint
-                .get(i * 5 + k)
+                .get(i * crate::rigid::mechanism::REPORT_LEN + k)
                 .copied()
                 .unwrap_or(Real::NAN),
             StateVar::Spin(r, f @ (SpinField::Alpha(_) | SpinField::Kinetic)) => {

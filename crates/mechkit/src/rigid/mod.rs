@@ -20,7 +20,7 @@ pub mod friction;
 pub mod impact;
 mod input;
 pub mod kinematics;
-pub mod planar;
+pub mod mechanism;
 pub mod rolling;
 pub mod rotation;
 

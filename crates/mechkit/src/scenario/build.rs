@@ -126,31 +126,30 @@ pub(crate) fn build_with(
     };
 
     let rigid_tables = root.tables("rigid_body")?;
-    if (!rigid_tables.is_empty() || root.get("joint").is_some()) && dim == 2 {
+    if (!rigid_tables.is_empty() || root.get("joint").is_some()) && dim >= 2 {
         let constants = constants_with(
             &root,
             &[RESERVED, super::rigid::RIGID_RESERVED].concat(),
             overrides,
         )?;
-        return super::planar::build_planar(name, &root, title, constants, &rigid_tables);
-    }
-    if !rigid_tables.is_empty() && dim == 3 {
-        let constants = constants_with(
+        return super::mechanism::build_mechanism(
+            name,
             &root,
-            &[RESERVED, super::rigid::RIGID_RESERVED].concat(),
-            overrides,
-        )?;
-        return super::spatial::build_spatial(name, &root, title, constants, &rigid_tables);
+            title,
+            constants,
+            &rigid_tables,
+            dim,
+        );
     }
     if let Some(v) = root.get("joint") {
         return Err(src
             .error(
                 ErrorKind::Invalid,
-                "[[joint]]s join bodies of a plane: the scenario needs `dimensions = 2`",
+                "[[joint]]s join bodies in a plane or in space: the scenario needs `dimensions = 2` or `3`",
                 v.span(),
             )
             .with_hint(
-                "set `dimensions = 2`; joints hold [[body]] particles and [[rigid_body]]s",
+                "set `dimensions`; joints hold [[body]] particles and [[rigid_body]]s",
             ));
     }
     if !rigid_tables.is_empty() {

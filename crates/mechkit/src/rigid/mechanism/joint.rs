@@ -4,7 +4,9 @@ use std::sync::Arc;
 
 use mechkit_expr::{Expr, MapScope, Program, Sym};
 
+use super::super::at::Turn;
 use crate::Real;
+use crate::particles::spin::{Quat, cross, dot3, torque_force};
 
 /// A curve `y = f(x)` of the plane, with `f'` and `f''` derived symbolically and compiled.
 #[derive(Debug, Clone)]
@@ -51,18 +53,19 @@ impl Curve {
     }
 }
 
-/// A point a joint holds: fixed in the world, or fixed in a body.
+/// A point a joint holds: fixed in the world, or fixed in a body (`z` is 0 in a plane).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Anchor {
-    /// A fixed point of the plane (m).
-    World([Real; 2]),
+    /// A fixed point (m).
+    World([Real; 3]),
     /// A point of body `body` (index in the particle system), `r` from its centre of mass in
-    /// the body's own frame (the frame the body is described in, turned by its angle `θ`).
+    /// the body's own frame (the frame the body is described in, turned by its angle `θ` in a
+    /// plane, by its orientation in space).
     Body {
         /// Body index.
         body: usize,
         /// Offset from the centre of mass in the body frame (m).
-        r: [Real; 2],
+        r: [Real; 3],
     },
 }
 
@@ -116,8 +119,9 @@ pub enum JointKind {
         /// Index of the mode coordinate in `q`.
         mode: usize,
     },
-    /// A point (or a disk of radius `radius` around it) on the positive side of a fixed line,
-    /// pushed by the line's normal force while touching (`mode` 1) and free while apart (0).
+    /// A point (or a disk or ball of radius `radius` around it) on the positive side of a
+    /// line (a plane in space), pushed by its normal force while touching (`mode` 1) and free
+    /// while apart (0).
     Contact {
         /// The body point (a disk's centre).
         on: Anchor,
@@ -126,8 +130,8 @@ pub enum JointKind {
         /// A point of the line: fixed, or a point of a particle (the surface of a body that
         /// moves without turning: a block on a cart).
         point: Anchor,
-        /// The line's unit normal, towards the side the body is on.
-        normal: [Real; 2],
+        /// The surface's unit normal, towards the side the body is on (`z` 0 in a plane).
+        normal: [Real; 3],
         /// Index of the touching-mode coordinate in `q`.
         mode: usize,
         /// Friction along the line.
@@ -173,15 +177,19 @@ pub struct Joint {
     pub kind: JointKind,
 }
 
+/// The most coordinates one row involves: two bodies turning in space (3 + 4 each), or three
+/// points of a pulley in a plane with its wheel.
+const ROW_CAPACITY: usize = 16;
+
 /// One scalar constraint at the acceleration level: `J a + bias = 0` (with stabilisation).
 #[derive(Debug, Clone)]
 pub(crate) struct Row {
     /// Coordinates it involves.
-    pub idx: [usize; 9],
+    pub idx: [usize; ROW_CAPACITY],
     /// `∂C/∂q` (or the velocity constraint's row).
-    pub j: [Real; 9],
+    pub j: [Real; ROW_CAPACITY],
     /// The direction its force acts in (`J`, except a sliding contact's normal row).
-    pub d: [Real; 9],
+    pub d: [Real; ROW_CAPACITY],
     pub n: usize,
     /// `J̇ v`.
     pub bias: Real,
@@ -196,9 +204,9 @@ pub(crate) struct Row {
 impl Row {
     pub(crate) fn new(joint: usize) -> Self {
         Self {
-            idx: [0; 9],
-            j: [0.0; 9],
-            d: [0.0; 9],
+            idx: [0; ROW_CAPACITY],
+            j: [0.0; ROW_CAPACITY],
+            d: [0.0; ROW_CAPACITY],
             n: 0,
             bias: 0.0,
             jv: 0.0,
@@ -225,38 +233,54 @@ impl Row {
     }
 }
 
-/// A point's kinematics in the world.
+/// Where a body's coordinates are: its centre of mass from `x` (`dim` of them), and how it
+/// turns (with its orientation `quat`, for a body in space).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Coords {
+    pub x: usize,
+    pub dim: usize,
+    pub turn: Option<Turn>,
+    pub quat: Quat,
+}
+
+/// A point's kinematics in the world (`z` components 0 in a plane).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Point {
-    pub p: [Real; 2],
-    pub vel: [Real; 2],
+    pub p: [Real; 3],
+    pub vel: [Real; 3],
     /// World offset from the body's centre of mass (zero for world points).
-    pub w: [Real; 2],
-    pub omega: Real,
-    /// `(x index, angle index)` of the body, if any.
-    pub coords: Option<(usize, Option<usize>)>,
+    pub w: [Real; 3],
+    /// The body's angular velocity (world).
+    pub omega: [Real; 3],
+    /// The body's coordinates, if any.
+    pub coords: Option<Coords>,
 }
 
-pub(crate) fn perp(w: [Real; 2]) -> [Real; 2] {
-    [-w[1], w[0]]
+pub(crate) fn add3(a: [Real; 3], b: [Real; 3]) -> [Real; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
-pub(crate) fn dot2(a: [Real; 2], b: [Real; 2]) -> Real {
-    a[0] * b[0] + a[1] * b[1]
+pub(crate) fn sub3(a: [Real; 3], b: [Real; 3]) -> [Real; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+pub(crate) fn norm3(a: [Real; 3]) -> Real {
+    dot3(a, a).sqrt()
+}
+
+/// The distance between two points.
+pub fn distance(a: [Real; 3], b: [Real; 3]) -> Real {
+    norm3(sub3(a, b))
 }
 
 impl Point {
     /// The same material point, moved by `offset` in the world (a disk's contact point).
-    pub(crate) fn shifted(self, offset: [Real; 2]) -> Self {
-        let w = [self.w[0] + offset[0], self.w[1] + offset[1]];
-        let pw = perp(w);
-        let base = [
-            self.vel[0] - self.omega * perp(self.w)[0],
-            self.vel[1] - self.omega * perp(self.w)[1],
-        ];
+    pub(crate) fn shifted(self, offset: [Real; 3]) -> Self {
+        let w = add3(self.w, offset);
+        let base = sub3(self.vel, cross(self.omega, self.w));
         Self {
-            p: [self.p[0] + offset[0], self.p[1] + offset[1]],
-            vel: [base[0] + self.omega * pw[0], base[1] + self.omega * pw[1]],
+            p: add3(self.p, offset),
+            vel: add3(base, cross(self.omega, w)),
             w,
             omega: self.omega,
             coords: self.coords,
@@ -264,15 +288,23 @@ impl Point {
     }
 
     /// Adds `sign · u·p` to `row`: its Jacobian entries, `J̇ v` (for a fixed `u`) and `J v`.
-    pub(crate) fn add(&self, row: &mut Row, u: [Real; 2], sign: Real) {
-        if let Some((x, angle)) = self.coords {
-            row.push(x, sign * u[0]);
-            row.push(x + 1, sign * u[1]);
-            if let Some(a) = angle {
-                row.push(a, sign * dot2(u, perp(self.w)));
+    pub(crate) fn add(&self, row: &mut Row, u: [Real; 3], sign: Real) {
+        if let Some(c) = self.coords {
+            for (k, uk) in u.iter().take(c.dim).enumerate() {
+                row.push(c.x + k, sign * uk);
+            }
+            let arm = cross(self.w, u);
+            match c.turn {
+                Some(Turn::Angle(a)) => row.push(a, sign * arm[2]),
+                Some(Turn::Quaternion(f)) => {
+                    for (k, g) in torque_force(c.quat, arm).into_iter().enumerate() {
+                        row.push(f + k, sign * g);
+                    }
+                }
+                None => {}
             }
         }
-        row.bias += sign * -self.omega * self.omega * dot2(u, self.w);
-        row.jv += sign * dot2(u, self.vel);
+        row.bias += sign * dot3(u, cross(self.omega, cross(self.omega, self.w)));
+        row.jv += sign * dot3(u, self.vel);
     }
 }

@@ -1,9 +1,13 @@
-//! A scenario in a plane (`dimensions = 2`) with free `[[rigid_body]]`s and `[[joint]]`s: a
-//! planar mechanism ([`crate::rigid::planar`]) run as one particle system.
+//! A scenario of free `[[rigid_body]]`s and `[[joint]]`s, in a plane (`dimensions = 2`) or in
+//! space (`dimensions = 3`): a mechanism ([`crate::rigid::mechanism`]) run as one particle
+//! system. A rigid body's centre of mass is among the positions; how it turns follows them: one
+//! angle in a plane, a quaternion of four coordinates in space ([`crate::particles::spin`]);
+//! the joints' modes come last.
 
 mod contact;
 mod joints;
-mod rigid;
+mod rigid2;
+mod rigid3;
 
 use std::sync::Arc;
 
@@ -16,20 +20,63 @@ use super::error::{ErrorKind, ScenarioError};
 use super::forces::{ForceContext, force_at};
 use super::integrator::read_integrator;
 use super::values::{Constant, ValueEnv, scalar};
+use crate::Real;
 use crate::ode::State;
-use crate::particles::{ParticleSystem, PlanarNames, RigidName};
-use crate::rigid::planar::{Joint, JointForce, Mechanism, PlanarBody};
+use crate::particles::spin::{Mat3, Quat, Spinner, rate_for};
+use crate::particles::{ParticleSystem, PlanarNames, RigidName, SpinRef};
+use crate::rigid::mechanism::{Joint, JointForce, Mechanism, MechanismBody};
 use crate::simulate::Stepping;
 use joints::{Names, read_joint};
-use rigid::read_rigid;
+use rigid2::read_rigid2;
+use rigid3::read_rigid3;
 
-/// Builds a planar mechanism scenario.
-pub(crate) fn build_planar(
+/// A rigid body as read, before the system is built.
+pub(super) struct Rigid {
+    pub(super) name: String,
+    pub(super) mass: Real,
+    /// Centre of mass (`dimensions` components).
+    pub(super) position: Vec<Real>,
+    pub(super) velocity: Vec<Real>,
+    /// Named points, body frame, from the centre of mass (`z` 0 in a plane).
+    pub(super) points: Vec<(String, [Real; 3])>,
+    pub(super) turn: RigidTurn,
+}
+
+/// How a rigid body turns, and its initial turning.
+pub(super) enum RigidTurn {
+    /// In a plane: moment of inertia about the centre of mass, angle, angular velocity.
+    Plane {
+        inertia: Real,
+        theta: Real,
+        omega: Real,
+    },
+    /// In space: inertia tensor about the centre of mass (body frame), orientation (a unit
+    /// quaternion, body → world), angular velocity (world).
+    Space {
+        inertia: Mat3,
+        orientation: Quat,
+        omega: [Real; 3],
+    },
+}
+
+impl RigidTurn {
+    /// How many coordinates it takes.
+    fn coordinates(&self) -> usize {
+        match self {
+            RigidTurn::Plane { .. } => 1,
+            RigidTurn::Space { .. } => 4,
+        }
+    }
+}
+
+/// Builds a scenario of rigid bodies and joints in `dim` dimensions (2 or 3).
+pub(crate) fn build_mechanism(
     name: &str,
     root: &Table<'_, '_>,
     title: String,
     constants: Vec<Constant>,
     rigid_tables: &[Table<'_, '_>],
+    dim: usize,
 ) -> Result<Scenario, ScenarioError> {
     let src = root.src;
     for key in ["torque", "contact", "wall", "plane"] {
@@ -37,10 +84,10 @@ pub(crate) fn build_planar(
             return Err(src
                 .error(
                     ErrorKind::Invalid,
-                    format!("a scenario of free rigid bodies (`dimensions = 2`) cannot have `{key}`"),
+                    format!("a scenario of free rigid bodies (`dimensions = {dim}`) cannot have `{key}`"),
                     v.span(),
                 )
-                .with_hint("surfaces are [[joint]]s of kind \"contact\" (with `surface`, `mu_s`, `mu_k`); torques are forces applied at body points"));
+                .with_hint("surfaces are [[joint]]s of kind \"contact\" (with `surface`); torques are [[force]]s of kind \"torque\" or forces applied at body points (`at`)"));
         }
     }
     let env = ValueEnv {
@@ -49,7 +96,7 @@ pub(crate) fn build_planar(
         later: &[],
     };
     let (mut names, mut masses, mut q, mut v, _radius) = if root.get("body").is_some() {
-        bodies(root, 2, &constants)?
+        bodies(root, dim, &constants)?
     } else {
         (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new())
     };
@@ -61,9 +108,7 @@ pub(crate) fn build_planar(
             return Err(src
                 .error(
                     ErrorKind::Invalid,
-                    format!(
-                        "`{key}`: a body that ejects mass is not yet part of a mechanism in a plane"
-                    ),
+                    format!("`{key}`: a body that ejects mass is not yet part of a mechanism"),
                     t.key_span(key),
                 )
                 .with_hint("run the rocket in a scenario without [[rigid_body]] and [[joint]]"));
@@ -73,44 +118,79 @@ pub(crate) fn build_planar(
     let dir = std::path::Path::new(name).parent();
     let mut rigid = Vec::new();
     for (i, t) in rigid_tables.iter().enumerate() {
-        let r = read_rigid(t, i, rigid_tables.len(), &names, env, dir)?;
+        let r = if dim == 2 {
+            read_rigid2(t, i, rigid_tables.len(), &names, env, dir)?
+        } else {
+            read_rigid3(t, i, rigid_tables.len(), &names, env, dir)?
+        };
         names.push(r.name.clone());
         masses.push(r.mass);
-        q.extend(r.position);
-        v.extend(r.velocity);
+        q.extend(&r.position);
+        v.extend(&r.velocity);
         rigid.push(r);
     }
     let n_bodies = names.len();
     let joint_tables = root.tables("joint")?;
 
-    // coordinates: positions, then one angle per rigid body, then the joints' modes
-    let angle_of = |k: usize| 2 * n_bodies + k;
-    let mut planar_bodies: Vec<PlanarBody> = (0..n_particles)
-        .map(|b| PlanarBody {
-            x: 2 * b,
+    // coordinates: positions, then each rigid body's turning (an angle or a quaternion), then
+    // the joints' modes
+    let mut turn_of = Vec::with_capacity(rigid.len());
+    let mut next = dim * n_bodies;
+    for r in &rigid {
+        turn_of.push(next);
+        next += r.turn.coordinates();
+    }
+    let first_mode = next;
+    let mut mechanism_bodies: Vec<MechanismBody> = (0..n_particles)
+        .map(|b| MechanismBody {
+            x: dim * b,
             angle: None,
+            spinner: None,
             inv_mass: 1.0 / masses[b],
             inv_inertia: 0.0,
         })
         .collect();
+    let mut rigid_names = Vec::with_capacity(rigid.len());
     for (k, r) in rigid.iter().enumerate() {
-        planar_bodies.push(PlanarBody {
-            x: 2 * (n_particles + k),
-            angle: Some(angle_of(k)),
+        let body = n_particles + k;
+        let (angle, spinner, inv_inertia, spin) = match &r.turn {
+            RigidTurn::Plane { inertia, .. } => (Some(turn_of[k]), None, 1.0 / inertia, None),
+            RigidTurn::Space { inertia, .. } => (
+                None,
+                Spinner::new(body, turn_of[k], *inertia),
+                0.0,
+                Some(SpinRef::new(body, turn_of[k], inertia)),
+            ),
+        };
+        mechanism_bodies.push(MechanismBody {
+            x: dim * body,
+            angle,
+            spinner,
             inv_mass: 1.0 / r.mass,
-            inv_inertia: 1.0 / r.inertia,
+            inv_inertia,
+        });
+        rigid_names.push(RigidName {
+            body,
+            angle: turn_of[k],
+            inertia: match r.turn {
+                RigidTurn::Plane { inertia, .. } => inertia,
+                RigidTurn::Space { .. } => 0.0,
+            },
+            points: r.points.clone(),
+            spin,
         });
     }
     let mut modes: Vec<String> = Vec::new();
     let mut joints = Vec::new();
     let ctx = Names {
+        dim,
         bodies: &names,
         n_particles,
         rigid: &rigid,
         env,
     };
     for (i, t) in joint_tables.iter().enumerate() {
-        let j = read_joint(t, i, &ctx, &q, &mut modes, angle_of(rigid.len()))?;
+        let j = read_joint(t, i, &ctx, &q, &mut modes, first_mode)?;
         if names.contains(&j.name) || joints.iter().any(|o: &Joint| o.name == j.name) {
             return Err(src
                 .error(
@@ -125,37 +205,22 @@ pub(crate) fn build_planar(
         }
         joints.push(j);
     }
-    let dof = 2 * n_bodies + rigid.len() + modes.len();
-    let mechanism = Arc::new(Mechanism::new(planar_bodies, joints, dof));
+    let dof = first_mode + modes.len();
+    let mechanism = Arc::new(Mechanism::new(mechanism_bodies, joints, dof, dim));
 
-    let rigid_names: Vec<RigidName> = rigid
-        .iter()
-        .enumerate()
-        .map(|(k, r)| RigidName {
-            body: n_particles + k,
-            angle: angle_of(k),
-            inertia: r.inertia,
-            points: r
-                .points
-                .iter()
-                .map(|(n, p)| (n.clone(), [p[0], p[1], 0.0]))
-                .collect(),
-            spin: None,
-        })
-        .collect();
     // what force formulas may read: the bodies' angles and angular velocities
     let turning = PlanarNames {
         rigid: rigid_names.clone(),
         ..PlanarNames::default()
     };
     let fctx = ForceContext {
-        dim: 2,
+        dim,
         bodies: &names,
         masses: &masses,
         constants: &constants,
         rigid: &turning,
     };
-    let mut builder = ParticleSystem::builder(2);
+    let mut builder = ParticleSystem::builder(dim);
     for (b, m) in names.iter().zip(&masses) {
         builder = builder.body(b.clone(), *m);
     }
@@ -197,9 +262,26 @@ pub(crate) fn build_planar(
         ));
     }
     for (k, r) in rigid.iter().enumerate() {
-        builder = builder.rotor(r.name.clone(), n_particles + k, r.inertia);
-        q.push(r.theta);
-        v.push(r.omega);
+        match r.turn {
+            RigidTurn::Plane {
+                inertia,
+                theta,
+                omega,
+            } => {
+                builder = builder.rotor(r.name.clone(), n_particles + k, inertia);
+                q.push(theta);
+                v.push(omega);
+            }
+            RigidTurn::Space {
+                inertia,
+                orientation,
+                omega,
+            } => {
+                builder = builder.spinner(&r.name, n_particles + k, inertia);
+                q.extend(orientation);
+                v.extend(rate_for(orientation, omega));
+            }
+        }
     }
     for m in &modes {
         builder = builder.mode(m.clone());
@@ -208,7 +290,9 @@ pub(crate) fn build_planar(
     }
     let mut warnings = Vec::new();
     if force_names.is_empty() {
-        warnings.push("no [[force]] is defined: the bodies move in straight lines".into());
+        warnings.push(
+            "no [[force]] is defined: the bodies move in straight lines and turn freely".into(),
+        );
     }
     let system = builder
         .build()
@@ -231,7 +315,7 @@ pub(crate) fn build_planar(
         },
     };
     mechanism.set_tau(tau);
-    let scale = q[..2 * n_bodies]
+    let scale = q[..dim * n_bodies]
         .iter()
         .fold(0.0_f64, |m, x| m.max(x.abs()))
         .max(1.0);
@@ -252,15 +336,26 @@ pub(crate) fn build_planar(
             )
             .with_hint("place the bodies where the joint holds them (a contact on or above its surface, a string no longer than its `length`, a rod's ends at its `length`), or leave `length` out to take the distance at the start"));
     }
+    let speed = v[..dim * n_bodies]
+        .iter()
+        .fold(0.0_f64, |m, x| m.max(x.abs()))
+        .max(1.0);
+    if let Some((ji, rate)) = mechanism.velocity_violation(&q, &v, 1e-9 * speed) {
+        mechanism.project_velocities(&q, &mut v);
+        warnings.push(format!(
+            "the initial velocities break the joint `{}` (its constraint changes at {rate} m/s): they were projected onto what the joints allow, as an inelastic impulse at t = 0; give velocities the joints allow (a body turning about a pivot moves its centre at ω × r) to start from your own",
+            mechanism.joints()[ji].name
+        ));
+    }
     let events = mechanism.events(first_joint);
     let planar = PlanarNames {
         rigid: rigid_names,
         joints: joint_names,
-        extras: rigid.len() + modes.len(),
+        extras: first_mode - dim * n_bodies + modes.len(),
         modes: modes
             .iter()
             .enumerate()
-            .map(|(i, m)| (m.clone(), angle_of(rigid.len()) + i))
+            .map(|(i, m)| (m.clone(), first_mode + i))
             .collect(),
         masses: Vec::new(),
     };
@@ -269,7 +364,7 @@ pub(crate) fn build_planar(
         Model {
             name,
             title,
-            dim: 2,
+            dim,
             constants,
             system,
             initial: State::from_qv(0.0, &q, &v),

@@ -1,5 +1,5 @@
-//! Reading a `[[joint]]` of a planar mechanism: what it holds, its surface and friction, and
-//! the modes it switches.
+//! Reading a `[[joint]]` of a mechanism (in a plane or in space): what it holds, its surface
+//! and friction, and the modes it switches.
 
 use std::ops::Range;
 
@@ -7,9 +7,10 @@ use mechkit_expr::units::Dimension;
 use toml::de::DeValue;
 
 use super::contact::{friction, surface, surface_body};
-use super::rigid::Rigid;
+use super::{Rigid, RigidTurn};
 use crate::Real;
-use crate::rigid::planar::{Anchor, Joint, JointKind, Mechanism, PlanarBody};
+use crate::particles::spin;
+use crate::rigid::mechanism::{Anchor, Joint, JointKind, Mechanism, MechanismBody};
 use crate::scenario::doc::Table;
 use crate::scenario::error::{ErrorKind, ScenarioError};
 use crate::scenario::values::{ValueEnv, scalar, vector};
@@ -22,6 +23,8 @@ const JOINT_KINDS: &[&str] = &["hinge", "rod", "string", "contact", "pulley", "c
 
 /// What joints refer to.
 pub(super) struct Names<'a> {
+    /// Spatial dimensions (2 or 3).
+    pub(super) dim: usize,
     pub(super) bodies: &'a [String],
     pub(super) n_particles: usize,
     pub(super) rigid: &'a [Rigid],
@@ -29,17 +32,54 @@ pub(super) struct Names<'a> {
 }
 
 impl Names<'_> {
-    /// The bodies as the solver sees them (masses left at 1: for geometry only).
-    fn solver_bodies(&self) -> Vec<PlanarBody> {
+    /// The bodies of a planar mechanism as the solver sees them (masses left at 1: for
+    /// geometry only).
+    fn solver_bodies(&self) -> Vec<MechanismBody> {
         let n = self.bodies.len();
         (0..n)
-            .map(|b| PlanarBody {
+            .map(|b| MechanismBody {
                 x: 2 * b,
                 angle: b.checked_sub(self.n_particles).map(|k| 2 * n + k),
+                spinner: None,
                 inv_mass: 1.0,
                 inv_inertia: 1.0,
             })
             .collect()
+    }
+
+    /// Where `a` is in the initial state `q` (positions only).
+    fn position(&self, a: Anchor, q: &[Real]) -> [Real; 3] {
+        match a {
+            Anchor::World(p) => p,
+            Anchor::Body { body, r } => {
+                let d = self.dim;
+                let w = match body
+                    .checked_sub(self.n_particles)
+                    .map(|k| &self.rigid[k].turn)
+                {
+                    Some(RigidTurn::Plane { theta, .. }) => {
+                        let (s, c) = theta.sin_cos();
+                        [c * r[0] - s * r[1], s * r[0] + c * r[1], r[2]]
+                    }
+                    Some(RigidTurn::Space { orientation, .. }) => spin::rotate(*orientation, r),
+                    None => r,
+                };
+                let mut p = w;
+                for (k, x) in p.iter_mut().enumerate().take(d) {
+                    *x += q[d * body + k];
+                }
+                p
+            }
+        }
+    }
+
+    /// The example of a fixed point, for messages.
+    fn fixed_point(&self) -> &'static str {
+        if self.dim == 2 {
+            "[\"0 m\", \"0 m\"]"
+        } else {
+            "[\"0 m\", \"0 m\", \"0 m\"]"
+        }
     }
 
     /// `"body"` (its centre of mass) or `"body.point"`.
@@ -57,7 +97,7 @@ impl Names<'_> {
         let Some(point) = point else {
             return Ok(Anchor::Body {
                 body: b,
-                r: [0.0; 2],
+                r: [0.0; 3],
             });
         };
         let Some(rigid) = b.checked_sub(self.n_particles).map(|k| &self.rigid[k]) else {
@@ -95,23 +135,12 @@ impl Names<'_> {
                     .with_hint("a joint holds a body (`\"cart\"`), a named point of a rigid body (`\"ladder.top\"`) or a fixed point (`[\"0 m\", \"1 m\"]`)")
             });
         }
-        let p = vector(t, key, Dimension::LENGTH, 2, self.env)?.unwrap_or_default();
-        Ok(Some(Anchor::World([p[0], p[1]])))
-    }
-}
-
-/// Where an anchor is in the initial state.
-fn position(a: Anchor, q: &[Real], rigid_angle: impl Fn(usize) -> Option<Real>) -> [Real; 2] {
-    match a {
-        Anchor::World(p) => p,
-        Anchor::Body { body, r } => {
-            let th = rigid_angle(body).unwrap_or(0.0);
-            let (s, c) = th.sin_cos();
-            [
-                q[2 * body] + c * r[0] - s * r[1],
-                q[2 * body + 1] + s * r[0] + c * r[1],
-            ]
-        }
+        let p = vector(t, key, Dimension::LENGTH, self.dim, self.env)?.unwrap_or_default();
+        Ok(Some(Anchor::World([
+            p[0],
+            p[1],
+            p.get(2).copied().unwrap_or(0.0),
+        ])))
     }
 }
 
@@ -145,15 +174,27 @@ pub(super) fn read_joint(
         t.missing("kind", "\"hinge\"")
             .with_hint(format!("the kinds: {}", JOINT_KINDS.join(", ")))
     })?;
-    let angle = |body: usize| {
-        body.checked_sub(ctx.n_particles)
-            .map(|k| ctx.rigid[k].theta)
-    };
+    let position = |a: Anchor| ctx.position(a, q);
     let env = ctx.env;
+    let plane_only = |what: &str| -> Result<(), ScenarioError> {
+        if ctx.dim == 2 {
+            return Ok(());
+        }
+        Err(src
+            .error(
+                ErrorKind::Invalid,
+                format!("a {what} joint works in a plane (`dimensions = 2`), not in space"),
+                kind_span.clone(),
+            )
+            .with_hint(
+                "in space: hinge (a ball joint), rod, string, contact (a point or ball on a plane)",
+            ))
+    };
     let need = |key: &str, example: &str| -> Result<Anchor, ScenarioError> {
         ctx.anchor_key(t, key)?.ok_or_else(|| {
             t.missing(key, example).with_hint(format!(
-                "a {kind} joint names what it holds: a body, \"body.point\" or a fixed point [x, y]"
+                "a {kind} joint names what it holds: a body, \"body.point\" or a fixed point {}",
+                ctx.fixed_point()
             ))
         })
     };
@@ -165,8 +206,8 @@ pub(super) fn read_joint(
         let l = if let Some(l) = scalar(t, key, Dimension::LENGTH, env)? {
             l
         } else {
-            let (pa, pb) = (position(a, q, angle), position(b, q, angle));
-            (pa[0] - pb[0]).hypot(pa[1] - pb[1])
+            let (pa, pb) = (position(a), position(b));
+            crate::rigid::mechanism::distance(pa, pb)
         };
         if !(l > 0.0 && l.is_finite()) {
             return Err(src
@@ -180,12 +221,12 @@ pub(super) fn read_joint(
             let a = need("a", "\"rod.end\"")?;
             let b = match ctx.anchor_key(t, "b")? {
                 Some(b) => b,
-                None => Anchor::World(position(a, q, angle)),
+                None => Anchor::World(position(a)),
             };
             JointKind::Hinge { a, b }
         }
         "rod" => {
-            let (a, b) = (need("a", "\"ball\"")?, need("b", "[\"0 m\", \"0 m\"]")?);
+            let (a, b) = (need("a", "\"ball\"")?, need("b", ctx.fixed_point())?);
             JointKind::Rod {
                 a,
                 b,
@@ -193,7 +234,7 @@ pub(super) fn read_joint(
             }
         }
         "string" | "rope" | "cable" => {
-            let (a, b) = (need("a", "\"ball\"")?, need("b", "[\"0 m\", \"0 m\"]")?);
+            let (a, b) = (need("a", "\"ball\"")?, need("b", ctx.fixed_point())?);
             let length = length_or("length", a, b)?;
             JointKind::String {
                 a,
@@ -212,13 +253,13 @@ pub(super) fn read_joint(
                     t.key_span("radius"),
                 ));
             }
-            let (point, normal) = surface(t, env, &kind_span)?;
+            let (point, normal) = surface(t, env, &kind_span, ctx.dim)?;
             let point = match surface_body(t, ctx)? {
                 Some(body) => Anchor::Body { body, r: point },
                 None => Anchor::World(point),
             };
             let mode = new_mode("touching");
-            let friction = friction(t, env, &mut new_mode)?;
+            let friction = friction(t, env, &mut new_mode, ctx.dim)?;
             JointKind::Contact {
                 on,
                 radius,
@@ -229,6 +270,7 @@ pub(super) fn read_joint(
             }
         }
         "curve" | "track" | "wire" => {
+            plane_only("curve")?;
             let on = need("on", "\"bead\"")?;
             let (text, span) = t.string("y")?.ok_or_else(|| {
                 t.missing("y", "\"x^2/2\"")
@@ -244,7 +286,7 @@ pub(super) fn read_joint(
             let constants: Vec<(String, Real)> =
                 env.constants.iter().map(|c| (c.0.clone(), c.1)).collect();
             let curve =
-                crate::rigid::planar::Curve::new(&parsed.expr, &constants).map_err(|name| {
+                crate::rigid::mechanism::Curve::new(&parsed.expr, &constants).map_err(|name| {
                     src.error(
                         ErrorKind::Invalid,
                         format!("the curve `y` uses `{name}`, which is neither `x` nor a constant"),
@@ -258,6 +300,7 @@ pub(super) fn read_joint(
             }
         }
         "pulley" => {
+            plane_only("pulley")?;
             let (a, b) = (need("a", "\"m1\"")?, need("b", "\"m2\"")?);
             let wheel = match t.string("wheel")? {
                 Some((w, span)) => {
@@ -277,7 +320,7 @@ pub(super) fn read_joint(
                 (Some(c), _, _) | (None, Some(c), _) => c,
                 (None, None, Some(w)) => Anchor::Body {
                     body: w,
-                    r: [0.0; 2],
+                    r: [0.0; 3],
                 },
                 (None, None, None) => {
                     return Err(t.missing("centre", "[\"0 m\", \"0 m\"]").with_hint("the pulley's axle: a fixed point, or `wheel` (a rigid body whose centre it is)"));
@@ -291,9 +334,9 @@ pub(super) fn read_joint(
                     t.key_span("radius"),
                 ));
             }
-            let c = position(centre, q, angle);
-            let (pa, pb) = (position(a, q, angle), position(b, q, angle));
-            let outside = |p: [Real; 2]| (p[0] - c[0]).hypot(p[1] - c[1]) > radius;
+            let c = position(centre);
+            let (pa, pb) = (position(a), position(b));
+            let outside = |p: [Real; 3]| (p[0] - c[0]).hypot(p[1] - c[1]) > radius;
             if !outside(pa) || !outside(pb) {
                 return Err(src
                     .error(
@@ -309,7 +352,10 @@ pub(super) fn read_joint(
             } else {
                 let zero = vec![0.0; 2 * ctx.bodies.len() + ctx.rigid.len()];
                 let mut qq = q.to_vec();
-                qq.extend(ctx.rigid.iter().map(|r| r.theta));
+                qq.extend(ctx.rigid.iter().map(|r| match r.turn {
+                    RigidTurn::Plane { theta, .. } => theta,
+                    RigidTurn::Space { .. } => 0.0,
+                }));
                 let probe = Mechanism::new(
                     ctx.solver_bodies(),
                     vec![Joint {
@@ -325,6 +371,7 @@ pub(super) fn read_joint(
                         },
                     }],
                     qq.len(),
+                    2,
                 );
                 probe.pulley_length(&qq, &zero)
             };

@@ -12,6 +12,8 @@ use crate::scenario::error::{ErrorKind, ScenarioError};
 use crate::scenario::rigid::bodies::mass_properties;
 use crate::scenario::values::{ValueEnv, required_scalar, resolve, vector};
 
+use super::{Rigid, RigidTurn};
+
 const SPATIAL_RIGID_KEYS: &[&str] = &[
     "name",
     "free",
@@ -33,24 +35,9 @@ const FIELDS: &[&str] = &[
     "alphay", "alphaz",
 ];
 
-/// A rigid body in space as read, before the system is built.
-pub(super) struct Rigid {
-    pub(super) name: String,
-    pub(super) mass: Real,
-    /// Inertia tensor about the centre of mass, body frame.
-    pub(super) inertia: Mat3,
-    pub(super) position: [Real; 3],
-    pub(super) velocity: [Real; 3],
-    /// Unit quaternion, body → world.
-    pub(super) orientation: Quat,
-    /// Angular velocity, world frame.
-    pub(super) omega: [Real; 3],
-    pub(super) points: Vec<(String, [Real; 3])>,
-}
-
 /// Reads the `[[rigid_body]]` `t`, the `index`th of `count`, whose name must differ from
 /// `taken`; `dir` is where its `body` file is looked for.
-pub(super) fn read_rigid(
+pub(super) fn read_rigid3(
     t: &Table<'_, '_>,
     index: usize,
     count: usize,
@@ -151,12 +138,14 @@ pub(super) fn read_rigid(
     Ok(Rigid {
         name,
         mass,
-        inertia,
-        position: three("position", Dimension::LENGTH)?,
-        velocity: three("velocity", Dimension::VELOCITY)?,
-        orientation: orientation(t, env)?,
-        omega: three("omega", Dimension::FREQUENCY)?,
+        position: three("position", Dimension::LENGTH)?.to_vec(),
+        velocity: three("velocity", Dimension::VELOCITY)?.to_vec(),
         points,
+        turn: RigidTurn::Space {
+            inertia,
+            orientation: orientation(t, env)?,
+            omega: three("omega", Dimension::FREQUENCY)?,
+        },
     })
 }
 

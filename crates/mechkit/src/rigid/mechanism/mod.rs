@@ -32,5 +32,5 @@ mod solve;
 
 pub use super::at::AppliedAt;
 pub use force::JointForce;
-pub use joint::{Anchor, Curve, Friction, Joint, JointKind};
-pub use solve::{Mechanism, PlanarBody, REPORT_FIELDS};
+pub use joint::{Anchor, Curve, Friction, Joint, JointKind, distance};
+pub use solve::{Mechanism, MechanismBody, REPORT_FIELDS, REPORT_LEN};

@@ -8,7 +8,7 @@ use toml::de::DeValue;
 
 use super::joints::{Names, key_or};
 use crate::Real;
-use crate::rigid::planar::Friction;
+use crate::rigid::mechanism::Friction;
 use crate::scenario::doc::Table;
 use crate::scenario::error::{ErrorKind, ScenarioError};
 use crate::scenario::values::{ValueEnv, scalar, vector};
@@ -54,20 +54,41 @@ pub(super) fn surface_body(
 }
 
 /// `surface = { point = [x, y], normal = [nx, ny] }` or `{ point, angle }` (the line's
-/// inclination; the normal is the direction turned a quarter turn counter-clockwise). The
-/// default is the floor `y = 0` with its normal up.
+/// inclination; the normal is the direction turned a quarter turn counter-clockwise); in space
+/// `{ point = [x, y, z], normal = [nx, ny, nz] }`, a plane. The default is the floor (`y = 0`
+/// in a plane, `z = 0` in space) with its normal up.
 pub(super) fn surface(
     t: &Table<'_, '_>,
     env: ValueEnv<'_>,
     kind_span: &Range<usize>,
-) -> Result<([Real; 2], [Real; 2]), ScenarioError> {
+    dim: usize,
+) -> Result<([Real; 3], [Real; 3]), ScenarioError> {
+    let up = if dim == 2 {
+        [0.0, 1.0, 0.0]
+    } else {
+        [0.0, 0.0, 1.0]
+    };
     let Some(s) = t.table("surface")? else {
-        return Ok(([0.0; 2], [0.0, 1.0]));
+        return Ok(([0.0; 3], up));
     };
     s.check_keys(&["point", "normal", "angle", "on"])?;
-    let point = vector(&s, "point", Dimension::LENGTH, 2, env)?.unwrap_or_else(|| vec![0.0; 2]);
+    if dim == 3
+        && let Some(v) = s.get("angle")
+    {
+        return Err(s
+            .src
+            .error(
+                ErrorKind::Invalid,
+                "in space a surface is a plane: give its `normal`, not an `angle`",
+                v.span(),
+            )
+            .with_hint("an incline of angle a rising along x: normal = [\"-sin(a)\", 0, \"cos(a)\"] written out as numbers"));
+    }
+    let mut point =
+        vector(&s, "point", Dimension::LENGTH, dim, env)?.unwrap_or_else(|| vec![0.0; dim]);
+    point.resize(3, 0.0);
     let normal = match (
-        vector(&s, "normal", Dimension::NONE, 2, env)?,
+        vector(&s, "normal", Dimension::NONE, dim, env)?,
         scalar(&s, "angle", Dimension::NONE, env)?,
     ) {
         (Some(_), Some(_)) => {
@@ -77,11 +98,14 @@ pub(super) fn surface(
                 s.key_span("angle"),
             ));
         }
-        (Some(n), None) => n,
-        (None, Some(a)) => vec![-a.sin(), a.cos()],
-        (None, None) => vec![0.0, 1.0],
+        (Some(mut n), None) => {
+            n.resize(3, 0.0);
+            n
+        }
+        (None, Some(a)) => vec![-a.sin(), a.cos(), 0.0],
+        (None, None) => up.to_vec(),
     };
-    let len = normal[0].hypot(normal[1]);
+    let len = normal.iter().map(|x| x * x).sum::<Real>().sqrt();
     if !(len > 0.0 && len.is_finite()) {
         return Err(s
             .src
@@ -91,10 +115,13 @@ pub(super) fn surface(
                 key_or(&s, "normal", kind_span),
             )
             .with_hint(
-                "the direction away from the surface, towards the body: [0, 1] for a floor",
+                "the direction away from the surface, towards the body: [0, 1] for a floor ([0, 0, 1] in space)",
             ));
     }
-    Ok(([point[0], point[1]], [normal[0] / len, normal[1] / len]))
+    Ok((
+        [point[0], point[1], point[2]],
+        [normal[0] / len, normal[1] / len, normal[2] / len],
+    ))
 }
 
 /// `mu` (both), or `mu_s` and `mu_k`; `rolling = true` for a contact that never slides.
@@ -102,6 +129,7 @@ pub(super) fn friction(
     t: &Table<'_, '_>,
     env: ValueEnv<'_>,
     new_mode: &mut impl FnMut(&str) -> usize,
+    dim: usize,
 ) -> Result<Friction, ScenarioError> {
     let coefficient = |key: &str| -> Result<Option<Real>, ScenarioError> {
         let mu = scalar(t, key, Dimension::NONE, env)?;
@@ -151,6 +179,20 @@ pub(super) fn friction(
             ));
         }
     };
+    if dim == 3 {
+        let key = ["mu", "mu_s", "mu_k"]
+            .into_iter()
+            .find(|k| t.get(k).is_some())
+            .unwrap_or("mu");
+        return Err(t
+            .src
+            .error(
+                ErrorKind::Invalid,
+                "sliding friction on a plane in space is not supported yet: its direction turns",
+                t.key_span(key),
+            )
+            .with_hint("in space a contact is smooth (no `mu`) or rolls without slipping (`rolling = true`); friction with sticking and sliding works in a plane (`dimensions = 2`)"));
+    }
     if mu_k > mu_s {
         return Err(t
             .src

@@ -1,4 +1,4 @@
-//! Reading a `[[rigid_body]]` in a plane: its mass, moment of inertia, initial state and named
+//! Reading a `[[rigid_body]]` in a plane (`dimensions = 2`): its mass, moment of inertia, initial state and named
 //! points.
 
 use mechkit_expr::units::Dimension;
@@ -11,26 +11,16 @@ use crate::scenario::error::{ErrorKind, ScenarioError};
 use crate::scenario::rigid::bodies::mass_properties;
 use crate::scenario::values::{ValueEnv, scalar, vector};
 
+use super::{Rigid, RigidTurn};
+
 const PLANAR_RIGID_KEYS: &[&str] = &[
     "name", "free", "part", "body", "mass", "inertia", "position", "velocity", "theta", "omega",
     "points",
 ];
 
-/// A rigid body as read, before the system is built.
-pub(super) struct Rigid {
-    pub(super) name: String,
-    pub(super) mass: Real,
-    pub(super) inertia: Real,
-    pub(super) position: [Real; 2],
-    pub(super) velocity: [Real; 2],
-    pub(super) theta: Real,
-    pub(super) omega: Real,
-    pub(super) points: Vec<(String, [Real; 2])>,
-}
-
 /// Reads the `[[rigid_body]]` `t`, the `index`th of `count`, whose name must differ from
 /// `taken`; `dir` is where its `body` file is looked for.
-pub(super) fn read_rigid(
+pub(super) fn read_rigid2(
     t: &Table<'_, '_>,
     index: usize,
     count: usize,
@@ -110,17 +100,19 @@ pub(super) fn read_rigid(
                     .with_hint("a letter or `_` then letters, digits or `_`, not a field name such as x or theta"));
             }
             let r = vector(&p, point, Dimension::LENGTH, 2, env)?.unwrap_or_default();
-            points.push((point.to_string(), [r[0] - cm[0], r[1] - cm[1]]));
+            points.push((point.to_string(), [r[0] - cm[0], r[1] - cm[1], 0.0]));
         }
     }
     Ok(Rigid {
         name,
         mass,
-        inertia,
-        position: two("position", Dimension::LENGTH)?,
-        velocity: two("velocity", Dimension::VELOCITY)?,
-        theta: scalar(t, "theta", Dimension::NONE, env)?.unwrap_or(0.0),
-        omega: scalar(t, "omega", Dimension::FREQUENCY, env)?.unwrap_or(0.0),
+        position: two("position", Dimension::LENGTH)?.to_vec(),
+        velocity: two("velocity", Dimension::VELOCITY)?.to_vec(),
         points,
+        turn: RigidTurn::Plane {
+            inertia,
+            theta: scalar(t, "theta", Dimension::NONE, env)?.unwrap_or(0.0),
+            omega: scalar(t, "omega", Dimension::FREQUENCY, env)?.unwrap_or(0.0),
+        },
     })
 }

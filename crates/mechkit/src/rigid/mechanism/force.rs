@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use super::joint::{Anchor, Joint, JointKind};
-use super::solve::Mechanism;
+use super::solve::{Mechanism, REPORT_LEN};
 use crate::Real;
 use crate::forces::Force;
 use crate::particles::Kinematics;
@@ -55,7 +55,7 @@ impl Force for JointForce {
         Mechanism::add_forces(&s, self.joint, out);
     }
 
-    fn constraint_report(&self, k: &Kinematics<'_>, applied: &[Real]) -> [Real; 5] {
+    fn constraint_report(&self, k: &Kinematics<'_>, applied: &[Real]) -> [Real; REPORT_LEN] {
         let s = self.mechanism.solved(k.x, k.v, applied);
         self.mechanism.report(&s, self.joint, k.x, k.v)
     }

@@ -3,9 +3,11 @@
 
 use std::sync::Arc;
 
-use super::joint::{Friction, JointKind, dot2};
+use super::joint::{Friction, JointKind, norm3, sub3};
 use super::solve::Mechanism;
+use super::solve::REPORT_LEN;
 use crate::Real;
+use crate::particles::spin::dot3;
 use crate::particles::{ParticleSystem, Sample};
 use crate::simulate::{Condition, Direction, Event};
 
@@ -23,11 +25,11 @@ impl Mechanism {
                 ..
             } => {
                 let (p, base) = (self.point(on, q, &zero), self.point(point, q, &zero));
-                dot2([p.p[0] - base.p[0], p.p[1] - base.p[1]], normal) - radius
+                dot3(sub3(p.p, base.p), normal) - radius
             }
             JointKind::String { a, b, length, .. } => {
                 let (pa, pb) = (self.point(a, q, &zero), self.point(b, q, &zero));
-                length - (pa.p[0] - pb.p[0]).hypot(pa.p[1] - pb.p[1])
+                length - norm3(sub3(pa.p, pb.p))
             }
             _ => 0.0,
         }
@@ -44,14 +46,13 @@ impl Mechanism {
             ..
         } = self.joints[joint].kind
         {
-            let p = self
-                .point(on, q, v)
-                .shifted([-radius * normal[0], -radius * normal[1]]);
+            let p = self.point(on, q, v).shifted([
+                -radius * normal[0],
+                -radius * normal[1],
+                -radius * normal[2],
+            ]);
             let base = self.point(point, q, v);
-            dot2(
-                [p.vel[0] - base.vel[0], p.vel[1] - base.vel[1]],
-                [normal[1], -normal[0]],
-            )
+            dot3(sub3(p.vel, base.vel), [normal[1], -normal[0], 0.0])
         } else {
             0.0
         }
@@ -65,7 +66,7 @@ impl Mechanism {
         t: Real,
         q: &[Real],
         v: &[Real],
-    ) -> [Real; 5] {
+    ) -> [Real; REPORT_LEN] {
         let mut applied = vec![0.0; q.len()];
         sys.forces()
             .applied_into(&sys.kinematics(t, q, v), &mut applied);
@@ -133,7 +134,7 @@ impl Mechanism {
             let field = move |s: &Sample<'_>, k: usize| {
                 s.eval
                     .constraint
-                    .get((first_force + ji) * 5 + k)
+                    .get((first_force + ji) * REPORT_LEN + k)
                     .copied()
                     .unwrap_or(Real::NAN)
             };
