@@ -70,7 +70,7 @@ impl Joint {
     pub fn touches_world(&self) -> bool {
         let world = |a: &Anchor| matches!(a, Anchor::World(_));
         match &self.kind {
-            JointKind::Hinge { a, b }
+            JointKind::Hinge { a, b, .. }
             | JointKind::Rod { a, b, .. }
             | JointKind::String { a, b, .. } => world(a) || world(b),
             JointKind::Contact { point, .. } => world(point),

@@ -91,12 +91,16 @@ pub enum Friction {
 /// What a joint does.
 #[derive(Debug, Clone, PartialEq)]
 pub enum JointKind {
-    /// A pin: the two points coincide.
+    /// A pin: the two points coincide. In space it is a ball joint, or with `axis` a hinge
+    /// that turns only about that axis (the axis as fixed in `a`'s body and in `b`'s: world
+    /// directions for the world and for particles).
     Hinge {
         /// First point.
         a: Anchor,
         /// Second point.
         b: Anchor,
+        /// The hinge's axis in the frames of `a` and `b`, in space.
+        axis: Option<[[Real; 3]; 2]>,
     },
     /// A massless rigid rod: the points keep their distance.
     Rod {
@@ -306,5 +310,27 @@ impl Point {
         }
         row.bias += sign * dot3(u, cross(self.omega, cross(self.omega, self.w)));
         row.jv += sign * dot3(u, self.vel);
+    }
+
+    /// Adds `sign · e·ω` (the body's angular velocity along the world direction `e`) to
+    /// `row`: its Jacobian entries and `J v` (the bias depends on how `e` turns: the caller's).
+    pub(crate) fn add_angular(&self, row: &mut Row, e: [Real; 3], sign: Real) {
+        if let Some(c) = self.coords {
+            match c.turn {
+                Some(Turn::Angle(a)) => row.push(a, sign * e[2]),
+                Some(Turn::Quaternion(f)) => {
+                    for (k, g) in torque_force(c.quat, e).into_iter().enumerate() {
+                        row.push(f + k, sign * g);
+                    }
+                }
+                None => {}
+            }
+        }
+        row.jv += sign * dot3(e, self.omega);
+    }
+
+    /// The body-frame direction `d` in the world (as is for the world and particles).
+    pub(crate) fn direction(&self, d: [Real; 3]) -> [Real; 3] {
+        self.coords.map_or(d, |c| crate::particles::spin::rotate(c.quat, d))
     }
 }

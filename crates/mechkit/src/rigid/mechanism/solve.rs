@@ -162,7 +162,7 @@ impl Mechanism {
         let mut rows = Vec::with_capacity(2 * self.joints.len());
         for (ji, joint) in self.joints.iter().enumerate() {
             match joint.kind {
-                JointKind::Hinge { a, b } => {
+                JointKind::Hinge { a, b, axis } => {
                     let (pa, pb) = (self.point(a, q, v), self.point(b, q, v));
                     let axes = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
                     for (axis, u) in axes.into_iter().take(self.dim).enumerate() {
@@ -171,6 +171,20 @@ impl Mechanism {
                         pb.add(&mut row, u, -1.0);
                         row.c = Some(pa.p[axis] - pb.p[axis]);
                         rows.push(row);
+                    }
+                    if let Some([da, db]) = axis {
+                        // the bodies turn alike about the two directions across the axis
+                        let (ua, ub) = (pa.direction(da), pb.direction(db));
+                        let [e1, e2] = self.tangents(ua);
+                        let rel = sub3(pa.omega, pb.omega);
+                        for (e, c) in [(e1, dot3(e2, ub)), (e2, -dot3(e1, ub))] {
+                            let mut row = Row::new(ji);
+                            pa.add_angular(&mut row, e, 1.0);
+                            pb.add_angular(&mut row, e, -1.0);
+                            row.bias += dot3(rel, cross(pa.omega, e));
+                            row.c = Some(c);
+                            rows.push(row);
+                        }
                     }
                 }
                 JointKind::Rod { a, b, length } => {
@@ -535,7 +549,7 @@ impl Mechanism {
         let l = |k: usize| lambdas.get(k).copied().unwrap_or(0.0);
         let l0 = l(0);
         match self.joints[joint].kind {
-            JointKind::Hinge { a, b } => {
+            JointKind::Hinge { a, b, .. } => {
                 let (pa, pb) = (self.point(a, q, v), self.point(b, q, v));
                 let drift = norm3(sub3(pa.p, pb.p));
                 let f = [l0, l(1), l(2)];

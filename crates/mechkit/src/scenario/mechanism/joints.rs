@@ -17,7 +17,7 @@ use crate::scenario::values::{ValueEnv, scalar, vector};
 
 const JOINT_KEYS: &[&str] = &[
     "name", "kind", "a", "b", "on", "length", "radius", "surface", "mu", "mu_s", "mu_k", "rolling",
-    "centre", "center", "wheel", "y",
+    "centre", "center", "wheel", "y", "axis",
 ];
 const JOINT_KINDS: &[&str] = &["hinge", "rod", "string", "contact", "pulley", "curve"];
 
@@ -71,6 +71,49 @@ impl Names<'_> {
                 p
             }
         }
+    }
+
+    /// A hinge's `axis` (world directions at the start, in space only), as fixed in the frames
+    /// of `a` and `b`.
+    fn hinge_axis(
+        &self,
+        t: &Table<'_, '_>,
+        a: Anchor,
+        b: Anchor,
+    ) -> Result<Option<[[Real; 3]; 2]>, ScenarioError> {
+        let Some(v) = t.get("axis") else {
+            return Ok(None);
+        };
+        if self.dim == 2 {
+            return Err(t
+                .src
+                .error(
+                    ErrorKind::Invalid,
+                    "in a plane a hinge turns about the plane's normal: it takes no `axis`",
+                    v.span(),
+                )
+                .with_hint("leave out `axis`, or set `dimensions = 3`"));
+        }
+        let d = vector(t, "axis", Dimension::NONE, 3, self.env)?.unwrap_or_default();
+        let n = d.iter().map(|x| x * x).sum::<Real>().sqrt();
+        if !(n > 0.0 && n.is_finite()) {
+            return Err(t
+                .src
+                .error(ErrorKind::Invalid, "the hinge's `axis` must not be zero", v.span())
+                .with_hint("the direction the hinge turns about, at the start: [0, 0, 1]"));
+        }
+        let d = [d[0] / n, d[1] / n, d[2] / n];
+        let in_frame = |anchor: Anchor| match anchor {
+            Anchor::Body { body, .. } => match body
+                .checked_sub(self.n_particles)
+                .map(|k| &self.rigid[k].turn)
+            {
+                Some(RigidTurn::Space { orientation, .. }) => spin::unrotate(*orientation, d),
+                _ => d,
+            },
+            Anchor::World(_) => d,
+        };
+        Ok(Some([in_frame(a), in_frame(b)]))
     }
 
     /// The example of a fixed point, for messages.
@@ -223,7 +266,8 @@ pub(super) fn read_joint(
                 Some(b) => b,
                 None => Anchor::World(position(a)),
             };
-            JointKind::Hinge { a, b }
+            let axis = ctx.hinge_axis(t, a, b)?;
+            JointKind::Hinge { a, b, axis }
         }
         "rod" => {
             let (a, b) = (need("a", "\"ball\"")?, need("b", ctx.fixed_point())?);
