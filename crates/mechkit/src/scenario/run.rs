@@ -6,7 +6,9 @@ use std::path::{Path, PathBuf};
 
 use super::error::{ErrorKind, ScenarioError};
 use super::observe::ObservableSet;
-use super::output::{CsvWriter, Keep, csv_columns_in, csv_header, write_atomic};
+use super::output::{
+    CsvWriter, Keep, Trajectory, TrajectoryTable, csv_columns_in, csv_header, write_atomic,
+};
 use super::plot::PlotRecorder;
 use super::provenance::Provenance;
 use super::summary::Summary;
@@ -81,7 +83,7 @@ impl Scenario {
         }
     }
 
-    fn run_with(&self, extra: Option<&mut CsvWriter>) -> Result<RunOutput, ScenarioError> {
+    fn run_with(&self, extra: Option<&mut dyn Observer>) -> Result<RunOutput, ScenarioError> {
         let dim = self.dim;
         let mass = self.system.masses();
         let mut observables = ObservableSet::new(&self.observables, dim, mass);
@@ -89,8 +91,8 @@ impl Scenario {
         let mut progress = ProgressObserver(&self.progress);
         let mut observers: Vec<&mut dyn Observer> =
             vec![&mut observables, &mut plots, &mut progress];
-        if let Some(csv) = extra {
-            observers.push(csv);
+        if let Some(o) = extra {
+            observers.push(o);
         }
         let report = self
             .simulation()
@@ -133,6 +135,24 @@ impl Scenario {
     /// Runs in memory: summary and plot data, no files.
     pub fn run(&self) -> Result<RunOutput, ScenarioError> {
         self.run_with(None)
+    }
+
+    /// Runs in memory and keeps the trajectory: the rows and columns `trajectory.csv` would
+    /// have, as numbers (within the output limit, 8 bytes per number).
+    pub fn run_with_trajectory(&self) -> Result<(RunOutput, Trajectory), ScenarioError> {
+        let has_potential = {
+            let (q, v) = self.initial.qv();
+            self.system.has_potential(q, v)
+        };
+        let mut table = TrajectoryTable::new(
+            &self.system,
+            has_potential,
+            self.units,
+            self.keep(),
+            self.max_output,
+        );
+        let out = self.run_with(Some(&mut table))?;
+        Ok((out, table.finish()))
     }
 
     /// Runs and writes `dir/trajectory.csv` (streamed, kept even if the run diverges) and

@@ -92,3 +92,72 @@ fn decimation_keeps_the_last_row() {
     // every 10th of 4835 steps, plus the first row and the located landing
     assert_eq!(out.summary.files.trajectory_rows, 484 + 1);
 }
+
+/// The trajectory kept in memory is `trajectory.csv`, number for number, in a scenario with
+/// every kind of column: two bodies (centre of mass), a rigid body turning in space, a joint,
+/// a potential, decimation and the last row.
+#[test]
+fn the_trajectory_in_memory_is_the_csv_number_for_number() {
+    let text = r#"
+title = "a top and a ball on a spring"
+dimensions = 3
+[[body]]
+name = "ball"
+mass = "0.2 kg"
+position = [0.3, 0, 0.1]
+[[rigid_body]]
+name = "top"
+mass = "0.5 kg"
+inertia = [2e-4, 2e-4, 3e-4]
+orientation = { axis = [1, 0, 0], angle = 0.3 }
+position = [0, "-0.04*sin(0.3)", "0.04*cos(0.3)"]
+omega = [0, "-100*sin(0.3)", "100*cos(0.3)"]
+points = { tip = [0, 0, -0.04] }
+[[force]]
+kind = "uniform-gravity"
+[[force]]
+kind = "spring"
+between = ["ball", "top"]
+k = "5 N/m"
+[[joint]]
+name = "pivot"
+kind = "hinge"
+a = "top.tip"
+[integrator]
+method = "rk4"
+dt = "1 ms"
+[stop]
+t_max = "0.1015 s"
+[output]
+every = 7
+"#;
+    let dir = tempfile::tempdir().unwrap();
+    let s = Scenario::from_str("top.toml", text).unwrap();
+    let written = s.run_to_dir(dir.path()).unwrap();
+    let (out, table) = s.run_with_trajectory().unwrap();
+    assert_eq!(out.summary.steps, written.summary.steps);
+    let csv = std::fs::read_to_string(dir.path().join("trajectory.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let names: Vec<&str> = table.columns().iter().map(|c| c.name.as_str()).collect();
+    assert_eq!(header, names);
+    assert!(names.contains(&"top.q3") && names.contains(&"cm.ax") && names.contains(&"U"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), table.len());
+    // every 7th of 101 steps, and the last (t = 0.1015 s)
+    assert_eq!(table.len(), 16);
+    for (i, col) in table.data().iter().enumerate() {
+        for (r, row) in rows.iter().enumerate() {
+            assert!(
+                col[r].to_bits() == row[i].to_bits(),
+                "{} row {r}: {} vs {}",
+                names[i],
+                col[r],
+                row[i]
+            );
+        }
+    }
+    assert_eq!(table.column("t").unwrap().last(), Some(&0.1015));
+}

@@ -331,6 +331,7 @@ impl Point {
 
     /// The body-frame direction `d` in the world (as is for the world and particles).
     pub(crate) fn direction(&self, d: [Real; 3]) -> [Real; 3] {
-        self.coords.map_or(d, |c| crate::particles::spin::rotate(c.quat, d))
+        self.coords
+            .map_or(d, |c| crate::particles::spin::rotate(c.quat, d))
     }
 }

@@ -99,7 +99,11 @@ impl Names<'_> {
         if !(n > 0.0 && n.is_finite()) {
             return Err(t
                 .src
-                .error(ErrorKind::Invalid, "the hinge's `axis` must not be zero", v.span())
+                .error(
+                    ErrorKind::Invalid,
+                    "the hinge's `axis` must not be zero",
+                    v.span(),
+                )
                 .with_hint("the direction the hinge turns about, at the start: [0, 0, 1]"));
         }
         let d = [d[0] / n, d[1] / n, d[2] / n];
