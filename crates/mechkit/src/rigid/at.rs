@@ -3,7 +3,7 @@
 
 use crate::Real;
 use crate::forces::Force;
-use crate::particles::spin::{cross, rotate, torque_force};
+use crate::particles::spin::{cross, omega_world, rotate, torque_force};
 use crate::particles::{Kinematics, StateExpr};
 
 /// How a rigid body turns: its angle in a plane, or its orientation quaternion in space
@@ -32,6 +32,18 @@ impl Turn {
         }
     }
 
+    /// The body's angular velocity (world; `z` alone in a plane) at the state `(x, v)`.
+    #[inline]
+    pub fn omega(self, x: &[Real], v: &[Real]) -> [Real; 3] {
+        match self {
+            Turn::Angle(i) => [0.0, 0.0, v[i]],
+            Turn::Quaternion(f) => omega_world(
+                [x[f], x[f + 1], x[f + 2], x[f + 3]],
+                [v[f], v[f + 1], v[f + 2], v[f + 3]],
+            ),
+        }
+    }
+
     /// The body-frame offset `r` turned into the world at the state `x`.
     #[inline]
     pub fn offset(self, x: &[Real], r: [Real; 3]) -> [Real; 3] {
@@ -45,17 +57,21 @@ impl Turn {
     }
 }
 
-/// `inner` (a force on body `body` alone) applied at the body point `r` (body frame, from
-/// the centre of mass): the same force on the centre of mass, plus its torque `w × F` (`w` the
-/// point's offset in the world) on the body's turning coordinates. Its work is measured (the
-/// force's power over all the coordinates is `F` at the point times the point's velocity); it
-/// has no potential.
+/// `inner` applied at the body point `r` (body frame, from the centre of mass) of body
+/// `body`: it acts on the centre of mass, and its torque `w × F` (`w` the point's offset in
+/// the world) turns the body. Its power over all the coordinates is `F` at the point times the
+/// point's velocity. A force law of positions and velocities (a spring, drag, gravitation) is
+/// evaluated at the point ([`AppliedAt::at_point`]: the body's position and velocity replaced
+/// by the point's), so a spring tied to the point stretches from it and keeps its potential,
+/// measured there; a formula force reads its names as they are (`box.tip.x` is the point,
+/// `box.x` the centre).
 #[derive(Debug)]
 pub struct AppliedAt {
     inner: Box<dyn Force>,
     body: usize,
     turn: Turn,
     r: [Real; 3],
+    at_point: bool,
 }
 
 impl AppliedAt {
@@ -64,14 +80,41 @@ impl AppliedAt {
         Self::turning(inner, body, Turn::Angle(angle), [r[0], r[1], 0.0])
     }
 
-    /// `inner` applied at `r` of body `body`, which turns by `turn`.
+    /// `inner` applied at `r` of body `body`, which turns by `turn` (evaluated at the centre
+    /// of mass: see [`AppliedAt::at_point`]).
     pub fn turning(inner: Box<dyn Force>, body: usize, turn: Turn, r: [Real; 3]) -> Self {
         Self {
             inner,
             body,
             turn,
             r,
+            at_point: false,
         }
+    }
+
+    /// Evaluates the inner force with the body's position and velocity replaced by the
+    /// point's: for force laws of the body's state (springs, drag, gravitation), not for
+    /// formulas, which name what they read.
+    #[must_use]
+    pub fn at_point(mut self) -> Self {
+        self.at_point = true;
+        self
+    }
+
+    /// The state the inner force sees (`x`, `v` copies, the body moved to the point when
+    /// [`AppliedAt::at_point`]), and the point's offset `w` in the world.
+    fn seen(&self, k: &Kinematics<'_>) -> (Vec<Real>, Vec<Real>, [Real; 3]) {
+        let (d, b) = (k.dim, self.body);
+        let w = self.turn.offset(k.x, self.r);
+        let (mut x, mut v) = (k.x.to_vec(), k.v.to_vec());
+        if self.at_point {
+            let vw = cross(self.turn.omega(k.x, k.v), w);
+            for i in 0..d {
+                x[d * b + i] += w[i];
+                v[d * b + i] += vw[i];
+            }
+        }
+        (x, v, w)
     }
 }
 
@@ -82,15 +125,21 @@ impl Force for AppliedAt {
 
     fn add_forces(&self, k: &Kinematics<'_>, out: &mut [Real]) {
         let (d, b) = (k.dim, self.body);
+        let (x, v, w) = self.seen(k);
+        let moved = Kinematics { x: &x, v: &v, ..*k };
         let mut before = [0.0; 3];
         before[..d].copy_from_slice(&out[d * b..d * (b + 1)]);
-        self.inner.add_forces(k, out);
+        self.inner.add_forces(&moved, out);
         let mut f = [0.0; 3];
         for i in 0..d {
             f[i] = out[d * b + i] - before[i];
         }
-        let w = self.turn.offset(k.x, self.r);
         self.turn.add_torque(k.x, cross(w, f), out);
+    }
+
+    fn potential(&self, k: &Kinematics<'_>) -> Option<Real> {
+        let (x, v, _) = self.seen(k);
+        self.inner.potential(&Kinematics { x: &x, v: &v, ..*k })
     }
 
     fn velocity_dependent(&self) -> bool {
@@ -98,7 +147,11 @@ impl Force for AppliedAt {
     }
 
     fn bodies(&self) -> Vec<usize> {
-        vec![self.body]
+        self.inner.bodies()
+    }
+
+    fn internal(&self) -> bool {
+        self.inner.internal()
     }
 }
 

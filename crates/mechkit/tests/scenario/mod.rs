@@ -3,4 +3,5 @@ mod examples;
 mod planar;
 mod rigid;
 mod run;
+mod spatial;
 mod sweep;

@@ -116,9 +116,21 @@ pub(crate) fn force_at(
             )
             .with_hint("a force applied at a point acts on that point's body: leave out `on`"));
     }
+    if let Some(list) = crate::scenario::doc::string_list(t, "between")? {
+        // a force between bodies tied to a point of one of them: that end is at the point
+        if !list.iter().any(|(n, _)| *n == body_name) {
+            return Err(src
+                .error(
+                    ErrorKind::Invalid,
+                    format!("`at` is a point of `{body_name}`, which is not in `between`"),
+                    at.span(),
+                )
+                .with_hint("tie one end of the force to a point of one of the bodies it joins"));
+        }
+    }
     let mut entries = t.entries.clone();
     entries.remove("at");
-    if t.get("on").is_none() {
+    if t.get("on").is_none() && t.get("between").is_none() {
         entries.insert(
             toml::Spanned::new(at.span(), std::borrow::Cow::Borrowed("on")),
             toml::Spanned::new(
@@ -129,12 +141,12 @@ pub(crate) fn force_at(
     }
     let filtered = Table::new(src, &entries, t.span.clone(), t.what.clone());
     let inner = build_force(&filtered, ctx, index)?;
-    Ok(Box::new(AppliedAt::turning(
-        inner,
-        rigid.body,
-        turn(rigid),
-        r,
-    )))
+    let formula = matches!(
+        t.string("kind")?.map(|(k, _)| k),
+        Some("expression" | "formula")
+    );
+    let applied = AppliedAt::turning(inner, rigid.body, turn(rigid), r);
+    Ok(Box::new(if formula { applied } else { applied.at_point() }))
 }
 
 /// The rigid body and body-frame offset of `"body.point"` (or of `"body"`, its centre).
