@@ -4,4 +4,5 @@ mod planar;
 mod rigid;
 mod run;
 mod spatial;
+mod spatial_joints;
 mod sweep;

@@ -258,6 +258,9 @@ pub(crate) struct Point {
     pub omega: [Real; 3],
     /// The body's coordinates, if any.
     pub coords: Option<Coords>,
+    /// The offset of the material point it follows (its centripetal acceleration
+    /// `ω × (ω × w)`): `w` itself, or less for a point shifted along a fixed direction.
+    pub material: [Real; 3],
 }
 
 pub(crate) fn add3(a: [Real; 3], b: [Real; 3]) -> [Real; 3] {
@@ -278,7 +281,10 @@ pub fn distance(a: [Real; 3], b: [Real; 3]) -> Real {
 }
 
 impl Point {
-    /// The same material point, moved by `offset` in the world (a disk's contact point).
+    /// The point at `offset` (a direction fixed in the world) from this one: a disk's or a
+    /// ball's contact point, which is not a material point of the body (its velocity is that
+    /// of the body's material point there, but as the body turns, other material points take
+    /// its place, so its acceleration has only the centre's centripetal part).
     pub(crate) fn shifted(self, offset: [Real; 3]) -> Self {
         let w = add3(self.w, offset);
         let base = sub3(self.vel, cross(self.omega, self.w));
@@ -288,6 +294,7 @@ impl Point {
             w,
             omega: self.omega,
             coords: self.coords,
+            material: self.material,
         }
     }
 
@@ -308,7 +315,7 @@ impl Point {
                 None => {}
             }
         }
-        row.bias += sign * dot3(u, cross(self.omega, cross(self.omega, self.w)));
+        row.bias += sign * dot3(u, cross(self.omega, cross(self.omega, self.material)));
         row.jv += sign * dot3(u, self.vel);
     }
 

@@ -108,6 +108,7 @@ impl Mechanism {
                 w: [0.0; 3],
                 omega: [0.0; 3],
                 coords: None,
+                material: [0.0; 3],
             },
             Anchor::Body { body, r } => {
                 let b = &self.bodies[body];
@@ -141,6 +142,7 @@ impl Mechanism {
                     vel: [cv[0] + vel[0], cv[1] + vel[1], cv[2] + vel[2]],
                     w,
                     omega,
+                    material: w,
                     coords: Some(Coords {
                         x,
                         dim: d,

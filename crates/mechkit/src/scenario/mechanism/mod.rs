@@ -309,9 +309,17 @@ pub(crate) fn build_mechanism(
                 )
                 .with_hint("the time constant over which joints pull a drift back: \"10 ms\""));
         }
+        // adaptive steps keep the drift at the tolerance's level; pulling it back faster than
+        // the motion changes would only cap their size (an eigenvalue of -1/τ)
         None => match &stepping {
             Stepping::Fixed { dt, .. } => 10.0 * dt,
-            Stepping::Adaptive { .. } => 1e-2,
+            Stepping::Adaptive { .. } => {
+                let t_max = match root.table("stop")? {
+                    Some(stop) => scalar(&stop, "t_max", Dimension::TIME, env)?,
+                    None => None,
+                };
+                t_max.filter(|t| *t > 0.0).map_or(0.1, |t| t / 20.0)
+            }
         },
     };
     mechanism.set_tau(tau);
