@@ -306,6 +306,100 @@ fn physical_pendulum_on_a_ball_hinge_has_the_planar_period() {
     }
 }
 
+/// A pendulum on a hinge whose `axis` is tilted by `beta` from the horizontal: it swings in the
+/// plane normal to the axis under the gravity across it, `g cos β`, with the period of a
+/// physical pendulum there; it never leaves that plane, and the hinge does no work.
+fn tilted_hinge(beta: f64, theta0: f64, omega: [f64; 3]) -> (String, f64) {
+    let (m, d, inertia) = (0.8, 0.25, 0.01);
+    let u = Vector3::new(beta.cos(), 0.0, beta.sin());
+    // at rest the centre hangs across the axis, below the pivot: R_y(−β) puts the body axis
+    // (from the centre to the pivot) at (−sin β, 0, cos β); then the swing turns it about u
+    let hang = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), -beta);
+    let q = UnitQuaternion::from_axis_angle(&Unit::new_normalize(u), theta0) * hang;
+    let cm = -(q * Vector3::new(0.0, 0.0, d));
+    let w0 = (m * G * beta.cos() * d / (inertia + m * d * d)).sqrt();
+    let period = 4.0 * complete_k((0.5 * theta0).sin().powi(2)) / w0;
+    let c = q.quaternion();
+    let text = space(
+        &format!(
+            r#"
+[[rigid_body]]
+name = "door"
+mass = "{m} kg"
+inertia = "{inertia} kg m^2"
+orientation = [{w}, {i}, {j}, {k}]
+position = [{x}, {y}, {z}]
+omega = [{o0}, {o1}, {o2}]
+points = {{ pin = [0, 0, "{d} m"] }}
+[[joint]]
+name = "hinge"
+kind = "hinge"
+a = "door.pin"
+axis = [{u0}, 0, {u2}]
+[[event]]
+name = "turn"
+function = "door.wx*{u0} + door.wz*{u2}"
+direction = "falling"
+"#,
+            w = c.w,
+            i = c.i,
+            j = c.j,
+            k = c.k,
+            x = cm.x,
+            y = cm.y,
+            z = cm.z,
+            o0 = omega[0],
+            o1 = omega[1],
+            o2 = omega[2],
+            u0 = u.x,
+            u2 = u.z,
+        ),
+        1e-11,
+        7.5 * period,
+        &format!(
+            "across = \"max(abs(door.wx*{s} - door.wz*{c}) + abs(door.wy))\"\n\
+             drift = \"max(hinge.drift)\"",
+            s = beta.sin(),
+            c = beta.cos()
+        ),
+    );
+    (text, period)
+}
+
+#[test]
+fn a_hinge_with_an_axis_swings_only_about_it() {
+    for (beta, theta0) in [(0.0, 0.4), (0.5, 0.2), (1.1, 0.7)] {
+        let (text, period) = tilted_hinge(beta, theta0, [0.0; 3]);
+        let s = run_text(&text);
+        close(mean_period(&s, "turn"), period, 1e-8 * period);
+        let o = &s.observables;
+        // the angular velocity stays along the axis
+        assert!(o["across"] < 1e-9, "beta {beta}: {o:?}");
+        assert!(o["drift"] < 1e-10, "beta {beta}: {o:?}");
+        close(s.work["hinge"], 0.0, 1e-9);
+        assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    }
+}
+
+#[test]
+fn a_spin_across_a_hinge_axis_is_projected_away() {
+    // at rest at the bottom, spun about a direction across the axis: the hinge allows none of
+    // it, so the projection leaves the body at rest, with a warning naming the hinge
+    let beta = 0.3;
+    let (text, _) = tilted_hinge(beta, 0.0, [-beta.sin(), 0.0, beta.cos()]);
+    let s = run_text(&text);
+    assert!(
+        s.warnings.iter().any(|w| w.contains("`hinge`")),
+        "{:?}",
+        s.warnings
+    );
+    assert!(s.observables["across"] < 1e-10, "{:?}", s.observables);
+    let spin = s.bodies["door"].spin.as_ref().unwrap();
+    for w in spin.omega {
+        assert!(w.abs() < 1e-10, "{:?}", spin.omega);
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // 3. The heavy top
 
