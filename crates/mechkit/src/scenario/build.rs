@@ -10,7 +10,7 @@ use super::contact::{Spheres, read_contacts};
 use super::doc::{Source, Table};
 use super::error::{ErrorKind, ScenarioError};
 use super::events::read_events;
-use super::forces::{ForceContext, build_force};
+use super::forces::{ForceContext, read_forces};
 use super::integrator::read_integrator;
 use super::observe::read_observe;
 use super::plot::read_output;
@@ -195,19 +195,7 @@ pub(crate) fn build_with(
         builder = builder.body(b.clone(), *m);
     }
     let mut force_names: Vec<String> = Vec::new();
-    for (i, t) in root.tables("force")?.iter().enumerate() {
-        let f = build_force(t, &ctx, i)?;
-        if force_names.iter().any(|n| n == f.name()) {
-            return Err(src
-                .error(
-                    ErrorKind::Invalid,
-                    format!("two forces are named `{}`", f.name()),
-                    t.key_span("name"),
-                )
-                .with_hint(
-                    "give each [[force]] its own `name`; the energy ledger lists work by name",
-                ));
-        }
+    for f in read_forces(&root, &ctx, &[], false)? {
         force_names.push(f.name().to_string());
         builder = builder.boxed_force(f);
     }

@@ -144,6 +144,39 @@ fn canonical_kind(kind: &str) -> Option<&'static str> {
         .or_else(|| ALIASES.iter().find(|(a, _)| *a == kind).map(|(_, k)| *k))
 }
 
+/// Reads every `[[force]]` table of `root`, each applied at a body point when it has `at`
+/// (`at_points`: in a scenario of free rigid bodies), refusing two forces of one name or a
+/// force named like one of `taken`.
+pub(crate) fn read_forces(
+    root: &Table<'_, '_>,
+    ctx: &ForceContext<'_>,
+    taken: &[String],
+    at_points: bool,
+) -> Result<Vec<Box<dyn Force>>, ScenarioError> {
+    let mut forces: Vec<Box<dyn Force>> = Vec::new();
+    for (i, t) in root.tables("force")?.iter().enumerate() {
+        let f = if at_points {
+            force_at(t, ctx, i)?
+        } else {
+            build_force(t, ctx, i)?
+        };
+        if forces.iter().any(|o| o.name() == f.name()) || taken.iter().any(|n| n == f.name()) {
+            return Err(t
+                .src
+                .error(
+                    ErrorKind::Invalid,
+                    format!("two forces are named `{}`", f.name()),
+                    t.key_span("name"),
+                )
+                .with_hint(
+                    "give each [[force]] its own `name`; the energy ledger lists work by name",
+                ));
+        }
+        forces.push(f);
+    }
+    Ok(forces)
+}
+
 /// Reads one `[[force]]` table.
 pub(crate) fn build_force(
     t: &Table<'_, '_>,

@@ -50,7 +50,7 @@ mod events;
 mod forces;
 mod integrator;
 mod limits;
-mod mechanism;
+pub(crate) mod mechanism;
 mod observe;
 mod output;
 mod plot;

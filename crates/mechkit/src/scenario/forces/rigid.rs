@@ -171,20 +171,5 @@ fn point<'c>(
     if point.is_empty() {
         return Ok((rigid, [0.0; 3]));
     }
-    rigid
-        .points
-        .iter()
-        .find(|(n, _)| n == point)
-        .map(|(_, r)| (rigid, *r))
-        .ok_or_else(|| {
-            let known: Vec<&str> = rigid.points.iter().map(|(n, _)| n.as_str()).collect();
-            format!(
-                "`{body}` has no point `{point}`; its points are: {} (add it under `points`)",
-                if known.is_empty() {
-                    "none".to_string()
-                } else {
-                    known.join(", ")
-                }
-            )
-        })
+    crate::scenario::mechanism::points::find_point(&rigid.points, body, point).map(|r| (rigid, r))
 }

@@ -152,22 +152,7 @@ impl Names<'_> {
                 "`{body}` is a particle: it has no points; write `{body}`"
             ));
         };
-        rigid
-            .points
-            .iter()
-            .find(|(n, _)| n == point)
-            .map(|(_, r)| Anchor::Body { body: b, r: *r })
-            .ok_or_else(|| {
-                let known: Vec<&str> = rigid.points.iter().map(|(n, _)| n.as_str()).collect();
-                format!(
-                    "`{body}` has no point `{point}`; its points are: {} (add it under `points`)",
-                    if known.is_empty() {
-                        "none".to_string()
-                    } else {
-                        known.join(", ")
-                    }
-                )
-            })
+        super::points::find_point(&rigid.points, body, point).map(|r| Anchor::Body { body: b, r })
     }
 
     /// An anchor key: a body, a body point, or a fixed point `[x, y]`.

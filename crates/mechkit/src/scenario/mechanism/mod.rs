@@ -6,6 +6,7 @@
 
 mod contact;
 mod joints;
+pub(crate) mod points;
 mod rigid2;
 mod rigid3;
 
@@ -17,7 +18,7 @@ use super::Scenario;
 use super::build::{Model, assemble, bodies};
 use super::doc::Table;
 use super::error::{ErrorKind, ScenarioError};
-use super::forces::{ForceContext, force_at};
+use super::forces::{ForceContext, read_forces};
 use super::integrator::read_integrator;
 use super::values::{Constant, ValueEnv, scalar};
 use crate::Real;
@@ -225,19 +226,7 @@ pub(crate) fn build_mechanism(
         builder = builder.body(b.clone(), *m);
     }
     let mut force_names: Vec<String> = Vec::new();
-    for (i, t) in root.tables("force")?.iter().enumerate() {
-        let f = force_at(t, &fctx, i)?;
-        if force_names.iter().any(|n| n == f.name()) || names.iter().any(|n| n == f.name()) {
-            return Err(src
-                .error(
-                    ErrorKind::Invalid,
-                    format!("two forces are named `{}`", f.name()),
-                    t.key_span("name"),
-                )
-                .with_hint(
-                    "give each [[force]] its own `name`; the energy ledger lists work by name",
-                ));
-        }
+    for f in read_forces(root, &fctx, &names, true)? {
         force_names.push(f.name().to_string());
         builder = builder.boxed_force(f);
     }

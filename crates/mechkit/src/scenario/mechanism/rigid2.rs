@@ -11,6 +11,7 @@ use crate::scenario::error::{ErrorKind, ScenarioError};
 use crate::scenario::rigid::bodies::mass_properties;
 use crate::scenario::values::{ValueEnv, scalar, vector};
 
+use super::points::read_points;
 use super::{Rigid, RigidTurn};
 
 const PLANAR_RIGID_KEYS: &[&str] = &[
@@ -75,34 +76,16 @@ pub(super) fn read_rigid2(
     let two = |key: &str, want: Dimension| -> Result<[Real; 2], ScenarioError> {
         Ok(vector(t, key, want, 2, env)?.map_or([0.0; 2], |v| [v[0], v[1]]))
     };
-    let mut points = Vec::new();
-    if let Some(p) = t.table("points")? {
-        for (key, _) in p.entries {
-            let point: &str = key.get_ref();
-            let valid = point
-                .chars()
-                .next()
-                .is_some_and(|c| c.is_alphabetic() || c == '_')
-                && point.chars().all(|c| c.is_alphanumeric() || c == '_');
-            if !valid
-                || [
-                    "x", "y", "vx", "vy", "theta", "omega", "alpha", "K", "m", "v", "r",
-                ]
-                .contains(&point)
-            {
-                return Err(t
-                    .src
-                    .error(
-                        ErrorKind::Invalid,
-                        format!("`{point}` cannot name a point: formulas would read `{name}.{point}` as something else"),
-                        key.span(),
-                    )
-                    .with_hint("a letter or `_` then letters, digits or `_`, not a field name such as x or theta"));
-            }
-            let r = vector(&p, point, Dimension::LENGTH, 2, env)?.unwrap_or_default();
-            points.push((point.to_string(), [r[0] - cm[0], r[1] - cm[1], 0.0]));
-        }
-    }
+    let points = read_points(
+        t,
+        &name,
+        env,
+        2,
+        [cm[0], cm[1], 0.0],
+        &[
+            "x", "y", "vx", "vy", "theta", "omega", "alpha", "K", "m", "v", "r",
+        ],
+    )?;
     Ok(Rigid {
         name,
         mass,

@@ -12,6 +12,7 @@ use crate::scenario::error::{ErrorKind, ScenarioError};
 use crate::scenario::rigid::bodies::mass_properties;
 use crate::scenario::values::{ValueEnv, required_scalar, resolve, vector};
 
+use super::points::read_points;
 use super::{Rigid, RigidTurn};
 
 const SPATIAL_RIGID_KEYS: &[&str] = &[
@@ -109,32 +110,7 @@ pub(super) fn read_rigid3(
     let three = |key: &str, want: Dimension| -> Result<[Real; 3], ScenarioError> {
         Ok(vector(t, key, want, 3, env)?.map_or([0.0; 3], |v| [v[0], v[1], v[2]]))
     };
-    let mut points = Vec::new();
-    if let Some(p) = t.table("points")? {
-        for (key, _) in p.entries {
-            let point: &str = key.get_ref();
-            let valid = point
-                .chars()
-                .next()
-                .is_some_and(|c| c.is_alphabetic() || c == '_')
-                && point.chars().all(|c| c.is_alphanumeric() || c == '_');
-            if !valid || FIELDS.contains(&point) {
-                return Err(t
-                    .src
-                    .error(
-                        ErrorKind::Invalid,
-                        format!("`{point}` cannot name a point: formulas would read `{name}.{point}` as something else"),
-                        key.span(),
-                    )
-                    .with_hint("a letter or `_` then letters, digits or `_`, not a field name such as x or wz"));
-            }
-            let r = vector(&p, point, Dimension::LENGTH, 3, env)?.unwrap_or_default();
-            points.push((
-                point.to_string(),
-                [r[0] - cm[0], r[1] - cm[1], r[2] - cm[2]],
-            ));
-        }
-    }
+    let points = read_points(t, &name, env, 3, cm, FIELDS)?;
     Ok(Rigid {
         name,
         mass,

@@ -3,11 +3,11 @@
 use std::io;
 use std::path::Path;
 
-use super::row::{Keep, RowLayout, csv_header};
+use super::row::{Keep, RowLayout, RowSink, csv_header};
 use super::{SCENARIO_LIMIT_HINT, StreamFile, output_limit_message, push_number};
 use crate::Real;
 use crate::particles::{ParticleSystem, Sample};
-use crate::simulate::{Observer, ObserverError, StopReason};
+use crate::simulate::StopReason;
 
 /// Streams samples to a CSV file (the kept ones, see [`Keep`], and the last).
 pub(crate) struct CsvWriter {
@@ -50,7 +50,7 @@ impl CsvWriter {
         })
     }
 
-    fn write(&mut self, s: &Sample<'_>) {
+    fn write_row(&mut self, s: &Sample<'_>) {
         self.layout.values(s, &mut self.values);
         self.line.clear();
         for (i, &x) in self.values.iter().enumerate() {
@@ -106,26 +106,20 @@ impl CsvWriter {
     }
 }
 
-impl Observer for CsvWriter {
-    fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        if self.keep.keeps(s) {
-            self.write(s);
-        }
-        Ok(())
+impl RowSink for CsvWriter {
+    fn keep(&self) -> Keep {
+        self.keep
     }
 
-    fn next_step(&self, step: u64) -> Option<u64> {
-        self.keep.next_step(step)
+    fn last_t(&self) -> Option<Real> {
+        self.last_t
     }
 
-    fn halt(&self) -> Option<(StopReason, String)> {
+    fn write(&mut self, s: &Sample<'_>) {
+        self.write_row(s);
+    }
+
+    fn stop(&self) -> Option<(StopReason, String)> {
         self.halt.clone()
-    }
-
-    fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        if self.last_t != Some(s.t) {
-            self.write(s);
-        }
-        Ok(())
     }
 }

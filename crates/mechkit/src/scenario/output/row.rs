@@ -4,6 +4,7 @@
 use crate::Real;
 use crate::csv::Column;
 use crate::particles::{ParticleSystem, Sample, SampleKind, spin};
+use crate::simulate::{Observer, ObserverError, StopReason};
 
 /// The trajectory's columns with their units: `t`, positions, velocities, with two or more
 /// bodies the centre of mass (`cm.x`, `cm.vx`, `cm.ax`) and the split `K = K_cm + K_internal`,
@@ -122,6 +123,43 @@ impl Keep {
         }
         let every = self.every.max(1);
         Some((step / every + 1) * every)
+    }
+}
+
+/// Where the kept rows of a run go (a CSV file, a table in memory): each is an [`Observer`]
+/// that receives the samples [`Keep`] keeps, and the last.
+pub(crate) trait RowSink {
+    /// Which samples it keeps.
+    fn keep(&self) -> Keep;
+    /// The time of the last row it received.
+    fn last_t(&self) -> Option<Real>;
+    /// Receives the row of `s`.
+    fn write(&mut self, s: &Sample<'_>);
+    /// Why the run must stop (a limit reached, a write failed).
+    fn stop(&self) -> Option<(StopReason, String)>;
+}
+
+impl<T: RowSink> Observer for T {
+    fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        if self.keep().keeps(s) {
+            self.write(s);
+        }
+        Ok(())
+    }
+
+    fn next_step(&self, step: u64) -> Option<u64> {
+        self.keep().next_step(step)
+    }
+
+    fn halt(&self) -> Option<(StopReason, String)> {
+        self.stop()
+    }
+
+    fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
+        if self.last_t() != Some(s.t) {
+            self.write(s);
+        }
+        Ok(())
     }
 }
 

@@ -2,12 +2,12 @@
 //! `trajectory.csv` ([`super::csv_columns`]), as numbers (for the Python package's numpy
 //! arrays, for plots and checks without a file).
 
-use super::row::{Keep, RowLayout, csv_columns_in};
+use super::row::{Keep, RowLayout, RowSink, csv_columns_in};
 use super::{SCENARIO_LIMIT_HINT, output_limit_message};
 use crate::Real;
 use crate::csv::Column;
 use crate::particles::{ParticleSystem, Sample};
-use crate::simulate::{Observer, ObserverError, StopReason};
+use crate::simulate::StopReason;
 
 /// A run's trajectory: one column of numbers per name of `trajectory.csv`, with its unit.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -118,26 +118,20 @@ impl TrajectoryTable {
     }
 }
 
-impl Observer for TrajectoryTable {
-    fn observe(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        if self.keep.keeps(s) {
-            self.push(s);
-        }
-        Ok(())
+impl RowSink for TrajectoryTable {
+    fn keep(&self) -> Keep {
+        self.keep
     }
 
-    fn next_step(&self, step: u64) -> Option<u64> {
-        self.keep.next_step(step)
+    fn last_t(&self) -> Option<Real> {
+        self.last_t
     }
 
-    fn halt(&self) -> Option<(StopReason, String)> {
+    fn write(&mut self, s: &Sample<'_>) {
+        self.push(s);
+    }
+
+    fn stop(&self) -> Option<(StopReason, String)> {
         self.halt.clone()
-    }
-
-    fn finish(&mut self, s: &Sample<'_>) -> Result<(), ObserverError> {
-        if self.last_t != Some(s.t) {
-            self.push(s);
-        }
-        Ok(())
     }
 }
