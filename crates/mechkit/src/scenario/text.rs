@@ -2,7 +2,7 @@
 
 use std::fmt::Write as _;
 
-use super::summary::Summary;
+use super::summary::{StartEnd, Summary};
 use crate::Real;
 
 impl Summary {
@@ -191,6 +191,20 @@ impl Summary {
             num(k1),
             num(k1 - k0)
         );
+        if let Some(StartEnd {
+            start: Some(r0),
+            end: Some(r1),
+        }) = self.rotational_kinetic_energy
+        {
+            let _ = writeln!(
+                s,
+                "    of which turning     {} → {} (translation {} → {})",
+                num(r0),
+                num(r1),
+                num(k0 - r0),
+                num(k1 - r1)
+            );
+        }
         if let (Some(u0), Some(u1)) = (self.potential_energy.start, self.potential_energy.end) {
             let _ = writeln!(
                 s,

@@ -184,6 +184,10 @@ pub struct Summary {
     pub centre_of_mass: CentreOfMass,
     /// Kinetic energy (J).
     pub kinetic_energy: StartEnd,
+    /// The part of the kinetic energy in the rigid bodies' turning, `Σ ½ Iω²` (J); absent
+    /// without free rigid bodies.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rotational_kinetic_energy: Option<StartEnd>,
     /// Potential energy of the conservative forces (J); null when none has a potential.
     pub potential_energy: StartEnd,
     /// Mechanical energy (J).
@@ -412,6 +416,13 @@ impl Summary {
                 start: Some(l.kinetic_start()),
                 end: Some(l.kinetic_end()),
             },
+            rotational_kinetic_energy: sys.has_rotation().then(|| {
+                let (q0, v0) = report.initial.qv();
+                StartEnd {
+                    start: Some(sys.rotational_kinetic_energy(q0, v0)),
+                    end: Some(sys.rotational_kinetic_energy(q, v)),
+                }
+            }),
             potential_energy: StartEnd {
                 start: l.potential_start(),
                 end: l.potential_end(),
