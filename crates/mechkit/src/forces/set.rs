@@ -137,6 +137,37 @@ impl ForceSet {
         }
     }
 
+    /// Sets `each[i*n..(i+1)*n]` to force `i`'s own generalized force (`n = out.len()`
+    /// coordinates; constraint forces from the sum of the others, as in a step) and `out` to
+    /// their sum.
+    pub fn each_into(&self, k: &Kinematics<'_>, out: &mut [Real], each: &mut [Real]) {
+        let n = out.len();
+        out.fill(0.0);
+        each.fill(0.0);
+        for (i, f) in self.forces.iter().enumerate() {
+            if !f.constraint() {
+                f.add_forces(k, &mut each[i * n..(i + 1) * n]);
+            }
+        }
+        for chunk in each.chunks_exact(n) {
+            for (o, x) in out.iter_mut().zip(chunk) {
+                *o += x;
+            }
+        }
+        if self.has_constraints() {
+            let applied = out.to_vec();
+            for (i, f) in self.forces.iter().enumerate() {
+                if f.constraint() {
+                    let own = &mut each[i * n..(i + 1) * n];
+                    f.add_constraint_forces(k, &applied, own);
+                    for (o, x) in out.iter_mut().zip(own.iter()) {
+                        *o += x;
+                    }
+                }
+            }
+        }
+    }
+
     /// Whether any force depends on velocity.
     pub fn velocity_dependent(&self) -> bool {
         self.forces.iter().any(|f| f.velocity_dependent())

@@ -51,6 +51,7 @@ mod forces;
 mod integrator;
 mod limits;
 pub(crate) mod mechanism;
+mod model;
 mod observe;
 mod output;
 mod plot;
@@ -74,6 +75,7 @@ pub use compare::{CompareSettings, Comparison, MethodResult};
 pub use energy_bars::ENERGY_BARS;
 pub use error::{ErrorKind, Location, ScenarioError};
 pub use limits::{DEFAULT_MAX_OUTPUT, MAX_SCENARIO_BYTES, format_size, parse_size};
+pub use model::ModelValues;
 pub use observe::Observable;
 pub use output::{
     FLUSH_INTERVAL, StreamFile, Trajectory, csv_columns, csv_columns_in, csv_header,

@@ -161,3 +161,102 @@ every = 7
     }
     assert_eq!(table.column("t").unwrap().last(), Some(&0.1015));
 }
+
+/// A hand-written Euler-Cromer loop over the scenario's model (`evaluate_model`) is the run,
+/// bit for bit; each force's value, power and potential are the feather's laws.
+#[test]
+fn a_hand_written_loop_over_the_model_is_the_run() {
+    let path = crate::util::workspace().join("examples/feather.toml");
+    let overrides = mechkit::scenario::sweep::ConstantOverride::parse_list("Dmg=4").unwrap();
+    let mut s = Scenario::load_with(&path, &overrides).unwrap();
+    s.t_max = Some(0.1);
+    let run = s.run().unwrap();
+    assert_eq!(run.summary.steps, 100);
+    let (dt, g, dmg, m) = (1e-3, 9.8, 4.0, 1e-3);
+    let (mut x, mut v) = (vec![2.4], vec![0.0]);
+    for k in 0..100 {
+        let t = f64::from(k) * dt;
+        let model = s.evaluate_model(&[t], &x, &v).unwrap();
+        // the forces' own laws at this state
+        assert_eq!(model.forces, ["gravity", "air"]);
+        assert_eq!(model.force[0], -m * g);
+        assert_eq!(model.force[1], -m * g * dmg * v[0] * v[0].abs());
+        assert_eq!(model.power[0], -m * g * v[0]);
+        assert_eq!(model.potential[0], m * g * x[0]);
+        assert!(model.potential[1].is_nan());
+        v[0] += model.accel[0] * dt;
+        x[0] += v[0] * dt;
+    }
+    let (q_end, v_end) = run.report.final_state.qv();
+    assert_eq!(
+        x[0].to_bits(),
+        q_end[0].to_bits(),
+        "{} vs {}",
+        x[0],
+        q_end[0]
+    );
+    assert_eq!(
+        v[0].to_bits(),
+        v_end[0].to_bits(),
+        "{} vs {}",
+        v[0],
+        v_end[0]
+    );
+}
+
+/// Many states at once, and a mechanism: at each state of a rolling cylinder's run the
+/// forces (gravity and the slope's contact, from the applied sum) add up to `m a` for the
+/// centre and `I α` for the angle, and the wrong number of coordinates is an error naming them.
+#[test]
+fn the_model_of_a_mechanism_at_many_states() {
+    let path = crate::util::workspace().join("examples/rigid/rolling_incline.toml");
+    let s = Scenario::load(&path).unwrap();
+    let (out, table) = s.run_with_trajectory().unwrap();
+    assert!(!out.failed());
+    let names = s.coordinate_names();
+    assert_eq!(names.len(), s.dof());
+    assert!(names.iter().any(|n| n == "cylinder.x"), "{names:?}");
+    let dof = s.dof();
+    let rows = table.len();
+    let (mut q, mut v) = (Vec::new(), Vec::new());
+    let col = |name: &str| table.column(name).unwrap();
+    let t = col("t").to_vec();
+    for r in 0..rows {
+        for name in &names {
+            let (qn, vn) = match name.rsplit_once('.') {
+                Some((b, "x")) => (format!("{b}.x"), format!("{b}.vx")),
+                Some((b, "y")) => (format!("{b}.y"), format!("{b}.vy")),
+                _ => (format!("{name}.theta"), format!("{name}.omega")),
+            };
+            match (table.column(&qn), table.column(&vn)) {
+                (Some(a), Some(b)) => {
+                    q.push(a[r]);
+                    v.push(b[r]);
+                }
+                // a joint's mode: as at the start
+                _ => {
+                    let i = names.iter().position(|n| n == name).unwrap();
+                    let (q0, v0) = s.initial.qv();
+                    q.push(q0[i]);
+                    v.push(v0[i]);
+                }
+            }
+        }
+    }
+    let model = s.evaluate_model(&t, &q, &v).unwrap();
+    assert_eq!(model.states, rows);
+    let nf = model.forces.len();
+    let mass = s.system.masses()[0];
+    for r in 0..rows {
+        for c in 0..2 {
+            let sum: f64 = (0..nf).map(|i| model.force[(r * nf + i) * dof + c]).sum();
+            let ma = mass * model.accel[r * dof + c];
+            assert!(
+                (sum - ma).abs() < 1e-9 * (1.0 + ma.abs()),
+                "row {r}: {sum} vs {ma}"
+            );
+        }
+    }
+    let e = s.evaluate_model(&[0.0], &[1.0], &[0.0]).unwrap_err();
+    assert!(e.message.contains("cylinder.x"), "{}", e.message);
+}
