@@ -228,18 +228,15 @@ fn the_model_of_a_mechanism_at_many_states() {
                 Some((b, "y")) => (format!("{b}.y"), format!("{b}.vy")),
                 _ => (format!("{name}.theta"), format!("{name}.omega")),
             };
-            match (table.column(&qn), table.column(&vn)) {
-                (Some(a), Some(b)) => {
-                    q.push(a[r]);
-                    v.push(b[r]);
-                }
+            if let (Some(a), Some(b)) = (table.column(&qn), table.column(&vn)) {
+                q.push(a[r]);
+                v.push(b[r]);
+            } else {
                 // a joint's mode: as at the start
-                _ => {
-                    let i = names.iter().position(|n| n == name).unwrap();
-                    let (q0, v0) = s.initial.qv();
-                    q.push(q0[i]);
-                    v.push(v0[i]);
-                }
+                let i = names.iter().position(|n| n == name).unwrap();
+                let (q0, v0) = s.initial.qv();
+                q.push(q0[i]);
+                v.push(v0[i]);
             }
         }
     }
