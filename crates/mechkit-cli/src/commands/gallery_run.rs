@@ -208,7 +208,12 @@ fn run_script(
     let text = std::fs::read_to_string(path)?;
     let script = Script::parse(&text).map_err(|e| anyhow!("{stem}.sh: {e}"))?;
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let exe = std::env::current_exe().context("cannot find the mechkit binary")?;
+    // the program that runs `mechkit ARGS`: this one, or what an embedding front names (the
+    // Python package's console script runs the command line inside the interpreter)
+    let exe = match std::env::var_os("MECHKIT_EXE") {
+        Some(exe) => std::path::PathBuf::from(exe),
+        None => std::env::current_exe().context("cannot find the mechkit binary")?,
+    };
     for step in &script.steps {
         let args: Vec<String> = step.args.iter().map(|w| local_path(bundle, w)).collect();
         let output = Command::new(&exe)

@@ -1,0 +1,112 @@
+//! `mechkit`: the command-line front end of the mechkit library, as a library so that other
+//! fronts (the Python package's `mechkit` console script) run the same command in-process.
+//!
+//! Exit codes:
+//! - 0: success;
+//! - 1: the computation failed (the simulation diverged; the output so far is kept);
+//! - 2: bad input (usage, unreadable or invalid file, units, unwritable output directory);
+//! - 101: an internal error (a bug), reported as `error: internal error, …`;
+//! - 130: stopped by Ctrl-C (SIGINT) or SIGTERM after finishing the outputs.
+//!
+//! Errors go to stderr with their location and a hint (`failure.rs`).
+
+mod args;
+mod commands;
+mod failure;
+mod gallery;
+mod plot;
+
+use std::ffi::OsString;
+use std::io::Write as _;
+
+use clap::Parser;
+use mechkit::simulate::Cancel;
+
+/// Runs the command line `args` (the program name first, as [`std::env::args_os`] gives it)
+/// and returns the exit status. Everything is printed as the `mechkit` binary prints it; a
+/// panic (a bug) is reported by a panic hook as `error: internal error, …` and unwinds to the
+/// caller, which exits with 101.
+///
+/// For `run`, `sweep` and `md`, Ctrl-C and SIGTERM are caught while the command runs (the
+/// handlers chain to those installed before, and are removed on return).
+pub fn main_with_args(args: Vec<OsString>) -> i32 {
+    failure::install_panic_hook();
+    let cli = match args::Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => {
+            // what clap's `exit` does, without ending the process: help and version on
+            // stdout (status 0), usage errors on stderr (status 2)
+            let _ = e.print();
+            flush();
+            return e.exit_code();
+        }
+    };
+    let cancel = Cancel::new();
+    // the commands whose loops look at the handle; the others end at Ctrl-C as usual
+    let handlers = if matches!(
+        cli.command,
+        args::Command::Run(_) | args::Command::Sweep(_) | args::Command::Md(_)
+    ) {
+        catch_interrupts(&cancel)
+    } else {
+        Vec::new()
+    };
+    let code = match commands::dispatch(cli, &cancel) {
+        Ok(commands::Outcome::Success) => 0,
+        Ok(commands::Outcome::ComputationFailed) => 1,
+        Ok(commands::Outcome::Interrupted) => EXIT_INTERRUPTED,
+        Err(e) if is_broken_pipe(&e) => 0,
+        Err(e) => {
+            eprintln!("error: {}", failure::message(&e));
+            2
+        }
+    };
+    for id in handlers {
+        signal_hook::low_level::unregister(id);
+    }
+    flush();
+    code
+}
+
+/// Hands what is buffered for stdout to the operating system: a process ends by returning
+/// from `main`, which does this, but a caller in another language may not.
+fn flush() {
+    let _ = std::io::stdout().flush();
+}
+
+/// Exit status after Ctrl-C: 128 + SIGINT, as shells report a process killed by it.
+const EXIT_INTERRUPTED: i32 = 130;
+
+/// Ctrl-C (SIGINT) and SIGTERM raise `cancel`, which asks the running simulation to stop
+/// after its current step: it then finishes its outputs and exits with 130. A second Ctrl-C
+/// exits at once. Returns the handlers' ids, to remove them when the command is done.
+fn catch_interrupts(cancel: &Cancel) -> Vec<signal_hook::SigId> {
+    use signal_hook::consts::{SIGINT, SIGTERM};
+    let flag = cancel.flag();
+    let mut ids = Vec::new();
+    for signal in [SIGINT, SIGTERM] {
+        // the conditional exit first: it sees the flag as the previous signal left it
+        let registered = signal_hook::flag::register_conditional_shutdown(
+            signal,
+            EXIT_INTERRUPTED,
+            std::sync::Arc::clone(&flag),
+        )
+        .and_then(|exit| {
+            ids.push(exit);
+            signal_hook::flag::register(signal, std::sync::Arc::clone(&flag))
+        });
+        match registered {
+            Ok(id) => ids.push(id),
+            Err(e) => {
+                eprintln!("warning: Ctrl-C will end mechkit without finishing its outputs ({e})");
+            }
+        }
+    }
+    ids
+}
+
+/// Whether the error is stdout closed by the reader (`mechkit … | head`): not a failure.
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    e.downcast_ref::<std::io::Error>()
+        .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+}

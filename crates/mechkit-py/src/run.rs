@@ -1,0 +1,137 @@
+//! `mechkit.Run`: what a run produced, as Python values: the summary (`summary.json` as a
+//! dict), the trajectory (`trajectory.csv`'s columns as numpy arrays, moved from Rust without
+//! a copy) and the columns' units.
+
+use mechkit::scenario::{RunOutput, Trajectory};
+use numpy::PyArray1;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+/// The result of `Scenario.run()`.
+///
+/// ```python
+/// run = mechkit.Scenario.load("examples/feather.toml").run()
+/// run.trajectory["feather.x"][-1]   # a numpy float64 array per column
+/// run.summary["energy"]["change"]   # summary.json as a dict
+/// run.to_pandas()                   # a DataFrame of the trajectory
+/// ```
+#[pyclass(module = "mechkit", name = "Run", frozen)]
+pub struct Run {
+    summary: Py<PyDict>,
+    trajectory: Py<PyDict>,
+    units: Py<PyDict>,
+    failed: bool,
+    rows: usize,
+}
+
+impl Run {
+    /// The Python view of a run's outputs; the trajectory's columns become numpy arrays that
+    /// own the Rust vectors' memory.
+    pub fn new(py: Python<'_>, out: &RunOutput, trajectory: Trajectory) -> PyResult<Self> {
+        let json = py.import("json")?;
+        let summary = json
+            .call_method1("loads", (out.summary.to_json(),))?
+            .cast_into::<PyDict>()?;
+        let rows = trajectory.len();
+        let (columns, data) = trajectory.into_data();
+        let arrays = PyDict::new(py);
+        let units = PyDict::new(py);
+        for (column, values) in columns.into_iter().zip(data) {
+            arrays.set_item(&column.name, PyArray1::from_vec(py, values))?;
+            units.set_item(&column.name, column.unit)?;
+        }
+        Ok(Self {
+            summary: summary.unbind(),
+            trajectory: arrays.unbind(),
+            units: units.unbind(),
+            failed: out.failed(),
+            rows,
+        })
+    }
+}
+
+#[pymethods]
+impl Run {
+    /// The run's summary: a dict equal to what `mechkit run` writes to `summary.json` (its
+    /// `files` aside: nothing was written).
+    #[getter]
+    fn summary(&self, py: Python<'_>) -> Py<PyDict> {
+        self.summary.clone_ref(py)
+    }
+
+    /// The trajectory: a dict from the column names of `trajectory.csv` (`t`,
+    /// `feather.x`, `work.gravity`, ...) to numpy float64 arrays, in the CSV's order.
+    #[getter]
+    fn trajectory(&self, py: Python<'_>) -> Py<PyDict> {
+        self.trajectory.clone_ref(py)
+    }
+
+    /// The unit of each trajectory column (`"m/s"`; `"1"` for a pure number), None when
+    /// unknown.
+    #[getter]
+    fn units(&self, py: Python<'_>) -> Py<PyDict> {
+        self.units.clone_ref(py)
+    }
+
+    /// The located events (the summary's `events`): each a dict with `name`, `t`, `state`,
+    /// `last_step`, ...
+    #[getter]
+    fn events<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        Ok(self
+            .summary
+            .bind(py)
+            .as_any()
+            .get_item("events")?
+            .cast_into()?)
+    }
+
+    /// The `[observe]` results (the summary's `observables`): name → value (SI).
+    #[getter]
+    fn observables<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        Ok(self
+            .summary
+            .bind(py)
+            .as_any()
+            .get_item("observables")?
+            .cast_into()?)
+    }
+
+    /// Whether the computation failed (diverged, step size underflow, an endless event): the
+    /// command line would exit with 1. The summary's `divergence` says why.
+    #[getter]
+    fn failed(&self) -> bool {
+        self.failed
+    }
+
+    /// The trajectory as a pandas DataFrame, one column per trajectory column; the units are
+    /// in `df.attrs["units"]`. Needs pandas (`pip install mechkit[pandas]`).
+    fn to_pandas<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let pandas = py.import("pandas")?;
+        let frame = pandas.call_method1("DataFrame", (self.trajectory.bind(py),))?;
+        frame
+            .getattr("attrs")?
+            .set_item("units", self.units.bind(py).copy()?)?;
+        Ok(frame)
+    }
+
+    fn __len__(&self) -> usize {
+        self.rows
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        let summary = self.summary.bind(py);
+        let field = |k: &str| {
+            summary
+                .get_item(k)
+                .ok()
+                .flatten()
+                .map_or_else(|| "?".to_string(), |v| v.to_string())
+        };
+        format!(
+            "<mechkit.Run {} rows, t_end = {} s, stop_reason = {}>",
+            self.rows,
+            field("t_end"),
+            field("stop_reason")
+        )
+    }
+}
