@@ -28,6 +28,7 @@ mod force;
 mod gauss;
 mod joint;
 mod modes;
+mod rows;
 mod solve;
 
 pub use super::at::AppliedAt;
