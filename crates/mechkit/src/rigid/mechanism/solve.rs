@@ -177,8 +177,8 @@ impl Mechanism {
         })
     }
 
-    /// Makes the velocities `v` satisfy every engaged joint at `q` (the inelastic impulse of
-    /// [`Mechanism::impulse`]).
+    /// Makes the velocities `v` satisfy every engaged joint at `q`: an inelastic impulse, the
+    /// one a contact or a string takes when it engages.
     pub fn project_velocities(&self, q: &[Real], v: &mut [Real]) {
         self.impulse(q, v);
     }
