@@ -70,6 +70,21 @@ impl RigidTurn {
     }
 }
 
+/// Refuses a `free` key other than `true` on the rigid body `t`, with `message` and `hint`.
+pub(super) fn check_free(
+    t: &Table<'_, '_>,
+    message: &str,
+    hint: &str,
+) -> Result<(), ScenarioError> {
+    match t.get("free") {
+        Some(v) if !matches!(v.get_ref(), toml::de::DeValue::Boolean(true)) => Err(t
+            .src
+            .error(ErrorKind::Invalid, message, v.span())
+            .with_hint(hint)),
+        _ => Ok(()),
+    }
+}
+
 /// Builds a scenario of rigid bodies and joints in `dim` dimensions (2 or 3).
 pub(crate) fn build_mechanism(
     name: &str,

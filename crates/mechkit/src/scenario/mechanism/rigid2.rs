@@ -2,7 +2,6 @@
 //! points.
 
 use mechkit_expr::units::Dimension;
-use toml::de::DeValue;
 
 use crate::Real;
 use crate::scenario::build::body_name;
@@ -31,18 +30,11 @@ pub(super) fn read_rigid2(
 ) -> Result<Rigid, ScenarioError> {
     t.check_keys(PLANAR_RIGID_KEYS)?;
     let name = body_name(t, index, count, taken, "theta")?;
-    if let Some(v) = t.get("free")
-        && !matches!(v.get_ref(), DeValue::Boolean(true))
-    {
-        return Err(t
-            .src
-            .error(
-                ErrorKind::Invalid,
-                "`free` must be true: in a plane every rigid body is free unless a [[joint]] holds it",
-                v.span(),
-            )
-            .with_hint("hinge it with a [[joint]] of kind \"hinge\", or leave out `dimensions` for a body turning about a fixed axis"));
-    }
+    super::check_free(
+        t,
+        "`free` must be true: in a plane every rigid body is free unless a [[joint]] holds it",
+        "hinge it with a [[joint]] of kind \"hinge\", or leave out `dimensions` for a body turning about a fixed axis",
+    )?;
     // the body frame's origin: the centre of mass, or the parts' frame
     let (mass, inertia, cm) = if t.get("inertia").is_some() {
         let mass = scalar(t, "mass", Dimension::MASS, env)?

@@ -48,18 +48,11 @@ pub(super) fn read_rigid3(
 ) -> Result<Rigid, ScenarioError> {
     t.check_keys(SPATIAL_RIGID_KEYS)?;
     let name = body_name(t, index, count, taken, "wx")?;
-    if let Some(v) = t.get("free")
-        && !matches!(v.get_ref(), DeValue::Boolean(true))
-    {
-        return Err(t
-            .src
-            .error(
-                ErrorKind::Invalid,
-                "`free` must be true: in space every rigid body is free",
-                v.span(),
-            )
-            .with_hint("a body turning about a fixed axis is a [[rigid_body]] of a scenario without `dimensions`"));
-    }
+    super::check_free(
+        t,
+        "`free` must be true: in space every rigid body is free",
+        "a body turning about a fixed axis is a [[rigid_body]] of a scenario without `dimensions`",
+    )?;
     let (mass, inertia, cm) = if t.get("inertia").is_some() {
         let mass = required_scalar(t, "mass", Dimension::MASS, env)?;
         (mass, inertia(t, env)?, [0.0; 3])
