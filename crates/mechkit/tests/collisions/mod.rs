@@ -1,2 +1,3 @@
+pub mod disks;
 mod impacts;
 mod properties;
