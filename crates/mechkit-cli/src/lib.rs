@@ -1,5 +1,7 @@
 //! `mechkit`: the command-line front end of the mechkit library, as a library so that other
-//! fronts (the Python package's `mechkit` console script) run the same command in-process.
+//! fronts (the Python package's `mechkit` console script) run the same command in-process,
+//! and draw plots as the command does ([`plot_svg`], [`plot_png`]: the Python package's
+//! `Run.plot`).
 //!
 //! Exit codes:
 //! - 0: success;
@@ -21,6 +23,32 @@ use std::io::Write as _;
 
 use clap::Parser;
 use mechkit::simulate::Cancel;
+
+pub use args::PlotStyle;
+pub use plot::PNG_DPI;
+
+/// The SVG text of `plot` as `mechkit` draws it into a file (`mechkit run -o DIR` writes the
+/// same bytes to `DIR/v_x.svg`): titled `title` (a run's plots: the scenario's title), in
+/// `style` (`--style`). Fails only if drawing fails (a bug).
+pub fn plot_svg(
+    plot: &mechkit::figure::PlotData,
+    title: &str,
+    style: PlotStyle,
+) -> anyhow::Result<String> {
+    plot::svg(plot, title, style)
+}
+
+/// The PNG of `plot` as `mechkit` writes it with `--format png --dpi DPI`: [`plot_svg`]'s
+/// drawing rasterised at `dpi` dots per inch (96: the SVG's own 900x600 pixels), which must
+/// be within [`PNG_DPI`].
+pub fn plot_png(
+    plot: &mechkit::figure::PlotData,
+    title: &str,
+    style: PlotStyle,
+    dpi: u32,
+) -> anyhow::Result<Vec<u8>> {
+    plot::png(plot, title, style, dpi)
+}
 
 /// Runs the command line `args` (the program name first, as [`std::env::args_os`] gives it)
 /// and returns the exit status. Everything is printed as the `mechkit` binary prints it; a

@@ -29,7 +29,7 @@ mod title;
 use raster::rasterise;
 use style::{CANVAS, FONT_FAMILY, Style};
 
-pub use crate::args::PlotFormat;
+pub use crate::args::{PlotFormat, PlotStyle};
 
 static FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
@@ -105,10 +105,13 @@ fn equalize(x: (f64, f64), y: (f64, f64), width: f64, height: f64) -> ((f64, f64
     ((cx - hx, cx + hx), (cy - hy, cy + hy))
 }
 
+/// The resolutions a PNG plot may have, in dots per inch (`--dpi`).
+pub const PNG_DPI: std::ops::RangeInclusive<u32> = 24..=1200;
+
 /// Draws `plot` into the file at `path` (written atomically): PNG at `format.dpi` dots per
 /// inch when its name ends in `.png`, else SVG; in `format.style`.
 pub fn render(plot: &PlotData, title: &str, path: &Path, format: PlotFormat) -> Result<()> {
-    let svg = svg_text(plot, title, Style::new(format.style))?;
+    let svg = svg(plot, title, format.style)?;
     let is_png = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("png"));
@@ -118,6 +121,24 @@ pub fn render(plot: &PlotData, title: &str, path: &Path, format: PlotFormat) -> 
         svg.into_bytes()
     };
     write_atomic(path, &bytes).with_context(|| format!("cannot write {}", path.display()))
+}
+
+/// The SVG text of `plot` titled `title`, in `style`: what [`render`] writes to a `.svg`.
+pub fn svg(plot: &PlotData, title: &str, style: PlotStyle) -> Result<String> {
+    svg_text(plot, title, Style::new(style))
+}
+
+/// The PNG of `plot` at `dpi` dots per inch (within [`PNG_DPI`]): what [`render`] writes to a
+/// `.png`.
+pub fn png(plot: &PlotData, title: &str, style: PlotStyle, dpi: u32) -> Result<Vec<u8>> {
+    if !PNG_DPI.contains(&dpi) {
+        return Err(anyhow!(
+            "a PNG's resolution is from {} to {} dpi, not {dpi}",
+            PNG_DPI.start(),
+            PNG_DPI.end()
+        ));
+    }
+    rasterise(&svg(plot, title, style)?, dpi)
 }
 
 /// The SVG text of `plot`: drawn on the large canvas, written at the plot's size.

@@ -6,13 +6,32 @@
 //!   (`scenario.rs`, `run.rs`), the run on a worker thread that Ctrl-C stops
 //!   (`interrupt.rs`);
 //! - `MechkitError`, `ScenarioError` (`errors.rs`);
-//! - `cli(args)`: the `mechkit` command line, run in-process for the console script.
+//! - `cli(args)`: the `mechkit` command line, run in-process for the console script;
+//! - calculus and data: `integrate`, `diff`, `solve`, `units` (`calculus.rs`), `trapz`,
+//!   `cumtrapz`, `simpson`, `derive` (`data.rs`);
+//! - batch: `md(...)` → `MdResult`, `sweep(scenario, ...)` → `SweepResult` (`batch.rs`), and
+//!   `run.plot(spec)` → `Plot`, drawn as the command line draws it (`plot.rs`);
+//! - mechanics: `potential`, `collide`, `impulse`, `com`, `inertia` (`potential.rs`,
+//!   `collisions.rs`, `impulse.rs`, `mass.rs` with `image.rs`), the one-question commands as
+//!   functions returning the command's `--json` as a dict, their arguments read by
+//!   `arguments.rs`.
 
+mod batch;
+mod calculus;
+mod data;
 mod errors;
 mod interrupt;
 mod model;
+mod plot;
 mod run;
 mod scenario;
+// mechanics: potential, collide, impulse, com, inertia
+mod arguments;
+mod collisions;
+mod image;
+mod impulse;
+mod mass;
+mod potential;
 
 use std::ffi::OsString;
 
@@ -52,6 +71,26 @@ mod native {
     use super::run::Run;
     #[pymodule_export]
     use super::scenario::Scenario;
+    // mechanics: potential, collide, impulse, com, inertia
+    #[pymodule_export]
+    use super::collisions::collide;
+    #[pymodule_export]
+    use super::impulse::impulse;
+    #[pymodule_export]
+    use super::mass::{com, inertia};
+    #[pymodule_export]
+    use super::potential::potential;
+
+    // calculus and data (integrate, diff, solve, units; trapz, cumtrapz, simpson, derive)
+    #[pymodule_export]
+    use super::calculus::{diff, integrate, solve, units};
+    #[pymodule_export]
+    use super::data::{cumtrapz, derive, simpson, trapz};
+    // batch: md, sweep and plots (batch.rs, plot.rs)
+    #[pymodule_export]
+    use super::batch::{MdResult, SweepResult, md, sweep};
+    #[pymodule_export]
+    use super::plot::Plot;
 
     #[pymodule_init]
     fn init(m: &Bound<'_, PyModule>) -> PyResult<()> {

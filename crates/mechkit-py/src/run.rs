@@ -1,11 +1,16 @@
 //! `mechkit.Run`: what a run produced, as Python values: the summary (`summary.json` as a
 //! dict), the trajectory (`trajectory.csv`'s columns as numpy arrays, moved from Rust without
-//! a copy) and the columns' units.
+//! a copy), the columns' units, and its plots (`run.plot(spec)`, `plot.rs`).
 
-use mechkit::scenario::{RunOutput, Trajectory};
+use std::time::Instant;
+
+use mechkit::figure::PlotData;
+use mechkit::scenario::{ENERGY_BARS, RunOutput, Trajectory};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+
+use crate::plot::{Plot, Replay};
 
 /// The result of `Scenario.run()`.
 ///
@@ -14,6 +19,7 @@ use pyo3::types::{PyDict, PyList};
 /// run.trajectory["feather.x"][-1]   # a numpy float64 array per column
 /// run.summary["energy"]["change"]   # summary.json as a dict
 /// run.to_pandas()                   # a DataFrame of the trajectory
+/// run.plot("v(x)")                   # a plot, as `mechkit run` draws it
 /// ```
 #[pyclass(module = "mechkit", name = "Run", frozen)]
 pub struct Run {
@@ -22,16 +28,43 @@ pub struct Run {
     units: Py<PyDict>,
     failed: bool,
     rows: usize,
+    /// The scenario's title, over its plots.
+    title: String,
+    /// The plots the run recorded (`[output] plots`) and its energy bars.
+    plots: Vec<PlotData>,
+    /// How to run it again for another plot.
+    replay: Replay,
+    /// Seconds spent: the run in the library, its summary and its trajectory made Python
+    /// values.
+    timings: Timings,
+}
+
+/// Where a run's time went, in seconds (`Run.timings`).
+#[derive(Clone, Copy)]
+struct Timings {
+    run: f64,
+    summary: f64,
+    trajectory: f64,
 }
 
 impl Run {
     /// The Python view of a run's outputs; the trajectory's columns become numpy arrays that
-    /// own the Rust vectors' memory.
-    pub fn new(py: Python<'_>, out: &RunOutput, trajectory: Trajectory) -> PyResult<Self> {
+    /// own the Rust vectors' memory. `replay` is what the run was run from, `run_seconds` the
+    /// time the run took.
+    pub fn new(
+        py: Python<'_>,
+        out: RunOutput,
+        trajectory: Trajectory,
+        mut replay: Replay,
+        run_seconds: f64,
+    ) -> PyResult<Self> {
+        let start = Instant::now();
         let json = py.import("json")?;
         let summary = json
             .call_method1("loads", (out.summary.to_json(),))?
             .cast_into::<PyDict>()?;
+        let summary_seconds = start.elapsed().as_secs_f64();
+        let start = Instant::now();
         let rows = trajectory.len();
         let (columns, data) = trajectory.into_data();
         let arrays = PyDict::new(py);
@@ -40,12 +73,26 @@ impl Run {
             arrays.set_item(&column.name, PyArray1::from_vec(py, values))?;
             units.set_item(&column.name, column.unit)?;
         }
+        let timings = Timings {
+            run: run_seconds,
+            summary: summary_seconds,
+            trajectory: start.elapsed().as_secs_f64(),
+        };
+        replay.limited = out.summary.stop_reason == "output_limit";
+        let mut plots = out.plots;
+        if !plots.iter().any(|p| p.spec == ENERGY_BARS) {
+            plots.push(out.summary.energy_bars());
+        }
         Ok(Self {
             summary: summary.unbind(),
             trajectory: arrays.unbind(),
             units: units.unbind(),
-            failed: out.failed(),
+            failed: out.report.stop_reason.is_failure(),
             rows,
+            title: out.summary.title,
+            plots,
+            replay,
+            timings,
         })
     }
 }
@@ -112,6 +159,31 @@ impl Run {
             .getattr("attrs")?
             .set_item("units", self.units.bind(py).copy()?)?;
         Ok(frame)
+    }
+
+    /// The plot `spec` (`"v(x)"`, `"energy(t)"`, `"energy-bars"`, any plot `[output] plots`
+    /// accepts) drawn as `mechkit run` draws it, in `style` `"paper"` or `"slides"`. A plot
+    /// the scenario lists comes from this run; another runs the scenario again, recording
+    /// it (the same run: the same points; the GIL is released and Ctrl-C stops it). A spec
+    /// that is not a plot of the scenario raises ScenarioError.
+    #[pyo3(signature = (spec, *, style = "paper"))]
+    fn plot(&self, py: Python<'_>, spec: &str, style: &str) -> PyResult<Plot> {
+        let style = crate::plot::style(style)?;
+        let data = crate::plot::of_run(py, &self.plots, &self.replay, spec)?;
+        Ok(Plot::new(data, self.title.clone(), style))
+    }
+
+    /// Where the time went, in seconds: `run` (the simulation, in Rust), `summary` (the
+    /// summary made a dict) and `trajectory` (the columns handed to numpy: moved, not
+    /// copied, so this does not grow with the rows).
+    #[getter]
+    fn timings<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let t = self.timings;
+        let d = PyDict::new(py);
+        d.set_item("run", t.run)?;
+        d.set_item("summary", t.summary)?;
+        d.set_item("trajectory", t.trajectory)?;
+        Ok(d)
     }
 
     fn __len__(&self) -> usize {

@@ -1,6 +1,7 @@
 //! `mechkit.Scenario`: a checked scenario file or text, and `scenario.run(**constants)`.
 
 use std::path::PathBuf;
+use std::time::Instant;
 
 use mechkit::scenario::{ConstantOverride, Scenario as Checked, read_source};
 use mechkit::simulate::Cancel;
@@ -10,6 +11,7 @@ use pyo3::types::{PyBool, PyDict, PyString};
 
 use crate::errors::scenario_error;
 use crate::model::Model;
+use crate::plot::Replay;
 use crate::run::Run;
 
 /// A scenario, checked when it is loaded: its bodies, forces, integrator and outputs, as in
@@ -62,14 +64,21 @@ impl Scenario {
         let overrides = overrides(py, constants)?;
         let cancel = Cancel::new();
         let handle = cancel.clone();
-        let (name, text) = (self.name.as_str(), self.text.as_str());
+        let (name, text, given) = (self.name.as_str(), self.text.as_str(), &overrides);
+        let start = Instant::now();
         let result = crate::interrupt::run(py, &cancel, move || {
-            let mut scenario = Checked::from_str_with(name, text, &overrides)?;
+            let mut scenario = Checked::from_str_with(name, text, given)?;
             scenario.cancel = handle;
             scenario.run_with_trajectory()
         })?;
         let (out, trajectory) = result.map_err(|e| scenario_error(py, &e))?;
-        Run::new(py, &out, trajectory)
+        let replay = Replay {
+            name: self.name.clone(),
+            text: self.text.clone(),
+            overrides,
+            limited: false,
+        };
+        Run::new(py, out, trajectory, replay, start.elapsed().as_secs_f64())
     }
 
     /// The scenario's model with the given constants (as `run` takes them): its
@@ -120,6 +129,12 @@ impl Scenario {
 }
 
 impl Scenario {
+    /// The name errors give (the file's path) and the TOML text (`mechkit.sweep` of a
+    /// scenario).
+    pub fn source(&self) -> (&str, &str) {
+        (&self.name, &self.text)
+    }
+
     /// Checks `text` (with the GIL released) and keeps it for the runs.
     fn checked(py: Python<'_>, name: String, text: String) -> PyResult<Self> {
         let (title, constants) = py

@@ -3,6 +3,7 @@ package (the same command line, run in-process by the console script)."""
 
 import csv
 import json
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -56,3 +57,13 @@ def without_files(summary):
 @pytest.fixture
 def feather_path():
     return EXAMPLES / "feather.toml"
+
+
+@pytest.fixture(autouse=True)
+def ctrl_c_raises_keyboard_interrupt():
+    """Ctrl-C is Python's KeyboardInterrupt in every test, as in a terminal or a notebook,
+    even where the suite was started with SIGINT ignored (a shell's background job: Python
+    then keeps the signal ignored, and `_thread.interrupt_main` does nothing)."""
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, before)

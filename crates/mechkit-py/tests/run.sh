@@ -6,7 +6,8 @@
 # The package is built by pip through maturin (a release build) in the workspace's target
 # directory, shared with cargo: $CARGO_TARGET_DIR, or target/ when unset. The environment is
 # $CARGO_TARGET_DIR/py-venv (target/py-venv), made anew each time. Needs python3 (3.9 or
-# later) with venv and pip, and PyPI for maturin, numpy, pandas and pytest.
+# later) with venv and pip, and PyPI for maturin, numpy, pandas, pytest, scipy (the peer the
+# tests compare with) and nbclient, nbformat and ipykernel (to run the example notebooks).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
@@ -18,7 +19,7 @@ rm -rf "$venv"
 python3 -m venv "$venv"
 echo "run.sh: building and installing ./crates/mechkit-py[pandas] into $venv (a release build)"
 start=$SECONDS
-"$venv/bin/python" -m pip install --quiet --disable-pip-version-check "./crates/mechkit-py[pandas]" pytest
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check "./crates/mechkit-py[pandas]" pytest scipy nbclient nbformat ipykernel
 echo "run.sh: pip install took $((SECONDS - start)) s"
 
 export PYTHONDONTWRITEBYTECODE=1

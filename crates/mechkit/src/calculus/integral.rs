@@ -43,6 +43,28 @@ pub struct Definite {
     pub agree: Option<bool>,
 }
 
+impl Definite {
+    /// The value to trust: the closed form where it agrees with the quadrature, else the
+    /// quadrature's value; `None` when the quadrature failed (a closed form alone may have
+    /// jumped across a singularity, as `ln|x|` across 0 does). The fixed rules are measured
+    /// against it.
+    ///
+    /// ```
+    /// use mechkit::calculus::integral;
+    /// let d = integral("x^2", "x", Some((0.0, 1.0)), &[]).unwrap().definite.unwrap();
+    /// assert_eq!(d.value(), Some(1.0 / 3.0));
+    /// let across = integral("1/x", "x", Some((-1.0, 2.0)), &[]).unwrap().definite.unwrap();
+    /// assert!(across.closed_form.is_some() && across.value().is_none());
+    /// ```
+    pub fn value(&self) -> Option<Real> {
+        match (self.closed_form, self.agree, &self.quadrature) {
+            (Some(c), Some(true), _) => Some(c),
+            (_, _, Ok(q)) => Some(q.value),
+            _ => None,
+        }
+    }
+}
+
 #[cfg(feature = "serde")]
 impl serde::Serialize for Definite {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -184,7 +206,7 @@ pub fn rule_estimates(
     let f = Function::parse(text, &[x], params)?;
     let exact = integral(text, x, Some(limits), params)?
         .definite
-        .and_then(|d| reference(&d))
+        .and_then(|d| d.value())
         .ok_or_else(|| {
             CalculusError::Invalid(format!(
                 "`{text}` could not be integrated from {} to {} to compare the rules with",
@@ -192,16 +214,6 @@ pub fn rule_estimates(
             ))
         })?;
     Ok((exact, estimates(&f, limits, exact, rules, ns)?))
-}
-
-/// What fixed rules are measured against: the closed form where it agrees with quadrature,
-/// else the quadrature.
-fn reference(d: &Definite) -> Option<Real> {
-    match (d.closed_form, d.agree, &d.quadrature) {
-        (Some(c), Some(true), _) => Some(c),
-        (_, _, Ok(q)) => Some(q.value),
-        _ => None,
-    }
 }
 
 fn estimates(
@@ -305,12 +317,16 @@ pub fn integration(
     let mut rows = None;
     if let (false, Some(lim)) = (rules.is_empty(), limits) {
         let f = Function::parse(text, &[x], params)?;
-        let exact = i.definite.as_ref().and_then(reference).ok_or_else(|| {
-            CalculusError::Invalid(format!(
-                "`{text}` could not be integrated from {} to {} to compare the rules with",
-                lim.0, lim.1
-            ))
-        })?;
+        let exact = i
+            .definite
+            .as_ref()
+            .and_then(Definite::value)
+            .ok_or_else(|| {
+                CalculusError::Invalid(format!(
+                    "`{text}` could not be integrated from {} to {} to compare the rules with",
+                    lim.0, lim.1
+                ))
+            })?;
         rows = Some(estimates(&f, lim, exact, rules, ns)?);
         reference_value = Some(exact);
     }

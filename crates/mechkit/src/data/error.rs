@@ -95,6 +95,15 @@ pub enum DataError {
         /// Data rows found.
         rows: usize,
     },
+    /// Columns given as arrays ([`Table::from_columns`](super::Table::from_columns)) that do
+    /// not make a table: of different lengths, or with a value that is not finite.
+    #[error("{file}: {message}")]
+    Columns {
+        /// What the arrays are called.
+        file: String,
+        /// What is wrong and how to fix it.
+        message: String,
+    },
     /// A column name the header does not have (or any name, when there is no header).
     #[error("{file}: {}", unknown_column(.name, .names.as_deref(), *.width))]
     UnknownColumn {

@@ -103,6 +103,76 @@ impl Table {
         Self::parse(&text, &path.display().to_string())
     }
 
+    /// A table of columns a program already holds (arrays rather than a file), named
+    /// `names` (one per column, as a header would name them: `t`, `F [kN]`); `source` names
+    /// it in messages, where row `i` (0-based) is on "line" `i + 1`.
+    ///
+    /// ```
+    /// use mechkit::data::{ColumnRef, Table};
+    /// let t = Table::from_columns("<arrays>", &["t", "F"], vec![vec![0.0, 0.1], vec![2.0, 3.0]])
+    ///     .unwrap();
+    /// assert_eq!(t.column(&ColumnRef::parse("F").unwrap()).unwrap(), &[2.0, 3.0]);
+    /// assert_eq!(t.line_of(1), 2);
+    /// assert!(Table::from_columns("<arrays>", &["t", "F"], vec![vec![0.0], vec![1.0]]).is_err());
+    /// ```
+    ///
+    /// # Errors
+    /// Another number of names than of columns, columns of different lengths, fewer than two
+    /// rows, a value that is not finite: [`DataError::Columns`].
+    pub fn from_columns(
+        source: &str,
+        names: &[&str],
+        columns: Vec<Vec<Real>>,
+    ) -> Result<Self, DataError> {
+        let fail = |message: String| DataError::Columns {
+            file: source.to_string(),
+            message,
+        };
+        if names.len() != columns.len() {
+            return Err(fail(format!(
+                "{} names for {} columns; give one name per column",
+                names.len(),
+                columns.len()
+            )));
+        }
+        let rows = columns.first().map_or(0, Vec::len);
+        if let Some(k) = columns.iter().position(|c| c.len() != rows) {
+            return Err(fail(format!(
+                "`{}` has {} values but `{}` has {rows}; every column needs one value per row",
+                names[k],
+                columns[k].len(),
+                names[0]
+            )));
+        }
+        if rows < 2 {
+            let what = names
+                .first()
+                .map_or_else(|| "the table".to_string(), |n| format!("`{n}`"));
+            let values = if rows == 0 { "no values" } else { "1 value" };
+            return Err(fail(format!(
+                "{what} has {values}; at least 2 rows are needed"
+            )));
+        }
+        for (name, column) in names.iter().zip(&columns) {
+            if let Some(i) = column.iter().position(|v| !v.is_finite()) {
+                return Err(fail(format!(
+                    "`{name}` is {} at row {}, which is not a finite number; integrals and \
+                     derivatives need finite numbers",
+                    column[i],
+                    i + 1
+                )));
+            }
+        }
+        Ok(Self {
+            source: source.to_string(),
+            separator: Separator::Comma,
+            names: Some(names.iter().map(ToString::to_string).collect()),
+            header_line: None,
+            columns,
+            lines: (1..=rows).collect(),
+        })
+    }
+
     fn too_few_rows(&self) -> DataError {
         DataError::TooFewRows {
             file: self.source.clone(),

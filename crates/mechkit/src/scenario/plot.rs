@@ -342,6 +342,65 @@ impl PlotSpec {
     }
 }
 
+impl super::Scenario {
+    /// Parses a plot spec (`"v(x)"`, `"energy(t)"`, `"b.x(t)"`) against this scenario's
+    /// bodies, forces and coordinates, as `[output] plots` reads it: a front asks for a plot
+    /// the file does not list (a sweep's `--plot`, the Python package's `Run.plot`) and gets
+    /// it by running the scenario with `plots = vec![spec]`. `"energy-bars"` is no curve
+    /// plot: it is [`Summary::energy_bars`](super::Summary::energy_bars).
+    ///
+    /// A spec that is not a plot of this scenario is an [`ErrorKind::Invalid`] error that
+    /// names it, with a hint listing what a plot is written with (or the nearest name).
+    ///
+    /// ```
+    /// use mechkit::scenario::Scenario;
+    /// let s = Scenario::from_str("ball.toml", r#"
+    ///     [[body]]
+    ///     name = "ball"
+    ///     mass = "1 kg"
+    ///     [[force]]
+    ///     kind = "uniform-gravity"
+    ///     [integrator]
+    ///     method = "rk4"
+    ///     dt = "1 ms"
+    ///     [stop]
+    ///     t_max = "1 s"
+    /// "#).unwrap();
+    /// let p = s.plot_spec("v(x)").unwrap();
+    /// assert_eq!((p.x_label.as_str(), p.y_label.as_str()), ("x [m]", "v [m/s]"));
+    /// let e = s.plot_spec("w(t)").unwrap_err();
+    /// assert!(e.message.contains("`w` in the plot `w(t)`"));
+    /// ```
+    pub fn plot_spec(&self, spec: &str) -> Result<PlotSpec, ScenarioError> {
+        let bodies: Vec<String> = self
+            .system
+            .bodies()
+            .iter()
+            .map(|b| b.name.clone())
+            .collect();
+        let forces: Vec<String> = self
+            .system
+            .forces()
+            .iter()
+            .map(|f| f.name().to_string())
+            .collect();
+        let names = NameContext {
+            dim: self.dim,
+            bodies: &bodies,
+            forces: &forces,
+            constants: &self.constants,
+            bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
+            level: VarLevel::Derived,
+            coordinates: self.system.coordinates(),
+            units: self.units,
+            planar: &self.planar,
+        };
+        PlotSpec::parse(spec, &names).map_err(|(message, hint)| {
+            ScenarioError::new(ErrorKind::Invalid, message).with_hint(hint)
+        })
+    }
+}
+
 fn is_local(v: StateVar) -> bool {
     matches!(
         v,

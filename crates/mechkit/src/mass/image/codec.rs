@@ -69,17 +69,7 @@ impl Raster {
         }
         let decoded = reader().decode().map_err(decode_error)?;
         let (width, height) = (decoded.width() as usize, decoded.height() as usize);
-        let rgba = decoded.into_rgba8().into_raw();
-        let mut rgb = Vec::with_capacity(width * height * 3);
-        for px in rgba.chunks_exact(4) {
-            let alpha = u32::from(px[3]);
-            rgb.extend(
-                px[..3]
-                    .iter()
-                    .map(|&c| ((u32::from(c) * alpha + 255 * (255 - alpha) + 127) / 255) as u8),
-            );
-        }
-        Self::from_rgb8(width, height, rgb)
+        Self::from_rgba8(width, height, &decoded.into_rgba8().into_raw())
     }
 
     /// The image encoded as an 8-bit RGB PNG.

@@ -39,6 +39,47 @@ impl Raster {
         Ok(Self { width, height, rgb })
     }
 
+    /// From `4 · width · height` bytes `R, G, B, A, …`, row by row from the top, each pixel
+    /// composed on white by its alpha (`c·a + 255·(1 − a)`, rounded): a transparent pixel is
+    /// background, as on the sheet a body is photographed on. Fails as [`Raster::from_rgb8`].
+    ///
+    /// ```
+    /// use mechkit::mass::image::Raster;
+    /// // black opaque, black half transparent, black fully transparent
+    /// let r = Raster::from_rgba8(3, 1, &[0, 0, 0, 255, 0, 0, 0, 128, 0, 0, 0, 0]).unwrap();
+    /// assert_eq!([r.rgb8(0, 0), r.rgb8(1, 0), r.rgb8(2, 0)], [[0; 3], [127; 3], [255; 3]]);
+    /// ```
+    pub fn from_rgba8(width: usize, height: usize, rgba: &[u8]) -> Result<Self, ImageError> {
+        let pixels = width.checked_mul(height);
+        if width > 0 && height > 0 && pixels.and_then(|n| n.checked_mul(4)) != Some(rgba.len()) {
+            return Err(ImageError::Invalid(format!(
+                "{} bytes do not make a {width} × {height} RGBA image (4 bytes per pixel)",
+                rgba.len()
+            )));
+        }
+        let mut rgb = Vec::with_capacity(pixels.unwrap_or(0).saturating_mul(3));
+        for px in rgba.chunks_exact(4) {
+            let alpha = u32::from(px[3]);
+            rgb.extend(
+                px[..3]
+                    .iter()
+                    .map(|&c| ((u32::from(c) * alpha + 255 * (255 - alpha) + 127) / 255) as u8),
+            );
+        }
+        Self::from_rgb8(width, height, rgb)
+    }
+
+    /// The 8-bit level nearest a channel value on the 0–1 scale (values outside 0–1 are
+    /// clamped, NaN is 0): how [`Raster::from_fn`] stores a colour.
+    ///
+    /// ```
+    /// use mechkit::mass::image::Raster;
+    /// assert_eq!([Raster::level(0.5), Raster::level(1.2), Raster::level(f64::NAN)], [128, 255, 0]);
+    /// ```
+    pub fn level(value: Real) -> u8 {
+        to_byte(value)
+    }
+
     /// From a function of the pixel `(column, row)` giving `[r, g, b]` on the 0–1 scale, each
     /// rounded to the nearest 8-bit level (values outside 0–1 are clamped).
     ///
@@ -133,6 +174,10 @@ mod tests {
             .to_string();
         assert!(e.contains("11 bytes"), "{e}");
         assert!(Raster::from_rgb8(0, 2, Vec::new()).is_err());
+        assert!(Raster::from_rgba8(2, 2, &[0; 16]).is_ok());
+        let e = Raster::from_rgba8(2, 2, &[0; 12]).unwrap_err().to_string();
+        assert!(e.contains("12 bytes") && e.contains("RGBA"), "{e}");
+        assert!(Raster::from_rgba8(0, 2, &[]).is_err());
     }
 
     #[test]

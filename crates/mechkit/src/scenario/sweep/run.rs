@@ -8,7 +8,6 @@ use mechkit_expr::Dim;
 use super::{Parameter, Shard, SweepError, SweepGrid, SweepTable};
 use crate::Real;
 use crate::figure::PlotData;
-use crate::particles::{BodyRef, NameContext, VarLevel};
 use crate::scenario::build::build_with;
 use crate::scenario::observe::unit_text;
 use crate::scenario::{PlotSpec, Scenario};
@@ -27,8 +26,10 @@ pub struct SweepOptions {
     pub cancel: Cancel,
 }
 
-/// One run's summary.
+/// One run's summary (a row of `sweep.csv`; serialized with its fields' names, the recorded
+/// plot left out).
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SweepRow {
     /// The run index in the whole sweep.
     pub index: usize,
@@ -51,6 +52,7 @@ pub struct SweepRow {
     /// The work-energy residual `W_net − ΔK` (J).
     pub work_energy_residual: Real,
     /// The recorded plot, when asked for.
+    #[cfg_attr(feature = "serde", serde(skip))]
     pub plot: Option<PlotData>,
 }
 
@@ -159,27 +161,14 @@ fn unit(s: &Scenario, p: &Parameter) -> String {
     p.dim.or(file).map(unit_text).unwrap_or_default()
 }
 
-/// Parses a plot spec against a scenario's names.
+/// Parses a plot spec against a scenario's names ([`Scenario::plot_spec`]), its error as
+/// `--plot`'s.
 fn plot_spec(s: &Scenario, spec: &str) -> Result<PlotSpec, SweepError> {
-    let bodies: Vec<String> = s.system.bodies().iter().map(|b| b.name.clone()).collect();
-    let forces: Vec<String> = s
-        .system
-        .forces()
-        .iter()
-        .map(|f| f.name().to_string())
-        .collect();
-    let names = NameContext {
-        dim: s.dim,
-        bodies: &bodies,
-        forces: &forces,
-        constants: &s.constants,
-        bare: (bodies.len() == 1).then_some(BodyRef::Index(0)),
-        level: VarLevel::Derived,
-        coordinates: s.system.coordinates(),
-        units: s.units,
-        planar: &s.planar,
-    };
-    PlotSpec::parse(spec, &names).map_err(|(message, hint)| {
-        SweepError::Options(format!("--plot: {message}\n  = hint: {hint}"))
+    s.plot_spec(spec).map_err(|e| {
+        SweepError::Options(format!(
+            "--plot: {}\n  = hint: {}",
+            e.message,
+            e.hint.unwrap_or_default()
+        ))
     })
 }
