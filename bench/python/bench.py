@@ -35,11 +35,14 @@ dimensions = 2
 [constants]
 GM = "1 m^3/s^2"
 e = 0.5
+A = "1 m"
+rp = "(1 - e)*A"
+vp = "sqrt(GM*(1 + e)/rp)"
 [[body]]
 name = "p"
 mass = "1 kg"
-position = ["1 m - e*1 m", "0 m"]
-velocity = ["0 m/s", "sqrt((1 + e)/(1 - e))*1 m/s"]
+position = ["rp", "0 m"]
+velocity = ["0 m/s", "vp"]
 [[force]]
 kind = "newtonian-gravity"
 GM = "GM"
