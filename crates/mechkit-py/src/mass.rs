@@ -4,7 +4,7 @@
 //! of a body file about a point and an axis (`BodySummary::inertia`). Each result is the
 //! command's `--json` as a dict.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use mechkit::mass::image::FileFormat;
 use mechkit::mass::{BodySummary, MassError, MassInput, PointMassInput, PointMasses, Vec3};
@@ -96,7 +96,7 @@ pub fn com<'py>(
         return com_image(py, &ImageSource::Array(body), &image);
     }
     if let Ok(path) = body.extract::<PathBuf>() {
-        if is_image(&path) {
+        if FileFormat::names_an_image(&path) {
             other.reject_for_image()?;
             return com_image(py, &ImageSource::File(path), &image);
         }
@@ -140,25 +140,6 @@ impl Other<'_, '_> {
 fn is_array(obj: &Bound<'_, PyAny>) -> PyResult<bool> {
     let ndarray = obj.py().import("numpy")?.getattr("ndarray")?;
     obj.is_instance(&ndarray)
-}
-
-/// Whether a path names an image, as the command decides: by its extension (PNG and JPEG are
-/// read, the others get an error that names their format), or by the first bytes of a PNG or
-/// JPEG file.
-fn is_image(path: &Path) -> bool {
-    let by_name = path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
-        matches!(
-            e.to_ascii_lowercase().as_str(),
-            "png" | "jpg" | "jpeg" | "gif" | "bmp" | "tif" | "tiff" | "webp" | "heic" | "avif"
-        )
-    });
-    by_name || {
-        use std::io::Read as _;
-        let mut head = [0u8; 16];
-        std::fs::File::open(path)
-            .and_then(|mut f| f.read(&mut head))
-            .is_ok_and(|n| FileFormat::sniff(&head[..n]).is_readable())
-    }
 }
 
 /// `com([(m, r), ...], velocities=[...])`.

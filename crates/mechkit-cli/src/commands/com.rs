@@ -29,25 +29,6 @@ fn fmt(v: &[f64]) -> String {
     }
 }
 
-/// Whether a path names an image: by its extension (only PNG and JPEG are read, the others
-/// get an error that names their format), or, whatever its name, by the first bytes of a PNG
-/// or JPEG file.
-fn is_image(path: &std::path::Path) -> bool {
-    let by_name = path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
-        matches!(
-            e.to_ascii_lowercase().as_str(),
-            "png" | "jpg" | "jpeg" | "gif" | "bmp" | "tif" | "tiff" | "webp" | "heic" | "avif"
-        )
-    });
-    by_name || {
-        use std::io::Read as _;
-        let mut head = [0u8; 16];
-        std::fs::File::open(path)
-            .and_then(|mut f| f.read(&mut head))
-            .is_ok_and(|n| FileFormat::sniff(&head[..n]).is_readable())
-    }
-}
-
 /// `mechkit com BODYFILE`: mass and centre of mass of the body and of each part.
 fn body_file(args: &ComArgs, file: &std::path::Path) -> Result<Outcome> {
     for (flag, given) in [
@@ -148,7 +129,7 @@ fn reject_body_flags(args: &ComArgs) -> Result<()> {
 
 pub fn com(args: &ComArgs) -> Result<Outcome> {
     if let Some(file) = &args.file {
-        if is_image(file) {
+        if FileFormat::names_an_image(file) {
             return super::com_image::com_image(args);
         }
         return body_file(args, file);

@@ -1,6 +1,8 @@
 //! `FileFormat`: what a file is, from its first bytes, so an unreadable file can be named.
 
 use std::fmt;
+use std::io::Read as _;
+use std::path::Path;
 
 /// The kind of a file as its first bytes ("magic numbers") tell it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -94,6 +96,31 @@ impl FileFormat {
     /// Whether mechkit decodes it (PNG and JPEG).
     pub fn is_readable(self) -> bool {
         matches!(self, FileFormat::Png | FileFormat::Jpeg)
+    }
+
+    /// Whether the file at `path` is meant as an image (what `com` takes as a photo rather
+    /// than a body file): by its extension, of any image format (PNG and JPEG are read, the
+    /// others get an error that names their format), or, whatever its name, by the first
+    /// bytes of a PNG or JPEG file. An unreadable file is not an image.
+    ///
+    /// ```
+    /// use mechkit::mass::image::FileFormat;
+    /// assert!(FileFormat::names_an_image(std::path::Path::new("photo.HEIC")));
+    /// assert!(!FileFormat::names_an_image(std::path::Path::new("no/such/body.toml")));
+    /// ```
+    pub fn names_an_image(path: &Path) -> bool {
+        let by_name = path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
+            matches!(
+                e.to_ascii_lowercase().as_str(),
+                "png" | "jpg" | "jpeg" | "gif" | "bmp" | "tif" | "tiff" | "webp" | "heic" | "avif"
+            )
+        });
+        by_name || {
+            let mut head = [0u8; 16];
+            std::fs::File::open(path)
+                .and_then(|mut f| f.read(&mut head))
+                .is_ok_and(|n| Self::sniff(&head[..n]).is_readable())
+        }
     }
 }
 
