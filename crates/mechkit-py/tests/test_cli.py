@@ -2,9 +2,11 @@
 statuses (0, 2) and its outputs."""
 
 import json
+import os
+import subprocess
 
 import mechkit
-from conftest import EXAMPLES, mechkit as mechkit_cli
+from conftest import EXAMPLES, MECHKIT, mechkit as mechkit_cli
 
 
 def test_version():
@@ -39,3 +41,20 @@ def test_gallery_scripts_run_the_console_script(tmp_path):
     [case] = json.loads(out.stdout)
     assert case["error"] is None, case
     assert case["checks"] and all(c["pass"] for c in case["checks"]), case
+
+
+def test_gallery_scripts_find_a_console_script_started_by_a_relative_path():
+    # `target/py-venv/bin/mechkit gallery` (CI's way): the case's script runs in another
+    # folder, where that relative path names nothing
+    venv = MECHKIT.parent.parent
+    out = subprocess.run(
+        [os.path.join("bin", MECHKIT.name), "gallery", "c05-B27", "--json"],
+        cwd=venv,
+        capture_output=True,
+        text=True,
+        timeout=300,
+        env={k: v for k, v in os.environ.items() if k != "MECHKIT_EXE"},
+    )
+    assert out.returncode == 0, out.stderr
+    [case] = json.loads(out.stdout)
+    assert case["error"] is None, case

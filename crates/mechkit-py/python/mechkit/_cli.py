@@ -15,7 +15,8 @@ def main() -> None:
     # note the signal until the command returned.
     signal.signal(signal.SIGINT, signal.SIG_DFL)
     # commands that run `mechkit` again (the gallery's scripts) start this script, not the
-    # interpreter the command line runs in
-    script = shutil.which(sys.argv[0]) or os.path.abspath(sys.argv[0])
+    # interpreter the command line runs in; by its absolute path, as they may run in another
+    # folder than the one it was started from
+    script = os.path.abspath(shutil.which(sys.argv[0]) or sys.argv[0])
     os.environ.setdefault("MECHKIT_EXE", script)
     sys.exit(_native.cli(sys.argv[1:]))
