@@ -8,10 +8,10 @@ use std::path::PathBuf;
 
 use mechkit::csv::write_atomic;
 use mechkit::mass::image::{
-    Channel, Density, ImageError, ImageOptions, PixelBody, Raster, Selection, marked_png,
+    Channel, ImageError, ImageOptions, PixelBody, Raster, Selection, marked_png,
 };
-use mechkit::units::{Dimension, Quantity};
-use mechkit::values::split_top_level;
+use mechkit::units::Dimension;
+use mechkit::values::{self, split_top_level};
 use numpy::{PyArrayDescrMethods, PyReadonlyArrayDyn, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -19,6 +19,7 @@ use pyo3::types::{PyDict, PyString};
 
 use crate::arguments::{
     Scalar, error, from_json, items, json_error, quantity, scalar, shape_text, type_name,
+    value_error,
 };
 
 /// What an array is called in messages and in the result's `file`.
@@ -72,20 +73,13 @@ pub fn com_image<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let channel = Channel::parse(args.channel.as_deref().unwrap_or("sum"))
         .map_err(|e| error(format!("channel: {e}")))?;
-    let threshold = args.threshold.unwrap_or(channel.default_threshold());
-    if !threshold.is_finite() {
-        return Err(error(
-            "threshold must be a finite number, e.g. threshold=1.5",
-        ));
-    }
-    let selection = Selection::new(channel)
-        .threshold(threshold)
-        .inverted(args.invert)
-        .density(if args.density_from_darkness {
-            Density::Darkness
-        } else {
-            Density::Uniform
-        });
+    let selection = Selection::from_options(
+        channel,
+        args.threshold,
+        args.invert,
+        args.density_from_darkness,
+    )
+    .map_err(|e| error(format!("threshold: {e}, e.g. threshold=1.5")))?;
     let size = pixel_size(args)?;
     let total_mass = match args.total_mass {
         Some(m) => {
@@ -244,64 +238,30 @@ fn pixel_size(args: &ImageArgs<'_, '_>) -> PyResult<Option<f64>> {
 
 /// `scale="240 px = 12 cm"` (either way round) or `(240, "12 cm")` → metres per pixel.
 fn scale(obj: &Bound<'_, PyAny>) -> PyResult<f64> {
-    let (px, length) = if obj.is_instance_of::<PyString>() {
+    if obj.is_instance_of::<PyString>() {
         let text: String = obj.extract()?;
-        let usage = || {
-            error(format!(
-                "scale takes a known length in pixels and in units, e.g. scale=\"240 px = 12 cm\" or (240, \"12 cm\"), not `{text}`"
-            ))
-        };
-        let (a, b) = text.split_once('=').ok_or_else(usage)?;
-        let is_pixels = |s: &str| s.trim().ends_with("px") || s.trim().ends_with("pixels");
-        let (px, length) = match (is_pixels(a), is_pixels(b)) {
-            (true, false) => (a, b),
-            (false, true) => (b, a),
-            _ => return Err(usage()),
-        };
-        (
-            pixels(&Scalar::Text(px.to_string()), "scale")?,
-            quantity(
-                PyString::new(obj.py(), length).as_any(),
-                "scale",
-                Dimension::LENGTH,
-            )?,
-        )
-    } else {
-        let Some([px, length]) = items(obj).and_then(|p| <[_; 2]>::try_from(p).ok()) else {
-            return Err(PyTypeError::new_err(format!(
-                "scale is a {}: give (pixels, length), e.g. (240, \"12 cm\"), or \"240 px = 12 cm\"",
-                type_name(obj)
-            )));
-        };
-        (
-            pixels(&scalar(&px, "scale")?, "scale")?,
-            quantity(&length, "scale", Dimension::LENGTH)?,
-        )
-    };
-    if px <= 0.0 {
-        return Err(error("scale: the number of pixels must be positive"));
+        return values::pixel_scale(&text, "scale").map_err(value_error);
     }
-    Ok(length / px)
+    let Some([px, length]) = items(obj).and_then(|p| <[_; 2]>::try_from(p).ok()) else {
+        return Err(PyTypeError::new_err(format!(
+            "scale is a {}: give (pixels, length), e.g. (240, \"12 cm\"), or \"240 px = 12 cm\"",
+            type_name(obj)
+        )));
+    };
+    values::pixels_to_length(
+        pixels(&scalar(&px, "scale")?, "scale")?,
+        quantity(&length, "scale", Dimension::LENGTH)?,
+        "scale",
+    )
+    .map_err(value_error)
 }
 
 /// A number of pixels: a number, `"240"`, `"240 px"`, `"240 pixels"`.
 fn pixels(value: &Scalar, name: &str) -> PyResult<f64> {
-    let text = match value {
-        Scalar::Number(x) if x.is_finite() => return Ok(*x),
-        Scalar::Number(x) => x.to_string(),
-        Scalar::Text(t) => t.clone(),
-    };
-    let t = text.trim();
-    let number = ["pixels", "pixel", "px"]
-        .iter()
-        .find_map(|u| t.strip_suffix(u))
-        .unwrap_or(t)
-        .trim();
-    match number.parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        _ => Err(error(format!(
-            "{name}: `{text}` is not a number of pixels (write e.g. 240 or \"240 px\")"
-        ))),
+    match value {
+        Scalar::Number(x) if x.is_finite() => Ok(*x),
+        Scalar::Number(x) => values::pixels(&x.to_string(), name).map_err(value_error),
+        Scalar::Text(t) => values::pixels(t, name).map_err(value_error),
     }
 }
 
@@ -331,17 +291,14 @@ fn pair(obj: &Bound<'_, PyAny>, name: &str, example: &str) -> PyResult<[Scalar; 
 /// A coordinate of `about`: a length with a scale, pixels without one.
 fn coordinate(value: &Scalar, scaled: bool) -> PyResult<f64> {
     match value {
-        Scalar::Text(text) if scaled => mechkit::values::quantity(text, "about", Dimension::LENGTH)
-            .map_err(crate::arguments::value_error),
-        Scalar::Text(text) if Quantity::parse(text).is_ok_and(|q| !q.dim.is_none()) => {
-            Err(error(format!(
-                "about `{text}` is a length, but the image has no scale: give pixel_size or scale, or the point in pixels"
-            )))
+        Scalar::Text(text) => {
+            values::image_coordinate(text, "about", scaled, "pixel_size or scale")
+                .map_err(value_error)
         }
         Scalar::Number(x) if scaled && !x.is_finite() => {
             Err(error(format!("about: {x} is not a finite number")))
         }
         Scalar::Number(x) if scaled => Ok(*x),
-        _ => pixels(value, "about"),
+        Scalar::Number(_) => pixels(value, "about"),
     }
 }

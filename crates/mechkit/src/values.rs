@@ -250,6 +250,110 @@ fn split_interval(text: &str) -> Option<(&str, &str)> {
     None
 }
 
+/// A number of pixels: `"240"`, `"240 px"`, `"240 pixels"`.
+///
+/// ```
+/// assert_eq!(mechkit::values::pixels("240 px", "--origin").unwrap(), 240.0);
+/// assert!(mechkit::values::pixels("2 m", "--origin").is_err());
+/// ```
+///
+/// # Errors
+/// Text that is not a finite number, with or without the unit.
+pub fn pixels(text: &str, what: &str) -> Result<Real, ValueError> {
+    let t = text.trim();
+    let number = ["pixels", "pixel", "px"]
+        .iter()
+        .find_map(|u| t.strip_suffix(u))
+        .unwrap_or(t)
+        .trim();
+    match number.parse::<Real>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        _ => Err(fail(
+            what,
+            format!("{what}: `{text}` is not a number of pixels (write e.g. 240 or \"240 px\")"),
+        )),
+    }
+}
+
+/// The side of a pixel (m) from a known length measured in pixels and in units: `"240 px =
+/// 12 cm"`, either way round; or from the two parts, `pixels` and `length`, given apart.
+///
+/// ```
+/// let s = mechkit::values::pixel_scale("12 cm = 240 px", "--scale").unwrap();
+/// assert!((s - 0.0005).abs() < 1e-15);
+/// ```
+///
+/// # Errors
+/// Text without one side in pixels and the other in units, or a count of pixels that is not
+/// positive.
+pub fn pixel_scale(text: &str, what: &str) -> Result<Real, ValueError> {
+    let usage = || {
+        fail(
+            what,
+            format!(
+                "{what} takes a known length in pixels and in units, e.g. \"240 px = 12 cm\", \
+                 not `{text}`"
+            ),
+        )
+    };
+    let (a, b) = text.split_once('=').ok_or_else(usage)?;
+    let is_pixels = |s: &str| s.trim().ends_with("px") || s.trim().ends_with("pixels");
+    match (is_pixels(a), is_pixels(b)) {
+        (true, false) => pixels_to_length(
+            pixels(a, what)?,
+            quantity(b, what, Dimension::LENGTH)?,
+            what,
+        ),
+        (false, true) => pixels_to_length(
+            pixels(b, what)?,
+            quantity(a, what, Dimension::LENGTH)?,
+            what,
+        ),
+        _ => Err(usage()),
+    }
+}
+
+/// The side of a pixel when `px` pixels measure `length` metres.
+///
+/// # Errors
+/// A count of pixels that is not positive.
+pub fn pixels_to_length(px: Real, length: Real, what: &str) -> Result<Real, ValueError> {
+    if px > 0.0 {
+        Ok(length / px)
+    } else {
+        Err(fail(
+            what,
+            format!("{what}: the number of pixels must be positive, not {px}"),
+        ))
+    }
+}
+
+/// A coordinate in an image: a length when the image has a scale (`scaled`), else a number
+/// of pixels; `scale_inputs` names the inputs that give a scale, for the error.
+///
+/// # Errors
+/// Not a length (with a scale), a length without a scale, or not a number of pixels.
+pub fn image_coordinate(
+    text: &str,
+    what: &str,
+    scaled: bool,
+    scale_inputs: &str,
+) -> Result<Real, ValueError> {
+    if scaled {
+        return quantity(text, what, Dimension::LENGTH);
+    }
+    if Quantity::parse(text).is_ok_and(|q| !q.dim.is_none()) {
+        return Err(fail(
+            what,
+            format!(
+                "{what} `{text}` is a length, but the image has no scale: give {scale_inputs}, \
+                 or the point in pixels"
+            ),
+        ));
+    }
+    pixels(text, what)
+}
+
 /// Splits a list at `sep` outside parentheses and brackets (`"atan2(y, x), 0"` has two
 /// items), each trimmed.
 pub fn split_top_level(text: &str, sep: char) -> Vec<&str> {

@@ -5,10 +5,9 @@ use std::fmt::Write as _;
 
 use anyhow::{Context, Result, anyhow, bail};
 use mechkit::csv::write_atomic;
-use mechkit::expr::units::{Dimension, Quantity};
+use mechkit::expr::units::Dimension;
 use mechkit::mass::image::{
-    Channel, Density, ImageError, ImageOptions, ImageReport, PixelBody, Raster, Selection,
-    marked_png,
+    Channel, ImageError, ImageOptions, ImageReport, PixelBody, Raster, Selection, marked_png,
 };
 
 use super::input::{quantity, show, split_top_level};
@@ -17,16 +16,7 @@ use crate::args::ComArgs;
 
 /// A number of pixels: `"240"`, `"240 px"`, `"240 pixels"`.
 fn pixels(text: &str, flag: &str) -> Result<f64> {
-    let t = text.trim();
-    let number = ["pixels", "pixel", "px"]
-        .iter()
-        .find_map(|u| t.strip_suffix(u))
-        .unwrap_or(t)
-        .trim();
-    match number.parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        _ => bail!("{flag}: `{text}` is not a number of pixels (write e.g. 240 or \"240 px\")"),
-    }
+    mechkit::values::pixels(text, flag).map_err(|e| anyhow!(e))
 }
 
 /// `"x, y"` split in two, or an error that shows what to write.
@@ -45,7 +35,7 @@ fn pixel_size(args: &ComArgs) -> Result<Option<f64>> {
         (Some(_), Some(_)) => bail!("give either --pixel-size or --scale, not both"),
         (None, None) => return Ok(None),
         (Some(s), None) => quantity(s, "--pixel-size", Dimension::LENGTH)?,
-        (None, Some(s)) => scale(s)?,
+        (None, Some(s)) => mechkit::values::pixel_scale(s, "--scale")?,
     };
     if !(size.is_finite() && size > 0.0) {
         bail!("the pixel size must be a positive length, e.g. --pixel-size \"0.5 mm\"");
@@ -53,41 +43,10 @@ fn pixel_size(args: &ComArgs) -> Result<Option<f64>> {
     Ok(Some(size))
 }
 
-/// `"240 px = 12 cm"` (either way round) → metres per pixel.
-fn scale(text: &str) -> Result<f64> {
-    let usage = || {
-        anyhow!(
-            "--scale takes a known length in pixels and in units, e.g. --scale \"240 px = 12 cm\", not `{text}`"
-        )
-    };
-    let (a, b) = text.split_once('=').ok_or_else(usage)?;
-    let is_pixels = |s: &str| s.trim().ends_with("px") || s.trim().ends_with("pixels");
-    let (px, length) = match (is_pixels(a), is_pixels(b)) {
-        (true, false) => (a, b),
-        (false, true) => (b, a),
-        _ => return Err(usage()),
-    };
-    let (px, length) = (
-        pixels(px, "--scale")?,
-        quantity(length, "--scale", Dimension::LENGTH)?,
-    );
-    if px <= 0.0 {
-        bail!("--scale `{text}`: the number of pixels must be positive");
-    }
-    Ok(length / px)
-}
-
 /// A physical coordinate of `--about`: a length with a scale, pixels without one.
 fn coordinate(text: &str, scaled: bool) -> Result<f64> {
-    if scaled {
-        return quantity(text, "--about", Dimension::LENGTH);
-    }
-    if Quantity::parse(text).is_ok_and(|q| !q.dim.is_none()) {
-        bail!(
-            "--about `{text}` is a length, but the image has no scale: give --pixel-size or --scale, or the point in pixels"
-        );
-    }
-    pixels(text, "--about")
+    mechkit::values::image_coordinate(text, "--about", scaled, "--pixel-size or --scale")
+        .map_err(|e| anyhow!(e))
 }
 
 /// The image's error, with the flags that change a selection that marks nothing or all.
@@ -122,18 +81,13 @@ pub fn com_image(args: &ComArgs) -> Result<Outcome> {
         .ok_or_else(|| anyhow!("give the image file"))?;
     reject_point_mass_flags(args)?;
     let channel = Channel::parse(&args.channel).map_err(|e| anyhow!("--channel: {e}"))?;
-    let threshold = args.threshold.unwrap_or(channel.default_threshold());
-    if !threshold.is_finite() {
-        bail!("--threshold must be a finite number, e.g. --threshold 1.5");
-    }
-    let selection = Selection::new(channel)
-        .threshold(threshold)
-        .inverted(args.invert)
-        .density(if args.density_from_darkness {
-            Density::Darkness
-        } else {
-            Density::Uniform
-        });
+    let selection = Selection::from_options(
+        channel,
+        args.threshold,
+        args.invert,
+        args.density_from_darkness,
+    )
+    .map_err(|e| anyhow!("--threshold: {e}, e.g. --threshold 1.5"))?;
     let size = pixel_size(args)?;
     let total_mass = match &args.total_mass {
         Some(m) => {

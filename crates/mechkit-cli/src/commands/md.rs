@@ -9,19 +9,19 @@ use std::path::Path;
 use anyhow::{Context, Result, anyhow};
 use indicatif::{ProgressBar, ProgressStyle};
 use mechkit::csv::{self, header_line, push_row, units_file_name, write_atomic};
-use mechkit::md::{Md, MdConfig, MdObserver, MdReport, MdStop, PairPotential, RunPlan, Thermo};
+use mechkit::md::{
+    Md, MdConfig, MdObserver, MdOptions, MdReport, MdStop, PairPotential, Potential, RDF_BINS,
+    RunPlan, Setup, Thermo, WithPotential,
+};
 use mechkit::scenario::{DEFAULT_MAX_OUTPUT, StreamFile, output_limit_message, parse_size};
 use mechkit::simulate::Cancel;
 
 use super::Outcome;
-use super::md_setup::{Potential, Setup, setup, with_flag};
+use super::md_setup::{options, with_flag};
 use crate::args::MdArgs;
 
 const LIMIT_HINT: &str =
     "raise the limit with --max-output 10GB, or write fewer frames with a larger --xyz-every";
-
-/// Bins of `rdf.csv`.
-const RDF_BINS: usize = 100;
 
 /// The files written during the run: `thermo.csv` (with its units sidecar) and, with
 /// `--xyz-every`, `trajectory.xyz`, streamed (see [`StreamFile`]).
@@ -131,31 +131,48 @@ fn progress(args: &MdArgs) -> ProgressBar {
 
 /// Runs `mechkit md`; `cancel` (Ctrl-C) ends it after the current step.
 pub fn md(args: &MdArgs, cancel: &Cancel) -> Result<Outcome> {
-    let plan = RunPlan::new(args.steps, args.thermo_every, args.xyz_every).map_err(with_flag)?;
-    let (s, potential) = setup(args)?;
-    match potential {
-        Potential::Lj(p) => run(args, &plan, s, p, cancel),
-        Potential::Soft(p) => run(args, &plan, s, p, cancel),
-        Potential::Spring(p) => run(args, &plan, s, p, cancel),
+    let options = options(args)?;
+    let plan = options.plan().map_err(with_flag)?;
+    let potential = Potential::from_options(&options).map_err(with_flag)?;
+    let setup = Setup::from_options(&options, potential.cutoff()).map_err(with_flag)?;
+    potential.apply(Runner {
+        args,
+        options: &options,
+        plan: &plan,
+        setup,
+        cancel,
+    })
+}
+
+/// The run, for whichever potential.
+struct Runner<'a> {
+    args: &'a MdArgs,
+    options: &'a MdOptions,
+    plan: &'a RunPlan,
+    setup: Setup,
+    cancel: &'a Cancel,
+}
+
+impl WithPotential for Runner<'_> {
+    type Output = Result<Outcome>;
+
+    fn call<P: PairPotential>(self, potential: P) -> Result<Outcome> {
+        run(self, potential)
     }
 }
 
-fn run<P: PairPotential>(
-    args: &MdArgs,
-    plan: &RunPlan,
-    s: Setup,
-    potential: P,
-    cancel: &Cancel,
-) -> Result<Outcome> {
-    let config = MdConfig {
-        dt: args.dt,
-        skin: args.skin,
-        mass: args.mass,
-        threads: args.threads,
-    };
+fn run<P: PairPotential>(r: Runner<'_>, potential: P) -> Result<Outcome> {
+    let Runner {
+        args,
+        options,
+        plan,
+        setup: s,
+        cancel,
+    } = r;
     let cutoff = potential.cutoff();
     let dim = s.sim_box.dim();
-    let mut md = Md::new(s.sim_box, potential, s.x, s.v, config).map_err(with_flag)?;
+    let mut md =
+        Md::new(s.sim_box, potential, s.x, s.v, MdConfig::from(options)).map_err(with_flag)?;
     let limit = match &args.max_output {
         Some(size) => parse_size(size).map_err(|e| anyhow!("--max-output: {e}"))?,
         None => DEFAULT_MAX_OUTPUT,
@@ -178,7 +195,7 @@ fn run<P: PairPotential>(
         .map(|path| output_limit_message(path, limit, &format!("step {}", md.steps()), LIMIT_HINT));
     if let (Some(f), Some(dir)) = (observer.files, &args.out) {
         f.finish()?;
-        md.rdf_table(RDF_BINS, cutoff + args.skin)
+        md.rdf_table(RDF_BINS, cutoff + options.skin)
             .write(dir, "rdf")
             .with_context(|| format!("cannot write {}", dir.join("rdf.csv").display()))?;
     }

@@ -2,9 +2,9 @@
 //! same names (`--rest-length` is `rest_length`), their defaults the command's; and the
 //! positions or velocities, a file as the command reads it or an `(N, d)` array.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-use mechkit::md::{AtomsFile, MdError};
+use mechkit::md::{Atoms, AtomsFile, MdOptions};
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -40,141 +40,72 @@ pub const NAMES: [&str; 23] = [
     "xyz_every",
 ];
 
-/// Positions or velocities and where they came from.
-pub struct Atoms {
-    /// The vectors and their dimension.
-    pub atoms: AtomsFile,
-    /// The file's path as given, or None for an array.
-    pub path: Option<PathBuf>,
-}
-
-/// What `mechkit md` is given, as its flags give it; `None` where a flag has no default.
-pub struct MdOptions {
-    pub lattice: String,
-    pub cells: usize,
-    pub density: f64,
-    pub temperature: Option<f64>,
-    pub positions: Option<Atoms>,
-    pub velocities: Option<Atoms>,
-    pub box_lengths: Option<Vec<f64>>,
-    pub boundary: Option<String>,
-    pub potential: String,
-    pub epsilon: f64,
-    pub sigma: f64,
-    pub k: f64,
-    pub rest_length: f64,
-    pub mass: f64,
-    pub seed: u64,
-    pub steps: usize,
-    pub dt: f64,
-    pub cutoff: f64,
-    pub shift: bool,
-    pub skin: f64,
-    pub threads: usize,
-    pub thermo_every: usize,
-    pub xyz_every: Option<usize>,
-}
-
-impl Default for MdOptions {
-    /// `mechkit md`'s defaults: the Lennard-Jones melt (fcc, 20 cells, ρ = 0.8442, T = 1.44,
-    /// dt = 0.005, 100 steps).
-    fn default() -> Self {
-        Self {
-            lattice: "fcc".into(),
-            cells: 20,
-            density: 0.8442,
-            temperature: None,
-            positions: None,
-            velocities: None,
-            box_lengths: None,
-            boundary: None,
-            potential: "lj".into(),
-            epsilon: 1.0,
-            sigma: 1.0,
-            k: 1.0,
-            rest_length: 1.0,
-            mass: 1.0,
-            seed: 87287,
-            steps: 100,
-            dt: 0.005,
-            cutoff: 2.5,
-            shift: false,
-            skin: 0.3,
-            threads: 1,
-            thermo_every: 50,
-            xyz_every: None,
+/// The options from `mechkit.md`'s keyword arguments (None stands for a flag left out);
+/// the rules between flags are the command's: `velocities` and `temperature` exclude
+/// each other, `velocities`, `box` and `boundary` go with `positions`.
+pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<MdOptions> {
+    let mut o = MdOptions::default();
+    let Some(kwargs) = kwargs else {
+        return Ok(o);
+    };
+    for (key, value) in kwargs.iter() {
+        let key: String = key.extract()?;
+        if !value.is_none() {
+            set(&mut o, &key, &value)?;
+        } else if !NAMES.contains(&key.as_str()) {
+            return Err(unknown(&key));
         }
     }
-}
-
-impl MdOptions {
-    /// The options from `mechkit.md`'s keyword arguments (None stands for a flag left out);
-    /// the rules between flags are the command's: `velocities` and `temperature` exclude
-    /// each other, `velocities`, `box` and `boundary` go with `positions`.
-    pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
-        let mut o = Self::default();
-        let Some(kwargs) = kwargs else {
-            return Ok(o);
+    for key in ["velocities", "box", "boundary"] {
+        let given = match key {
+            "velocities" => o.velocities.is_some(),
+            "box" => !o.box_lengths.is_empty(),
+            _ => o.boundary.is_some(),
         };
-        for (key, value) in kwargs.iter() {
-            let key: String = key.extract()?;
-            if !value.is_none() {
-                o.set(&key, &value)?;
-            } else if !NAMES.contains(&key.as_str()) {
-                return Err(unknown(&key));
-            }
-        }
-        for key in ["velocities", "box", "boundary"] {
-            let given = match key {
-                "velocities" => o.velocities.is_some(),
-                "box" => o.box_lengths.is_some(),
-                _ => o.boundary.is_some(),
-            };
-            if given && o.positions.is_none() {
-                return Err(MechkitError::new_err(format!(
-                    "{key} goes with positions: a lattice's box and velocities follow from \
+        if given && o.positions.is_none() {
+            return Err(MechkitError::new_err(format!(
+                "{key} goes with positions: a lattice's box and velocities follow from \
                      cells, density and temperature"
-                )));
-            }
+            )));
         }
-        if o.temperature.is_some() && o.velocities.is_some() {
-            return Err(MechkitError::new_err(
-                "temperature and velocities cannot both be given: the velocities are drawn \
+    }
+    if o.temperature.is_some() && o.velocities.is_some() {
+        return Err(MechkitError::new_err(
+            "temperature and velocities cannot both be given: the velocities are drawn \
                  at the temperature, or given",
-            ));
-        }
-        Ok(o)
+        ));
     }
+    Ok(o)
+}
 
-    fn set(&mut self, key: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
-        match key {
-            "lattice" => self.lattice = text(key, value)?,
-            "cells" => self.cells = count(key, value)?,
-            "density" => self.density = number(key, value)?,
-            "temperature" => self.temperature = Some(number(key, value)?),
-            "positions" => self.positions = Some(atoms(key, value)?),
-            "velocities" => self.velocities = Some(atoms(key, value)?),
-            "box" => self.box_lengths = Some(lengths(value)?),
-            "boundary" => self.boundary = Some(text(key, value)?),
-            "potential" => self.potential = text(key, value)?,
-            "epsilon" => self.epsilon = number(key, value)?,
-            "sigma" => self.sigma = number(key, value)?,
-            "k" => self.k = number(key, value)?,
-            "rest_length" => self.rest_length = number(key, value)?,
-            "mass" => self.mass = number(key, value)?,
-            "seed" => self.seed = whole(key, value)?,
-            "steps" => self.steps = count(key, value)?,
-            "dt" => self.dt = number(key, value)?,
-            "cutoff" => self.cutoff = number(key, value)?,
-            "shift" => self.shift = flag(key, value)?,
-            "skin" => self.skin = number(key, value)?,
-            "threads" => self.threads = count(key, value)?,
-            "thermo_every" => self.thermo_every = count(key, value)?,
-            "xyz_every" => self.xyz_every = Some(count(key, value)?),
-            other => return Err(unknown(other)),
-        }
-        Ok(())
+fn set(o: &mut MdOptions, key: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
+    match key {
+        "lattice" => o.lattice = text(key, value)?,
+        "cells" => o.cells = count(key, value)?,
+        "density" => o.density = number(key, value)?,
+        "temperature" => o.temperature = Some(number(key, value)?),
+        "positions" => o.positions = Some(atoms(key, value)?),
+        "velocities" => o.velocities = Some(atoms(key, value)?),
+        "box" => o.box_lengths = lengths(value)?,
+        "boundary" => o.boundary = Some(text(key, value)?),
+        "potential" => o.potential = text(key, value)?,
+        "epsilon" => o.epsilon = number(key, value)?,
+        "sigma" => o.sigma = number(key, value)?,
+        "k" => o.k = number(key, value)?,
+        "rest_length" => o.rest_length = number(key, value)?,
+        "mass" => o.mass = number(key, value)?,
+        "seed" => o.seed = whole(key, value)?,
+        "steps" => o.steps = count(key, value)?,
+        "dt" => o.dt = number(key, value)?,
+        "cutoff" => o.cutoff = number(key, value)?,
+        "shift" => o.shift = flag(key, value)?,
+        "skin" => o.skin = number(key, value)?,
+        "threads" => o.threads = count(key, value)?,
+        "thermo_every" => o.thermo_every = count(key, value)?,
+        "xyz_every" => o.xyz_every = Some(count(key, value)?),
+        other => return Err(unknown(other)),
     }
+    Ok(())
 }
 
 /// A keyword `mechkit.md` does not take, with the nearest ones.
@@ -207,7 +138,7 @@ fn lengths(value: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
 fn atoms(key: &str, value: &Bound<'_, PyAny>) -> PyResult<Atoms> {
     if value.is_instance_of::<PyString>() || value.hasattr("__fspath__")? {
         let path: PathBuf = value.extract()?;
-        return read(key, path);
+        return read(key, &path);
     }
     let py = value.py();
     let array = py
@@ -250,20 +181,6 @@ fn not_vectors(key: &str, value: &Bound<'_, PyAny>) -> PyErr {
 }
 
 /// Reads a positions or velocities file as `mechkit md` does, its errors named as there.
-fn read(key: &str, path: PathBuf) -> PyResult<Atoms> {
-    let text = std::fs::read_to_string(&path).map_err(|e| {
-        MechkitError::new_err(format!("{key}: cannot read {}: {e}", path.display()))
-    })?;
-    let atoms = AtomsFile::parse(&path.to_string_lossy(), &text).map_err(|e| {
-        MechkitError::new_err(match e {
-            MdError::Parse { line, message } => {
-                format!("{key}: {}:{line}: {message}", path.display())
-            }
-            e => format!("{key}: {}: {e}", path.display()),
-        })
-    })?;
-    Ok(Atoms {
-        atoms,
-        path: Some(path),
-    })
+fn read(key: &str, path: &Path) -> PyResult<Atoms> {
+    Atoms::read(path).map_err(|e| MechkitError::new_err(format!("{key}: {e}")))
 }

@@ -42,6 +42,7 @@ mod potential;
 mod report;
 mod rng;
 mod run;
+mod setup;
 mod sim_box;
 mod system;
 mod velocities;
@@ -63,6 +64,10 @@ pub use potential::{LennardJones, LinearSpring, PairPotential, SoftSphere};
 pub use report::MdReport;
 pub use rng::Xoshiro256;
 pub use run::{MdObserver, MdRun, MdStop, RunPlan};
+pub use setup::{
+    Atoms, LATTICE_TEMPERATURE, MdOption, MdOptions, Potential, RDF_BINS, Setup, SetupError,
+    WithPotential,
+};
 pub use sim_box::SimBox;
 pub use system::{Md, MdConfig};
 pub use velocities::maxwell_boltzmann;

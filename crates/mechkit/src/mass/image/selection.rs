@@ -171,6 +171,29 @@ impl Selection {
         }
     }
 
+    /// The selection a front's options describe: a channel, a threshold (the channel's
+    /// default when None), inverted or not, and a density that follows the shade or not.
+    ///
+    /// # Errors
+    /// A threshold that is not a finite number.
+    pub fn from_options(
+        channel: Channel,
+        threshold: Option<Real>,
+        invert: bool,
+        density_from_darkness: bool,
+    ) -> Result<Self, ImageError> {
+        let selection = Self::new(channel)
+            .threshold(threshold.unwrap_or(channel.default_threshold()))
+            .inverted(invert)
+            .density(if density_from_darkness {
+                Density::Darkness
+            } else {
+                Density::Uniform
+            });
+        selection.check()?;
+        Ok(selection)
+    }
+
     /// With another threshold.
     #[must_use]
     pub fn threshold(mut self, threshold: Real) -> Self {
