@@ -70,6 +70,7 @@
 //! - [`scenario`] (feature `scenario`): TOML scenario files → model → run → summary.
 //! - [`units`]: re-export of the unit system of `mechkit-expr`.
 
+pub mod animation;
 pub mod calculus;
 pub mod collisions;
 pub mod csv;

@@ -36,6 +36,12 @@ pub trait Force: Debug + Send + Sync {
     /// Indices of the bodies it acts on (for diagnostics).
     fn bodies(&self) -> Vec<usize>;
 
+    /// What it looks like in an animation: a spring's coil, a joint's rod or string, a
+    /// pulley. Nothing, the default, for a force that is not a thing (gravity, drag).
+    fn sketch(&self) -> Vec<crate::animation::SceneItem> {
+        Vec::new()
+    }
+
     /// Whether the force acts only between bodies of the system, in action-reaction pairs: it
     /// moves no momentum, and its potential energy is internal.
     fn internal(&self) -> bool {

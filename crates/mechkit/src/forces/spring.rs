@@ -6,6 +6,7 @@ use mechkit_expr::{BinOp, Val};
 use super::emit::ForceEmitter;
 use super::force::Force;
 use crate::Real;
+use crate::animation::{Attachment, SceneItem};
 use crate::particles::Kinematics;
 
 /// What a spring connects.
@@ -75,6 +76,30 @@ impl Spring {
 }
 
 impl Force for Spring {
+    fn sketch(&self) -> Vec<SceneItem> {
+        let body = |body: usize| Attachment::Body {
+            body,
+            offset: [0.0; 3],
+        };
+        match &self.ends {
+            SpringEnds::Pair(a, b) => vec![SceneItem::Spring {
+                a: body(*a),
+                b: body(*b),
+            }],
+            SpringEnds::Anchor { bodies, anchor } => {
+                let fixed: [Real; 3] =
+                    std::array::from_fn(|a| anchor.get(a).copied().unwrap_or(0.0));
+                bodies
+                    .iter()
+                    .map(|&b| SceneItem::Spring {
+                        a: Attachment::Fixed(fixed),
+                        b: body(b),
+                    })
+                    .collect()
+            }
+        }
+    }
+
     fn name(&self) -> &str {
         &self.name
     }

@@ -9,6 +9,7 @@ mod body_report;
 mod composite;
 pub mod image;
 mod mesh;
+mod outline;
 mod points;
 mod polygon;
 mod properties;

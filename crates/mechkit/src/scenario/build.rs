@@ -223,6 +223,7 @@ pub(crate) fn build_with(
         },
     )?;
     let contact_forces = !contacts.forces.is_empty();
+    let walls = contacts.walls;
     for f in contacts.forces {
         force_names.push(f.name().to_string());
         builder = builder.boxed_force(f);
@@ -233,6 +234,13 @@ pub(crate) fn build_with(
     let system = builder
         .build()
         .map_err(|e| ScenarioError::new(ErrorKind::Invalid, e.to_string()))?;
+    let mut scene = crate::animation::Scene::of_system(&system);
+    for (body, r) in scene.bodies.iter_mut().zip(&radius) {
+        if let Some(radius) = r.filter(|r| *r > 0.0) {
+            body.shape = crate::animation::BodyShape::Sphere { radius };
+        }
+    }
+    scene.items.extend(walls);
     let mut q = q;
     let mut v = v;
     q.extend(&rockets.q);
@@ -271,6 +279,7 @@ pub(crate) fn build_with(
                 masses: rockets.variable,
                 ..Default::default()
             },
+            scene,
         },
     )
 }
@@ -291,6 +300,8 @@ pub(crate) struct Model<'n> {
     pub warnings: Vec<String>,
     /// Rigid bodies and joints of a planar mechanism.
     pub planar: crate::particles::PlanarNames,
+    /// What the model looks like, for animations.
+    pub scene: crate::animation::Scene,
 }
 
 /// Reads `[stop]`, `[[event]]`, `[observe]` and `[output]` against the model's names.
@@ -308,6 +319,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         events: model_events,
         mut warnings,
         planar,
+        scene,
     } = m;
     let env = ValueEnv {
         constants: &constants,
@@ -362,6 +374,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         units: root.src.units,
         source_hash: super::provenance::fnv1a(root.src.text.as_bytes()),
         planar,
+        scene,
     })
 }
 

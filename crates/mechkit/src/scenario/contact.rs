@@ -33,6 +33,8 @@ pub(crate) struct ContactSetup {
     pub events: Vec<Event>,
     /// Contact forces (the spring and Hertz models).
     pub forces: Vec<Box<dyn Force>>,
+    /// The walls, as an animation draws them.
+    pub walls: Vec<crate::animation::SceneItem>,
 }
 
 /// The bodies as the collision setup sees them.
@@ -180,11 +182,17 @@ pub(crate) fn read_contacts(
         })?;
         walls_read.push(wall);
     }
+    let drawn: Vec<_> = walls_read
+        .iter()
+        .map(|w| crate::animation::Scene::wall(&w.point, &w.normal))
+        .collect();
     if model != "impulse" {
         let c = contact
             .as_ref()
             .expect("a model other than impulse comes from [contact]");
-        return contact_force(c, model, s, &walls_read, env);
+        let mut setup = contact_force(c, model, s, &walls_read, env)?;
+        setup.walls = drawn;
+        return Ok(setup);
     }
     let mut impacts = Impacts::new(
         s.dim,
@@ -219,6 +227,7 @@ pub(crate) fn read_contacts(
     Ok(ContactSetup {
         events: impacts.events(),
         forces: Vec::new(),
+        walls: drawn,
     })
 }
 
@@ -296,5 +305,6 @@ fn contact_force(
     Ok(ContactSetup {
         events: Vec::new(),
         forces: force.into_forces(),
+        walls: Vec::new(),
     })
 }

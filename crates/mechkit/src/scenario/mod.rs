@@ -150,6 +150,8 @@ pub struct Scenario {
     pub source_hash: u64,
     /// The names of a planar mechanism's rigid bodies and joints (empty otherwise).
     pub planar: crate::particles::PlanarNames,
+    /// What the model looks like: bodies, springs, joints, walls ([`crate::animation`]).
+    pub scene: crate::animation::Scene,
 }
 
 impl Scenario {

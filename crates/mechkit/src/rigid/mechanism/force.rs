@@ -5,6 +5,7 @@ use std::sync::Arc;
 use super::joint::{Anchor, Joint, JointKind};
 use super::solve::{Mechanism, REPORT_LEN};
 use crate::Real;
+use crate::animation::{Attachment, SceneItem};
 use crate::forces::Force;
 use crate::particles::Kinematics;
 
@@ -29,6 +30,71 @@ impl JointForce {
 }
 
 impl Force for JointForce {
+    fn sketch(&self) -> Vec<SceneItem> {
+        let Some(joint) = self.mechanism.joints.get(self.joint) else {
+            return Vec::new();
+        };
+        let end = |a: &Anchor| match *a {
+            Anchor::World(p) => Attachment::Fixed(p),
+            Anchor::Body { body, r } => Attachment::Body { body, offset: r },
+        };
+        match &joint.kind {
+            JointKind::Rod { a, b, .. } | JointKind::Hinge { a, b, .. } => vec![SceneItem::Rod {
+                a: end(a),
+                b: end(b),
+            }],
+            JointKind::String { a, b, .. } => vec![SceneItem::String {
+                a: end(a),
+                b: end(b),
+            }],
+            JointKind::Pulley {
+                a,
+                b,
+                centre,
+                radius,
+                sense,
+                ..
+            } => {
+                // the string leaves the wheel at its side towards each end
+                let side = |s: Real| match end(centre) {
+                    Attachment::Fixed(c) => Attachment::Fixed([c[0] + s * radius, c[1], c[2]]),
+                    Attachment::Body { body, .. } | Attachment::Beside { body, .. } => {
+                        Attachment::Beside {
+                            body,
+                            offset: [s * radius, 0.0, 0.0],
+                        }
+                    }
+                };
+                let mut items = vec![
+                    SceneItem::String {
+                        a: end(a),
+                        b: side(-sense),
+                    },
+                    SceneItem::String {
+                        a: side(*sense),
+                        b: end(b),
+                    },
+                ];
+                if let Anchor::World(c) = centre {
+                    items.push(SceneItem::Pulley {
+                        centre: *c,
+                        radius: *radius,
+                    });
+                }
+                items
+            }
+            JointKind::Contact {
+                point: Anchor::World(point),
+                normal,
+                ..
+            } => vec![SceneItem::Wall {
+                point: *point,
+                normal: *normal,
+            }],
+            JointKind::Contact { .. } | JointKind::Curve { .. } => Vec::new(),
+        }
+    }
+
     fn name(&self) -> &str {
         &self.mechanism.joints[self.joint].name
     }

@@ -41,6 +41,8 @@ pub(super) struct Rigid {
     /// Named points, body frame, from the centre of mass (`z` 0 in a plane).
     pub(super) points: Vec<(String, [Real; 3])>,
     pub(super) turn: RigidTurn,
+    /// Its parts as drawn, body frame, from the centre of mass.
+    pub(super) outline: Vec<Vec<[Real; 3]>>,
 }
 
 /// How a rigid body turns, and its initial turning.
@@ -111,7 +113,7 @@ pub(crate) fn build_mechanism(
         mass: None,
         later: &[],
     };
-    let (mut names, mut masses, mut q, mut v, _radius) = if root.get("body").is_some() {
+    let (mut names, mut masses, mut q, mut v, radius) = if root.get("body").is_some() {
         bodies(root, dim, &constants)?
     } else {
         (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new())
@@ -301,6 +303,17 @@ pub(crate) fn build_mechanism(
     let system = builder
         .build()
         .map_err(|e| ScenarioError::new(ErrorKind::Invalid, e.to_string()))?;
+    let mut scene = crate::animation::Scene::of_system(&system);
+    for (body, r) in scene.bodies.iter_mut().zip(&radius) {
+        if let Some(radius) = r.filter(|r| *r > 0.0) {
+            body.shape = crate::animation::BodyShape::Sphere { radius };
+        }
+    }
+    for (body, r) in scene.bodies.iter_mut().skip(n_particles).zip(&rigid) {
+        body.shape = crate::animation::BodyShape::Outline {
+            parts: r.outline.clone(),
+        };
+    }
     let stepping = read_integrator(root, env, &system)?;
     let tau = match scalar(root, "stabilisation", Dimension::TIME, env)? {
         Some(tau) if tau > 0.0 => tau,
@@ -386,6 +399,7 @@ pub(crate) fn build_mechanism(
             events,
             warnings,
             planar,
+            scene,
         },
     )
 }

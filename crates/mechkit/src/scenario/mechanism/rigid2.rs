@@ -7,7 +7,7 @@ use crate::Real;
 use crate::scenario::build::body_name;
 use crate::scenario::doc::Table;
 use crate::scenario::error::{ErrorKind, ScenarioError};
-use crate::scenario::rigid::bodies::mass_properties;
+use crate::scenario::rigid::bodies::{mass_properties, outline_of_moment};
 use crate::scenario::values::{ValueEnv, scalar, vector};
 
 use super::points::read_points;
@@ -36,19 +36,21 @@ pub(super) fn read_rigid2(
         "hinge it with a [[joint]] of kind \"hinge\", or leave out `dimensions` for a body turning about a fixed axis",
     )?;
     // the body frame's origin: the centre of mass, or the parts' frame
-    let (mass, inertia, cm) = if t.get("inertia").is_some() {
+    let (mass, inertia, cm, outline) = if t.get("inertia").is_some() {
         let mass = scalar(t, "mass", Dimension::MASS, env)?
             .ok_or_else(|| t.missing("mass", "\"1 kg\""))?;
         let inertia = scalar(t, "inertia", Dimension::MOMENT_OF_INERTIA, env)?.unwrap_or(0.0);
-        (mass, inertia, [0.0, 0.0])
+        let outline = outline_of_moment(mass, inertia, crate::mass::Vec3::zeros());
+        (mass, inertia, [0.0, 0.0], outline)
     } else if t.get("mass").is_some() {
         return Err(t
             .missing("inertia", "\"0.5 kg m^2\"")
             .with_hint("give the moment of inertia about the centre of mass, or describe the body by `[[rigid_body.part]]` tables or a `body` file"));
     } else {
-        let props = mass_properties(t, env, dir)?;
+        let (props, body) = mass_properties(t, env, dir)?;
         let c = props.centre_of_mass;
-        (props.mass, props.inertia[(2, 2)], [c[0], c[1]])
+        let outline = body.outline(c);
+        (props.mass, props.inertia[(2, 2)], [c[0], c[1]], outline)
     };
     for (key, value, span) in [
         ("mass", mass, t.key_span("mass")),
@@ -84,6 +86,7 @@ pub(super) fn read_rigid2(
         position: two("position", Dimension::LENGTH)?.to_vec(),
         velocity: two("velocity", Dimension::VELOCITY)?.to_vec(),
         points,
+        outline,
         turn: RigidTurn::Plane {
             inertia,
             theta: scalar(t, "theta", Dimension::NONE, env)?.unwrap_or(0.0),

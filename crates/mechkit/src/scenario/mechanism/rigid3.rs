@@ -9,7 +9,7 @@ use crate::particles::spin::{self, Mat3, Quat};
 use crate::scenario::build::body_name;
 use crate::scenario::doc::Table;
 use crate::scenario::error::{ErrorKind, ScenarioError};
-use crate::scenario::rigid::bodies::mass_properties;
+use crate::scenario::rigid::bodies::{mass_properties, outline_of_moment};
 use crate::scenario::values::{ValueEnv, required_scalar, resolve, vector};
 
 use super::points::read_points;
@@ -53,21 +53,24 @@ pub(super) fn read_rigid3(
         "`free` must be true: in space every rigid body is free",
         "a body turning about a fixed axis is a [[rigid_body]] of a scenario without `dimensions`",
     )?;
-    let (mass, inertia, cm) = if t.get("inertia").is_some() {
+    let (mass, inertia, cm, outline) = if t.get("inertia").is_some() {
         let mass = required_scalar(t, "mass", Dimension::MASS, env)?;
-        (mass, inertia(t, env)?, [0.0; 3])
+        let inertia = inertia(t, env)?;
+        let outline = outline_of_moment(mass, inertia[2][2], crate::mass::Vec3::zeros());
+        (mass, inertia, [0.0; 3], outline)
     } else if t.get("mass").is_some() {
         return Err(t
             .missing("inertia", "[\"0.1 kg m^2\", \"0.1 kg m^2\", \"0.2 kg m^2\"]")
             .with_hint("give the inertia about the centre of mass: one moment (a sphere), the three principal moments along the body axes, or the 3×3 tensor; or describe the body by `[[rigid_body.part]]` tables or a `body` file"));
     } else {
-        let props = mass_properties(t, env, dir)?;
+        let (props, body) = mass_properties(t, env, dir)?;
         let c = props.centre_of_mass;
         let i = props.inertia;
         (
             props.mass,
             [0, 1, 2].map(|r| [0, 1, 2].map(|k| i[(r, k)])),
             [c[0], c[1], c[2]],
+            body.outline(c),
         )
     };
     if !(mass > 0.0 && mass.is_finite()) {
@@ -105,6 +108,7 @@ pub(super) fn read_rigid3(
     };
     let points = read_points(t, &name, env, 3, cm, FIELDS)?;
     Ok(Rigid {
+        outline,
         name,
         mass,
         position: three("position", Dimension::LENGTH)?.to_vec(),

@@ -34,6 +34,8 @@ pub(crate) struct RigidBodies {
     pub theta: Vec<Real>,
     pub omega: Vec<Real>,
     pub pivots: Vec<Vec3>,
+    /// Each body's parts as drawn, about its pivot.
+    pub outlines: Vec<Vec<Vec<[Real; 3]>>>,
     pub warnings: Vec<String>,
     /// Bodies with dry bearing friction: (body, direction of turning, torque name).
     pub dry: Vec<(usize, Real, String)>,
@@ -56,6 +58,7 @@ pub(crate) fn read_rigid_bodies(
         theta: Vec::new(),
         omega: Vec::new(),
         pivots: Vec::new(),
+        outlines: Vec::new(),
         warnings: Vec::new(),
         dry: Vec::new(),
     };
@@ -93,6 +96,8 @@ pub(crate) fn read_rigid_bodies(
             } else {
                 Vec3::zeros()
             };
+            out.outlines
+                .push(outline_of_moment(mass, moment, cm - pivot));
             HingedBody::from_moment(name.clone(), mass, moment, cm - pivot, axis)
                 .map_err(|e| located(e, "inertia"))?
         } else {
@@ -101,7 +106,8 @@ pub(crate) fn read_rigid_bodies(
                     return Err(t.src.error(ErrorKind::Invalid, format!("`{key}` belongs with `inertia`; with parts or a body file the mass is theirs"), t.key_span(key)));
                 }
             }
-            let props = mass_properties(t, env, dir)?;
+            let (props, drawn) = mass_properties(t, env, dir)?;
+            out.outlines.push(drawn.outline(pivot));
             HingedBody::new(name.clone(), &props, pivot, axis).map_err(|e| located(e, "axis"))?
         };
         if let Some(w) = body.pivot_warning() {
@@ -118,11 +124,12 @@ pub(crate) fn read_rigid_bodies(
     Ok(out)
 }
 
+/// The mass properties of a rigid body's parts or body file, and the body (to draw it).
 pub(crate) fn mass_properties(
     t: &Table<'_, '_>,
     env: ValueEnv<'_>,
     dir: Option<&Path>,
-) -> Result<MassProperties, ScenarioError> {
+) -> Result<(MassProperties, Body), ScenarioError> {
     let body = match (t.get("part"), t.string("body")?) {
         (Some(_), Some((_, span))) => {
             return Err(t.src.error(
@@ -155,11 +162,30 @@ pub(crate) fn mass_properties(
                 .with_hint("describe the body by `[[rigid_body.part]]` tables (shape, dimensions, mass: as in a body file), a `body = \"file.toml\"`, or `mass`, `inertia` (about the axis) and `centre_of_mass`"));
         }
     };
-    body.properties().map_err(|e| {
+    let props = body.properties().map_err(|e| {
         t.src.error(
             ErrorKind::Invalid,
             format!("the rigid body: {e}"),
             t.span.clone(),
         )
-    })
+    })?;
+    Ok((props, body))
+}
+
+/// The outline of a body given by its mass and moment only: a disk with that moment about
+/// its centre, `cm` from the point it turns about (a stick from there to it when apart).
+pub(crate) fn outline_of_moment(mass: Real, moment: Real, cm: Vec3) -> Vec<Vec<[Real; 3]>> {
+    let radius = (2.0 * moment / mass).sqrt();
+    let mut disk = Vec::new();
+    if radius.is_finite() && radius > 0.0 {
+        for k in 0..32 {
+            let a = std::f64::consts::TAU * Real::from(k) / 32.0;
+            disk.push([cm.x + radius * a.cos(), cm.y + radius * a.sin(), cm.z]);
+        }
+    }
+    let mut parts = vec![disk];
+    if cm.norm() > 0.0 {
+        parts.push(vec![[0.0; 3], [cm.x, cm.y, cm.z]]);
+    }
+    parts
 }

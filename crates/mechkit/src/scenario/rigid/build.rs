@@ -70,6 +70,22 @@ pub(crate) fn build_rigid(
     };
     let stepping = read_integrator(root, env, &system)?;
     let bodies = rigid.names.clone();
+    let scene = crate::animation::Scene {
+        dim: 3,
+        bodies: rigid
+            .names
+            .iter()
+            .zip(std::mem::take(&mut rigid.outlines))
+            .zip(&rigid.bodies)
+            .map(|((name, parts), body)| crate::animation::Body {
+                name: name.clone(),
+                shape: crate::animation::BodyShape::Outline { parts },
+                hinge: Some([body.axis().x, body.axis().y, body.axis().z]),
+            })
+            .collect(),
+        items: Vec::new(),
+        upright: false,
+    };
     // dry friction acts against the turning until the body stops: there the regime ends
     let mut events = Vec::new();
     for (b, direction, torque) in std::mem::take(&mut rigid.dry) {
@@ -98,6 +114,7 @@ pub(crate) fn build_rigid(
             events,
             warnings,
             planar: crate::particles::PlanarNames::default(),
+            scene,
         },
     )
 }
