@@ -1,7 +1,7 @@
 //! `mechkit`: the command-line front end of the mechkit library, as a library so that other
 //! fronts (the Python package's `mechkit` console script) run the same command in-process,
 //! and draw plots as the command does ([`plot_svg`], [`plot_png`]: the Python package's
-//! `Run.plot`).
+//! `Run.plot`), and draws animations ([`animate`]: SVG frames, GIF, MP4, an HTML player).
 //!
 //! Exit codes:
 //! - 0: success;
@@ -12,6 +12,7 @@
 //!
 //! Errors go to stderr with their location and a hint (`failure.rs`).
 
+pub mod animate;
 mod args;
 mod commands;
 mod failure;

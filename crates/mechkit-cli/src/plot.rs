@@ -21,7 +21,7 @@ mod bars;
 mod chart;
 mod colour;
 mod layout;
-mod raster;
+pub(crate) mod raster;
 mod style;
 mod svg;
 mod title;

@@ -16,6 +16,7 @@
 //!   functions returning the command's `--json` as a dict, their arguments read by
 //!   `arguments.rs`.
 
+mod animation;
 mod batch;
 mod calculus;
 mod data;
@@ -61,6 +62,8 @@ fn cli(py: Python<'_>, args: Vec<OsString>) -> i32 {
 mod native {
     use pyo3::prelude::*;
 
+    #[pymodule_export]
+    use super::animation::Animation;
     #[pymodule_export]
     use super::cli;
     #[pymodule_export]

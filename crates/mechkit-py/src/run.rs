@@ -173,6 +173,35 @@ impl Run {
         Ok(Plot::new(data, self.title.clone(), style))
     }
 
+    /// The run's animation: the bodies drawn to scale in their shapes, frame by frame, as
+    /// `mechkit animate` draws them. Jupyter shows it inline (the HTML player); `.save(path)`
+    /// writes a GIF, an HTML file or an MP4.
+    #[pyo3(signature = (fps = mechkit::animation::DEFAULT_FPS, speed = None, trails = true, energy_bars = true, width = 640, height = 480))]
+    #[allow(clippy::too_many_arguments)]
+    fn animate(
+        &self,
+        py: Python<'_>,
+        fps: f64,
+        speed: Option<f64>,
+        trails: bool,
+        energy_bars: bool,
+        width: u32,
+        height: u32,
+    ) -> PyResult<crate::animation::Animation> {
+        crate::animation::of_run(
+            py,
+            &self.replay,
+            self.trajectory.bind(py),
+            mechkit::animation::AnimationOptions {
+                fps,
+                speed,
+                trails,
+                energy_bars,
+            },
+            mechkit_cli::animate::Canvas { width, height },
+        )
+    }
+
     /// Where the time went, in seconds: `run` (the simulation, in Rust), `summary` (the
     /// summary made a dict) and `trajectory` (the columns handed to numpy: moved, not
     /// copied, so this does not grow with the rows).

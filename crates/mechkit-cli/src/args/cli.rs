@@ -4,10 +4,10 @@
 use clap::{Parser, Subcommand};
 
 use super::{
-    BeadArgs, CheckArgs, CollideArgs, ComArgs, CompletionsArgs, DeriveArgs, DiffArgs, FrictionArgs,
-    GalleryArgs, ImpulseArgs, InertiaArgs, IntegrateArgs, ListArgs, ManArgs, MdArgs, PotentialArgs,
-    PowerArgs, RelativeArgs, RigidCollideArgs, RocketArgs, RollArgs, RotationArgs, RunArgs,
-    SolveArgs, SpinArgs, SweepArgs, SweepMergeArgs, TerminalArgs, UnitsArgs, WorkArgs,
+    AnimateArgs, BeadArgs, CheckArgs, CollideArgs, ComArgs, CompletionsArgs, DeriveArgs, DiffArgs,
+    FrictionArgs, GalleryArgs, ImpulseArgs, InertiaArgs, IntegrateArgs, ListArgs, ManArgs, MdArgs,
+    PotentialArgs, PowerArgs, RelativeArgs, RigidCollideArgs, RocketArgs, RollArgs, RotationArgs,
+    RunArgs, SolveArgs, SpinArgs, SweepArgs, SweepMergeArgs, TerminalArgs, UnitsArgs, WorkArgs,
 };
 
 const EXAMPLES: &str = r#"Examples:
@@ -68,6 +68,9 @@ pub enum Command {
     Run(RunArgs),
     /// Check a scenario file without running it.
     Check(CheckArgs),
+    /// Animate a run (a scenario file, or the output directory of `run`): a GIF, an MP4 (with
+    /// ffmpeg) or one self-contained HTML player, the bodies drawn to scale in their shapes.
+    Animate(AnimateArgs),
     /// List the integration methods.
     ListIntegrators(ListArgs),
     /// Differentiate a formula symbolically.
@@ -217,6 +220,8 @@ mod negative_values {
         "case",
         "report",
         "root",
+        "input",
+        "format",
     ];
 
     /// Issue 11: a negative number (or a list or range starting with one) given to any

@@ -2,6 +2,7 @@
 //! program and its subcommands (`cli.rs`), the options many commands share (`shared.rs`), and
 //! one file per command or family of commands.
 
+mod animate;
 mod bead;
 mod calculus;
 mod cli;
@@ -21,6 +22,7 @@ mod spin;
 mod sweep;
 mod terminal;
 
+pub use animate::AnimateArgs;
 pub use bead::BeadArgs;
 pub use calculus::{DiffArgs, IntegrateArgs, SolveArgs, UnitsArgs};
 pub use cli::{Cli, Command};

@@ -20,7 +20,7 @@ pub struct RunArgs {
     /// `--json` prints the summary as JSON; `-q` prints nothing but warnings and errors.
     #[command(flatten)]
     pub report: Report,
-    /// Do not draw plots.
+    /// Do not draw plots (nor the animations of `[output] animation`).
     #[arg(long)]
     pub no_plots: bool,
     /// Plot files: `--format svg|png` and `--dpi`.

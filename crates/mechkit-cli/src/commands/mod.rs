@@ -1,5 +1,6 @@
 //! One module per subcommand; each is glue around a library call.
 
+mod animate;
 mod bead;
 mod body;
 mod calculus;
@@ -53,6 +54,7 @@ pub fn dispatch(cli: Cli, cancel: &Cancel) -> anyhow::Result<Outcome> {
     match cli.command {
         Command::Run(args) => run::run(&args, cancel),
         Command::Check(args) => check::check(&args),
+        Command::Animate(args) => animate::animate(&args),
         Command::Diff(args) => calculus::diff(&args),
         Command::Integrate(args) => calculus::integrate(&args),
         Command::Solve(args) => calculus::solve(&args),

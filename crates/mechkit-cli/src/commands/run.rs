@@ -32,6 +32,7 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
         && !args.no_plots
     {
         plot::render_run(&scenario, &mut out, dir, args.plots)?;
+        super::animate::write_animations(&scenario, dir)?;
     }
     for w in &out.summary.warnings {
         eprintln!("warning: {w}");

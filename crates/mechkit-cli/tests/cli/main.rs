@@ -27,6 +27,7 @@
 //!
 //! Numbers from files are compared within tolerances, never as strings.
 mod adaptive;
+mod animate;
 mod bead;
 mod calculus;
 mod collide;

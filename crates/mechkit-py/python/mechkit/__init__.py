@@ -35,6 +35,7 @@ Errors raise ``MechkitError`` or a subclass: a ``ScenarioError`` says where in t
 
 from ._model import Model
 from ._native import (
+    Animation,
     MdResult,
     MechkitError,
     Plot,
@@ -61,6 +62,7 @@ from ._native import (
 )
 
 __all__ = [
+    "Animation",
     "MdResult",
     "MechkitError",
     "Model",

@@ -90,6 +90,48 @@ class Run:
         lists comes from this run; another runs the scenario again (the same points), with
         the GIL released. Raises ScenarioError for a spec that is not a plot of the
         scenario."""
+    def animate(
+        self,
+        *,
+        fps: float = 25.0,
+        speed: Optional[float] = None,
+        trails: bool = True,
+        energy_bars: bool = True,
+        width: int = 640,
+        height: int = 480,
+    ) -> Animation:
+        """The run's animation, as ``mechkit animate`` draws it: the bodies to scale in their
+        shapes (balls, rigid bodies' parts, springs as coils, rods, strings, walls), trails,
+        a time stamp and energy bars, ``fps`` frames per second of playback at ``speed``
+        simulated seconds per second (None: real time, slowed down or sped up to play 4 to
+        12 s). Jupyter shows it inline as the HTML player.
+
+        >>> a = mechkit.Scenario.load("examples/bouncing_ball_floor.toml").run().animate()
+        >>> len(a) >= 20
+        True
+        """
+
+
+class Animation:
+    """A run's animation (``Run.animate()``): Jupyter shows the HTML player inline."""
+
+    @property
+    def html(self) -> str:
+        """One self-contained HTML file (no network) that plays it: play/pause, a time slider."""
+    def gif(self) -> bytes:
+        """The animated GIF's bytes (looping)."""
+    def save(self, path: Union[str, os.PathLike[str]]) -> str:
+        """Writes ``.gif``, ``.html`` or ``.mp4`` (needs ffmpeg on the PATH) by the extension."""
+    @property
+    def fps(self) -> float: ...
+    @property
+    def speed(self) -> float:
+        """Simulated seconds per second of playback."""
+    @property
+    def times(self) -> List[float]:
+        """Each frame's simulated time (s)."""
+    def __len__(self) -> int: ...
+    def _repr_html_(self) -> str: ...
 
 
 class Model:

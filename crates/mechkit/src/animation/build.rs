@@ -70,6 +70,15 @@ impl Columns for crate::scenario::Trajectory {
     }
 }
 
+/// A CSV file read back (a run directory's `trajectory.csv`): columns by their exact header
+/// names.
+impl Columns for crate::data::Table {
+    fn column(&self, name: &str) -> Option<&[Real]> {
+        let index = self.names()?.iter().position(|n| n == name)?;
+        crate::data::Table::column(self, &crate::data::ColumnRef::Index(index)).ok()
+    }
+}
+
 impl Columns for [(String, Vec<Real>)] {
     fn column(&self, name: &str) -> Option<&[Real]> {
         self.iter()
@@ -470,6 +479,24 @@ fn clip_line(p: [Real; 2], d: [Real; 2], v: &View) -> Option<[[Real; 2]; 2]> {
 }
 
 impl Animation {
+    /// The animation of a run of `scenario` from its columns: its title, its scene, lengths in
+    /// metres (or the reduced unit).
+    ///
+    /// # Errors
+    /// As [`Animation::from_run`].
+    #[cfg(feature = "scenario")]
+    pub fn of_scenario(
+        scenario: &crate::scenario::Scenario,
+        table: &(impl Columns + ?Sized),
+        options: &AnimationOptions,
+    ) -> Result<Animation, AnimationError> {
+        let unit = match scenario.units {
+            mechkit_expr::units::UnitSystem::Reduced => "1",
+            mechkit_expr::units::UnitSystem::Si => "m",
+        };
+        Animation::from_run(&scenario.title, &scenario.scene, table, unit, options)
+    }
+
     /// The animation of a run of `scene`, from its columns (`t`, each body's position and
     /// turning, `K`, `U`, `E`).
     ///
@@ -688,10 +715,33 @@ fn background(scene: &Scene, project: Projection, view: &View, scale: Real) -> V
                 stroke: Some(STEEL),
                 line_width: 2.0,
             }),
-            _ => {}
+            SceneItem::Spring { a, b } | SceneItem::Rod { a, b } | SceneItem::String { a, b } => {
+                for end in [a, b] {
+                    if let Attachment::Fixed(p) = end {
+                        out.push(anchor(project.apply(*p)));
+                    }
+                }
+            }
         }
     }
+    // the pivots of bodies turning about fixed axes
+    if scene.bodies.iter().any(|b| b.hinge.is_some()) {
+        out.push(anchor([0.0, 0.0]));
+    }
     out
+}
+
+/// A fixed point links hang from: a dark dot.
+fn anchor(centre: [Real; 2]) -> Shape {
+    Shape {
+        geometry: Geometry::Dot {
+            centre,
+            radius_px: 3.5,
+        },
+        fill: Some(INK),
+        stroke: None,
+        line_width: 0.0,
+    }
 }
 
 /// The shapes of one frame: links under bodies.

@@ -9,10 +9,14 @@
 //! keep their length.
 
 mod build;
+mod format;
 mod scene;
+mod xyz;
 
 pub use build::{AnimationError, AnimationOptions, Columns, DEFAULT_FPS, MAX_FRAMES};
+pub use format::AnimationFormat;
 pub use scene::{Attachment, Body, BodyShape, Scene, SceneItem};
+pub use xyz::{MAX_ATOMS, XyzFrame, parse_xyz};
 
 use crate::Real;
 

@@ -152,6 +152,8 @@ pub struct Scenario {
     pub planar: crate::particles::PlanarNames,
     /// What the model looks like: bodies, springs, joints, walls ([`crate::animation`]).
     pub scene: crate::animation::Scene,
+    /// `[output] animation`: the formats the front writes the run's animation in.
+    pub animation: Vec<crate::animation::AnimationFormat>,
 }
 
 impl Scenario {

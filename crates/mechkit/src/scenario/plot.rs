@@ -25,7 +25,13 @@ use crate::simulate::{Observer, ObserverError};
 const MAX_POINTS: usize = 20_000;
 
 const OUTPUT_KEYS: &[&str] = &[
-    "every", "interval", "times", "plots", "max_size", "analytic",
+    "every",
+    "interval",
+    "times",
+    "plots",
+    "max_size",
+    "analytic",
+    "animation",
 ];
 
 /// Output times: every `interval`, or a list.
