@@ -61,22 +61,11 @@ fn fill(template: &str, value: impl Fn(&str) -> Option<String>) -> String {
     out
 }
 
-/// `text` for an HTML element's content: `&`, `<`, `>` and `"` escaped, and `/` too (so that
-/// no web address appears as written).
+/// `text` for an HTML element's content: escaped as for XML ([`super::svg::escape`]: `&`,
+/// `<`, `>`, quotes; control characters dropped but tab and newline), and `/` too (so that no
+/// web address appears as written).
 fn html_text(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '/' => out.push_str("&#47;"),
-            c if c.is_control() => {}
-            c => out.push(c),
-        }
-    }
-    out
+    super::svg::escape(text).replace('/', "&#47;")
 }
 
 #[cfg(test)]

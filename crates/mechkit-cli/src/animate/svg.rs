@@ -103,20 +103,14 @@ fn push_shape(svg: &mut String, shape: &Shape, layout: &Layout) {
     }
     let map = &layout.map;
     match &shape.geometry {
-        Geometry::Circle { centre, radius } => {
+        Geometry::Circle { centre, .. } | Geometry::Dot { centre, .. } => {
             let (x, y) = map.px(*centre);
-            let r = (radius * map.scale).min(1e6);
-            let _ = write!(
-                svg,
-                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
-                n(x),
-                n(y),
-                n(r)
-            );
-        }
-        Geometry::Dot { centre, radius_px } => {
-            let (x, y) = map.px(*centre);
-            let r = radius_px.min(1e6);
+            let r = match shape.geometry {
+                Geometry::Circle { radius, .. } => radius * map.scale,
+                Geometry::Dot { radius_px, .. } => radius_px,
+                _ => 0.0,
+            }
+            .min(1e6);
             let _ = write!(
                 svg,
                 "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"",
