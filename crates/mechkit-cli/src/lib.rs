@@ -8,7 +8,8 @@
 //! - 1: the computation failed (the simulation diverged; the output so far is kept);
 //! - 2: bad input (usage, unreadable or invalid file, units, unwritable output directory);
 //! - 101: an internal error (a bug), reported as `error: internal error, …`;
-//! - 130: stopped by Ctrl-C (SIGINT) or SIGTERM after finishing the outputs.
+//! - 130: stopped by Ctrl-C (SIGINT) or SIGTERM after finishing the outputs (`serve` ends
+//!   with 0 then: it is how a server ends).
 //!
 //! Errors go to stderr with their location and a hint (`failure.rs`).
 
@@ -18,6 +19,7 @@ mod commands;
 mod failure;
 mod gallery;
 mod plot;
+mod serve;
 
 use std::ffi::OsString;
 use std::io::Write as _;
@@ -56,7 +58,7 @@ pub fn plot_png(
 /// panic (a bug) is reported by a panic hook as `error: internal error, …` and unwinds to the
 /// caller, which exits with 101.
 ///
-/// For `run`, `sweep` and `md`, Ctrl-C and SIGTERM are caught while the command runs (the
+/// For `run`, `sweep`, `md` and `serve`, Ctrl-C and SIGTERM are caught while the command runs (the
 /// handlers chain to those installed before, and are removed on return).
 pub fn main_with_args(args: Vec<OsString>) -> i32 {
     failure::install_panic_hook();
@@ -74,7 +76,10 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     // the commands whose loops look at the handle; the others end at Ctrl-C as usual
     let handlers = if matches!(
         cli.command,
-        args::Command::Run(_) | args::Command::Sweep(_) | args::Command::Md(_)
+        args::Command::Run(_)
+            | args::Command::Sweep(_)
+            | args::Command::Md(_)
+            | args::Command::Serve(_)
     ) {
         catch_interrupts(&cancel)
     } else {

@@ -219,7 +219,9 @@
     if (!playing) {
       return;
     }
-    var index = (startFrame + Math.floor((now - started) * data.fps / 1000)) % count;
+    // a frame's timestamp may precede the play() or seek() that asked for it
+    var elapsed = Math.max(0, now - started);
+    var index = (startFrame + Math.floor(elapsed * data.fps / 1000)) % count;
     if (index !== current) {
       show(index);
     }

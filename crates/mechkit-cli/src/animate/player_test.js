@@ -53,7 +53,12 @@ const document = { getElementById: (id) => elements[id] };
 const window = {
   devicePixelRatio: 2,
   performance,
-  requestAnimationFrame: (f) => setTimeout(() => f(performance.now()), 10),
+  // as in a browser, the timestamp a frame gets may precede the call that asked for it (the
+  // player once stopped on the negative time this gave right after play())
+  requestAnimationFrame: (f) => {
+    const frameStart = performance.now() - 5;
+    return setTimeout(() => f(frameStart), 10);
+  },
   cancelAnimationFrame: (id) => clearTimeout(id),
 };
 

@@ -7,7 +7,8 @@ use super::{
     AnimateArgs, BeadArgs, CheckArgs, CollideArgs, ComArgs, CompletionsArgs, DeriveArgs, DiffArgs,
     FrictionArgs, GalleryArgs, ImpulseArgs, InertiaArgs, IntegrateArgs, ListArgs, ManArgs, MdArgs,
     PotentialArgs, PowerArgs, RelativeArgs, RigidCollideArgs, RocketArgs, RollArgs, RotationArgs,
-    RunArgs, SolveArgs, SpinArgs, SweepArgs, SweepMergeArgs, TerminalArgs, UnitsArgs, WorkArgs,
+    RunArgs, ServeArgs, SolveArgs, SpinArgs, SweepArgs, SweepMergeArgs, TerminalArgs, UnitsArgs,
+    WorkArgs,
 };
 
 const EXAMPLES: &str = r#"Examples:
@@ -71,6 +72,10 @@ pub enum Command {
     /// Animate a run (a scenario file, or the output directory of `run`): a GIF, an MP4 (with
     /// ffmpeg) or one self-contained HTML player, the bodies drawn to scale in their shapes.
     Animate(AnimateArgs),
+    /// The browser app on 127.0.0.1: browse the workspace's scenarios and the gallery, edit one
+    /// with its errors shown as you type, run it, see its plots and animation, download its
+    /// outputs.
+    Serve(ServeArgs),
     /// List the integration methods.
     ListIntegrators(ListArgs),
     /// Differentiate a formula symbolically.
@@ -222,6 +227,8 @@ mod negative_values {
         "root",
         "input",
         "format",
+        "dir",
+        "host",
     ];
 
     /// Issue 11: a negative number (or a list or range starting with one) given to any

@@ -1,6 +1,6 @@
 //! One module per subcommand; each is glue around a library call.
 
-mod animate;
+pub(crate) mod animate;
 mod bead;
 mod body;
 mod calculus;
@@ -11,7 +11,7 @@ mod com_image;
 mod derive;
 mod friction;
 mod gallery;
-mod gallery_run;
+pub(crate) mod gallery_run;
 mod inertia;
 mod input;
 mod md;
@@ -49,12 +49,13 @@ pub enum Outcome {
 }
 
 /// Runs the chosen subcommand; `cancel` (raised by Ctrl-C) stops the loops of `run`, `sweep`
-/// and `md`.
+/// and `md`, and ends `serve`.
 pub fn dispatch(cli: Cli, cancel: &Cancel) -> anyhow::Result<Outcome> {
     match cli.command {
         Command::Run(args) => run::run(&args, cancel),
         Command::Check(args) => check::check(&args),
         Command::Animate(args) => animate::animate(&args),
+        Command::Serve(args) => crate::serve::serve(&args, cancel),
         Command::Diff(args) => calculus::diff(&args),
         Command::Integrate(args) => calculus::integrate(&args),
         Command::Solve(args) => calculus::solve(&args),

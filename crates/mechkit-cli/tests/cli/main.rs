@@ -22,6 +22,8 @@
 //! - `mechkit com IMAGE` measures the pixels of a body (`com_image.rs`).
 //! - `mechkit sweep` and `sweep-merge`: 1,000 runs, threads, shards (`sweep.rs`).
 //! - `mechkit md` on the gallery inputs `examples/md/` (`md_gallery.rs`).
+//! - `mechkit serve` over HTTP: the workspace's bounds, bad requests, checks, runs and their
+//!   limits (`serve.rs`).
 //! - every kind of error message, snapshotted, with the table in `docs/reliability.md`
 //!   (`messages/`).
 //!
@@ -61,6 +63,8 @@ mod rocket;
 mod roll;
 mod rotation;
 mod run;
+mod serve;
+mod serve_http;
 mod spin;
 mod sweep;
 mod util;
