@@ -9,8 +9,10 @@
 //! keep their length.
 
 mod build;
+mod draw;
 mod format;
 mod scene;
+mod track;
 mod xyz;
 
 pub use build::{AnimationError, AnimationOptions, Columns, DEFAULT_FPS, MAX_FRAMES};
