@@ -16,7 +16,7 @@ use mechkit::scenario::write_atomic;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 
-mod axes;
+pub(crate) mod axes;
 mod bars;
 mod chart;
 mod colour;

@@ -139,11 +139,7 @@ fn short(v: f64) -> String {
             s
         }
     } else {
-        let s = format!("{v:.2e}");
-        match s.split_once('e') {
-            Some((m, e)) => format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.')),
-            None => s,
-        }
+        crate::plot::axes::scientific(v)
     }
 }
 

@@ -48,6 +48,12 @@ pub(super) fn decade(v: f64, plain: bool) -> String {
     if plain {
         return super::tick(v, 1.0);
     }
+    scientific(v)
+}
+
+/// `v` in scientific notation to three significant digits, trailing zeros dropped: `2.5e-7`,
+/// `1.23e6`.
+pub(crate) fn scientific(v: f64) -> String {
     let s = format!("{v:.2e}");
     match s.split_once('e') {
         Some((m, e)) => format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.')),
