@@ -342,7 +342,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
     events.extend(model_events);
     let observables = read_observe(root, &names)?;
     let (every, output_times, plots, energy_bars) = read_output(root, &names, dim, env)?;
-    let animation = read_animation(root)?;
+    let animation = super::animation_key::read_animation(root)?;
     let max_output = super::limits::read_max_size(root.table("output")?.as_ref())?
         .unwrap_or(super::limits::DEFAULT_MAX_OUTPUT);
     if t_max.is_none() && max_steps.is_none() {
@@ -378,35 +378,6 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         scene,
         animation,
     })
-}
-
-/// `[output] animation`: the formats to write the run's animation in after the run (`"gif"`,
-/// or a list such as `["gif", "html"]`).
-fn read_animation(
-    root: &Table<'_, '_>,
-) -> Result<Vec<crate::animation::AnimationFormat>, ScenarioError> {
-    let Some(output) = root.table("output")? else {
-        return Ok(Vec::new());
-    };
-    let Some(list) = super::doc::string_list(&output, "animation")? else {
-        return Ok(Vec::new());
-    };
-    let mut formats = Vec::new();
-    for (name, span) in list {
-        let format = crate::animation::AnimationFormat::parse(name).ok_or_else(|| {
-            root.src
-                .error(
-                    ErrorKind::Invalid,
-                    format!("unknown animation format `{name}`"),
-                    span,
-                )
-                .with_hint("use \"gif\", \"mp4\" (needs ffmpeg) or \"html\", or a list: [\"gif\", \"html\"]")
-        })?;
-        if !formats.contains(&format) {
-            formats.push(format);
-        }
-    }
-    Ok(formats)
 }
 
 /// The `name` of the `index`-th of `count` bodies (`body`, or `body1`, … when unnamed): a name

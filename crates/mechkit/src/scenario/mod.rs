@@ -37,6 +37,7 @@
 //! The format is documented key by key in `docs/scenario.md`.
 
 mod analytic;
+mod animation_key;
 mod bodyfile;
 mod build;
 mod check;
