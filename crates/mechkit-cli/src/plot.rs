@@ -74,6 +74,37 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
+/// The largest end a linear axis has: its span, tick step and ticks are then finite numbers.
+const AXIS_END: f64 = f64::MAX / 4.0;
+
+/// The narrowest span of a linear axis, relative to its larger end: a tick step of this
+/// span is still many units in the last place of the ticks.
+const AXIS_RESOLUTION: f64 = 1e-9;
+
+/// A range whose ticks can be counted: ends clamped to ±[`AXIS_END`] (NaN taken as 0), and
+/// a span at least [`AXIS_RESOLUTION`] of the larger end, widened about the middle when it
+/// is narrower. Every linear axis is drawn on such a range. plotters counts its ticks by
+/// stepping from one end to the other; its step is a power of ten near the span, so with a
+/// finite span of this width the count is at most the labels asked for and the loop ends.
+/// Two bodies at ±1e308 made the span infinite, the step infinite, and the loop endless (a
+/// run that never finished, and ignored SIGTERM).
+fn drawable((lo, hi): (f64, f64)) -> (f64, f64) {
+    let end = |v: f64| {
+        if v.is_nan() {
+            0.0
+        } else {
+            v.clamp(-AXIS_END, AXIS_END)
+        }
+    };
+    let (lo, hi) = (end(lo.min(hi)), end(hi.max(lo)));
+    let least = (AXIS_RESOLUTION * lo.abs().max(hi.abs())).max(1e-300);
+    if hi - lo >= least {
+        return (lo, hi);
+    }
+    let mid = lo.midpoint(hi);
+    (mid - least, mid + least)
+}
+
 /// Tick label: plain for ordinary magnitudes, `1.5e11` for very large or small ones.
 fn tick(v: f64, scale: f64) -> String {
     if v == 0.0 {
@@ -173,4 +204,45 @@ pub fn render_run(
     }
     scenario.write_summary(dir, &out.summary)?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use plotters::coord::types::RangedCoordf64;
+    use plotters::prelude::Ranged;
+
+    use super::drawable;
+
+    /// Issue 26: an axis from -1e308 to 1e308 (two bodies that far apart) has an infinite
+    /// span; plotters' tick loop never ended on it. Every range is made drawable, and its
+    /// ticks come out finite and few, whatever the ends.
+    #[test]
+    fn issue_026_every_axis_range_has_few_finite_ticks() {
+        let extremes = [
+            (-1e308, 1e308),
+            (f64::MIN, f64::MAX),
+            (f64::NEG_INFINITY, f64::INFINITY),
+            (f64::NAN, 1.0),
+            (1e308, 1e308),
+            (1e308, 1.000_000_000_000_000_2e308),
+            (5e-324, 1e-323),
+            (0.0, 0.0),
+            (-0.0, 5e-324),
+            (1e300, -1e300),
+            (0.0, 1.0),
+        ];
+        for range in extremes {
+            let (lo, hi) = drawable(range);
+            assert!(
+                lo.is_finite() && hi.is_finite() && hi > lo,
+                "{range:?} -> {lo}, {hi}"
+            );
+            assert!((hi - lo).is_finite(), "{range:?}");
+            let ticks = RangedCoordf64::from(lo..hi).key_points(12);
+            assert!(ticks.len() <= 14, "{range:?}: {} ticks", ticks.len());
+            assert!(ticks.iter().all(|t| t.is_finite()), "{range:?}: {ticks:?}");
+        }
+        // ordinary ranges are drawn as they are
+        assert_eq!(drawable((-0.05, 1.05)), (-0.05, 1.05));
+    }
 }

@@ -199,82 +199,105 @@ fn constant_value(e: &Expr, env: &Env<'_>) -> Option<f64> {
         .ok()
 }
 
+/// The dimension of `e`. The recursion only walks the tree; what each node makes of its
+/// operands' dimensions is worked out in functions of their own, so that a frame of the
+/// recursion stays small (a debug build gives every temporary of a function its own slot:
+/// with the rules inline, a formula [`crate::MAX_DEPTH`] levels deep took 8 MB of stack).
 fn infer(e: &Expr, env: &Env<'_>) -> Result<Dim, Failure> {
-    let dims = env.dims;
-    Ok(match e {
-        Expr::Num(_) => Dim::Literal,
-        Expr::Var(name) => match builtin_constant(name) {
-            Some(_) if matches!(dims(name), Dim::Unknown) => Dim::NONE,
-            _ => match dims(name) {
-                Dim::Known(d) if d.is_too_large() => {
-                    return Err(
-                        format!("`{name}` has a dimension whose exponent is too large").into(),
-                    );
-                }
-                d => d,
-            },
-        },
-        Expr::Neg(a) => infer(a, env)?,
-        Expr::Not(a) => {
-            infer(a, env)?;
-            Dim::NONE
-        }
+    match e {
+        Expr::Num(_) => Ok(Dim::Literal),
+        Expr::Var(name) => name_dimension(name, env),
+        Expr::Neg(a) => infer(a, env),
+        Expr::Not(a) => infer(a, env).map(|_| Dim::NONE),
         Expr::Binary(op, a, b) => {
-            let (da, db) = (infer(a, env)?, infer(b, env)?);
-            match op {
-                BinOp::Add => same("add", da, db, a, b)?,
-                BinOp::Sub => same("subtract", da, db, a, b)?,
-                op if op.is_comparison() => {
-                    same("compare", da, db, a, b)?;
-                    Dim::NONE
-                }
-                BinOp::And | BinOp::Or => Dim::NONE,
-                BinOp::Mul | BinOp::Div => match (da, db) {
-                    (Dim::Literal, Dim::Literal) => Dim::Literal,
-                    (Dim::Known(x), Dim::Known(y)) => Dim::Known(
-                        if *op == BinOp::Mul {
-                            x.checked_mul(y)
-                        } else {
-                            x.checked_div(y)
-                        }
-                        .map_err(|err| too_large(err, e))?,
-                    ),
-                    // A known dimensionless factor (pi, a ratio) keeps the other side as it is.
-                    (Dim::Known(x), other) if x.is_none() && *op == BinOp::Mul => other,
-                    (other, Dim::Known(y)) if y.is_none() => other,
-                    _ => Dim::Unknown,
-                },
-                BinOp::Pow => power(da, db, a, b, env)?,
-                _ => unreachable!("all operators covered"),
-            }
+            let da = infer(a, env)?;
+            let db = infer(b, env)?;
+            binary(e, *op, (da, db), (a, b), env)
         }
         Expr::Call(func, args) => {
-            let ds = args
-                .iter()
-                .map(|a| infer(a, env))
-                .collect::<Result<Vec<_>, _>>()?;
-            match func {
-                Func::Abs | Func::Floor | Func::Ceil => ds[0],
-                Func::Sign | Func::Heaviside => Dim::NONE,
-                Func::Sqrt => root(ds[0], 2, e)?,
-                Func::Cbrt => root(ds[0], 3, e)?,
-                Func::Min | Func::Max => {
-                    let mut acc = ds[0];
-                    for (d, a) in ds.iter().zip(args).skip(1) {
-                        acc = same("compare", acc, *d, &args[0], a)?;
-                    }
-                    acc
-                }
-                Func::Atan2 => {
-                    same("compare", ds[0], ds[1], &args[0], &args[1])?;
-                    Dim::NONE
-                }
-                Func::If => same("choose between", ds[1], ds[2], &args[1], &args[2])?,
-                _ => {
-                    dimensionless(func.name(), ds[0], &args[0])?;
-                    Dim::NONE
-                }
+            let mut ds = Vec::with_capacity(args.len());
+            for a in args {
+                ds.push(infer(a, env)?);
             }
+            call(e, *func, &ds, args)
+        }
+    }
+}
+
+#[inline(never)]
+fn name_dimension(name: &str, env: &Env<'_>) -> Result<Dim, Failure> {
+    let dims = env.dims;
+    Ok(match builtin_constant(name) {
+        Some(_) if matches!(dims(name), Dim::Unknown) => Dim::NONE,
+        _ => match dims(name) {
+            Dim::Known(d) if d.is_too_large() => {
+                return Err(format!("`{name}` has a dimension whose exponent is too large").into());
+            }
+            d => d,
+        },
+    })
+}
+
+/// The dimension of `e = a op b` from those of `a` and `b`.
+#[inline(never)]
+fn binary(
+    e: &Expr,
+    op: BinOp,
+    (da, db): (Dim, Dim),
+    (a, b): (&Expr, &Expr),
+    env: &Env<'_>,
+) -> Result<Dim, Failure> {
+    Ok(match op {
+        BinOp::Add => same("add", da, db, a, b)?,
+        BinOp::Sub => same("subtract", da, db, a, b)?,
+        op if op.is_comparison() => {
+            same("compare", da, db, a, b)?;
+            Dim::NONE
+        }
+        BinOp::And | BinOp::Or => Dim::NONE,
+        BinOp::Mul | BinOp::Div => match (da, db) {
+            (Dim::Literal, Dim::Literal) => Dim::Literal,
+            (Dim::Known(x), Dim::Known(y)) => Dim::Known(
+                if op == BinOp::Mul {
+                    x.checked_mul(y)
+                } else {
+                    x.checked_div(y)
+                }
+                .map_err(|err| too_large(err, e))?,
+            ),
+            // A known dimensionless factor (pi, a ratio) keeps the other side as it is.
+            (Dim::Known(x), other) if x.is_none() && op == BinOp::Mul => other,
+            (other, Dim::Known(y)) if y.is_none() => other,
+            _ => Dim::Unknown,
+        },
+        BinOp::Pow => power(da, db, a, b, env)?,
+        _ => unreachable!("all operators covered"),
+    })
+}
+
+/// The dimension of `e = func(args)` from those of its arguments, `ds`.
+#[inline(never)]
+fn call(e: &Expr, func: Func, ds: &[Dim], args: &[Expr]) -> Result<Dim, Failure> {
+    Ok(match func {
+        Func::Abs | Func::Floor | Func::Ceil => ds[0],
+        Func::Sign | Func::Heaviside => Dim::NONE,
+        Func::Sqrt => root(ds[0], 2, e)?,
+        Func::Cbrt => root(ds[0], 3, e)?,
+        Func::Min | Func::Max => {
+            let mut acc = ds[0];
+            for (d, a) in ds.iter().zip(args).skip(1) {
+                acc = same("compare", acc, *d, &args[0], a)?;
+            }
+            acc
+        }
+        Func::Atan2 => {
+            same("compare", ds[0], ds[1], &args[0], &args[1])?;
+            Dim::NONE
+        }
+        Func::If => same("choose between", ds[1], ds[2], &args[1], &args[2])?,
+        _ => {
+            dimensionless(func.name(), ds[0], &args[0])?;
+            Dim::NONE
         }
     })
 }

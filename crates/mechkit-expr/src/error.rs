@@ -63,7 +63,8 @@ pub enum ExprErrorKind {
     },
     /// A name used as a value that is a function.
     FunctionAsValue(String),
-    /// The formula is too deeply nested to evaluate.
+    /// The formula nests deeper than [`crate::MAX_DEPTH`] levels (a sum or product of more
+    /// terms than that is as deep as it is long).
     TooDeep,
     /// Dimensions that do not fit together (e.g. metres plus seconds).
     Dimension {
@@ -127,7 +128,10 @@ impl ExprError {
             ExprErrorKind::FunctionAsValue(name) => {
                 format!("`{name}` is a function; call it as `{name}(…)`")
             }
-            ExprErrorKind::TooDeep => "the formula is nested too deeply".into(),
+            ExprErrorKind::TooDeep => format!(
+                "the formula nests more than {} levels deep here, the most a formula may",
+                crate::MAX_DEPTH
+            ),
             ExprErrorKind::Dimension { message, .. } => message.clone(),
         }
     }
@@ -175,6 +179,13 @@ impl ExprError {
                 (None, None) => None,
             },
             ExprErrorKind::Dimension { hint, .. } => hint.clone(),
+            ExprErrorKind::TooDeep => Some(
+                "every operator, sign, function call and pair of parentheses is a level over its \
+                 operands, so a sum or product of many terms is as deep as it is long: group the \
+                 terms in parentheses, `(a + b + …) + (c + d + …)`, or give parts of the formula \
+                 names of their own (in a scenario, [constants])"
+                    .into(),
+            ),
             ExprErrorKind::UnexpectedEnd { .. } | ExprErrorKind::UnclosedParen => {
                 Some("check that every `(` has its `)` and every operator its operands".into())
             }

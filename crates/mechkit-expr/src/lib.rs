@@ -57,7 +57,7 @@ pub use error::{ExprError, ExprErrorKind};
 pub use formula::Formula;
 pub use interval::{Interval, Jet};
 pub use number::Number;
-pub use parser::{Parsed, parse};
+pub use parser::{MAX_DEPTH, Parsed, parse};
 pub use scope::{BUILTIN_CONSTANTS, Binding, MapScope, Scope, builtin_constant};
 pub use span::Span;
 pub use suggest::{did_you_mean, edit_distance, nearest};

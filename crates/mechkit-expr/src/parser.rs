@@ -10,8 +10,14 @@ use crate::suggest::nearest;
 const PREC_NEG: u8 = 7;
 /// `not` binds looser than comparisons: `not x < 1 = not (x < 1)`.
 const PREC_NOT: u8 = 3;
-/// Deeper nesting than this is refused rather than risking the stack.
-const MAX_DEPTH: usize = 200;
+/// The deepest expression tree a formula may make, counted in levels above its numbers and
+/// names: each operator, sign, function call and pair of parentheses is one level over its
+/// deepest operand, so `x` is 0 levels deep, `(x)` and `x + 1` one, and a flat sum of `n` terms
+/// `n - 1` (it is the chain `((a + b) + c) + …`). Deeper formulas are refused when parsed, so
+/// that every recursive pass over the tree (evaluation, dimensions, native code, symbolic
+/// simplification and derivatives, printing, dropping) fits in the smallest thread stack
+/// mechkit runs on (a rayon worker's 2 MiB), with room to spare in a debug build.
+pub const MAX_DEPTH: usize = 256;
 
 /// The result of parsing: the tree and where each name occurs in the text.
 #[derive(Debug, Clone)]
@@ -24,28 +30,31 @@ pub struct Parsed {
 
 /// Parses `src` into an expression.
 pub fn parse(src: &str) -> Result<Parsed, ExprError> {
-    let tokens = tokenize(src)?;
+    parse_tokens(src, tokenize(src)?).map_err(|e| *e)
+}
+
+fn parse_tokens(src: &str, tokens: Vec<Token>) -> Parse<Parsed> {
     if tokens.is_empty() {
-        return Err(ExprError::new(
+        return Err(Box::new(ExprError::new(
             ExprErrorKind::Empty,
             Span::new(0, src.len()),
             src,
-        ));
+        )));
     }
     let mut p = Parser {
         src,
         tokens,
         pos: 0,
         names: Vec::new(),
-        depth: 0,
+        nesting: 0,
     };
-    let expr = p.expr(0)?;
+    let node = p.expr(0)?;
     if let Some(t) = p.peek() {
         let t = t.clone();
         return Err(p.after_operand_error(&t));
     }
     Ok(Parsed {
-        expr,
+        expr: node.expr,
         names: p.names,
     })
 }
@@ -55,7 +64,20 @@ struct Parser<'a> {
     tokens: Vec<Token>,
     pos: usize,
     names: Vec<(String, Span)>,
+    /// Calls of [`Parser::expr`] open at once.
+    nesting: usize,
+}
+
+/// A parsed subexpression and its depth, counted as [`MAX_DEPTH`] counts.
+struct Node {
+    expr: Expr,
     depth: usize,
+}
+
+impl Node {
+    fn leaf(expr: Expr) -> Node {
+        Node { expr, depth: 0 }
+    }
 }
 
 fn binop(tok: &Tok) -> Option<BinOp> {
@@ -77,9 +99,19 @@ fn binop(tok: &Tok) -> Option<BinOp> {
     })
 }
 
+/// A parser result. The error is boxed, and built out of line, so that the frames of the
+/// recursion stay small: they bound how deep a formula can be parsed on a given stack.
+type Parse<T> = Result<T, Box<ExprError>>;
+
+// the errors are built boxed, for `Parse`
+#[allow(clippy::unnecessary_box_returns)]
 impl Parser<'_> {
     fn peek(&self) -> Option<&Token> {
         self.tokens.get(self.pos)
+    }
+
+    fn peek_is(&self, tok: &Tok) -> bool {
+        self.peek().is_some_and(|t| t.tok == *tok)
     }
 
     fn next(&mut self) -> Option<Token> {
@@ -92,11 +124,20 @@ impl Parser<'_> {
         Span::new(self.src.len(), self.src.len())
     }
 
-    fn err(&self, kind: ExprErrorKind, span: Span) -> ExprError {
-        ExprError::new(kind, span, self.src)
+    /// The span of the next token, or the end of the text.
+    fn next_span(&self) -> Span {
+        self.peek().map_or(self.end_span(), |t| t.span)
     }
 
-    fn unexpected_end(&self, expected: &str) -> ExprError {
+    #[cold]
+    #[inline(never)]
+    fn err(&self, kind: ExprErrorKind, span: Span) -> Box<ExprError> {
+        Box::new(ExprError::new(kind, span, self.src))
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn unexpected_end(&self, expected: &str) -> Box<ExprError> {
         self.err(
             ExprErrorKind::UnexpectedEnd {
                 expected: expected.into(),
@@ -105,8 +146,22 @@ impl Parser<'_> {
         )
     }
 
+    #[cold]
+    #[inline(never)]
+    fn unexpected(&self, found: &Tok, expected: &str, span: Span) -> Box<ExprError> {
+        self.err(
+            ExprErrorKind::UnexpectedToken {
+                found: found.describe(),
+                expected: expected.into(),
+            },
+            span,
+        )
+    }
+
     /// The error for a token that follows a complete operand but is not an operator.
-    fn after_operand_error(&self, t: &Token) -> ExprError {
+    #[cold]
+    #[inline(never)]
+    fn after_operand_error(&self, t: &Token) -> Box<ExprError> {
         match t.tok {
             Tok::Num(_) | Tok::Ident(_) | Tok::LParen | Tok::Not => self.err(
                 ExprErrorKind::MissingOperator {
@@ -114,145 +169,171 @@ impl Parser<'_> {
                 },
                 t.span,
             ),
-            _ => self.err(
-                ExprErrorKind::UnexpectedToken {
-                    found: t.tok.describe(),
-                    expected: "an operator or the end of the formula".into(),
-                },
-                t.span,
-            ),
+            _ => self.unexpected(&t.tok, "an operator or the end of the formula", t.span),
         }
     }
 
-    fn expr(&mut self, min_prec: u8) -> Result<Expr, ExprError> {
-        self.depth += 1;
-        if self.depth > MAX_DEPTH {
-            let span = self.peek().map_or(self.end_span(), |t| t.span);
+    #[cold]
+    #[inline(never)]
+    fn second_comparison(&self, first: Span, second: Span) -> Box<ExprError> {
+        self.err(
+            ExprErrorKind::UnexpectedToken {
+                found: format!(
+                    "a second comparison (first at column {})",
+                    first.column(self.src)
+                ),
+                expected: "`and` between comparisons, e.g. `0 < x and x < 1`".into(),
+            },
+            second,
+        )
+    }
+
+    /// Parses an expression whose operators bind at least as tightly as `min_prec`.
+    ///
+    /// Every call but the outermost is made for an operand of a parenthesis, a sign, an
+    /// operator or a function call, each a level of the tree, so the calls open at once never
+    /// outnumber the levels above the innermost operand: refusing more than [`MAX_DEPTH`] of
+    /// them bounds the parser's own recursion by the same rule as the tree.
+    fn expr(&mut self, min_prec: u8) -> Parse<Node> {
+        if self.nesting > MAX_DEPTH {
+            return Err(self.err(ExprErrorKind::TooDeep, self.next_span()));
+        }
+        self.nesting += 1;
+        let node = self.operators(min_prec);
+        self.nesting -= 1;
+        node
+    }
+
+    /// One level over `depth`, refused past [`MAX_DEPTH`] at `span` (the operator, sign,
+    /// parenthesis or call that makes it).
+    fn level_over(&self, depth: usize, span: Span) -> Parse<usize> {
+        if depth >= MAX_DEPTH {
             return Err(self.err(ExprErrorKind::TooDeep, span));
         }
+        Ok(depth + 1)
+    }
+
+    /// An operand, then binary operators of precedence `min_prec` or more and their operands.
+    /// A chain of operators of one precedence (`a + b + c`) builds to the left, one level per
+    /// operator.
+    fn operators(&mut self, min_prec: u8) -> Parse<Node> {
         let mut lhs = self.prefix()?;
         let mut last_comparison: Option<Span> = None;
-        while let Some(t) = self.peek() {
-            let Some(op) = binop(&t.tok) else {
-                if matches!(t.tok, Tok::RParen | Tok::Comma) {
-                    break;
-                }
-                let t = t.clone();
-                return Err(self.after_operand_error(&t));
-            };
-            let prec = op.precedence();
-            if prec < min_prec {
-                break;
-            }
-            let op_span = t.span;
+        while let Some((op, op_span)) = self.binary_operator(min_prec)? {
             if op.is_comparison() {
-                if let Some(prev) = last_comparison {
-                    return Err(self.err(
-                        ExprErrorKind::UnexpectedToken {
-                            found: format!(
-                                "a second comparison (first at column {})",
-                                prev.column(self.src)
-                            ),
-                            expected: "`and` between comparisons, e.g. `0 < x and x < 1`".into(),
-                        },
-                        op_span,
-                    ));
+                if let Some(first) = last_comparison {
+                    return Err(self.second_comparison(first, op_span));
                 }
                 last_comparison = Some(op_span);
             }
+            // a chain's depth grows with its length: refuse it at the operator that passes the
+            // limit, before its right operand is read
+            self.level_over(lhs.depth, op_span)?;
             self.pos += 1;
-            // `^` is right-associative; everything else associates to the left.
-            let next_min = if op == BinOp::Pow { prec } else { prec + 1 };
             if self.peek().is_none() {
                 return Err(self.unexpected_end(&format!("a value after `{}`", op.symbol())));
             }
-            let rhs = self.expr(next_min)?;
-            lhs = Expr::binary(op, lhs, rhs);
+            // `^` is right-associative; everything else associates to the left.
+            let prec = op.precedence();
+            let rhs = self.expr(if op == BinOp::Pow { prec } else { prec + 1 })?;
+            lhs = Node {
+                depth: self.level_over(lhs.depth.max(rhs.depth), op_span)?,
+                expr: Expr::binary(op, lhs.expr, rhs.expr),
+            };
         }
-        self.depth -= 1;
         Ok(lhs)
     }
 
-    fn prefix(&mut self) -> Result<Expr, ExprError> {
+    /// The binary operator that comes next, if it binds at least as tightly as `min_prec`;
+    /// `None` at the end, a `)` or a `,`.
+    fn binary_operator(&self, min_prec: u8) -> Parse<Option<(BinOp, Span)>> {
+        let Some(t) = self.peek() else {
+            return Ok(None);
+        };
+        match binop(&t.tok) {
+            Some(op) if op.precedence() >= min_prec => Ok(Some((op, t.span))),
+            Some(_) => Ok(None),
+            None if matches!(t.tok, Tok::RParen | Tok::Comma) => Ok(None),
+            None => Err(self.after_operand_error(t)),
+        }
+    }
+
+    fn prefix(&mut self) -> Parse<Node> {
         let Some(t) = self.next() else {
             return Err(self.unexpected_end("a value"));
         };
         match t.tok {
-            Tok::Num(x) => Ok(Expr::Num(x)),
+            Tok::Num(x) => Ok(Node::leaf(Expr::Num(x))),
             Tok::Ident(name) => {
-                if self.peek().is_some_and(|n| n.tok == Tok::LParen) {
+                if self.peek_is(&Tok::LParen) {
                     self.call(&name, t.span)
                 } else {
                     self.names.push((name.clone(), t.span));
-                    Ok(Expr::Var(name))
+                    Ok(Node::leaf(Expr::Var(name)))
                 }
             }
-            Tok::LParen => {
-                if self.peek().is_none() {
-                    return Err(self.err(ExprErrorKind::UnclosedParen, t.span));
-                }
-                let inner = self.expr(0)?;
-                match self.next() {
-                    Some(Token {
-                        tok: Tok::RParen, ..
-                    }) => Ok(inner),
-                    Some(other) => Err(self.err(
-                        ExprErrorKind::UnexpectedToken {
-                            found: other.tok.describe(),
-                            expected: "`)`".into(),
-                        },
-                        other.span,
-                    )),
-                    None => Err(self.err(ExprErrorKind::UnclosedParen, t.span)),
-                }
-            }
-            Tok::Minus => {
-                let operand = self.operand_of(&t, PREC_NEG)?;
-                Ok(match operand {
-                    Expr::Num(x) => Expr::Num(-x),
-                    other => Expr::Neg(Box::new(other)),
-                })
-            }
-            Tok::Plus => self.operand_of(&t, PREC_NEG),
-            Tok::Not => Ok(Expr::Not(Box::new(self.operand_of(&t, PREC_NOT)?))),
-            other => Err(self.err(
-                ExprErrorKind::UnexpectedToken {
-                    found: other.describe(),
-                    expected: "a number, a name, `(` or `-`".into(),
-                },
-                t.span,
-            )),
+            Tok::LParen => self.parenthesised(t.span),
+            Tok::Minus | Tok::Plus | Tok::Not => self.signed(&t),
+            other => Err(self.unexpected(&other, "a number, a name, `(` or `-`", t.span)),
         }
     }
 
-    fn operand_of(&mut self, op: &Token, prec: u8) -> Result<Expr, ExprError> {
+    /// What follows a `(` at `open`, up to its `)`.
+    fn parenthesised(&mut self, open: Span) -> Parse<Node> {
+        if self.peek().is_none() {
+            return Err(self.err(ExprErrorKind::UnclosedParen, open));
+        }
+        let inner = self.expr(0)?;
+        match self.next() {
+            Some(Token {
+                tok: Tok::RParen, ..
+            }) => Ok(Node {
+                depth: self.level_over(inner.depth, open)?,
+                expr: inner.expr,
+            }),
+            Some(other) => Err(self.unexpected(&other.tok, "`)`", other.span)),
+            None => Err(self.err(ExprErrorKind::UnclosedParen, open)),
+        }
+    }
+
+    /// The operand of a sign or `not` (the token `op`), and the sign applied.
+    fn signed(&mut self, op: &Token) -> Parse<Node> {
         if self.peek().is_none() {
             return Err(self.unexpected_end(&format!("a value after {}", op.tok.describe())));
         }
-        self.expr(prec)
+        let operand = self.expr(if op.tok == Tok::Not {
+            PREC_NOT
+        } else {
+            PREC_NEG
+        })?;
+        Ok(Node {
+            depth: self.level_over(operand.depth, op.span)?,
+            expr: match (&op.tok, operand.expr) {
+                (Tok::Minus, Expr::Num(x)) => Expr::Num(-x),
+                (Tok::Minus, other) => Expr::Neg(Box::new(other)),
+                (Tok::Not, other) => Expr::Not(Box::new(other)),
+                (_, other) => other,
+            },
+        })
     }
 
-    fn call(&mut self, name: &str, name_span: Span) -> Result<Expr, ExprError> {
+    fn call(&mut self, name: &str, name_span: Span) -> Parse<Node> {
         let Some(func) = Func::from_name(name) else {
-            let suggestions = nearest(name, Func::ALL.iter().map(|f| f.name()));
-            return Err(self.err(
-                ExprErrorKind::UnknownFunction {
-                    name: name.to_string(),
-                    suggestions,
-                },
-                name_span,
-            ));
+            return Err(self.unknown_function(name, name_span));
         };
-        let open = self.next().expect("caller saw `(`");
+        let open = self.next().expect("caller saw `(`").span;
         let mut args = Vec::new();
-        if self.peek().is_some_and(|t| t.tok == Tok::RParen) {
+        let mut deepest = 0;
+        if self.peek_is(&Tok::RParen) {
             self.pos += 1;
         } else {
             loop {
                 if self.peek().is_none() {
-                    return Err(self.err(ExprErrorKind::UnclosedParen, open.span));
+                    return Err(self.err(ExprErrorKind::UnclosedParen, open));
                 }
-                args.push(self.expr(0)?);
+                let arg = self.expr(0)?;
+                deepest = deepest.max(arg.depth);
+                args.push(arg.expr);
                 match self.next() {
                     Some(Token {
                         tok: Tok::Comma, ..
@@ -261,30 +342,46 @@ impl Parser<'_> {
                         tok: Tok::RParen, ..
                     }) => break,
                     Some(other) => {
-                        return Err(self.err(
-                            ExprErrorKind::UnexpectedToken {
-                                found: other.tok.describe(),
-                                expected: "`,` or `)`".into(),
-                            },
-                            other.span,
-                        ));
+                        return Err(self.unexpected(&other.tok, "`,` or `)`", other.span));
                     }
-                    None => return Err(self.err(ExprErrorKind::UnclosedParen, open.span)),
+                    None => return Err(self.err(ExprErrorKind::UnclosedParen, open)),
                 }
             }
         }
         if !func.arity().accepts(args.len()) {
-            let close = self.tokens[self.pos - 1].span;
-            return Err(self.err(
-                ExprErrorKind::Arity {
-                    name: name.to_string(),
-                    expected: func.arity().to_string(),
-                    found: args.len(),
-                },
-                name_span.to(close),
-            ));
+            return Err(self.arity(func, name_span, args.len()));
         }
-        Ok(Expr::Call(func, args))
+        Ok(Node {
+            depth: self.level_over(deepest, name_span)?,
+            expr: Expr::Call(func, args),
+        })
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn unknown_function(&self, name: &str, span: Span) -> Box<ExprError> {
+        let suggestions = nearest(name, Func::ALL.iter().map(|f| f.name()));
+        self.err(
+            ExprErrorKind::UnknownFunction {
+                name: name.to_string(),
+                suggestions,
+            },
+            span,
+        )
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn arity(&self, func: Func, name_span: Span, found: usize) -> Box<ExprError> {
+        let close = self.tokens[self.pos - 1].span;
+        self.err(
+            ExprErrorKind::Arity {
+                name: func.name().to_string(),
+                expected: func.arity().to_string(),
+                found,
+            },
+            name_span.to(close),
+        )
     }
 }
 
@@ -374,6 +471,43 @@ mod tests {
         assert_eq!(parse(&src).unwrap_err().kind, ExprErrorKind::TooDeep);
         let src = "-".repeat(100_000) + "1";
         assert_eq!(parse(&src).unwrap_err().kind, ExprErrorKind::TooDeep);
+    }
+
+    /// Issue 26: the limit counted parentheses, not the tree. A flat sum of 30,000 terms is a
+    /// chain 29,999 levels deep and overflowed the stack of every later pass; it is refused
+    /// at the operator that passes the limit. The documented 256 levels are allowed, in any
+    /// shape (the old count refused the 200th parenthesis of a documented 200).
+    #[test]
+    fn issue_026_the_depth_is_the_trees_and_256_levels_are_allowed() {
+        let chain = |n: usize| vec!["x"; n].join("+");
+        let nested = |open: &str, n: usize| format!("{}x{}", open.repeat(n), ")".repeat(n));
+        for allowed in [
+            chain(MAX_DEPTH + 1),
+            nested("(", MAX_DEPTH),
+            nested("sin(", MAX_DEPTH),
+            nested("-(", MAX_DEPTH / 2),
+            vec!["x"; MAX_DEPTH + 1].join("^"),
+        ] {
+            assert!(parse(&allowed).is_ok(), "{}", &allowed[..40]);
+        }
+        let e = parse(&chain(30_000)).unwrap_err();
+        assert_eq!(e.kind, ExprErrorKind::TooDeep);
+        // the `+` after term 257
+        assert_eq!(e.column(), 2 * (MAX_DEPTH + 1));
+        assert!(e.to_string().contains("more than 256 levels"), "{e}");
+        assert!(e.to_string().len() < 1000, "{e}");
+        for refused in [
+            chain(MAX_DEPTH + 2),
+            nested("(", MAX_DEPTH + 1),
+            nested("sin(", MAX_DEPTH + 1),
+            nested("-(", MAX_DEPTH / 2 + 1),
+            vec!["x"; MAX_DEPTH + 2].join("^"),
+            format!("({})", chain(MAX_DEPTH + 1)),
+            format!("2*{}", nested("(", MAX_DEPTH)),
+        ] {
+            let e = parse(&refused).unwrap_err();
+            assert_eq!(e.kind, ExprErrorKind::TooDeep, "{}", &refused[..40]);
+        }
     }
 
     #[test]

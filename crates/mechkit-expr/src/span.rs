@@ -50,6 +50,49 @@ fn floor_char_boundary(s: &str, mut i: usize) -> usize {
     i
 }
 
+/// The most characters of a source line an error shows. A longer line (a formula of
+/// thousands of terms) is cut to this many around the place it points at, with `…` where
+/// it is cut.
+pub const SHOWN_LINE: usize = 120;
+
+/// The part of `line` an error shows around the `width` characters from character `start`
+/// (0-based): the line itself when it has at most [`SHOWN_LINE`] characters, else a window
+/// of that many that begins a little before `start`, with `…` at a cut end. Returns the
+/// text, and where the span begins in it and how wide it is, in characters.
+///
+/// ```
+/// use mechkit_expr::span::excerpt;
+/// assert_eq!(excerpt("a + b", 4, 1), ("a + b".to_string(), 4, 1));
+/// let long = "x+".repeat(1000) + "x";
+/// let (text, start, width) = excerpt(&long, 1000, 1);
+/// assert!(text.starts_with('…') && text.ends_with('…'));
+/// assert_eq!(text.chars().nth(start), long.chars().nth(1000));
+/// assert_eq!(width, 1);
+/// ```
+pub fn excerpt(line: &str, start: usize, width: usize) -> (String, usize, usize) {
+    let count = line.chars().count();
+    if count <= SHOWN_LINE {
+        return (line.to_string(), start, width);
+    }
+    let begin = start.saturating_sub(SHOWN_LINE / 3).min(count - SHOWN_LINE);
+    let end = begin + SHOWN_LINE;
+    let mut text: String = line.chars().skip(begin).take(SHOWN_LINE).collect();
+    let mut at = start - begin.min(start);
+    if begin > 0 {
+        text.insert(0, '…');
+        at += 1;
+    }
+    if end < count {
+        text.push('…');
+    }
+    let shown = text.chars().count();
+    (
+        text,
+        at.min(shown),
+        width.min(shown.saturating_sub(at)).max(1),
+    )
+}
+
 /// Renders `source` with a caret line under `span`:
 ///
 /// ```text
@@ -57,13 +100,15 @@ fn floor_char_boundary(s: &str, mut i: usize) -> usize {
 ///      ^^^^
 /// ```
 ///
-/// Only the first line of a multi-line source is shown. The caret line has at least one `^`.
+/// Only the first line of a multi-line source is shown, and of a long line only an
+/// [`excerpt`]. The caret line has at least one `^`.
 pub fn caret_lines(source: &str, span: Span) -> String {
     let line = source.lines().next().unwrap_or("");
     let start = floor_char_boundary(line, span.start.min(line.len()));
     let end = floor_char_boundary(line, span.end.min(line.len())).max(start);
     let pad = line[..start].chars().count();
     let width = line[start..end].chars().count().max(1);
+    let (line, pad, width) = excerpt(line, pad, width);
     format!("{line}\n{}{}", " ".repeat(pad), "^".repeat(width))
 }
 
@@ -81,6 +126,18 @@ mod tests {
     fn caret_at_end_of_input_is_visible() {
         let s = caret_lines("a +", Span::new(3, 3));
         assert_eq!(s, "a +\n   ^");
+    }
+
+    #[test]
+    fn a_long_line_is_cut_around_the_span() {
+        let src = "1+".repeat(5000) + "x";
+        let at = src.len() - 1;
+        let s = caret_lines(&src, Span::new(at, at + 1));
+        let (line, carets) = s.split_once('\n').unwrap();
+        assert!(line.starts_with('…') && line.ends_with('x'), "{line}");
+        assert!(line.chars().count() <= SHOWN_LINE + 2);
+        assert_eq!(carets.trim_start().len(), 1);
+        assert_eq!(carets.len() - 1, line.chars().count() - 1);
     }
 
     #[test]

@@ -108,16 +108,25 @@ pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
         (None, None) => None,
         _ => bail!("give both --from and --to for a definite integral"),
     };
-    let rules = match &args.method {
-        Some(names) => {
-            let rules = Rule::parse_list(names).map_err(|e| anyhow!("--method: {e}"))?;
-            if let Some(bad) = args.n.iter().find(|&&n| n == 0) {
-                bail!("--n {bad}: the number of intervals must be at least 1");
+    let rules =
+        match &args.method {
+            Some(names) => {
+                let rules = Rule::parse_list(names).map_err(|e| anyhow!("--method: {e}"))?;
+                if let Some(bad) = args.n.iter().find(|&&n| n == 0) {
+                    bail!("--n {bad}: the number of intervals must be at least 1");
+                }
+                // more evaluations than any rule makes: refused before anything is computed
+                for &n in &args.n {
+                    if let Some(Err(e)) = rules.iter().map(|r| r.check_intervals(n)).find(|c| {
+                        matches!(c, Err(mechkit::quad::RuleError::TooManyEvaluations { .. }))
+                    }) {
+                        bail!("--n {n}: {e}");
+                    }
+                }
+                rules
             }
-            rules
-        }
-        None => Vec::new(),
-    };
+            None => Vec::new(),
+        };
     let i = check(
         calculus::integration(&args.expr, &args.var, limits, &p, &rules, &args.n),
         "integrand",

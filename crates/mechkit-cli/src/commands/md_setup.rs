@@ -27,6 +27,7 @@ fn flag(option: MdOption) -> &'static str {
         MdOption::Cutoff => "--cutoff",
         MdOption::Skin => "--skin",
         MdOption::Threads => "--threads",
+        MdOption::Steps => "--steps",
         MdOption::ThermoEvery => "--thermo-every",
         MdOption::XyzEvery => "--xyz-every",
     }

@@ -9,7 +9,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::chart::{draw_mesh, titled_area};
 use super::style::Style;
-use super::{PALETTE, tick};
+use super::{PALETTE, drawable, tick};
 
 const GAIN: RGBColor = RGBColor(44, 160, 44);
 const LOSS: RGBColor = RGBColor(214, 39, 40);
@@ -34,7 +34,7 @@ where
         .filter(|v| v.is_finite())
         .fold((0.0, 0.0), |(lo, hi): (f64, f64), v| (lo.min(v), hi.max(v)));
     let pad = if hi > lo { 0.08 * (hi - lo) } else { 1.0 };
-    let (y0, y1) = (if lo < 0.0 { lo - pad } else { 0.0 }, hi + pad);
+    let (y0, y1) = drawable((if lo < 0.0 { lo - pad } else { 0.0 }, hi + pad));
     let scale = y0.abs().max(y1.abs());
     let labels: Vec<String> = bars.iter().map(|b| b.label.clone()).collect();
     let area = titled_area(root, plot, title, style)?;

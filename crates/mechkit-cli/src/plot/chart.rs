@@ -18,7 +18,7 @@ use super::axes::{decade, log_range};
 use super::colour::{bar_width, draw_bar, viridis};
 use super::layout::{clip_to_band, in_legend, legend_corner};
 use super::style::Style;
-use super::{PALETTE, equalize, range, tick};
+use super::{PALETTE, drawable, equalize, range, tick};
 
 /// The chart's frame: its style, ranges and vertical scale.
 struct Frame {
@@ -70,6 +70,10 @@ where
             f64::from(w) - f64::from(y_area + right),
             f64::from(h) - f64::from(x_area),
         );
+    }
+    xr = drawable(xr);
+    if !log {
+        yr = drawable(yr);
     }
     let mut builder = ChartBuilder::on(&area);
     builder

@@ -82,12 +82,12 @@ pub(super) fn viridis(t: f64) -> RGBColor {
 /// The values shown on the bar: `scale`'s range, widened about a single value.
 fn shown(scale: &ColourScale) -> (f64, f64) {
     let (lo, hi) = (scale.from.min(scale.to), scale.from.max(scale.to));
-    if hi > lo {
+    super::drawable(if hi > lo {
         (lo, hi)
     } else {
         let d = if lo == 0.0 { 0.5 } else { 0.1 * lo.abs() };
         (lo - d, lo + d)
-    }
+    })
 }
 
 /// The bar's ticks and their labels.

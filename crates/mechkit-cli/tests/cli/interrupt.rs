@@ -26,7 +26,7 @@ F = "-0.04*v*abs(v)"
 method = "euler-cromer"
 dt = "1 us"
 [stop]
-t_max = "1e7 s"
+t_max = "1000 s"
 {extra}
 "#
     )

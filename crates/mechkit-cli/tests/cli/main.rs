@@ -50,6 +50,7 @@ mod issue_022_calc;
 mod issue_022_mass;
 mod issue_022_rigid;
 mod issue_023_units;
+mod issue_026;
 mod limits;
 mod mass;
 mod md;

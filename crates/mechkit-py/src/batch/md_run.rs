@@ -125,6 +125,7 @@ fn keyword(option: MdOption) -> &'static str {
         MdOption::Cutoff => "cutoff",
         MdOption::Skin => "skin",
         MdOption::Threads => "threads",
+        MdOption::Steps => "steps",
         MdOption::ThermoEvery => "thermo_every",
         MdOption::XyzEvery => "xyz_every",
     }

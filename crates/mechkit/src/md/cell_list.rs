@@ -18,6 +18,13 @@ use super::SimBox;
 /// radius `range` than 3^d cells of width `range`.
 pub(crate) const REACH: usize = 2;
 
+/// The cell grid holds at most this many cells per particle (and at least one cell). A
+/// sparse system in a large box (256 atoms at density 10^-9) would otherwise get 1024 cells
+/// on each axis, 10^9 cells and an 8.6 GB index, for cells that are nearly all empty: past
+/// the bound the cells are made wider, which only adds candidate pairs. A liquid or a
+/// crystal (ρ ≈ 0.8, a cut-off of 2.5σ) has about one cell for two particles, far below it.
+pub(crate) const MAX_CELLS_PER_PARTICLE: usize = 4;
+
 /// Cell indices within REACH of one cell index along an axis, without repeats, and the
 /// same cells as runs of consecutive indices (at most two: a periodic wrap splits one).
 #[derive(Debug, Clone, Copy, Default)]
@@ -55,6 +62,20 @@ impl Adjacent {
                 self.run_count += 1;
             }
         }
+    }
+}
+
+/// Fewer cells per axis `n` until there are at most [`MAX_CELLS_PER_PARTICLE`] per particle:
+/// the axis with the most cells has them halved, so the cells stay at least as wide as they
+/// were and a neighbour search `REACH` cells away still covers the range. Grids within the
+/// bound are left as they are.
+fn bound_cells(n: &mut [usize; 3], particles: usize) {
+    let most = MAX_CELLS_PER_PARTICLE.saturating_mul(particles).max(1);
+    while n.iter().product::<usize>() > most {
+        let a = (0..3)
+            .max_by_key(|&a| (n[a], usize::MAX - a))
+            .expect("three axes");
+        n[a] = (n[a] / 2).max(1);
     }
 }
 
@@ -105,8 +126,12 @@ impl CellList {
             };
             self.n[a] = ((REACH as Real * extent / range).floor() as usize).clamp(1, 1 << 10);
             self.origin[a] = lo;
-            self.width[a] = if extent > 0.0 {
-                extent / self.n[a] as Real
+            self.width[a] = extent;
+        }
+        bound_cells(&mut self.n, x.len());
+        for (a, &wraps) in periodic.iter().enumerate() {
+            self.width[a] = if self.width[a] > 0.0 {
+                self.width[a] / self.n[a] as Real
             } else {
                 1.0
             };
@@ -115,7 +140,7 @@ impl CellList {
             for c in 0..n {
                 let mut adj = Adjacent::default();
                 for d in -(REACH as i64)..=REACH as i64 {
-                    let k = if periodic[a] {
+                    let k = if wraps {
                         (c + d).rem_euclid(n)
                     } else if (0..n).contains(&(c + d)) {
                         c + d
@@ -192,6 +217,34 @@ impl CellList {
 mod tests {
     use super::*;
     use crate::md::{Lattice, Xoshiro256};
+
+    /// 256 atoms at density 10^-9 (a box 6350σ on a side) used to get 1024^3 cells and an
+    /// 8.6 GB index; the grid is now bounded by the atom count, with every cell at least as
+    /// wide as the rule asks.
+    #[test]
+    fn issue_026_a_sparse_box_gets_cells_by_its_atoms_not_its_size() {
+        let (b, x) = Lattice::Fcc.build(4, 1e-9).unwrap();
+        let mut cells = CellList::default();
+        cells.rebuild(&b, &x, 2.8, None);
+        let count: usize = cells.n.iter().product();
+        assert!(count <= MAX_CELLS_PER_PARTICLE * x.len(), "{:?}", cells.n);
+        assert_eq!(cells.first.len(), count + 1);
+        for a in 0..3 {
+            assert!(cells.width[a] >= 2.8 / REACH as Real, "{:?}", cells.width);
+        }
+        // a liquid keeps the grid the rule gives it
+        let (b, x) = Lattice::Fcc.build(6, 0.8442).unwrap();
+        cells.rebuild(&b, &x, 2.8, None);
+        let edge = b.lengths()[0];
+        let n = (REACH as Real * edge / 2.8).floor() as usize;
+        assert_eq!(cells.n, [n; 3]);
+        let mut n = [1024, 1024, 1024];
+        bound_cells(&mut n, 256);
+        assert_eq!(n, [8, 8, 16]);
+        let mut n = [7, 1, 1];
+        bound_cells(&mut n, 0);
+        assert_eq!(n, [1, 1, 1]);
+    }
 
     /// The sort is a permutation, `rank` is its inverse, and cells come in order with
     /// every particle in the cell that contains it.

@@ -35,6 +35,8 @@ pub enum MdInput {
     BoxLength,
     /// The number of atoms (unit cells of a lattice, or particles of a file).
     Atoms,
+    /// The number of steps of a run.
+    Steps,
     /// The steps between thermo rows.
     ThermoEvery,
     /// The steps between frames.
@@ -58,6 +60,7 @@ impl MdInput {
             Self::RestLength => "the rest length",
             Self::BoxLength => "a box length",
             Self::Atoms => "the number of atoms",
+            Self::Steps => "the number of steps",
             Self::ThermoEvery => "the number of steps between thermo rows",
             Self::FrameEvery => "the number of steps between frames",
         }

@@ -24,12 +24,22 @@ pub struct RunPlan {
 }
 
 impl RunPlan {
-    /// A plan, checked: the intervals are at least one step.
+    /// A plan, checked: the intervals are at least one step, and the steps at most
+    /// [`crate::simulate::MAX_STEPS`] (10^9), the bound of every run of mechkit.
     pub fn new(
         steps: usize,
         thermo_every: usize,
         frame_every: Option<usize>,
     ) -> Result<Self, MdError> {
+        let max = crate::simulate::MAX_STEPS;
+        if steps as u64 > max {
+            return Err(MdError::TooMany {
+                input: MdInput::Steps,
+                value: steps as u64,
+                max,
+                hint: "a longer simulation is several runs, each started from the last frame of the one before (--positions and --velocities)",
+            });
+        }
         if thermo_every == 0 {
             return Err(MdError::NotPositive {
                 input: MdInput::ThermoEvery,
@@ -256,6 +266,15 @@ mod tests {
         let run = md.run_observed(&plan, &cancel, &mut ()).unwrap();
         assert_eq!(run.stop, MdStop::Cancelled);
         assert_eq!(run.rows.len(), 1, "the start is the state reached");
+    }
+
+    /// Issue 26: `md --steps 1e18` ran for ever; it is refused before the system is built.
+    #[test]
+    fn issue_026_a_run_of_more_steps_than_any_run_takes_is_refused() {
+        let e = RunPlan::new(1_000_000_000_000_000_000, 50, None).unwrap_err();
+        assert_eq!(e.input(), Some(MdInput::Steps));
+        assert!(e.to_string().contains("more than 1000000000"), "{e}");
+        assert!(RunPlan::new(1_000_000_000, 50, None).is_ok());
     }
 
     #[test]

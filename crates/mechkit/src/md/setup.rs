@@ -154,6 +154,7 @@ pub enum MdOption {
     Cutoff,
     Skin,
     Threads,
+    Steps,
     ThermoEvery,
     XyzEvery,
 }
@@ -175,6 +176,7 @@ impl MdOption {
             MdInput::SpringConstant => Self::K,
             MdInput::RestLength => Self::RestLength,
             MdInput::BoxLength => Self::Box,
+            MdInput::Steps => Self::Steps,
             MdInput::ThermoEvery => Self::ThermoEvery,
             MdInput::FrameEvery => Self::XyzEvery,
             _ => return None,

@@ -19,7 +19,7 @@ mod summation;
 
 pub use gauss_kronrod::{QuadError, QuadResult, Tolerance, integrate};
 pub use gauss_legendre::{MAX_GAUSS_POINTS, gauss_legendre};
-pub use rule::{Rule, RuleError, integrate_rule};
+pub use rule::{MAX_EVALUATIONS, Rule, RuleError, integrate_rule};
 pub use sample_rule::{SampleRule, SamplesError, cumulative, integrate_samples};
 pub use samples::{cumtrapz, cumtrapz_into, simpson, trapz, trapz_uniform};
 

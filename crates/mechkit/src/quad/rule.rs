@@ -122,6 +122,52 @@ impl Rule {
         Ok(rules)
     }
 
+    /// The evaluations of the integrand the rule makes on `n` panels (saturating).
+    pub fn evaluations(&self, n: usize) -> usize {
+        match *self {
+            Rule::Left | Rule::Right | Rule::Midpoint => n,
+            Rule::Trapezoid | Rule::Simpson => n.saturating_add(1),
+            Rule::GaussLegendre(points) => n.saturating_mul(points),
+        }
+    }
+
+    /// The most panels the rule may have: [`MAX_EVALUATIONS`] evaluations.
+    pub fn max_intervals(&self) -> usize {
+        match *self {
+            Rule::Left | Rule::Right | Rule::Midpoint => MAX_EVALUATIONS,
+            Rule::Trapezoid | Rule::Simpson => MAX_EVALUATIONS - 2,
+            Rule::GaussLegendre(points) => MAX_EVALUATIONS / points.max(1),
+        }
+    }
+
+    /// Whether the rule can be applied on `n` panels: at least one, an even number for
+    /// Simpson's rule, 1 to 64 points per panel for Gauss-Legendre, and at most
+    /// [`MAX_EVALUATIONS`] evaluations in all. [`integrate_rule`] checks the same; a front
+    /// checks it before any other work.
+    ///
+    /// # Errors
+    /// The first of these that fails.
+    pub fn check_intervals(&self, n: usize) -> Result<(), RuleError> {
+        if n == 0 {
+            return Err(RuleError::NoIntervals);
+        }
+        match *self {
+            Rule::Simpson if n % 2 == 1 => return Err(RuleError::OddSimpson { n }),
+            Rule::GaussLegendre(points) if !(1..=MAX_GAUSS_POINTS).contains(&points) => {
+                return Err(RuleError::GaussPoints { points });
+            }
+            _ => {}
+        }
+        if n > self.max_intervals() {
+            return Err(RuleError::TooManyEvaluations {
+                rule: *self,
+                n,
+                evaluations: self.evaluations(n),
+            });
+        }
+        Ok(())
+    }
+
     /// Order of convergence `p` for smooth integrands: the error scales as `h^p`
     /// (1, 1, 2, 2, 4 and `2N`).
     pub fn order(&self) -> usize {
@@ -147,6 +193,12 @@ impl fmt::Display for Rule {
     }
 }
 
+/// The most evaluations of the integrand one fixed rule makes: 10^8, a second or two of a
+/// compiled formula. `integrate --n 1e12` asked for 10^12 and ran for hours; a rule's error
+/// falls as `h^p`, so more panels than this add nothing a double can hold for a smooth
+/// integrand (and the adaptive quadrature serves the others).
+pub const MAX_EVALUATIONS: usize = 100_000_000;
+
 /// Why a fixed rule could not be applied.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -168,6 +220,19 @@ pub enum RuleError {
     GaussPoints {
         /// The points asked for.
         points: usize,
+    },
+    /// More evaluations than [`MAX_EVALUATIONS`].
+    #[error(
+        "{rule} on {n} intervals evaluates the integrand {evaluations} times, more than the {MAX_EVALUATIONS} a rule may; use at most {} intervals",
+        rule.max_intervals()
+    )]
+    TooManyEvaluations {
+        /// The rule.
+        rule: Rule,
+        /// The intervals asked for.
+        n: usize,
+        /// The evaluations they take (saturated).
+        evaluations: usize,
     },
     /// A limit is infinite or NaN (use the adaptive [`integrate`](super::integrate)).
     #[error("fixed rules need finite limits, not {a} and {b}")]
@@ -214,16 +279,7 @@ pub fn integrate_rule(
     rule: Rule,
     n: usize,
 ) -> Result<Real, RuleError> {
-    if n == 0 {
-        return Err(RuleError::NoIntervals);
-    }
-    match rule {
-        Rule::Simpson if n % 2 == 1 => return Err(RuleError::OddSimpson { n }),
-        Rule::GaussLegendre(points) if !(1..=MAX_GAUSS_POINTS).contains(&points) => {
-            return Err(RuleError::GaussPoints { points });
-        }
-        _ => {}
-    }
+    rule.check_intervals(n)?;
     if !a.is_finite() || !b.is_finite() {
         return Err(RuleError::BadLimits { a, b });
     }
@@ -291,6 +347,33 @@ fn composite(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 26: `integrate --n 1e12` ran for hours; a rule refuses more evaluations than
+    /// [`MAX_EVALUATIONS`] before the first.
+    #[test]
+    fn issue_026_a_rule_refuses_panels_past_its_evaluation_bound() {
+        let mut calls = 0;
+        let e = integrate_rule(
+            |x| {
+                calls += 1;
+                x
+            },
+            0.0,
+            1.0,
+            Rule::Trapezoid,
+            1_000_000_000_000,
+        )
+        .unwrap_err();
+        assert_eq!(calls, 0);
+        assert!(e.to_string().contains("1000000000001 times"), "{e}");
+        assert!(e.to_string().contains("at most 99999998 intervals"), "{e}");
+        let e = Rule::GaussLegendre(64)
+            .check_intervals(2_000_000)
+            .unwrap_err();
+        assert!(e.to_string().contains("at most 1562500 intervals"), "{e}");
+        assert!(Rule::Midpoint.check_intervals(MAX_EVALUATIONS).is_ok());
+        assert!(Rule::GaussLegendre(64).check_intervals(usize::MAX).is_err());
+    }
 
     #[test]
     fn names_round_trip() {

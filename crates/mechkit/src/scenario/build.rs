@@ -338,6 +338,7 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         planar: &planar,
     };
     let (stop, t_max, max_steps) = read_stop(root, env, &names)?;
+    super::stop::check_steps(root, &stepping, initial.t, t_max, max_steps)?;
     let mut events = read_events(root, &names)?;
     events.extend(model_events);
     let observables = read_observe(root, &names)?;

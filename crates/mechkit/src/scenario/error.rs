@@ -91,13 +91,13 @@ impl fmt::Display for ScenarioError {
             let pad = " ".repeat(number.len());
             write!(f, "\n{pad}--> {}:{}:{}", loc.file, loc.line, loc.column)?;
             write!(f, "\n{pad} |")?;
-            write!(f, "\n{number} | {}", loc.line_text)?;
-            write!(
-                f,
-                "\n{pad} | {}{}",
-                " ".repeat(loc.column.saturating_sub(1)),
-                "^".repeat(loc.width.max(1))
-            )?;
+            let (text, at, width) = mechkit_expr::span::excerpt(
+                &loc.line_text,
+                loc.column.saturating_sub(1),
+                loc.width.max(1),
+            );
+            write!(f, "\n{number} | {text}")?;
+            write!(f, "\n{pad} | {}{}", " ".repeat(at), "^".repeat(width))?;
         }
         if let Some(h) = &self.hint {
             let indent = self

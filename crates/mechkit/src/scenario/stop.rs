@@ -66,6 +66,34 @@ pub(crate) fn read_stop(
     Ok((condition, t_max, max_steps))
 }
 
+/// The step bound of the run the file asks for ([`crate::simulate::check_step_bound`]),
+/// checked when it is read so that `mechkit check` reports it: a count of fixed steps or a
+/// step too small for the time is located at `dt`, a `max_steps` too large at `max_steps`.
+pub(crate) fn check_steps(
+    root: &Table<'_, '_>,
+    stepping: &crate::simulate::Stepping,
+    t0: Real,
+    t_max: Option<Real>,
+    max_steps: Option<u64>,
+) -> Result<(), ScenarioError> {
+    use crate::simulate::StepBoundError;
+    let Err(e) = crate::simulate::check_step_bound(stepping, t0, t_max, max_steps) else {
+        return Ok(());
+    };
+    let (table, key) = match e {
+        StepBoundError::MaxStepsTooLarge(_) => ("stop", "max_steps"),
+        _ => ("integrator", "dt"),
+    };
+    let span = match root.table(table)? {
+        Some(t) => t.get(key).map_or(t.span.clone(), toml::Spanned::span),
+        None => root.span.clone(),
+    };
+    Err(root
+        .src
+        .error(ErrorKind::Invalid, e.to_string(), span)
+        .with_hint(e.hint()))
+}
+
 /// `check`: `"located"` (the default: the crossing is found inside the step) or `"step-end"`
 /// (tested only at step ends, as a textbook loop does); returns whether it is `"step-end"`.
 pub(crate) fn read_check(t: &Table<'_, '_>) -> Result<bool, ScenarioError> {

@@ -53,15 +53,30 @@ pub(crate) fn step_limit_warning(
         "nothing else ends this run"
     };
     match (sim.max_steps, sim.t_max) {
-        (None, _) => Some(format!(
+        (None, Some(tm)) => Some(format!(
+            "stopped after the default budget of {DEFAULT_MAX_STEPS} adaptive steps at t = {t} s, before t_max = {} s; give [stop] max_steps (at most {}) to allow more",
+            time(tm),
+            super::MAX_STEPS
+        )),
+        (None, None) => Some(format!(
             "stopped after the default budget of {DEFAULT_MAX_STEPS} steps at t = {t} s: {why}; set [stop] t_max"
         )),
         (Some(n), Some(tm)) => Some(format!(
-            "stopped at the step limit of {n} steps at t = {t} s, before t_max = {tm} s; raise [stop] max_steps to go on"
+            "stopped at the step limit of {n} steps at t = {t} s, before t_max = {} s; raise [stop] max_steps to go on",
+            time(tm)
         )),
         (Some(n), None) if has_stop_condition => Some(format!(
             "stopped at the step limit of {n} steps at t = {t} s: {why}; raise [stop] max_steps to go on"
         )),
         (Some(_), None) => None,
+    }
+}
+
+/// A time as Rust prints it, or as `1e300` when it would take more than 16 digits.
+fn time(t: Real) -> String {
+    if t.abs() < 1e16 {
+        format!("{t}")
+    } else {
+        format!("{t:e}")
     }
 }

@@ -24,6 +24,7 @@ mod rearm;
 mod reduce;
 mod report;
 mod run;
+mod step_bound;
 mod stepping;
 
 pub use book::ZENO_LIMIT;
@@ -34,4 +35,5 @@ pub use observe::{Observer, ObserverError, Recorder};
 pub use reduce::{Reducer, Reduction};
 pub use report::{Divergence, EventRecord, RunReport, SimulateError, Snapshot, StopReason};
 pub use run::{DEFAULT_MAX_STEPS, Simulation};
+pub use step_bound::{MAX_STEPS, StepBoundError, check_step_bound};
 pub use stepping::Stepping;

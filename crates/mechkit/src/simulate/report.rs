@@ -203,6 +203,9 @@ pub enum SimulateError {
     /// Output times that are not increasing (or not finite).
     #[error("the output times must be finite and increasing: {0} s is followed by {1} s")]
     BadOutputTimes(Real, Real),
+    /// The run's steps would not be bounded (see [`super::check_step_bound`]).
+    #[error("{0}")]
+    StepBound(#[from] super::StepBoundError),
     /// An observer failed (an output could not be written).
     #[error("output failed: {0}")]
     Observer(#[from] ObserverError),

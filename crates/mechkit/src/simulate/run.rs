@@ -232,6 +232,7 @@ impl<'a> Simulation<'a> {
                 t0: initial.t,
             });
         }
+        super::check_step_bound(&self.stepping, initial.t, self.t_max, self.max_steps)?;
         Ok(())
     }
 }

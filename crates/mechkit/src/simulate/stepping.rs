@@ -280,8 +280,9 @@ impl Engine {
     }
 }
 
-/// The largest number of steps: `max_steps`, unbounded with `t_max`, else the default budget
-/// (with a warning).
+/// The largest number of steps: `max_steps`; with `t_max`, unbounded for fixed steps (their
+/// count to `t_max` was bounded before the run, see [`super::check_step_bound`]) and
+/// [`DEFAULT_MAX_STEPS`] for adaptive ones; else the default budget (with a warning).
 pub(crate) fn step_budget(
     sim: &Simulation<'_>,
     stepping: &Stepping,
@@ -290,7 +291,8 @@ pub(crate) fn step_budget(
 ) -> u64 {
     match (sim.max_steps, sim.t_max) {
         (Some(n), _) => n,
-        (None, Some(_)) => u64::MAX,
+        (None, Some(_)) if stepping.dt().is_some() => u64::MAX,
+        (None, Some(_)) => DEFAULT_MAX_STEPS,
         (None, None) => {
             warnings.push(format!(
                 "no t_max was given: the run is bounded by {DEFAULT_MAX_STEPS} steps{}; set t_max to choose the end",

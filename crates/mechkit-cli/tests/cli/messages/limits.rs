@@ -173,6 +173,59 @@ pub static CASES: &[Case] = &[
     },
     Case {
         area: "limits",
+        kind: "formula_too_deep",
+        files: &[("s.toml", Text(FLAT_FORCE))],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "fixed_steps_beyond_the_bound",
+        files: &[("s.toml", Text(FAR_T_MAX))],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "subnormal_dt",
+        files: &[("s.toml", Text(SUBNORMAL_DT))],
+        args: &["run", "s.toml", "--out", "out"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "max_steps_beyond_the_bound",
+        files: &[("s.toml", Text(HUGE_MAX_STEPS))],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "md_too_many_steps",
+        files: &[],
+        args: &["md", "--steps", "1000000000000000000"],
+        code: 2,
+    },
+    Case {
+        area: "limits",
+        kind: "integrate_too_many_evaluations",
+        files: &[],
+        args: &[
+            "integrate",
+            "x^2",
+            "--from",
+            "0",
+            "--to",
+            "1",
+            "--method",
+            "trapezoid",
+            "--n",
+            "1000000000000",
+        ],
+        code: 2,
+    },
+    Case {
+        area: "limits",
         kind: "image_too_large",
         files: &[("photo.jpg", Bytes(bomb))],
         args: &["com", "photo.jpg"],
@@ -181,3 +234,12 @@ pub static CASES: &[Case] = &[
 ];
 
 const SWEEP: &str = "dimensions = 1\n[constants]\nv0 = \"1 m/s\"\ng = \"9.81 m/s^2\"\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\nvelocity = \"v0\"\n[[force]]\nname = \"gravity\"\nkind = \"uniform-gravity\"\ng = \"g\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n";
+
+/// A force of 300 terms: 300 levels deep.
+const FLAT_FORCE: &str = "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[[force]]\nname = \"f\"\nkind = \"expression\"\nF = \"-m*(1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5+1e-5)\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n";
+
+const FAR_T_MAX: &str = "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\nmethod = \"rk4\"\ndt = \"1 ms\"\n[stop]\nt_max = \"1e300 s\"\n";
+
+const SUBNORMAL_DT: &str = "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\nmethod = \"rk4\"\ndt = \"1e-320 s\"\n[stop]\nt_max = \"1 s\"\n";
+
+const HUGE_MAX_STEPS: &str = "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\nmethod = \"rk4\"\ndt = \"1 ms\"\n[stop]\nmax_steps = 9200000000000000000\n";
