@@ -44,7 +44,7 @@ kind = "uniform-gravity"
 method = "euler-cromer"
 dt = "1 us"
 [stop]
-t_max = "1e7 s"
+t_max = "500 s"
 [output]
 every = 1000000
 plots = []
@@ -317,7 +317,7 @@ fn serve_stops_a_run_at_the_time_limit() {
     assert!(error.contains("time limit of 1 s"), "{error}");
     assert!(view["seconds"].as_f64().unwrap() >= 1.0);
     let t_end = view["summary"]["t_end"].as_f64().unwrap();
-    assert!(t_end > 0.0 && t_end < 1e7, "{t_end}");
+    assert!(t_end > 0.0 && t_end < 500.0, "{t_end}");
     assert_eq!(server.stop(), Some(0));
 }
 
