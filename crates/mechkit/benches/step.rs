@@ -17,7 +17,7 @@ use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use mechkit::ode::reference::Kepler;
-use mechkit::ode::{AdaptiveConfig, AdaptiveRk, Method, MethodKind, State, Tolerance};
+use mechkit::ode::{AdaptiveConfig, AdaptiveRk, Method, State, Tolerance};
 
 fn fixed_steps(c: &mut Criterion) {
     let kepler = Kepler { e: 0.5 };
@@ -28,7 +28,7 @@ fn fixed_steps(c: &mut Criterion) {
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(2));
     for m in Method::ALL {
-        if m.kind() == MethodKind::Adaptive {
+        if m.is_adaptive() {
             continue;
         }
         let mut stepper = m.stepper::<Kepler>();

@@ -113,7 +113,7 @@ pub mod prelude {
         ConstantForce, ExpressionForce, Force, LinearDrag, NewtonianGravity, QuadraticDrag, Spring,
         SpringEnds, Target, UniformGravity, Wind,
     };
-    pub use crate::ode::{AdaptiveConfig, Method, State, Tolerance};
+    pub use crate::ode::{AdaptiveConfig, Method, MethodKind, State, Tolerance};
     pub use crate::particles::ParticleSystem;
     pub use crate::simulate::{Condition, Direction, Event, Simulation, Stepping, StopReason};
 }

@@ -93,7 +93,7 @@ pub fn dispatch(cli: Cli, cancel: &Cancel) -> anyhow::Result<Outcome> {
                     );
                 }
                 text.push_str(
-                    "\nadaptive methods take rtol/atol (or a fixed dt); symplectic ones need forces of position and time only\n",
+                    "\nadaptive methods take rtol/atol (or a fixed dt); symplectic ones need forces of position and time only; implicit ones (stiff systems) take rtol/atol only\n",
                 );
                 text
             })?;

@@ -36,6 +36,8 @@ pub enum Method {
     Pefrl,
     /// Yoshida's 6th-order composition ([`Composition::yoshida6`]).
     Yoshida6,
+    /// Radau IIA of order 5, implicit, for stiff systems ([`super::Radau5`]).
+    Radau5,
 }
 
 /// A method described: what `mechkit list-integrators` lists.
@@ -62,11 +64,14 @@ pub enum MethodKind {
     Adaptive,
     /// A symplectic splitting method: fixed step, forces of position and time only.
     Symplectic,
+    /// An implicit method for stiff systems: adaptive steps, Newton iterations with the
+    /// Jacobian of the forces.
+    Implicit,
 }
 
 impl Method {
     /// Every method available.
-    pub const ALL: [Method; 12] = [
+    pub const ALL: [Method; 13] = [
         Method::Euler,
         Method::EulerCromer,
         Method::VelocityVerlet,
@@ -79,6 +84,7 @@ impl Method {
         Method::ForestRuth,
         Method::Pefrl,
         Method::Yoshida6,
+        Method::Radau5,
     ];
 
     /// The name used in scenario files.
@@ -96,6 +102,7 @@ impl Method {
             Method::ForestRuth => "forest-ruth",
             Method::Pefrl => "pefrl",
             Method::Yoshida6 => "yoshida6",
+            Method::Radau5 => "radau5",
         }
     }
 
@@ -106,7 +113,7 @@ impl Method {
             Method::VelocityVerlet | Method::Heun => 2,
             Method::BogackiShampine => 3,
             Method::Rk4 | Method::Yoshida4 | Method::ForestRuth | Method::Pefrl => 4,
-            Method::Dopri5 => 5,
+            Method::Dopri5 | Method::Radau5 => 5,
             Method::Yoshida6 => 6,
             Method::Dop853 => 8,
         }
@@ -124,6 +131,7 @@ impl Method {
             Method::Yoshida4 | Method::ForestRuth | Method::Pefrl | Method::Yoshida6 => {
                 MethodKind::Symplectic
             }
+            Method::Radau5 => MethodKind::Implicit,
         }
     }
 
@@ -154,7 +162,16 @@ impl Method {
         self.kind() == MethodKind::Symplectic
     }
 
+    /// Whether the method chooses its steps by an error estimate (the Runge-Kutta pairs and
+    /// the implicit methods): a run without `dt` is adaptive.
+    pub fn is_adaptive(self) -> bool {
+        matches!(self.kind(), MethodKind::Adaptive | MethodKind::Implicit)
+    }
+
     /// A fixed-step stepper for this method.
+    ///
+    /// # Panics
+    /// For an implicit method, which has adaptive steps only.
     pub fn stepper<S: SecondOrderSystem + ?Sized>(self) -> Box<dyn Stepper<S>> {
         match self {
             Method::Euler => Box::new(Euler::new()),
@@ -164,7 +181,7 @@ impl Method {
             m => match (m.tableau(), m.composition()) {
                 (Some(t), _) => Box::new(ExplicitRk::new(t)),
                 (None, Some(c)) => Box::new(Symplectic::new(c)),
-                (None, None) => unreachable!("every method has a stepper"),
+                (None, None) => unreachable!("{m} has adaptive steps only"),
             },
         }
     }
@@ -179,6 +196,7 @@ impl Method {
                     MethodKind::Fixed => "fixed",
                     MethodKind::Adaptive => "adaptive",
                     MethodKind::Symplectic => "symplectic",
+                    MethodKind::Implicit => "implicit",
                 },
                 order: m.order(),
                 description: m.description(),
@@ -215,6 +233,9 @@ impl Method {
                 "PEFRL (Omelyan-Mryglod-Folk), 4th order, symplectic, ~100x smaller error than Forest-Ruth"
             }
             Method::Yoshida6 => "Yoshida 6th-order composition, symplectic (position-only forces)",
+            Method::Radau5 => {
+                "Radau IIA, 5th order, implicit, adaptive, L-stable, for stiff systems (SciPy Radau, Hairer's RADAU5)"
+            }
         }
     }
 
@@ -236,6 +257,7 @@ impl Method {
             "forest-ruth" | "forestruth" => Method::ForestRuth,
             "pefrl" => Method::Pefrl,
             "yoshida6" => Method::Yoshida6,
+            "radau5" | "radau" | "radau-iia" => Method::Radau5,
             _ => return None,
         })
     }
@@ -256,6 +278,10 @@ mod tests {
         use crate::ode::reference::Oscillator;
         for m in Method::ALL {
             assert_eq!(Method::from_name(m.name()), Some(m));
+            if m.kind() == MethodKind::Implicit {
+                assert!(m.is_adaptive() && m.tableau().is_none(), "{m}");
+                continue;
+            }
             assert_eq!(m.stepper::<Oscillator>().order(), m.order(), "{m}");
             assert_eq!(m.stepper::<Oscillator>().name(), m.name(), "{m}");
         }

@@ -32,6 +32,14 @@ pub enum IntegrateError {
         /// The method.
         method: &'static str,
     },
+    /// An implicit method was asked for fixed steps.
+    #[error(
+        "{method} is implicit and chooses its own steps: run it without a fixed step (dt), with rtol/atol"
+    )]
+    AdaptiveOnly {
+        /// The method.
+        method: &'static str,
+    },
     /// The state became NaN or infinite.
     #[error("the state became non-finite at t = {t}")]
     NonFinite {

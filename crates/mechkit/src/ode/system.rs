@@ -9,6 +9,13 @@ pub trait OdeSystem {
 
     /// Writes `f(t, y)` into `dydt` (same length as `y`).
     fn rhs_into(&self, t: Real, y: &[Real], dydt: &mut [Real]);
+
+    /// Writes the Jacobian `∂f/∂y` at `(t, y)` into `jac` (row-major, `dim × dim`: row `i`
+    /// holds `∂fᵢ/∂yⱼ`) and returns `true`; or returns `false`, the default, when the system
+    /// does not know it: the implicit methods then take it by finite differences.
+    fn jacobian_into(&self, _t: Real, _y: &[Real], _jac: &mut [Real]) -> bool {
+        false
+    }
 }
 
 /// A second-order system `q'' = a(t, q, v)` with `v = q'`: what Newton's second law gives.
@@ -24,6 +31,19 @@ pub trait SecondOrderSystem {
     fn velocity_dependent(&self) -> bool {
         true
     }
+
+    /// Writes `∂a/∂q` into `da_dq` and `∂a/∂v` into `da_dv` (row-major, `dof × dof`) and
+    /// returns `true`; or `false`, the default, when the system does not know them.
+    fn accel_jacobian_into(
+        &self,
+        _t: Real,
+        _q: &[Real],
+        _v: &[Real],
+        _da_dq: &mut [Real],
+        _da_dv: &mut [Real],
+    ) -> bool {
+        false
+    }
 }
 
 /// Every second-order system is a first-order one with `y = [q, v]` and `y' = [v, a]`.
@@ -38,5 +58,25 @@ impl<T: SecondOrderSystem + ?Sized> OdeSystem for T {
         let (dq, dv) = dydt.split_at_mut(n);
         dq.copy_from_slice(v);
         self.accel_into(t, q, v, dv);
+    }
+
+    /// `[[0, I], [∂a/∂q, ∂a/∂v]]` from [`SecondOrderSystem::accel_jacobian_into`].
+    fn jacobian_into(&self, t: Real, y: &[Real], jac: &mut [Real]) -> bool {
+        let n = self.dof();
+        let (q, v) = y.split_at(n);
+        let mut da_dq = vec![0.0; n * n];
+        let mut da_dv = vec![0.0; n * n];
+        if !self.accel_jacobian_into(t, q, v, &mut da_dq, &mut da_dv) {
+            return false;
+        }
+        let m = 2 * n;
+        jac.fill(0.0);
+        for i in 0..n {
+            jac[i * m + n + i] = 1.0;
+            let row = (n + i) * m;
+            jac[row..row + n].copy_from_slice(&da_dq[i * n..(i + 1) * n]);
+            jac[row + n..row + m].copy_from_slice(&da_dv[i * n..(i + 1) * n]);
+        }
+        true
     }
 }

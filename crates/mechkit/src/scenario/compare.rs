@@ -323,7 +323,10 @@ impl Scenario {
 
     fn stepping_for(&self, method: Method, settings: &CompareSettings) -> Result<Stepping, String> {
         let scenario_dt = self.stepping.dt();
-        if method.kind() == MethodKind::Adaptive && settings.dt.is_none() {
+        // an implicit method has adaptive steps only
+        if method.kind() == MethodKind::Implicit
+            || method.kind() == MethodKind::Adaptive && settings.dt.is_none()
+        {
             let mut config = match &self.stepping {
                 Stepping::Adaptive { config, .. } => config.clone(),
                 Stepping::Fixed { .. } => AdaptiveConfig::default(),

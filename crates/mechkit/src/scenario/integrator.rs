@@ -91,7 +91,7 @@ pub(crate) fn read_integrator(
             )
             .with_hint("use rk4, or dopri5 with rtol/atol; verlet accepts velocity-dependent forces at 2nd order"));
     }
-    if method.kind() != MethodKind::Adaptive {
+    if !method.is_adaptive() {
         if let Some(key) = adaptive_key {
             return Err(t
                 .src
@@ -118,6 +118,19 @@ pub(crate) fn read_integrator(
         return Ok(Stepping::Fixed { method, dt });
     }
     if let Some(dt) = dt {
+        if method.kind() == MethodKind::Implicit {
+            return Err(t
+                .src
+                .error(
+                    ErrorKind::Invalid,
+                    format!(
+                        "`{}` is implicit and chooses its own steps by its error estimate: it takes no `dt`",
+                        method.name()
+                    ),
+                    t.key_span("dt"),
+                )
+                .with_hint("remove `dt`; set rtol/atol for the accuracy, and h_max to bound the steps"));
+        }
         if let Some(key) = adaptive_key {
             return Err(t
                 .src

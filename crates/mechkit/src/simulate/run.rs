@@ -180,6 +180,12 @@ impl<'a> Simulation<'a> {
                 if !(*dt > 0.0 && dt.is_finite()) {
                     return Err(SimulateError::BadStep(*dt));
                 }
+                if method.kind() == MethodKind::Implicit {
+                    return Err(IntegrateError::AdaptiveOnly {
+                        method: method.name(),
+                    }
+                    .into());
+                }
                 if method.needs_position_forces() && sys.velocity_dependent() {
                     return Err(IntegrateError::NeedsPositionForces {
                         method: method.name(),
@@ -188,7 +194,7 @@ impl<'a> Simulation<'a> {
                 }
             }
             Stepping::Adaptive { method, config } => {
-                if method.kind() != MethodKind::Adaptive {
+                if !method.is_adaptive() {
                     return Err(crate::ode::ConfigError::NotAdaptive(method.name()).into());
                 }
                 let mut config = config.clone();

@@ -6,8 +6,8 @@ use std::cell::RefCell;
 use super::run::{DEFAULT_MAX_STEPS, Simulation};
 use crate::Real;
 use crate::ode::{
-    AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, Method, MethodKind, OdeSystem, State,
-    StepPolynomial, Stepper, hermite,
+    AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, Method, MethodKind, OdeSystem,
+    Radau5, State, StepPolynomial, Stepper, hermite,
 };
 use crate::particles::{Evaluation, ParticleSystem};
 
@@ -21,9 +21,9 @@ pub enum Stepping {
         /// The step (s).
         dt: Real,
     },
-    /// Steps chosen by the error estimate of a Runge-Kutta pair.
+    /// Steps chosen by the error estimate of a Runge-Kutta pair or an implicit method.
     Adaptive {
-        /// The method (one with [`MethodKind::Adaptive`]).
+        /// The method (one with [`MethodKind::Adaptive`] or [`MethodKind::Implicit`]).
         method: Method,
         /// Tolerances and limits.
         config: AdaptiveConfig,
@@ -127,7 +127,7 @@ pub(crate) enum Engine {
         dt: Real,
     },
     Adaptive {
-        rk: Box<AdaptiveRk>,
+        rk: Box<Pair>,
         /// `[q, v, W]` at the current time.
         y: Vec<Real>,
         buf: Vec<Real>,
@@ -153,12 +153,17 @@ impl Engine {
                 dt: *dt,
             },
             Stepping::Adaptive { method, config } => {
-                let tableau = method
-                    .tableau()
-                    .filter(|_| method.kind() == MethodKind::Adaptive)
-                    .ok_or(crate::ode::ConfigError::NotAdaptive(method.name()))?;
+                let pair = if method.kind() == MethodKind::Implicit {
+                    Pair::Radau5(Radau5::new(config.clone()))
+                } else {
+                    let tableau = method
+                        .tableau()
+                        .filter(|_| method.kind() == MethodKind::Adaptive)
+                        .ok_or(crate::ode::ConfigError::NotAdaptive(method.name()))?;
+                    Pair::Explicit(AdaptiveRk::new(tableau, config.clone())?)
+                };
                 Engine::Adaptive {
-                    rk: Box::new(AdaptiveRk::new(tableau, config.clone())?),
+                    rk: Box::new(pair),
                     y: Vec::new(),
                     buf: Vec::new(),
                 }
@@ -276,6 +281,55 @@ impl Engine {
                 }
             }
             Engine::Adaptive { rk, .. } => rk.dense_polynomial_into(ws, out),
+        }
+    }
+}
+
+/// The integrator of adaptive runs: an explicit Runge-Kutta pair, or Radau IIA(5).
+#[allow(clippy::large_enum_variant)] // held in a Box by `Engine`
+pub(crate) enum Pair {
+    Explicit(AdaptiveRk),
+    Radau5(Radau5),
+}
+
+impl Pair {
+    fn reset(&mut self) {
+        match self {
+            Pair::Explicit(rk) => rk.reset(),
+            Pair::Radau5(r) => r.reset(),
+        }
+    }
+
+    fn stats(&self) -> AdaptiveStats {
+        match self {
+            Pair::Explicit(rk) => rk.stats(),
+            Pair::Radau5(r) => r.stats(),
+        }
+    }
+
+    fn step(
+        &mut self,
+        sys: &WorkSystem<'_>,
+        state: &mut State,
+        t_bound: Real,
+    ) -> Result<Real, AdaptiveError> {
+        match self {
+            Pair::Explicit(rk) => rk.step(sys, state, t_bound),
+            Pair::Radau5(r) => r.step(sys, state, t_bound),
+        }
+    }
+
+    fn dense_into(&mut self, sys: &WorkSystem<'_>, t: Real, out: &mut [Real]) {
+        match self {
+            Pair::Explicit(rk) => rk.dense_into(sys, t, out),
+            Pair::Radau5(r) => r.dense_into(t, out),
+        }
+    }
+
+    fn dense_polynomial_into(&mut self, sys: &WorkSystem<'_>, out: &mut StepPolynomial) {
+        match self {
+            Pair::Explicit(rk) => rk.dense_polynomial_into(sys, out),
+            Pair::Radau5(r) => r.dense_polynomial_into(out),
         }
     }
 }

@@ -5,4 +5,5 @@ mod rigid;
 mod run;
 mod spatial;
 mod spatial_joints;
+mod stiff;
 mod sweep;

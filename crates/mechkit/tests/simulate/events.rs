@@ -19,7 +19,12 @@ fn landing_of_a_projectile_is_located_to_rounding() {
     let sys = projectile();
     let (vx, vy) = (3.0, 7.0);
     for method in Method::ALL {
-        let r = Simulation::new(&sys, method, 0.013)
+        let r = if method.kind() == MethodKind::Implicit {
+            Simulation::adaptive(&sys, method, AdaptiveConfig::default())
+        } else {
+            Simulation::new(&sys, method, 0.013)
+        };
+        let r = r
             .t_max(10.0)
             .stop_when(Condition::below(0, 1, 0.0))
             .run(State::from_qv(0.0, &[0.0, 0.0], &[vx, vy]), &mut [])

@@ -20,11 +20,11 @@ use super::drive::{AfterFiring, Model, drive};
 use super::event::OdeEvent;
 use super::find::Fired;
 use super::scan::StepEvents;
-use super::stepping::{Adaptive, Fixed, Stepping};
+use super::stepping::{Adaptive, Fixed, Implicit, Stepping};
 use crate::Real;
 use thiserror::Error;
 
-use crate::ode::{AdaptiveError, AdaptiveRk, IntegrateError, OdeSystem, State, Stepper};
+use crate::ode::{AdaptiveError, AdaptiveRk, IntegrateError, OdeSystem, Radau5, State, Stepper};
 
 /// A crossing of a non-terminal event.
 #[derive(Debug, Clone, PartialEq)]
@@ -75,6 +75,8 @@ pub enum EventEnd {
 pub enum Integrator<'r, S: ?Sized> {
     /// Adaptive steps; they go on from the pair's step-size history.
     Adaptive(&'r mut AdaptiveRk),
+    /// Adaptive steps of the implicit Radau IIA(5), for stiff systems.
+    Implicit(&'r mut Radau5),
     /// Fixed steps of `dt` from the start (and from every state change), the last one
     /// shortened to land on the end time.
     Fixed {
@@ -223,6 +225,14 @@ pub fn run_events<S: OdeSystem + ?Sized>(
     match integrator {
         Integrator::Adaptive(rk) => Ok(run_with(
             &mut Adaptive(rk),
+            sys,
+            state,
+            t_end,
+            events,
+            on_progress,
+        )?),
+        Integrator::Implicit(radau) => Ok(run_with(
+            &mut Implicit(radau),
             sys,
             state,
             t_end,

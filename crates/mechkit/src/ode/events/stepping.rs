@@ -3,7 +3,7 @@
 
 use super::driver::RunError;
 use crate::Real;
-use crate::ode::{AdaptiveError, AdaptiveRk, OdeSystem, State, StepPolynomial, Stepper};
+use crate::ode::{AdaptiveError, AdaptiveRk, OdeSystem, Radau5, State, StepPolynomial, Stepper};
 
 /// How a run of an [`OdeSystem`] steps, and the interpolant of its last step.
 pub(super) trait Stepping<S: ?Sized> {
@@ -41,6 +41,29 @@ impl<S: OdeSystem + ?Sized> Stepping<S> for Adaptive<'_> {
 
     /// The step in which the change fired is tried first: a first step chosen afresh from a
     /// state near rest (a ball bouncing ever lower) can fall below the smallest step.
+    fn changed(&mut self, _: &State, h: Real) {
+        self.0.reset_to_step(h);
+    }
+}
+
+/// Adaptive steps of the implicit Radau IIA(5).
+pub(super) struct Implicit<'r>(pub &'r mut Radau5);
+
+impl<S: OdeSystem + ?Sized> Stepping<S> for Implicit<'_> {
+    type Error = AdaptiveError;
+
+    fn step(&mut self, sys: &S, state: &mut State, t_bound: Real) -> Result<(), AdaptiveError> {
+        self.0.step(sys, state, t_bound).map(|_| ())
+    }
+
+    fn polynomial(&mut self, _: &S, _: &State, _: &State, out: &mut StepPolynomial) {
+        self.0.dense_polynomial_into(out);
+    }
+
+    fn restart(&mut self, _: &State) {
+        self.0.reset();
+    }
+
     fn changed(&mut self, _: &State, h: Real) {
         self.0.reset_to_step(h);
     }

@@ -1,0 +1,110 @@
+//! Stiff scenarios with `method = "radau5"` (issue 28): van der Pol at μ = 1000 as a particle
+//! with a formula force, and a stiff damped spring against its closed form.
+
+use mechkit::scenario::Scenario;
+
+fn run(text: &str) -> mechkit::scenario::Summary {
+    Scenario::from_str("stiff.toml", text)
+        .unwrap()
+        .run()
+        .unwrap()
+        .summary
+}
+
+const VAN_DER_POL: &str = r#"
+title = "Van der Pol, mu = 1000"
+dimensions = 1
+[constants]
+mu = "1000 1/s"
+w2 = "1 1/s^2"
+L = "1 m"
+[[body]]
+name = "p"
+mass = "1 kg"
+position = "2 m"
+velocity = "0 m/s"
+[[force]]
+name = "vdp"
+kind = "expression"
+F = "m*(mu*(1 - x^2/L^2)*v - w2*x)"
+[integrator]
+method = "radau5"
+rtol = 1e-6
+atol = 1e-6
+[stop]
+t_max = "2000 s"
+[observe]
+x_end = "final(x)"
+"#;
+
+/// SciPy's Radau takes 617 steps and 5,167 evaluations at rtol = atol = 1e-6 (issue 28); the
+/// state at t = 2000 s agrees with a run at 1e-10 to 1e-5.
+#[test]
+fn van_der_pol_at_mu_1000_in_fewer_steps_than_scipy_radau() {
+    let loose = run(VAN_DER_POL);
+    let tight = run(&VAN_DER_POL
+        .replace("rtol = 1e-6", "rtol = 1e-10")
+        .replace("atol = 1e-6", "atol = 1e-10"));
+    let (x, reference) = (loose.observables["x_end"], tight.observables["x_end"]);
+    assert!((x - reference).abs() < 1e-5, "{x} vs {reference}");
+    assert!((reference - 1.706_167_7).abs() < 1e-6, "{reference}");
+    assert!(loose.steps < 617, "{} steps", loose.steps);
+    assert!(
+        loose.evaluations < 5167,
+        "{} evaluations",
+        loose.evaluations
+    );
+}
+
+/// `x'' + c x' + k x = 0` with k = 10⁶ and c = 2·10⁴ (overdamped: rates −50 and −19,950 s⁻¹):
+/// an explicit method needs steps below 2.8/19,950 s; Radau5 follows the slow mode.
+#[test]
+fn a_stiff_damped_spring_follows_its_closed_form() {
+    let text = r#"
+dimensions = 1
+[constants]
+k = "1e6 N/m"
+c = "2e4 N*s/m"
+[[body]]
+name = "p"
+mass = "1 kg"
+position = "1 m"
+velocity = "0 m/s"
+[[force]]
+name = "spring"
+kind = "expression"
+F = "-k*x - c*v"
+[integrator]
+method = "radau5"
+rtol = 1e-8
+atol = 1e-12
+[stop]
+t_max = "0.1 s"
+[observe]
+x_end = "final(x)"
+"#;
+    let s = run(text);
+    let (k, c) = (1e6_f64, 2e4_f64);
+    let d = (c * c - 4.0 * k).sqrt();
+    let (r1, r2) = (0.5 * (d - c), -0.5 * (c + d));
+    let x = |t: f64| (-r2 * (r1 * t).exp() + r1 * (r2 * t).exp()) / (r1 - r2);
+    let want = x(0.1);
+    assert!(
+        (s.observables["x_end"] - want).abs() < 1e-7 * want,
+        "{} vs {want}",
+        s.observables["x_end"]
+    );
+    assert!(s.steps < 300, "{} steps", s.steps);
+    // dt = 1e-4 s, the explicit stability bound, would be 1000 steps for the same 0.1 s
+}
+
+#[test]
+fn radau5_takes_no_fixed_step() {
+    let text = VAN_DER_POL
+        .replace("rtol = 1e-6", "dt = \"1 ms\"")
+        .replace("atol = 1e-6", "");
+    let e = Scenario::from_str("stiff.toml", &text)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("chooses its own steps"), "{e}");
+}
