@@ -58,8 +58,9 @@ pub fn plot_png(
 /// panic (a bug) is reported by a panic hook as `error: internal error, …` and unwinds to the
 /// caller, which exits with 101.
 ///
-/// For `run`, `sweep`, `md` and `serve`, Ctrl-C and SIGTERM are caught while the command runs (the
-/// handlers chain to those installed before, and are removed on return).
+/// For `run`, `sweep`, `md` and `serve`, Ctrl-C and SIGTERM are caught while the command runs
+/// (by a thread; the handlers chain to those installed before, and are removed on return):
+/// see `Interrupts`.
 pub fn main_with_args(args: Vec<OsString>) -> i32 {
     failure::install_panic_hook();
     let cli = match args::Cli::try_parse_from(args) {
@@ -74,16 +75,16 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
     };
     let cancel = Cancel::new();
     // the commands whose loops look at the handle; the others end at Ctrl-C as usual
-    let handlers = if matches!(
+    let interrupts = if matches!(
         cli.command,
         args::Command::Run(_)
             | args::Command::Sweep(_)
             | args::Command::Md(_)
             | args::Command::Serve(_)
     ) {
-        catch_interrupts(&cancel)
+        Interrupts::catch(&cancel)
     } else {
-        Vec::new()
+        None
     };
     let code = match commands::dispatch(cli, &cancel) {
         Ok(commands::Outcome::Success) => 0,
@@ -95,8 +96,8 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             2
         }
     };
-    for id in handlers {
-        signal_hook::low_level::unregister(id);
+    if let Some(i) = interrupts {
+        i.release();
     }
     flush();
     code
@@ -111,32 +112,52 @@ fn flush() {
 /// Exit status after Ctrl-C: 128 + SIGINT, as shells report a process killed by it.
 const EXIT_INTERRUPTED: i32 = 130;
 
-/// Ctrl-C (SIGINT) and SIGTERM raise `cancel`, which asks the running simulation to stop
-/// after its current step: it then finishes its outputs and exits with 130. A second Ctrl-C
-/// exits at once. Returns the handlers' ids, to remove them when the command is done.
-fn catch_interrupts(cancel: &Cancel) -> Vec<signal_hook::SigId> {
-    use signal_hook::consts::{SIGINT, SIGTERM};
-    let flag = cancel.flag();
-    let mut ids = Vec::new();
-    for signal in [SIGINT, SIGTERM] {
-        // the conditional exit first: it sees the flag as the previous signal left it
-        let registered = signal_hook::flag::register_conditional_shutdown(
-            signal,
-            EXIT_INTERRUPTED,
-            std::sync::Arc::clone(&flag),
-        )
-        .and_then(|exit| {
-            ids.push(exit);
-            signal_hook::flag::register(signal, std::sync::Arc::clone(&flag))
-        });
-        match registered {
-            Ok(id) => ids.push(id),
+/// Ctrl-C (SIGINT) and SIGTERM, caught by a thread while a command runs:
+/// - the first Ctrl-C raises `cancel`: the running simulation stops after its current step,
+///   then finishes its outputs (streamed files, summary, plots) and exits with 130;
+/// - a second Ctrl-C, or SIGTERM, raises it urgently ([`Cancel::cancel_urgently`]): the
+///   streamed files are still closed at a whole row and renamed, and the summary written,
+///   but plots and animations are skipped, so the process ends at once;
+/// - a third signal exits at once (130), finishing nothing.
+struct Interrupts {
+    handle: signal_hook::iterator::Handle,
+    thread: std::thread::JoinHandle<()>,
+}
+
+impl Interrupts {
+    fn catch(cancel: &Cancel) -> Option<Self> {
+        use signal_hook::consts::{SIGINT, SIGTERM};
+        let mut signals = match signal_hook::iterator::Signals::new([SIGINT, SIGTERM]) {
+            Ok(s) => s,
             Err(e) => {
                 eprintln!("warning: Ctrl-C will end mechkit without finishing its outputs ({e})");
+                return None;
             }
-        }
+        };
+        let handle = signals.handle();
+        let cancel = cancel.clone();
+        let thread = std::thread::spawn(move || {
+            let mut urgent = false;
+            for signal in signals.forever() {
+                if urgent {
+                    std::process::exit(EXIT_INTERRUPTED);
+                }
+                if signal == SIGTERM || cancel.is_cancelled() {
+                    urgent = true;
+                    cancel.cancel_urgently();
+                } else {
+                    cancel.cancel();
+                }
+            }
+        });
+        Some(Self { handle, thread })
     }
-    ids
+
+    /// Stops catching the signals (the handlers installed before are in force again).
+    fn release(self) {
+        self.handle.close();
+        let _ = self.thread.join();
+    }
 }
 
 /// Whether the error is stdout closed by the reader (`mechkit … | head`): not a failure.

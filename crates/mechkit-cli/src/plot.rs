@@ -197,12 +197,28 @@ pub fn render_run(
     dir: &Path,
     format: PlotFormat,
 ) -> Result<()> {
+    render_plots(scenario, out, dir, format, &|| false)?;
+    scenario.write_summary(dir, &out.summary)?;
+    Ok(())
+}
+
+/// Draws the run's plots into `dir` and lists them in its summary (which is not written);
+/// stops before the next plot once `stop` says so.
+pub fn render_plots(
+    scenario: &mechkit::scenario::Scenario,
+    out: &mut mechkit::scenario::RunOutput,
+    dir: &Path,
+    format: PlotFormat,
+    stop: &dyn Fn() -> bool,
+) -> Result<()> {
     for p in &out.plots {
+        if stop() {
+            break;
+        }
         let name = format.file(&p.file_stem);
         render(p, &scenario.title, &dir.join(&name), format)?;
         out.summary.files.plots.push(name);
     }
-    scenario.write_summary(dir, &out.summary)?;
     Ok(())
 }
 

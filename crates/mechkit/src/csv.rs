@@ -18,7 +18,7 @@
 //! assert_eq!(table.units_json(), "{\"t\": \"s\", \"x\": \"m\"}\n");
 //! ```
 
-use std::fs::{self, File};
+use std::fs;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
@@ -212,49 +212,108 @@ pub fn push_number(out: &mut String, x: Real) {
     }
 }
 
-/// Writes `bytes` to `path` atomically: to `NAME.partial` beside it, then renamed over it.
-/// A symbolic link is written through (its target is replaced); a target that exists and is
-/// not a regular file (a directory, a device, a pipe) is refused, never replaced.
+/// Writes `bytes` to `path` atomically: to `NAME.partial` beside it, synced, then renamed
+/// over it. A symbolic link (or a chain of them) is written through: the file goes beside the
+/// link's final target and replaces that target, so the link stays. A target that exists
+/// and is not a regular file (a directory, a device, a pipe, a socket) is refused, never
+/// replaced or written into. On any failure the partial file is removed.
 ///
 /// # Errors
 /// When the file cannot be written, or the target is not a regular file.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> io::Result<()> {
     let path = writable_target(path)?;
     let tmp = partial_path(&path);
-    let written = File::create(&tmp).and_then(|mut f| {
-        f.write_all(bytes)?;
-        f.sync_all()
-    });
-    if let Err(e) = written {
-        let _ = fs::remove_file(&tmp);
-        return Err(e);
+    // a stale partial file (or a link by that name) is replaced, never written through
+    if fs::symlink_metadata(&tmp).is_ok_and(|m| !m.is_dir()) {
+        fs::remove_file(&tmp)?;
     }
-    fs::rename(&tmp, &path)
+    let mut created = false;
+    let written = fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(&tmp)
+        .and_then(|mut f| {
+            created = true;
+            f.write_all(bytes)?;
+            f.sync_all()
+        })
+        .and_then(|()| fs::rename(&tmp, &path));
+    if written.is_err() && created {
+        let _ = fs::remove_file(&tmp);
+    }
+    written
 }
 
-/// Where a file meant for `path` goes: `path` itself, or the target of the symbolic link at
-/// `path`; an error when that exists and is not a regular file.
+/// The most symbolic links followed from one output path (Linux's own limit).
+const MAX_LINKS: usize = 40;
+
+/// Where a file meant for `path` goes: `path` itself, or the final target of the symbolic
+/// link (or chain of links) at `path`, which need not exist yet; an error that names the
+/// path and what it is when that exists and is not a regular file.
 ///
 /// # Errors
-/// When the target exists and is not a regular file.
+/// When the target exists and is not a regular file, or the links form a loop.
 pub fn writable_target(path: &Path) -> io::Result<PathBuf> {
-    let target = match fs::symlink_metadata(path) {
-        Ok(m) if m.file_type().is_symlink() => fs::canonicalize(path).or_else(|_| {
-            // a dangling link: write where it points
-            let link = fs::read_link(path)?;
-            Ok::<_, io::Error>(path.parent().unwrap_or(Path::new(".")).join(link))
-        })?,
-        _ => path.to_path_buf(),
-    };
-    match fs::metadata(&target) {
-        Ok(m) if !m.is_file() => Err(io::Error::new(
-            io::ErrorKind::InvalidInput,
-            format!(
-                "{} exists and is not a regular file; give the path of a file to write",
-                target.display()
-            ),
-        )),
-        _ => Ok(target),
+    let mut target = path.to_path_buf();
+    let mut links = 0;
+    loop {
+        match fs::symlink_metadata(&target) {
+            Ok(m) if m.file_type().is_symlink() => {
+                links += 1;
+                if links > MAX_LINKS {
+                    return Err(io::Error::new(
+                        io::ErrorKind::InvalidInput,
+                        format!(
+                            "{} is a loop of symbolic links; give the path of a file to write",
+                            path.display()
+                        ),
+                    ));
+                }
+                let next = fs::read_link(&target)?;
+                target = target.parent().unwrap_or(Path::new(".")).join(next);
+            }
+            Ok(m) if !m.is_file() => {
+                let via = if target == path {
+                    String::new()
+                } else {
+                    format!(" (the target of the link {})", path.display())
+                };
+                return Err(io::Error::new(
+                    io::ErrorKind::InvalidInput,
+                    format!(
+                        "{}{via} is {}, not a regular file, so mechkit will not write it (nor replace it); give the path of a file to write",
+                        target.display(),
+                        file_kind(&m.file_type())
+                    ),
+                ));
+            }
+            _ => return Ok(target),
+        }
+    }
+}
+
+/// What a file that is not a regular file is, in words: `a directory`, `a character device`.
+fn file_kind(t: &fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt as _;
+        if t.is_char_device() {
+            return "a character device";
+        }
+        if t.is_block_device() {
+            return "a block device";
+        }
+        if t.is_fifo() {
+            return "a named pipe (FIFO)";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    if t.is_dir() {
+        "a directory"
+    } else {
+        "a special file"
     }
 }
 

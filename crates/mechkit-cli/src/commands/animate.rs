@@ -208,6 +208,12 @@ pub fn write(
 ) -> Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir)
         .with_context(|| format!("--out: cannot create {}", dir.display()))?;
+    // a name taken by a device, a pipe or a directory is refused before any frame is drawn
+    for &format in formats {
+        let path = dir.join(format.file_name());
+        mechkit::csv::writable_target(&path)
+            .with_context(|| format!("cannot write {}", path.display()))?;
+    }
     let mut files = Vec::new();
     for &format in formats {
         let path = dir.join(format.file_name());

@@ -45,7 +45,9 @@ impl Streams {
             .with_context(|| format!("cannot write {}", units.display()))?;
         let mut thermo = open("thermo.csv")?;
         let header = header_line(columns.iter().map(|c| c.name.as_str()));
-        append(&mut thermo, header.as_bytes())?;
+        thermo
+            .append(header.as_bytes())
+            .with_context(|| format!("cannot write {}", thermo.path().display()))?;
         Ok(Self {
             thermo,
             xyz: if xyz {
@@ -64,26 +66,61 @@ impl Streams {
             .map(StreamFile::path)
     }
 
+    /// Finishes every file (whole rows and frames, renamed into place, even after a failed
+    /// write); the first error.
     fn finish(self) -> Result<()> {
+        let mut first = Ok(());
         for f in std::iter::once(self.thermo).chain(self.xyz) {
             let path = f.path().to_path_buf();
-            f.finish()
-                .with_context(|| format!("cannot write {}", path.display()))?;
+            let done = f
+                .finish()
+                .with_context(|| format!("cannot write {}", path.display()));
+            if first.is_ok() {
+                first = done;
+            }
         }
-        Ok(())
+        first
+    }
+
+    /// How far each file got, for the message of a failed write: `thermo.csv keeps whole
+    /// rows up to step 120, trajectory.xyz whole frames up to step 100`.
+    fn kept(&self) -> String {
+        let mut parts = Vec::new();
+        for (f, what) in
+            std::iter::once((&self.thermo, "rows")).chain(self.xyz.iter().map(|x| (x, "frames")))
+        {
+            let name = f
+                .path()
+                .file_name()
+                .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+            let last = f.last_tag_on_disk();
+            parts.push(if last.is_finite() {
+                format!("{name} keeps whole {what} up to step {last}")
+            } else {
+                format!("{name} keeps no {what}")
+            });
+        }
+        parts.join(", ")
     }
 }
 
-fn append(file: &mut StreamFile, bytes: &[u8]) -> Result<()> {
-    file.append(bytes)
-        .map(|_| ())
-        .with_context(|| format!("cannot write {}", file.partial_path().display()))
+/// Appends a record tagged with its step; the first failed write is kept in `error` (the
+/// run then stops: [`MdObserver::full`]) rather than ending the run without its files.
+fn append(file: &mut StreamFile, bytes: &[u8], step: usize, error: &mut Option<String>) {
+    if error.is_some() {
+        return;
+    }
+    if let Err(e) = file.append_row(bytes, step as f64) {
+        *error = Some(format!("cannot write {}: {e}", file.path().display()));
+    }
 }
 
 /// What the run hands out: rows and frames to the files (with `--out`), steps to the bar.
 struct Observer {
     files: Option<Streams>,
     bar: ProgressBar,
+    /// The first write that failed (a full disk).
+    error: Option<String>,
 }
 
 impl<P: PairPotential> MdObserver<P> for Observer {
@@ -93,7 +130,7 @@ impl<P: PairPotential> MdObserver<P> for Observer {
         if let Some(f) = &mut self.files {
             let mut line = String::new();
             push_row(&mut line, &row.values());
-            append(&mut f.thermo, line.as_bytes())?;
+            append(&mut f.thermo, line.as_bytes(), row.step, &mut self.error);
         }
         Ok(())
     }
@@ -103,7 +140,7 @@ impl<P: PairPotential> MdObserver<P> for Observer {
             let mut buf = Vec::new();
             md.write_xyz_frame(&mut buf, "Ar")
                 .context("cannot format an XYZ frame")?;
-            append(xyz, &buf)?;
+            append(xyz, &buf, md.steps(), &mut self.error);
         }
         Ok(())
     }
@@ -113,7 +150,7 @@ impl<P: PairPotential> MdObserver<P> for Observer {
     }
 
     fn full(&self) -> bool {
-        self.files.as_ref().is_some_and(|f| f.full_file().is_some())
+        self.error.is_some() || self.files.as_ref().is_some_and(|f| f.full_file().is_some())
     }
 }
 
@@ -184,6 +221,7 @@ fn run<P: PairPotential>(r: Runner<'_>, potential: P) -> Result<Outcome> {
     let mut observer = Observer {
         files,
         bar: progress(args),
+        error: None,
     };
     let result = md.run_observed(plan, cancel, &mut observer);
     observer.bar.finish_and_clear();
@@ -193,8 +231,32 @@ fn run<P: PairPotential>(r: Runner<'_>, potential: P) -> Result<Outcome> {
         .as_ref()
         .and_then(Streams::full_file)
         .map(|path| output_limit_message(path, limit, &format!("step {}", md.steps()), LIMIT_HINT));
+    if let Some(error) = observer.error {
+        // a full disk: the files keep whole rows and frames, renamed into place
+        let kept = observer
+            .files
+            .as_ref()
+            .map(Streams::kept)
+            .unwrap_or_default();
+        if let Some(f) = observer.files {
+            let _ = f.finish();
+        }
+        eprintln!(
+            "error: {error}, so the run stopped at step {}; {kept}\n  = hint: free space or choose another --out",
+            md.steps()
+        );
+        return Ok(Outcome::ComputationFailed);
+    }
     if let (Some(f), Some(dir)) = (observer.files, &args.out) {
-        f.finish()?;
+        if let Err(e) = f.finish() {
+            // the last rows could not be written: the files keep whole rows, renamed
+            eprintln!(
+                "error: {}; the run had reached step {}\n  = hint: free space or choose another --out",
+                crate::failure::message(&e),
+                md.steps()
+            );
+            return Ok(Outcome::ComputationFailed);
+        }
         md.rdf_table(RDF_BINS, cutoff + options.skin)
             .write(dir, "rdf")
             .with_context(|| format!("cannot write {}", dir.join("rdf.csv").display()))?;

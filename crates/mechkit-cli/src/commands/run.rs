@@ -22,18 +22,31 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
     if let Some(methods) = &args.compare_methods {
         return compare(args, &scenario, methods, dir.as_deref());
     }
-    let bar = progress_bar(&scenario, args.report);
-    let mut out = match &dir {
-        Some(dir) => scenario.run_to_dir(dir)?,
-        None => scenario.run()?,
-    };
-    bar.finish();
     if let Some(dir) = &dir
         && !args.no_plots
     {
-        plot::render_run(&scenario, &mut out, dir, args.plots)?;
-        super::animate::write_animations(&scenario, dir)?;
+        refuse_special_files(&scenario, dir, args.plots)?;
     }
+    let mut bar = progress_bar(&scenario, args.report);
+    let out = match &dir {
+        Some(dir) => scenario.run_to_dir_then(dir, |out| {
+            bar.finish();
+            if args.no_plots || cancel.is_urgent() {
+                return Ok(());
+            }
+            let urgent = || cancel.is_urgent();
+            plot::render_plots(&scenario, out, dir, args.plots, &urgent)
+                .and_then(|()| {
+                    if urgent() {
+                        return Ok(());
+                    }
+                    super::animate::write_animations(&scenario, dir).map(|_| ())
+                })
+                .map_err(|e| crate::failure::message(&e))
+        })?,
+        None => scenario.run()?,
+    };
+    bar.finish();
     for w in &out.summary.warnings {
         eprintln!("warning: {w}");
     }
@@ -53,6 +66,12 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
     if out.summary.stop_reason == "interrupted" {
         eprintln!("interrupted at t = {} s{held}", out.summary.t_end);
         return Ok(Outcome::Interrupted);
+    }
+    if let Some(error) = &out.summary.files.error
+        && out.summary.stop_reason != "output_error"
+    {
+        eprintln!("error: {error}");
+        return Ok(Outcome::ComputationFailed);
     }
     if let Some(why) = match out.summary.stop_reason.as_str() {
         "output_limit" => Some("its output reached the limit"),
@@ -151,6 +170,25 @@ fn compare(
     Ok(Outcome::Success)
 }
 
+/// Refuses, before the run, a plot or animation in `dir` whose name is taken by something
+/// that is not a regular file (a device, a pipe, a directory): it would be refused only
+/// after the run. The run's own files are checked by the library before it starts.
+fn refuse_special_files(
+    scenario: &Scenario,
+    dir: &Path,
+    format: crate::args::PlotFormat,
+) -> Result<()> {
+    let plots = scenario.plots.iter().map(|p| format.file(&p.file_stem()));
+    let bars = scenario
+        .energy_bars
+        .then(|| format.file(mechkit::scenario::ENERGY_BARS));
+    let animations = scenario.animation.iter().map(|a| a.file_name());
+    for name in plots.chain(bars).chain(animations) {
+        mechkit::csv::writable_target(&dir.join(name)).map_err(|e| anyhow!("--out: {e}"))?;
+    }
+    Ok(())
+}
+
 /// Reads the scenario, with `--set` overrides of its constants.
 pub fn load(file: &Path, set: Option<&str>) -> Result<Scenario> {
     let overrides = match set {
@@ -225,8 +263,8 @@ impl ProgressBar {
         }
     }
 
-    fn finish(self) {
-        if let Some((stop, thread)) = self.stop {
+    fn finish(&mut self) {
+        if let Some((stop, thread)) = self.stop.take() {
             stop.store(true, std::sync::atomic::Ordering::Relaxed);
             let _ = thread.join();
         }

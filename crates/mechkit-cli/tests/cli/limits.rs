@@ -165,25 +165,28 @@ fn a_huge_file_is_not_read_as_a_scenario() {
     );
 }
 
-/// A disk that fills up mid-run (here `/dev/full` in place of the trajectory): the run stops
-/// cleanly where the write failed, says so, and still writes its summary.
+/// A disk that fills up mid-run (here a file size limit, which the kernel enforces as it does
+/// a full disk; a real full tmpfs in `issue_026_integrity`): the run stops cleanly where the
+/// write failed, says so, and still writes its summary. (A link from the partial file to
+/// `/dev/full` was used before; a stale partial file is now replaced, never written through.)
 #[cfg(target_os = "linux")]
 #[test]
 fn a_full_disk_mid_run_stops_cleanly_with_a_summary() {
     let dir = Dir::new();
     dir.create("fall.toml", FALL);
-    std::fs::create_dir(dir.path().join("out")).expect("out");
-    std::os::unix::fs::symlink("/dev/full", dir.path().join("out/trajectory.csv.partial"))
-        .expect("a link to /dev/full");
-    let out = dir.run(&["run", "fall.toml", "--out", "out", "--no-plots"]);
+    // 4000 rows, about 200 kB: the limit cuts them
+    let out = super::issue_026_integrity::run_with_file_limit(
+        &dir,
+        &["run", "fall.toml", "--out", "out", "--no-plots"],
+        128 * 1024,
+    );
     out.assert_code(1)
         .assert_stderr_contains("cannot write")
-        .assert_stderr_contains("No space left on device")
+        .assert_stderr_contains("File too large")
         .assert_stderr_contains("could not be written");
     assert!(!out.stderr.contains("panicked"));
     let summary = dir.read_json("out/summary.json");
     assert_eq!(at(&summary, "/stop_reason"), "output_error");
-    // the trajectory buffer (64 KiB) failed long before t_max
     let t_end = at(&summary, "/t_end").as_f64().expect("t_end");
     assert!(t_end > 0.1 && t_end < 3.0, "{t_end}");
 }

@@ -51,6 +51,8 @@ mod issue_022_mass;
 mod issue_022_rigid;
 mod issue_023_units;
 mod issue_026;
+mod issue_026_integrity;
+mod issue_026_integrity_signals;
 mod limits;
 mod mass;
 mod md;

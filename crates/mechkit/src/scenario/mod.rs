@@ -79,8 +79,8 @@ pub use limits::{DEFAULT_MAX_OUTPUT, MAX_SCENARIO_BYTES, format_size, parse_size
 pub use model::ModelValues;
 pub use observe::Observable;
 pub use output::{
-    FLUSH_INTERVAL, StreamFile, Trajectory, csv_columns, csv_columns_in, csv_header,
-    output_limit_message, push_number, write_atomic,
+    FLUSH_INTERVAL, ReservedFile, SUMMARY_RESERVE, StreamFile, Trajectory, csv_columns,
+    csv_columns_in, csv_header, output_limit_message, push_number, write_atomic,
 };
 pub use plot::{OutputTimes, PlotSpec, SeriesSpec};
 pub use provenance::Provenance;

@@ -6,8 +6,10 @@ use std::path::{Path, PathBuf};
 
 use super::error::{ErrorKind, ScenarioError};
 use super::observe::ObservableSet;
+use super::output::RowSink as _;
 use super::output::{
-    CsvWriter, Keep, Trajectory, TrajectoryTable, csv_columns_in, csv_header, write_atomic,
+    CsvWriter, Keep, ReservedFile, SUMMARY_RESERVE, Trajectory, TrajectoryTable, csv_columns_in,
+    csv_header, write_atomic,
 };
 use super::plot::PlotRecorder;
 use super::provenance::Provenance;
@@ -158,7 +160,25 @@ impl Scenario {
     /// Runs and writes `dir/trajectory.csv` (streamed, kept even if the run diverges) and
     /// `dir/summary.json` (atomically). Plots are returned as data for the caller to render.
     pub fn run_to_dir(&self, dir: &Path) -> Result<RunOutput, ScenarioError> {
+        self.run_to_dir_then(dir, |_| Ok(()))
+    }
+
+    /// [`Scenario::run_to_dir`], with `then` called after the run and before the summary is
+    /// written (the caller's plots and animations, which add their files to
+    /// `summary.files`). Its error (an output that could not be written) goes into the
+    /// summary's `files.error`, as a failed write of the trajectory does.
+    ///
+    /// The summary's room on disk is taken before the run ([`ReservedFile`]), so a disk that
+    /// fills up during the run still gets a valid summary saying what happened.
+    pub fn run_to_dir_then(
+        &self,
+        dir: &Path,
+        then: impl FnOnce(&mut RunOutput) -> Result<(), String>,
+    ) -> Result<RunOutput, ScenarioError> {
         fs::create_dir_all(dir).map_err(|e| io_error("create the output directory", dir, &e))?;
+        let summary_path = dir.join("summary.json");
+        let mut summary_file = ReservedFile::create(&summary_path, SUMMARY_RESERVE)
+            .map_err(|e| io_error("write", &summary_path, &e))?;
         let csv_path = dir.join("trajectory.csv");
         let has_potential = {
             let (q, v) = self.initial.qv();
@@ -178,12 +198,33 @@ impl Scenario {
         write_atomic(&units_path, units.as_bytes())
             .map_err(|e| io_error("write", &units_path, &e))?;
         let result = self.run_with(Some(&mut csv));
-        let rows = csv.close().map_err(|e| io_error("write", &csv_path, &e))?;
+        let write_error = match csv.stop() {
+            Some((crate::simulate::StopReason::OutputError, message)) => Some(message),
+            _ => None,
+        };
+        let (rows, last_t, closed) = csv.close();
         let mut out = result?;
-        out.summary.files.trajectory = Some("trajectory.csv".into());
-        out.summary.files.units = Some(crate::csv::units_file_name("trajectory"));
-        out.summary.files.trajectory_rows = rows;
-        self.write_summary(dir, &out.summary)?;
+        let files = &mut out.summary.files;
+        files.trajectory = Some("trajectory.csv".into());
+        files.units = Some(crate::csv::units_file_name("trajectory"));
+        files.trajectory_rows = rows;
+        files.trajectory_last_t = last_t;
+        files.error = write_error.or_else(|| {
+            closed.err().map(|e| {
+                format!(
+                    "cannot write {}: {e}; the file keeps {rows} whole rows",
+                    csv_path.display()
+                )
+            })
+        });
+        if let Err(e) = then(&mut out) {
+            match &out.summary.files.error {
+                Some(_) => out.summary.warnings.push(e),
+                None => out.summary.files.error = Some(e),
+            }
+        }
+        write_summary_into(&mut summary_file, &mut out.summary)
+            .map_err(|e| io_error("write", &summary_path, &e))?;
         Ok(out)
     }
 
@@ -198,6 +239,36 @@ impl Scenario {
             .map_err(|e| io_error("write", &path, &e))?;
         Ok(path)
     }
+}
+
+/// Writes `summary` into its reserved room. A summary too long for the room (many events)
+/// on a disk that has no more keeps fewer events, and says so in its warnings.
+fn write_summary_into(
+    file: &mut ReservedFile,
+    summary: &mut super::Summary,
+) -> std::io::Result<()> {
+    let first = file.write(summary.to_json().as_bytes());
+    let Err(mut error) = first else {
+        return Ok(());
+    };
+    let events = summary.events.len();
+    let mut keep = events;
+    while keep > 0 {
+        keep /= 2;
+        let mut shorter = summary.clone();
+        shorter.events.truncate(keep);
+        shorter.warnings.push(format!(
+            "summary.json keeps the first {keep} of {events} events: the disk had no room for more ({error})"
+        ));
+        match file.write(shorter.to_json().as_bytes()) {
+            Ok(()) => {
+                *summary = shorter;
+                return Ok(());
+            }
+            Err(e) => error = e,
+        }
+    }
+    Err(error)
 }
 
 /// Puts the time of the run's samples into the scenario's [`Progress`](crate::simulate::Progress):

@@ -38,7 +38,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// assert_eq!(report.stop_reason, StopReason::TMax);
 /// ```
 #[derive(Clone, Default)]
-pub struct Cancel(Arc<AtomicBool>);
+pub struct Cancel {
+    stop: Arc<AtomicBool>,
+    urgent: Arc<AtomicBool>,
+}
 
 impl Cancel {
     /// A handle not yet raised.
@@ -48,18 +51,33 @@ impl Cancel {
 
     /// Asks the runs holding this handle to stop after their current step.
     pub fn cancel(&self) {
-        self.0.store(true, Ordering::Relaxed);
+        self.stop.store(true, Ordering::Relaxed);
     }
 
     /// Whether a stop was asked for.
     #[inline]
     pub fn is_cancelled(&self) -> bool {
-        self.0.load(Ordering::Relaxed)
+        self.stop.load(Ordering::Relaxed) || self.is_urgent()
+    }
+
+    /// Asks for a stop in a hurry (a second Ctrl-C, SIGTERM): the runs stop after their
+    /// current step as for [`Cancel::cancel`], and whoever finishes the outputs keeps to
+    /// what cannot be lost (the streamed files, the summary) and skips what takes time
+    /// (plots, animations).
+    pub fn cancel_urgently(&self) {
+        self.urgent.store(true, Ordering::Relaxed);
+        self.cancel();
+    }
+
+    /// Whether a stop in a hurry was asked for ([`Cancel::cancel_urgently`]).
+    #[inline]
+    pub fn is_urgent(&self) -> bool {
+        self.urgent.load(Ordering::Relaxed)
     }
 
     /// The flag itself, for a signal handler to raise (`signal_hook::flag::register`).
     pub fn flag(&self) -> Arc<AtomicBool> {
-        Arc::clone(&self.0)
+        Arc::clone(&self.stop)
     }
 }
 
@@ -88,6 +106,10 @@ mod tests {
         other.flag().store(true, Ordering::Relaxed);
         assert!(other.is_cancelled());
         assert_eq!(format!("{a:?}"), "Cancel { cancelled: true }");
+        assert!(!a.is_urgent());
+        let hurry = Cancel::new();
+        hurry.clone().cancel_urgently();
+        assert!(hurry.is_urgent() && hurry.is_cancelled());
     }
 }
 

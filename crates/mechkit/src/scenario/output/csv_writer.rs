@@ -63,7 +63,7 @@ impl CsvWriter {
         if self.halt.is_some() {
             return;
         }
-        match self.out.append(self.line.as_bytes()) {
+        match self.out.append_row(self.line.as_bytes(), s.t) {
             Ok(true) => {}
             Ok(false) => {
                 self.halt = Some((
@@ -78,13 +78,18 @@ impl CsvWriter {
                 return;
             }
             Err(e) => {
-                // a full disk, a quota: stop cleanly, keep the rows already on disk
+                // a full disk, a quota: stop cleanly, keep the whole rows already on disk
+                let kept = match self.out.records_on_disk() {
+                    0 | 1 => "no rows".to_string(),
+                    n => format!("{} rows up to t = {} s", n - 1, self.out.last_tag_on_disk()),
+                };
                 self.halt = Some((
                     StopReason::OutputError,
                     format!(
-                        "cannot write {} at t = {} s ({e}), so the run stopped there; the rows written before are kept; free space or choose another --out",
-                        self.out.partial_path().display(),
-                        s.t
+                        "cannot write {} at t = {} s: {}, so the run stopped there; the file keeps {kept}; free space or choose another --out",
+                        self.out.path().display(),
+                        s.t,
+                        e,
                     ),
                 ));
                 return;
@@ -94,15 +99,29 @@ impl CsvWriter {
         self.rows += 1;
     }
 
-    /// Flushes and renames the file into place; returns the number of rows written.
-    /// After a failed write, what reached the disk is renamed into place.
-    pub fn close(self) -> std::io::Result<u64> {
-        if matches!(self.halt, Some((StopReason::OutputError, _))) {
-            self.out.keep_what_was_written()?;
-        } else {
-            self.out.finish()?;
+    /// Flushes and renames the file into place; returns the rows and the time of the last
+    /// row in it, and whether finishing failed. However it ends, the file holds whole rows and
+    /// is renamed into place (after a failed write: the rows that reached the disk).
+    pub fn close(self) -> (u64, Option<Real>, std::io::Result<()>) {
+        if self.out.has_failed() {
+            let rows = self.out.records_on_disk().saturating_sub(1);
+            let last = Some(self.out.last_tag_on_disk()).filter(|_| rows > 0);
+            // the failure was reported when it happened (`RowSink::stop`)
+            let _ = self.out.finish();
+            return (rows, last, Ok(()));
         }
-        Ok(self.rows)
+        let (rows, last_t) = (self.rows, self.last_t);
+        let mut out = self.out;
+        // flush here, to learn how far the file got if the flush fails
+        match out.flush() {
+            Ok(()) => (rows, last_t, out.finish()),
+            Err(e) => {
+                let rows = out.records_on_disk().saturating_sub(1);
+                let last = Some(out.last_tag_on_disk()).filter(|_| rows > 0);
+                let _ = out.finish();
+                (rows, last, Err(e))
+            }
+        }
     }
 }
 

@@ -4,109 +4,11 @@
 //! The CSV is written to `trajectory.csv.partial` and renamed to `trajectory.csv` when the run
 //! ends for any reason (including divergence), so everything computed is kept.
 
-use std::fs::{self, File};
-use std::io::{self, BufWriter, Write};
-use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
+use std::path::Path;
 
-use crate::csv::partial_path as temp_path;
 pub use crate::csv::write_atomic;
-
-/// How often a [`StreamFile`] hands its buffer to the operating system, at the least: a
-/// process killed outright loses at most about this much of its output.
-pub const FLUSH_INTERVAL: Duration = Duration::from_secs(1);
-
-/// A file written as a stream: to `NAME.partial` beside it, flushed at least every
-/// [`FLUSH_INTERVAL`], held to a size limit, and renamed into place by
-/// [`StreamFile::finish`], so a reader never sees half a file under the final name.
-pub struct StreamFile {
-    out: BufWriter<File>,
-    tmp: PathBuf,
-    path: PathBuf,
-    written: u64,
-    limit: u64,
-    full: bool,
-    last_flush: Instant,
-    appends: u32,
-}
-
-impl StreamFile {
-    /// Starts `path.partial`; the file may hold at most `limit` bytes.
-    pub fn create(path: &Path, limit: u64) -> io::Result<Self> {
-        let tmp = temp_path(path);
-        Ok(Self {
-            out: BufWriter::with_capacity(1 << 16, File::create(&tmp)?),
-            tmp,
-            path: path.to_path_buf(),
-            written: 0,
-            limit,
-            full: false,
-            last_flush: Instant::now(),
-            appends: 0,
-        })
-    }
-
-    /// Appends `bytes`, unless they would take the file past its limit: then nothing is
-    /// written, now or later, and the result is `false` ([`StreamFile::is_full`]).
-    pub fn append(&mut self, bytes: &[u8]) -> io::Result<bool> {
-        if self.full || self.written + bytes.len() as u64 > self.limit {
-            self.full = true;
-            return Ok(false);
-        }
-        self.out.write_all(bytes)?;
-        self.written += bytes.len() as u64;
-        self.appends += 1;
-        if self.appends.is_multiple_of(64) && self.last_flush.elapsed() >= FLUSH_INTERVAL {
-            self.out.flush()?;
-            self.last_flush = Instant::now();
-        }
-        Ok(true)
-    }
-
-    /// Whether an append was refused because of the limit.
-    pub fn is_full(&self) -> bool {
-        self.full
-    }
-
-    /// Bytes written so far.
-    pub fn len(&self) -> u64 {
-        self.written
-    }
-
-    /// Whether nothing was written.
-    pub fn is_empty(&self) -> bool {
-        self.written == 0
-    }
-
-    /// The size limit.
-    pub fn limit(&self) -> u64 {
-        self.limit
-    }
-
-    /// The final path (the file is written beside it until [`StreamFile::finish`]).
-    pub fn path(&self) -> &Path {
-        &self.path
-    }
-
-    /// The temporary path being written.
-    pub fn partial_path(&self) -> &Path {
-        &self.tmp
-    }
-
-    /// Flushes, syncs and renames the file into place.
-    pub fn finish(mut self) -> io::Result<()> {
-        self.out.flush()?;
-        self.out.get_ref().sync_all()?;
-        fs::rename(&self.tmp, &self.path)
-    }
-
-    /// After a failed write: renames what reached the disk into place, without insisting on
-    /// the rest of the buffer.
-    pub fn keep_what_was_written(mut self) -> io::Result<()> {
-        let _ = self.out.flush();
-        fs::rename(&self.tmp, &self.path)
-    }
-}
+pub use reserved::{ReservedFile, SUMMARY_RESERVE};
+pub use stream::{FLUSH_INTERVAL, StreamFile};
 
 /// The message of a run stopped by an output file reaching its limit: which file, the limit,
 /// when (`at`, e.g. `t = 1.02 s`), and `how` to raise the limit or write less.
@@ -125,11 +27,13 @@ pub fn output_limit_message(file: &Path, limit: u64, at: &str, how: &str) -> Str
 pub(crate) const SCENARIO_LIMIT_HINT: &str = "raise the limit with `[output] max_size = \"10 GB\"` (or `mechkit run --max-output 10GB`), or write fewer rows with `[output] every = 10` or `interval`";
 
 mod csv_writer;
+mod reserved;
 mod row;
+mod stream;
 mod table;
 
 pub(crate) use csv_writer::CsvWriter;
-pub(crate) use row::Keep;
+pub(crate) use row::{Keep, RowSink};
 pub use row::{csv_columns, csv_columns_in, csv_header};
 pub use table::Trajectory;
 pub(crate) use table::TrajectoryTable;

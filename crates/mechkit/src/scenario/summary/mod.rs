@@ -131,6 +131,14 @@ pub struct Files {
     pub units: Option<String>,
     /// Plots.
     pub plots: Vec<String>,
+    /// The time of the trajectory's last row (s); absent when it has none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trajectory_last_t: Option<Real>,
+    /// Why an output file could not be written (a full disk: which file, the system's
+    /// reason, how far it got); absent when every file was written. The run's results in
+    /// this summary hold all the same, up to `t_end`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
 }
 
 /// The summary of a run (`summary.json`).
