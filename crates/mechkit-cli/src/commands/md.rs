@@ -233,12 +233,13 @@ fn run<P: PairPotential>(r: Runner<'_>, potential: P) -> Result<Outcome> {
         .map(|path| output_limit_message(path, limit, &format!("step {}", md.steps()), LIMIT_HINT));
     if let Some(error) = observer.error {
         // a full disk: the files keep whole rows and frames, renamed into place
-        let kept = observer
-            .files
-            .as_ref()
-            .map(Streams::kept)
-            .unwrap_or_default();
-        if let Some(f) = observer.files {
+        let mut kept = String::new();
+        if let Some(mut f) = observer.files {
+            // the rows still buffered reach the disk, where it has room
+            for s in std::iter::once(&mut f.thermo).chain(f.xyz.as_mut()) {
+                let _ = s.flush();
+            }
+            kept = f.kept();
             let _ = f.finish();
         }
         eprintln!(
