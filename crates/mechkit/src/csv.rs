@@ -283,7 +283,7 @@ pub fn writable_target(path: &Path) -> io::Result<PathBuf> {
                     format!(
                         "{}{via} is {}, not a regular file, so mechkit will not write it (nor replace it); give the path of a file to write",
                         target.display(),
-                        file_kind(&m.file_type())
+                        file_kind(m.file_type())
                     ),
                 ));
             }
@@ -293,7 +293,7 @@ pub fn writable_target(path: &Path) -> io::Result<PathBuf> {
 }
 
 /// What a file that is not a regular file is, in words: `a directory`, `a character device`.
-fn file_kind(t: &fs::FileType) -> &'static str {
+fn file_kind(t: fs::FileType) -> &'static str {
     #[cfg(unix)]
     {
         use std::os::unix::fs::FileTypeExt as _;

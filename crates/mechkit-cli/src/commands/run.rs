@@ -184,7 +184,9 @@ fn refuse_special_files(
         .then(|| format.file(mechkit::scenario::ENERGY_BARS));
     let animations = scenario.animation.iter().map(|a| a.file_name());
     for name in plots.chain(bars).chain(animations) {
-        mechkit::csv::writable_target(&dir.join(name)).map_err(|e| anyhow!("--out: {e}"))?;
+        mechkit::csv::writable_target(&dir.join(name)).map_err(|e| {
+            anyhow!("--out: {e}\n  = hint: move it away, or choose another directory with --out")
+        })?;
     }
     Ok(())
 }

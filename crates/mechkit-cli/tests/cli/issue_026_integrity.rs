@@ -238,9 +238,11 @@ fn issue_026_md_on_a_full_disk_keeps_whole_rows_and_frames() {
 #[test]
 fn issue_026_a_plot_that_cannot_be_written_leaves_no_partial_file() {
     let dir = Dir::new();
-    let data: String = (0..200)
-        .map(|k| format!("{} {}\n", f64::from(k) * 0.1, k))
-        .collect();
+    let mut data = String::new();
+    for k in 0..200 {
+        std::fmt::Write::write_fmt(&mut data, format_args!("{} {k}\n", f64::from(k) * 0.1))
+            .expect("a string takes it");
+    }
     dir.create("f.csv", &data);
     // the CSV (4 kB) fits, the plot (a PNG at 600 dpi, over 60 kB) does not
     let out = run_with_file_limit(

@@ -10,6 +10,8 @@ pub enum Contents {
     Text(&'static str),
     /// A binary file, made when the case runs (images).
     Bytes(fn() -> Vec<u8>),
+    /// An empty directory (where a file is meant: a target that is not a regular file).
+    Folder,
 }
 
 /// One kind of error: the input that provokes it and what is expected of the run.
@@ -67,6 +69,9 @@ impl Case {
                 }
                 Contents::Bytes(make) => {
                     std::fs::write(dir.path().join(name), make()).expect("the file is written");
+                }
+                Contents::Folder => {
+                    std::fs::create_dir_all(dir.path().join(name)).expect("the folder is made");
                 }
             }
         }

@@ -1,7 +1,11 @@
 //! Runs that end badly (exit 1, the output so far kept), warnings about how a run is bounded,
 //! and output that cannot be written (exit 2).
 
-use super::case::{Case, Contents::Text, assert_cases};
+use super::case::{
+    Case,
+    Contents::{Folder, Text},
+    assert_cases,
+};
 
 #[test]
 fn runtime_messages() {
@@ -111,6 +115,36 @@ pub static CASES: &[Case] = &[
             "--out",
             "afile/sub",
         ],
+        code: 2,
+    },
+    Case {
+        area: "output",
+        kind: "output_not_a_regular_file",
+        files: &[
+            (
+                "s.toml",
+                Text(
+                    "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\ndt = \"0.1 s\"\n[stop]\nt_max = \"1 s\"\n",
+                ),
+            ),
+            ("out/summary.json", Folder),
+        ],
+        args: &["run", "s.toml", "--out", "out"],
+        code: 2,
+    },
+    Case {
+        area: "output",
+        kind: "plot_not_a_regular_file",
+        files: &[
+            (
+                "s.toml",
+                Text(
+                    "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[integrator]\ndt = \"0.1 s\"\n[stop]\nt_max = \"1 s\"\n[output]\nplots = [\"x(t)\"]\n",
+                ),
+            ),
+            ("out/x_t.svg", Folder),
+        ],
+        args: &["run", "s.toml", "--out", "out"],
         code: 2,
     },
 ];
