@@ -88,6 +88,9 @@ fn issue_026_a_double_ctrl_c_finishes_the_files_and_the_summary_at_once() {
         Duration::from_millis(300),
     );
     send(&child, "-INT");
+    // close together, as a user's two presses reach a busy process: the old handler then
+    // exited before the files were renamed (two signals of one kind still pending merge
+    // into one, a plain Ctrl-C, which finishes everything too)
     std::thread::sleep(Duration::from_millis(2));
     send(&child, "-INT");
     let (status, took, stderr) = wait(&mut child);
