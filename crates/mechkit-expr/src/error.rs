@@ -96,6 +96,58 @@ impl ExprError {
         }
     }
 
+    /// The same error with the name `from` written `to` in its message and hint: a caller that
+    /// rewrote a formula before parsing it (a placeholder for a part it evaluates itself) shows
+    /// the user's own text again.
+    #[must_use]
+    pub fn with_text_restored(mut self, from: &str, to: &str) -> Self {
+        let fix = |s: &mut String| {
+            if s.contains(from) {
+                *s = s.replace(from, to);
+            }
+        };
+        match &mut self.kind {
+            ExprErrorKind::BadNumber(s) | ExprErrorKind::FunctionAsValue(s) => fix(s),
+            ExprErrorKind::UnexpectedToken { found, expected } => {
+                fix(found);
+                fix(expected);
+            }
+            ExprErrorKind::UnexpectedEnd { expected } => fix(expected),
+            ExprErrorKind::MissingOperator { found } => fix(found),
+            ExprErrorKind::UnknownFunction { name, suggestions } => {
+                fix(name);
+                suggestions.iter_mut().for_each(fix);
+            }
+            ExprErrorKind::Arity { name, expected, .. } => {
+                fix(name);
+                fix(expected);
+            }
+            ExprErrorKind::UndefinedName {
+                name,
+                suggestions,
+                context,
+            } => {
+                fix(name);
+                suggestions.iter_mut().for_each(fix);
+                if let Some(c) = context {
+                    fix(c);
+                }
+            }
+            ExprErrorKind::Dimension { message, hint } => {
+                fix(message);
+                if let Some(h) = hint {
+                    fix(h);
+                }
+            }
+            ExprErrorKind::Empty
+            | ExprErrorKind::UnexpectedChar(_)
+            | ExprErrorKind::SingleEquals
+            | ExprErrorKind::UnclosedParen
+            | ExprErrorKind::TooDeep => {}
+        }
+        self
+    }
+
     /// 1-based column of the error in the formula.
     pub fn column(&self) -> usize {
         self.span.column(&self.source)

@@ -12,11 +12,16 @@ pub(crate) fn in_exponent_form(x: Real) -> bool {
 
 /// A number for a message: `0.002`, `2e-15`.
 pub(crate) fn short(x: Real) -> String {
-    if in_exponent_form(x) {
-        format!("{x:e}")
-    } else {
-        format!("{x}")
-    }
+    mechkit_expr::short_number(x)
+}
+
+/// Whether `x` can be divided by: positive, finite and normal, so that `1/x` is finite too.
+///
+/// The rule for every amount a model inverts (a mass, a moment of inertia): a subnormal mass
+/// such as `1e-320 kg` is positive and finite, yet its reciprocal overflows to infinity and
+/// the run fails at its first step.
+pub fn invertible(x: Real) -> bool {
+    x.is_normal() && x > 0.0
 }
 
 /// Any error of this crate.

@@ -77,6 +77,8 @@ pub enum Input {
     Method,
     /// Smoothing of noisy data.
     Smoothing,
+    /// The number of samples of a grid ([`crate::sample_bound`]).
+    Samples,
 }
 
 /// A value that does not answer the question, with the input it came from and what would fix

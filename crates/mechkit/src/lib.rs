@@ -93,12 +93,13 @@ pub mod report;
 pub mod rigid;
 pub mod rocket;
 pub mod roots;
+pub mod sample_bound;
 #[cfg(feature = "scenario")]
 pub mod scenario;
 pub mod simulate;
 pub mod values;
 
-pub use error::Error;
+pub use error::{Error, invertible};
 pub use mechkit_expr as expr;
 pub use mechkit_expr::interval;
 pub use mechkit_expr::units;

@@ -24,6 +24,7 @@ use crate::args::PotentialArgs;
 fn flag(input: Input) -> &'static str {
     match input {
         Input::Range => "--range",
+        Input::Samples => "--samples",
         Input::Energy => "--energy",
         Input::Mass => "--mass",
         Input::StartPosition => "--x0",

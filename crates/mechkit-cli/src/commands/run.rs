@@ -64,7 +64,10 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
         format!(": the outputs in {} hold the run up to there", d.display())
     });
     if out.summary.stop_reason == "interrupted" {
-        eprintln!("interrupted at t = {} s{held}", out.summary.t_end);
+        eprintln!(
+            "interrupted at t = {} s{held}",
+            mechkit::expr::short_number(out.summary.t_end)
+        );
         return Ok(Outcome::Interrupted);
     }
     if let Some(error) = &out.summary.files.error
@@ -73,6 +76,17 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
         eprintln!("error: {error}");
         return Ok(Outcome::ComputationFailed);
     }
+    let files = &out.summary.files;
+    let held = match (dir.as_ref(), files.trajectory_last_t) {
+        // the rows after the limit are not in the file: say where it ends
+        (Some(d), Some(last)) if out.summary.stop_reason == "output_limit" => format!(
+            ": {} holds {} rows, up to t = {} s",
+            d.join("trajectory.csv").display(),
+            files.trajectory_rows,
+            mechkit::expr::short_number(last)
+        ),
+        _ => held,
+    };
     if let Some(why) = match out.summary.stop_reason.as_str() {
         "output_limit" => Some("its output reached the limit"),
         "output_error" => Some("its output could not be written"),
@@ -81,7 +95,7 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
         // the message, with what to do, is among the warnings printed above
         eprintln!(
             "error: the run stopped at t = {} s because {why}{held}",
-            out.summary.t_end
+            mechkit::expr::short_number(out.summary.t_end)
         );
         return Ok(Outcome::ComputationFailed);
     }

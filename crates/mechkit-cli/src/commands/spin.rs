@@ -56,6 +56,7 @@ fn flag(input: Option<Input>, args: &SpinArgs) -> String {
         Some(Input::Duration) => "--t-max".into(),
         Some(Input::Step) => "--dt".into(),
         Some(Input::Method) => "--method".into(),
+        Some(Input::Samples) => "--samples".into(),
         _ => "--rtol".into(),
     }
 }

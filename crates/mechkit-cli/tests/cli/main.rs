@@ -53,6 +53,7 @@ mod issue_023_units;
 mod issue_026;
 mod issue_026_integrity;
 mod issue_026_integrity_signals;
+mod issue_026_messages;
 mod limits;
 mod mass;
 mod md;

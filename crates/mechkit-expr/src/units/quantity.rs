@@ -76,9 +76,9 @@ impl Quantity {
 impl fmt::Display for Quantity {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.dim.is_none() {
-            write!(f, "{}", self.value)
+            write!(f, "{}", crate::short_number(self.value))
         } else {
-            write!(f, "{} {}", self.value, self.dim)
+            write!(f, "{} {}", crate::short_number(self.value), self.dim)
         }
     }
 }

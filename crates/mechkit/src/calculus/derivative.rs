@@ -115,7 +115,10 @@ pub fn differentiate(
             if h.is_nan() || h <= 0.0 {
                 return Err(InputError::new(
                     Input::Step,
-                    format!("the step of the numerical derivative must be positive, not {h}"),
+                    format!(
+                        "the step of the numerical derivative must be positive, not {}",
+                        crate::error::short(h)
+                    ),
                 )
                 .into());
             }

@@ -218,10 +218,16 @@ pub fn analyse_potential(q: &PotentialQuestion<'_>) -> Result<PotentialAnalysis,
     if a >= b {
         return Err(InputError::new(
             Input::Range,
-            format!("the range must be increasing (its start below its end), not {a}:{b}"),
+            format!(
+                "the range must be increasing (its start below its end), not {}:{}",
+                crate::error::short(a),
+                crate::error::short(b)
+            ),
         )
         .into());
     }
+    crate::sample_bound::check_samples("grid intervals", q.samples)
+        .map_err(|e| InputError::new(Input::Samples, e.to_string()))?;
     let x = q.var;
     let pot = match q.given {
         Given::Potential(u) => Potential::from_potential(u, x, q.params)?,

@@ -249,9 +249,11 @@ pub fn data_work(q: &DataWorkQuestion<'_>) -> Result<DataWork, DataWorkError> {
     if let Some(m) = q.mass
         && (m.is_nan() || m <= 0.0)
     {
-        return Err(
-            InputError::new(Input::Mass, format!("the mass must be positive, not {m}")).into(),
-        );
+        return Err(InputError::new(
+            Input::Mass,
+            format!("the mass must be positive, not {}", crate::error::short(m)),
+        )
+        .into());
     }
     let (x, x_unit) = table.si(x_index);
     let (f, f_unit) = table.si(f_index);

@@ -34,7 +34,10 @@ pub fn average_power(work: Real, time: Real) -> Result<AveragePower, InputError>
     if time.is_nan() || time <= 0.0 {
         return Err(InputError::new(
             Input::Time,
-            format!("the time must be positive, not {time} s"),
+            format!(
+                "the time must be positive, not {} s",
+                crate::error::short(time)
+            ),
         ));
     }
     Ok(AveragePower {
@@ -149,7 +152,10 @@ pub fn constant_power_motion(
     if let Some(t) = times.iter().find(|t| t.is_nan() || **t < 0.0) {
         return Err(InputError::new(
             Input::At,
-            format!("times must not be negative, not {t} s"),
+            format!(
+                "times must not be negative, not {} s",
+                crate::error::short(*t)
+            ),
         ));
     }
     let until_speed = until_speed

@@ -46,7 +46,7 @@ pub enum ContactError {
     #[error("the contact stiffness must be positive and finite, not {0}")]
     BadStiffness(Real),
     /// A damping coefficient negative or not finite.
-    #[error("the contact damping `{name}` must be non-negative and finite, not {value}")]
+    #[error("the contact damping `{name}` must be non-negative and finite, not {}", crate::error::short(*value))]
     BadDamping {
         /// `c` or `alpha`.
         name: &'static str,
@@ -65,7 +65,7 @@ pub enum ContactError {
         b: usize,
     },
     /// A pair's reach not positive and finite.
-    #[error("the reach of bodies {a} and {b} must be positive and finite, not {reach} m")]
+    #[error("the reach of bodies {a} and {b} must be positive and finite, not {} m", crate::error::short(*reach))]
     BadReach {
         /// First body.
         a: usize,
@@ -75,7 +75,7 @@ pub enum ContactError {
         reach: Real,
     },
     /// A radius negative or not finite.
-    #[error("the radius of body {body} must be non-negative and finite, not {radius} m")]
+    #[error("the radius of body {body} must be non-negative and finite, not {} m", crate::error::short(*radius))]
     BadRadius {
         /// Body.
         body: usize,

@@ -69,7 +69,7 @@ pub enum TerminalError {
     #[error("the terminal speed must be positive and finite, not {0} m/s")]
     Speed(Real),
     /// A quantity that must be positive is not.
-    #[error("{what} must be positive and finite, not {value}")]
+    #[error("{what} must be positive and finite, not {}", crate::error::short(*value))]
     NotPositive {
         /// Which quantity.
         what: &'static str,

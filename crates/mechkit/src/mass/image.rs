@@ -39,6 +39,8 @@ mod brightness;
 mod codec;
 mod error;
 mod file_format;
+#[cfg(feature = "image")]
+mod header;
 mod mark;
 mod pixel_body;
 mod pixel_frame;

@@ -177,12 +177,29 @@ pub enum ConfigError {
         want: usize,
     },
     /// A step limit that is not positive.
-    #[error("{what} must be positive, not {value}")]
+    #[error("{what} must be positive, not {}", crate::error::short(*value))]
     Step {
         /// Which limit.
         what: &'static str,
         /// Its value.
         value: Real,
+    },
+    /// Two step limits in the wrong order: `h_min > h_max`, or a first step `h0` below
+    /// `h_min` (every step would be refused).
+    #[error(
+        "{small} = {} must not exceed {large} = {}",
+        crate::error::short(*small_value),
+        crate::error::short(*large_value)
+    )]
+    StepOrder {
+        /// The limit that must be the smaller (`h_min`, or `h0`).
+        small: &'static str,
+        /// Its value.
+        small_value: Real,
+        /// The limit that must be the larger (`h_max`, or `h_min`'s partner).
+        large: &'static str,
+        /// Its value.
+        large_value: Real,
     },
     /// The method has no error estimator.
     #[error("the method {0} has no error estimator; use a fixed step")]
@@ -223,6 +240,24 @@ impl AdaptiveConfig {
                 && (v.is_nan() || v <= 0.0)
             {
                 return Err(ConfigError::Step { what, value: v });
+            }
+        }
+        if let Some(h_min) = self.h_min {
+            // h_min > h_max: every step is clipped below the smallest one allowed; h0 < h_min:
+            // the first step is refused. Either fails at the first step, so refuse it here.
+            let pairs = [
+                ("h_min", h_min, "h_max", self.h_max),
+                ("h_min", h_min, "h0", self.h0.unwrap_or(Real::INFINITY)),
+            ];
+            for (small, small_value, large, large_value) in pairs {
+                if small_value > large_value {
+                    return Err(ConfigError::StepOrder {
+                        small,
+                        small_value,
+                        large,
+                        large_value,
+                    });
+                }
             }
         }
         Ok(())

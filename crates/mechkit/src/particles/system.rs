@@ -26,8 +26,8 @@ pub enum SystemError {
     /// Dimension other than 1, 2 or 3.
     #[error("dimensions must be 1, 2 or 3, not {0}")]
     BadDimension(usize),
-    /// Mass not positive and finite.
-    #[error("the mass of `{name}` must be positive and finite, not {mass} kg")]
+    /// Mass not positive, finite and invertible ([`crate::invertible`]).
+    #[error("the mass of `{name}` must be positive, finite and at least 2.2e-308 kg (its reciprocal must be finite), not {} kg", crate::error::short(*mass))]
     BadMass {
         /// Body.
         name: String,
@@ -230,7 +230,7 @@ impl ParticleSystemBuilder {
             return Err(SystemError::AngleNotOneDimensional(self.dim));
         }
         for (i, b) in self.bodies.iter().enumerate() {
-            if !(b.mass > 0.0 && b.mass.is_finite()) {
+            if !crate::invertible(b.mass) {
                 return Err(SystemError::BadMass {
                     name: b.name.clone(),
                     mass: b.mass,
@@ -254,7 +254,7 @@ impl ParticleSystemBuilder {
             }
         }
         for e in &self.extras {
-            if e.body.is_some() && !(e.inertia > 0.0 && e.inertia.is_finite()) {
+            if e.body.is_some() && !crate::invertible(e.inertia) {
                 return Err(SystemError::BadMass {
                     name: e.name.clone(),
                     mass: e.inertia,

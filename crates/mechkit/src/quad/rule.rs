@@ -235,7 +235,7 @@ pub enum RuleError {
         evaluations: usize,
     },
     /// A limit is infinite or NaN (use the adaptive [`integrate`](super::integrate)).
-    #[error("fixed rules need finite limits, not {a} and {b}")]
+    #[error("fixed rules need finite limits, not {} and {}", crate::error::short(*a), crate::error::short(*b))]
     BadLimits {
         /// Lower limit.
         a: Real,

@@ -111,4 +111,6 @@ pub enum Input {
     Normal,
     /// The coefficient of restitution.
     Restitution,
+    /// The number of samples of an output grid ([`crate::sample_bound`]).
+    Samples,
 }

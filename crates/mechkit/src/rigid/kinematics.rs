@@ -42,7 +42,7 @@ pub enum KinematicsError {
         why: &'static str,
     },
     /// A value that must be finite (and positive, where said) is not.
-    #[error("{what} must be {must_be}, not {value}")]
+    #[error("{what} must be {must_be}, not {}", crate::error::short(*value))]
     Value {
         /// Which input it is.
         input: Input,

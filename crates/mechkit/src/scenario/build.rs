@@ -8,7 +8,7 @@ use super::Scenario;
 use super::constants::constants_with;
 use super::contact::{Spheres, read_contacts};
 use super::doc::{Source, Table};
-use super::error::{ErrorKind, ScenarioError};
+use super::error::{ErrorKind, ScenarioError, positive_message};
 use super::events::read_events;
 use super::forces::{ForceContext, read_forces};
 use super::integrator::read_integrator;
@@ -338,11 +338,15 @@ pub(crate) fn assemble(root: &Table<'_, '_>, m: Model<'_>) -> Result<Scenario, S
         planar: &planar,
     };
     let (stop, t_max, max_steps) = read_stop(root, env, &names)?;
-    super::stop::check_steps(root, &stepping, initial.t, t_max, max_steps)?;
     let mut events = read_events(root, &names)?;
     events.extend(model_events);
     let observables = read_observe(root, &names)?;
     let (every, output_times, plots, energy_bars) = read_output(root, &names, dim, env)?;
+    let interval = match &output_times {
+        Some(super::OutputTimes::Every(i)) => Some(*i),
+        _ => None,
+    };
+    super::stop::check_steps(root, &stepping, initial.t, t_max, max_steps, interval)?;
     let animation = super::animation_key::read_animation(root)?;
     let max_output = super::limits::read_max_size(root.table("output")?.as_ref())?
         .unwrap_or(super::limits::DEFAULT_MAX_OUTPUT);
@@ -453,12 +457,12 @@ pub(crate) fn bodies(
                 "every body needs a mass: add `mass = \"1 kg\"` to the body `{name}`"
             ))
         })?;
-        if !(mass > 0.0 && mass.is_finite()) {
+        if !crate::invertible(mass) {
             return Err(t
                 .src
                 .error(
                     ErrorKind::Invalid,
-                    format!("the mass of `{name}` must be positive, not {mass} kg"),
+                    positive_message(&format!("the mass of `{name}`"), mass, "kg"),
                     t.get("mass").map_or(t.span.clone(), toml::Spanned::span),
                 )
                 .with_hint("a body's mass is a positive number of kilograms, e.g. \"0.145 kg\""));
@@ -473,7 +477,10 @@ pub(crate) fn bodies(
         {
             return Err(t.src.error(
                 ErrorKind::Invalid,
-                format!("the radius of `{name}` must be zero or positive, not {r} m"),
+                format!(
+                    "the radius of `{name}` must be zero or positive, not {} m",
+                    crate::error::short(r)
+                ),
                 t.key_span("radius"),
             ));
         }

@@ -91,7 +91,7 @@ impl Scenario {
             forces: sys.forces().iter().map(|f| f.name().to_string()).collect(),
             method: match &self.stepping {
                 crate::simulate::Stepping::Fixed { method, dt } if reduced => {
-                    format!("{method} with dt = {dt}")
+                    format!("{method} with dt = {}", crate::error::short(*dt))
                 }
                 other => other.describe(),
             },
@@ -121,6 +121,7 @@ impl CheckReport {
     /// The text `mechkit check` prints.
     pub fn to_text(&self) -> String {
         use std::fmt::Write as _;
+        let short = crate::error::short;
         let plural =
             |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
         let mut text = String::new();
@@ -142,7 +143,7 @@ impl CheckReport {
             let _ = writeln!(text, "  in {u} units");
         }
         for b in &self.bodies {
-            let _ = writeln!(text, "  body {}: {}{kg}", b.name, b.mass);
+            let _ = writeln!(text, "  body {}: {}{kg}", b.name, short(b.mass));
         }
         for f in &self.forces {
             let _ = writeln!(text, "  force {f}");
@@ -160,9 +161,9 @@ impl CheckReport {
             );
         }
         let _ = match (&self.stop_when, self.t_max) {
-            (Some(c), Some(t)) => writeln!(text, "  stops when `{c}` or at t = {t}{s}"),
+            (Some(c), Some(t)) => writeln!(text, "  stops when `{c}` or at t = {}{s}", short(t)),
             (Some(c), None) => writeln!(text, "  stops when `{c}`"),
-            (None, Some(t)) => writeln!(text, "  stops at t = {t}{s}"),
+            (None, Some(t)) => writeln!(text, "  stops at t = {}{s}", short(t)),
             (None, None) => Ok(()),
         };
         for (name, source) in &self.observables {

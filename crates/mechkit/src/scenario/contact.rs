@@ -71,7 +71,10 @@ fn friction(t: &Table<'_, '_>, env: ValueEnv<'_>, default: Real) -> Result<Real,
         Some(mu) if mu >= 0.0 => Ok(mu),
         Some(mu) => Err(t.src.error(
             ErrorKind::Invalid,
-            format!("the friction coefficient must be zero or positive, not {mu}"),
+            format!(
+                "the friction coefficient must be zero or positive, not {}",
+                crate::error::short(mu)
+            ),
             t.key_span("friction"),
         )),
     }
@@ -218,11 +221,30 @@ pub(crate) fn read_contacts(
             ),
             _ => format!("`{}`", s.names[o.body]),
         };
-        return Err(ScenarioError::new(
-            ErrorKind::Invalid,
-            format!("{what} overlap by {:.6e} m at t = 0", o.depth),
-        )
-        .with_hint("move them apart (touching is allowed) or make the radii smaller"));
+        // located at the second body's position (or the wall's point): what to move
+        let value_span = |t: &Table<'_, '_>, key: &str| {
+            t.get(key)
+                .or_else(|| t.get("radius"))
+                .map_or(t.span.clone(), toml::Spanned::span)
+        };
+        let bodies = root.tables("body")?;
+        let span = match (o.other, o.wall) {
+            (Some(b), _) => bodies.get(b).map(|t| value_span(t, "position")),
+            (_, Some(w)) => walls.get(w).map(|t| value_span(t, "point")),
+            _ => bodies.get(o.body).map(|t| value_span(t, "radius")),
+        }
+        .unwrap_or_else(|| root.span.clone());
+        return Err(root
+            .src
+            .error(
+                ErrorKind::Invalid,
+                format!(
+                    "{what} overlap by {} m at t = 0",
+                    crate::error::short(o.depth)
+                ),
+                span,
+            )
+            .with_hint("move them apart (touching is allowed) or make the radii smaller"));
     }
     Ok(ContactSetup {
         events: impacts.events(),

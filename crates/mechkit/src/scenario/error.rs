@@ -111,3 +111,24 @@ impl fmt::Display for ScenarioError {
 }
 
 impl std::error::Error for ScenarioError {}
+
+/// The message for an amount that must be positive and invertible ([`crate::invertible`]):
+/// `what` (`the mass of \`ball\``), its value and unit (`kg`, or empty).
+pub(crate) fn positive_message(what: &str, value: crate::Real, unit: &str) -> String {
+    let value = crate::error::short(value);
+    let unit = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    if value
+        .parse::<crate::Real>()
+        .is_ok_and(|v| v > 0.0 && v.is_finite())
+    {
+        format!(
+            "{what} must be at least 2.2e-308{unit} (smaller, its reciprocal overflows), not {value}{unit}"
+        )
+    } else {
+        format!("{what} must be positive, not {value}{unit}")
+    }
+}

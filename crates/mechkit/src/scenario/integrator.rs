@@ -9,6 +9,7 @@ use super::doc::Table;
 use super::error::{ErrorKind, ScenarioError};
 use super::values::{ValueEnv, resolve, scalar};
 use crate::Real;
+use crate::error::short;
 use crate::ode::{AdaptiveConfig, Method, MethodKind, SecondOrderSystem, Tolerance};
 use crate::particles::ParticleSystem;
 use crate::simulate::Stepping;
@@ -65,7 +66,7 @@ pub(crate) fn read_integrator(
             .src
             .error(
                 ErrorKind::Invalid,
-                format!("the time step `dt` must be positive, not {dt} s"),
+                format!("the time step `dt` must be positive, not {} s", short(dt)),
                 value_span(&t, "dt"),
             )
             .with_hint("e.g. `dt = \"1 ms\"`"));
@@ -151,7 +152,7 @@ pub(crate) fn read_integrator(
                 .src
                 .error(
                     ErrorKind::Invalid,
-                    format!("`rtol` must be positive, not {r}"),
+                    format!("`rtol` must be positive, not {}", short(r)),
                     v.span(),
                 )
                 .with_hint("a relative tolerance such as 1e-8"));
@@ -179,7 +180,37 @@ pub(crate) fn read_integrator(
     if let Some(h) = positive_time(&t, "h_max", env)? {
         config.h_max = h;
     }
+    step_order(&t, &config)?;
     Ok(Stepping::Adaptive { method, config })
+}
+
+/// `h_min ≤ h0` and `h_min ≤ h_max`: otherwise the first step fails, mid-run, with no location.
+fn step_order(t: &Table<'_, '_>, config: &AdaptiveConfig) -> Result<(), ScenarioError> {
+    let Some(h_min) = config.h_min else {
+        return Ok(());
+    };
+    for (large, value) in [("h_max", Some(config.h_max)), ("h0", config.h0)] {
+        if let Some(value) = value
+            && h_min > value
+        {
+            let span = t.get("h_min").map_or(t.span.clone(), toml::Spanned::span);
+            return Err(t
+                .src
+                .error(
+                    ErrorKind::Invalid,
+                    format!(
+                        "`h_min` = {} s is larger than `{large}` = {} s: no step can satisfy both",
+                        short(h_min),
+                        short(value)
+                    ),
+                    span,
+                )
+                .with_hint(format!(
+                    "make `h_min` at most `{large}`, or remove `h_min` (the default is set by the precision of t)"
+                )));
+        }
+    }
+    Ok(())
 }
 
 fn positive_time(
@@ -193,7 +224,7 @@ fn positive_time(
     {
         return Err(t.src.error(
             ErrorKind::Invalid,
-            format!("`{key}` must be a positive time, not {h} s"),
+            format!("`{key}` must be a positive time, not {} s", short(h)),
             value_span(t, key),
         ));
     }
@@ -215,7 +246,7 @@ fn atol(
                 .src
                 .error(
                     ErrorKind::Invalid,
-                    format!("`atol` must be zero or positive, not {a}"),
+                    format!("`atol` must be zero or positive, not {}", short(a)),
                     span,
                 )
                 .with_hint("an absolute tolerance such as 1e-9"))

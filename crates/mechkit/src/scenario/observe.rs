@@ -94,7 +94,21 @@ impl Observable {
         for (c, v, _) in names.constants {
             scope.insert(c, mechkit_expr::Binding::Const(*v));
         }
-        let outer = Formula::parse(&outer_text).map_err(|e| restore(e, text))?;
+        // the placeholders stand for the user's reductions: errors show those, never `_r0___`
+        let mut renamed: Vec<(String, String)> = calls
+            .iter()
+            .zip(&part_dims)
+            .map(|(call, (placeholder, _))| {
+                (placeholder.clone(), text[call.whole.clone()].to_string())
+            })
+            .collect();
+        renamed.sort_by_key(|(p, _)| std::cmp::Reverse(p.len()));
+        let restored = |e: mechkit_expr::ExprError| {
+            renamed.iter().fold(restore(e, text), |e, (p, original)| {
+                e.with_text_restored(p, original)
+            })
+        };
+        let outer = Formula::parse(&outer_text).map_err(restored)?;
         for n in outer.names() {
             if names.resolve(n).is_some() && names.constant(n).is_none() {
                 let span = outer.span_of(n).unwrap_or(outer.full_span());
@@ -121,8 +135,8 @@ impl Observable {
                 },
                 &value_of,
             )
-            .map_err(|e| restore(e, text))?;
-        let outer = outer.compile(&scope).map_err(|e| restore(e, text))?;
+            .map_err(restored)?;
+        let outer = outer.compile(&scope).map_err(restored)?;
         Ok(Observable {
             name: name.to_string(),
             source: text.to_string(),

@@ -91,7 +91,10 @@ pub(crate) fn read_output(
             {
                 return Err(t.src.error(
                     ErrorKind::Invalid,
-                    format!("`interval` must be a positive time, not {i} s"),
+                    format!(
+                        "`interval` must be a positive time, not {} s",
+                        crate::error::short(i)
+                    ),
                     t.key_span("interval"),
                 ));
             }

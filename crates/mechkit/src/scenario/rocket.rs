@@ -133,7 +133,10 @@ fn read_rockets(
                     .src
                     .error(
                         ErrorKind::Invalid,
-                        format!("`{key}` of `{name}` must be positive, not {v}"),
+                        format!(
+                            "`{key}` of `{name}` must be positive, not {}",
+                            crate::error::short(v)
+                        ),
                         t.key_span(key),
                     )
                     .with_hint(format!("for example {key} = {example}")));

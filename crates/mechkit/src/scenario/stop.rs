@@ -30,7 +30,10 @@ pub(crate) fn read_stop(
     {
         return Err(t.src.error(
             ErrorKind::Invalid,
-            format!("`t_max` must be positive, not {tm} s"),
+            format!(
+                "`t_max` must be positive, not {} s",
+                crate::error::short(tm)
+            ),
             t.get("t_max").map_or(t.span.clone(), toml::Spanned::span),
         ));
     }
@@ -68,20 +71,28 @@ pub(crate) fn read_stop(
 
 /// The step bound of the run the file asks for ([`crate::simulate::check_step_bound`]),
 /// checked when it is read so that `mechkit check` reports it: a count of fixed steps or a
-/// step too small for the time is located at `dt`, a `max_steps` too large at `max_steps`.
+/// step too small for the time is located at `dt`, a `max_steps` too large at `max_steps`, an
+/// output `interval` that asks for more output times than steps are allowed at `interval`.
 pub(crate) fn check_steps(
     root: &Table<'_, '_>,
     stepping: &crate::simulate::Stepping,
     t0: Real,
     t_max: Option<Real>,
     max_steps: Option<u64>,
+    interval: Option<Real>,
 ) -> Result<(), ScenarioError> {
     use crate::simulate::StepBoundError;
-    let Err(e) = crate::simulate::check_step_bound(stepping, t0, t_max, max_steps) else {
+    let Err(e) = crate::simulate::check_step_bound(stepping, t0, t_max, max_steps).and_then(|_| {
+        match (interval, t_max) {
+            (Some(i), Some(tm)) => crate::simulate::check_output_bound(t0, tm, i).map(|_| 0),
+            _ => Ok(0),
+        }
+    }) else {
         return Ok(());
     };
     let (table, key) = match e {
         StepBoundError::MaxStepsTooLarge(_) => ("stop", "max_steps"),
+        StepBoundError::TooManyOutputs { .. } => ("output", "interval"),
         _ => ("integrator", "dt"),
     };
     let span = match root.table(table)? {

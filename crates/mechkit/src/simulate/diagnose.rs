@@ -172,7 +172,10 @@ pub(crate) fn step_failure(
                     quantity: quantity.clone(),
                     value: h,
                     message: format!(
-                        "the step size fell to {h:e} s at t = {t} s (minimum {h_min:e} s) without meeting the tolerance; the error is dominated by {quantity}: the solution is not smooth there (a discontinuous force, a collision, a singularity), or the tolerance is below what double precision allows; loosen rtol/atol, or model the discontinuity as an event"
+                        "the step size fell to {} s at t = {} s (minimum {} s) without meeting the tolerance; the error is dominated by {quantity}: the solution is not smooth there (a discontinuous force, a collision, a singularity), or the tolerance is below what double precision allows; loosen rtol/atol, or model the discontinuity as an event",
+                        crate::error::short(h),
+                        crate::error::short(t),
+                        crate::error::short(h_min)
                     ),
                 },
             )

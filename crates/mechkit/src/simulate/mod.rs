@@ -35,5 +35,5 @@ pub use observe::{Observer, ObserverError, Recorder};
 pub use reduce::{Reducer, Reduction};
 pub use report::{Divergence, EventRecord, RunReport, SimulateError, Snapshot, StopReason};
 pub use run::{DEFAULT_MAX_STEPS, Simulation};
-pub use step_bound::{MAX_STEPS, StepBoundError, check_step_bound};
+pub use step_bound::{MAX_STEPS, StepBoundError, check_output_bound, check_step_bound};
 pub use stepping::Stepping;

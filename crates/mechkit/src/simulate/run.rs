@@ -239,6 +239,9 @@ impl<'a> Simulation<'a> {
             });
         }
         super::check_step_bound(&self.stepping, initial.t, self.t_max, self.max_steps)?;
+        if let (Some(interval), Some(t_max)) = (self.interval, self.t_max) {
+            super::check_output_bound(initial.t, t_max, interval)?;
+        }
         Ok(())
     }
 }

@@ -66,6 +66,21 @@ pub enum StepBoundError {
     /// `max_steps` above [`MAX_STEPS`].
     #[error("max_steps = {0} is more than the {MAX_STEPS} steps a run may take")]
     MaxStepsTooLarge(u64),
+    /// An output interval that asks for more than [`MAX_STEPS`] output times before `t_max`.
+    #[error(
+        "an output every {} s from t = {} s to t_max = {} s is {} output times, more than the {MAX_STEPS} a run may have",
+        num(*interval), num(*t0), num(*t_max), short(*outputs)
+    )]
+    TooManyOutputs {
+        /// The output interval (s).
+        interval: Real,
+        /// The start (s).
+        t0: Real,
+        /// The end (s).
+        t_max: Real,
+        /// The output times it asks for (∞ past `f64`).
+        outputs: Real,
+    },
 }
 
 impl StepBoundError {
@@ -86,6 +101,10 @@ impl StepBoundError {
             }
             StepBoundError::MaxStepsTooLarge(_) => format!(
                 "give max_steps = {MAX_STEPS} or less; a longer simulation is several runs, each started from the last state of the one before"
+            ),
+            StepBoundError::TooManyOutputs { t0, t_max, .. } => format!(
+                "choose a larger interval (at least {} s; a plot needs a few thousand points), or an earlier t_max",
+                short(t_max / MAX_STEPS as Real - t0 / MAX_STEPS as Real)
             ),
         }
     }
@@ -139,6 +158,28 @@ fn spacing(t: Real) -> Real {
         return Real::from_bits(1);
     }
     Real::from_bits(t.to_bits() + 1) - t
+}
+
+/// The output times an output `interval` asks for from `t0` to `t_max`, or
+/// [`StepBoundError::TooManyOutputs`] past [`MAX_STEPS`] (a run writes a row at each, however
+/// few steps it takes: `interval = "1e-300 s"` asked for 10^300 rows inside the first step).
+///
+/// ```
+/// use mechkit::simulate::check_output_bound;
+/// assert_eq!(check_output_bound(0.0, 10.0, 0.01), Ok(1000));
+/// assert!(check_output_bound(0.0, 1.0, 1e-300).is_err());
+/// ```
+pub fn check_output_bound(t0: Real, t_max: Real, interval: Real) -> Result<u64, StepBoundError> {
+    let outputs = ((t_max - t0) / interval).floor().max(0.0);
+    if outputs.is_nan() || outputs > MAX_STEPS as Real {
+        return Err(StepBoundError::TooManyOutputs {
+            interval,
+            t0,
+            t_max,
+            outputs,
+        });
+    }
+    Ok(outputs as u64)
 }
 
 /// The step budget of a run before its first step: `max_steps` if given, else the steps

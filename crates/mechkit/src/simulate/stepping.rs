@@ -58,7 +58,9 @@ impl Stepping {
             crate::ode::Tolerance::PerComponent(_) => "per component".into(),
         };
         match self {
-            Stepping::Fixed { method, dt } => format!("{method} with dt = {dt} s"),
+            Stepping::Fixed { method, dt } => {
+                format!("{method} with dt = {} s", crate::error::short(*dt))
+            }
             Stepping::Adaptive { method, config } => format!(
                 "{method}, adaptive (rtol {}, atol {})",
                 tol(&config.rtol),

@@ -139,6 +139,7 @@ pub fn all_cases() -> impl Iterator<Item = &'static Case> {
         super::runtime::CASES,
         super::planar::CASES,
         super::limits::CASES,
+        super::reliability::CASES,
     ]
     .into_iter()
     .flatten()

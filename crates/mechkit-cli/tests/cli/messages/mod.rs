@@ -25,6 +25,7 @@ mod image;
 mod limits;
 mod md;
 mod planar;
+mod reliability;
 mod runtime;
 mod scenario;
 mod scenario_values;

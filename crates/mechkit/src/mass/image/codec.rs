@@ -58,7 +58,15 @@ impl Raster {
         };
         // the header first: a few hundred bytes can claim a billion pixels
         let reader = || ImageReader::with_format(Cursor::new(bytes), format);
-        let (width, height) = reader().into_dimensions().map_err(decode_error)?;
+        // read by hand, so that the decoder's own limits never answer first
+        let claimed = match format {
+            ImageFormat::Png => super::header::png_size(bytes),
+            _ => super::header::jpeg_size(bytes),
+        };
+        let (width, height) = match claimed {
+            Some(size) => size,
+            None => reader().into_dimensions().map_err(decode_error)?,
+        };
         if u64::from(width) * u64::from(height) > max_pixels.min(super::MAX_PIXELS) {
             return Err(ImageError::TooLarge {
                 path: path.to_path_buf(),

@@ -15,7 +15,7 @@ pub enum FixedAxisError {
     #[error("the axis direction ({0}, {1}, {2}) must be a non-zero vector")]
     BadAxis(Real, Real, Real),
     /// The body's mass is not positive.
-    #[error("the mass of `{name}` must be positive and finite, not {mass} kg")]
+    #[error("the mass of `{name}` must be positive and finite, not {} kg", crate::error::short(*mass))]
     BadMass {
         /// Body.
         name: String,
@@ -33,7 +33,7 @@ pub enum FixedAxisError {
         moment: Real,
     },
     /// A weight hanging from the axle with a non-positive mass or a non-finite radius.
-    #[error("a weight of {mass} kg on a drum of radius {radius} m: the mass must be positive")]
+    #[error("a weight of {} kg on a drum of radius {radius} m: the mass must be positive", crate::error::short(*mass))]
     BadWeight {
         /// Mass.
         mass: Real,
@@ -72,7 +72,7 @@ impl HingedBody {
     ) -> Result<HingedBody, FixedAxisError> {
         let name = name.into();
         let axis = unit_axis(axis)?;
-        if !(props.mass > 0.0 && props.mass.is_finite()) {
+        if !crate::invertible(props.mass) {
             return Err(FixedAxisError::BadMass {
                 name,
                 mass: props.mass,
@@ -102,7 +102,7 @@ impl HingedBody {
     ) -> Result<HingedBody, FixedAxisError> {
         let name = name.into();
         let axis = unit_axis(axis)?;
-        if !(mass > 0.0 && mass.is_finite()) {
+        if !crate::invertible(mass) {
             return Err(FixedAxisError::BadMass { name, mass });
         }
         HingedBody::build(name, mass, moment, centre_of_mass, axis, 0.0)

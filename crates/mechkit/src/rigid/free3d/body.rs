@@ -34,7 +34,7 @@ impl FreeBody {
     /// ```
     pub fn new(moments: [Real; 3], mass: Real) -> Result<Self, Free3dError> {
         for (k, &value) in moments.iter().enumerate() {
-            if !(value > 0.0 && value.is_finite()) {
+            if !crate::invertible(value) {
                 return Err(Free3dError::Moment {
                     index: k + 1,
                     value,
@@ -51,7 +51,7 @@ impl FreeBody {
                 });
             }
         }
-        if !(mass > 0.0 && mass.is_finite()) {
+        if !crate::invertible(mass) {
             return Err(Free3dError::Mass { value: mass });
         }
         Ok(Self { moments, mass })

@@ -32,13 +32,13 @@ pub enum Free3dError {
         largest: usize,
     },
     /// A mass that is not positive and finite.
-    #[error("the mass is {value} kg; it must be positive and finite")]
+    #[error("the mass is {} kg; it must be positive, finite and at least 2.2e-308 kg (its reciprocal must be finite)", crate::error::short(*value))]
     Mass {
         /// The value.
         value: Real,
     },
     /// A negative or non-finite gravity.
-    #[error("g is {value} m/s²; it must be 0 or positive (pointing down, along −z)")]
+    #[error("g is {} m/s²; it must be 0 or positive (pointing down, along −z)", crate::error::short(*value))]
     Gravity {
         /// The value.
         value: Real,
@@ -60,13 +60,13 @@ pub enum Free3dError {
         norm: Real,
     },
     /// A duration that is not positive and finite.
-    #[error("the duration t_end = {value} s must be positive and finite")]
+    #[error("the duration t_end = {} s must be positive and finite", crate::error::short(*value))]
     Duration {
         /// The value.
         value: Real,
     },
     /// A fixed step that is not positive and finite.
-    #[error("the step dt = {value} s must be positive and finite")]
+    #[error("the step dt = {} s must be positive and finite", crate::error::short(*value))]
     Step {
         /// The value.
         value: Real,
@@ -94,6 +94,9 @@ pub enum Free3dError {
     /// Invalid settings of the adaptive integrator.
     #[error(transparent)]
     Config(#[from] ConfigError),
+    /// More output samples than a result may hold.
+    #[error(transparent)]
+    Samples(#[from] crate::sample_bound::SampleBoundError),
     /// The adaptive integrator could not advance.
     #[error(transparent)]
     Integrate(#[from] AdaptiveError),
@@ -112,6 +115,7 @@ impl Free3dError {
             Free3dError::Step { .. } | Free3dError::TooManySteps { .. } => Input::Step,
             Free3dError::SplittingOffAxis { .. } => Input::Method,
             Free3dError::Config(_) => Input::Tolerance,
+            Free3dError::Samples(_) => Input::Samples,
             Free3dError::Integrate(_) => return None,
         })
     }

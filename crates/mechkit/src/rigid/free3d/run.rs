@@ -185,6 +185,7 @@ impl SpinningBody {
         if !(t_end > 0.0 && t_end.is_finite()) {
             return Err(Free3dError::Duration { value: t_end });
         }
+        crate::sample_bound::check_samples("output intervals", options.samples)?;
         let start = self.attitude(start.q, self.omega_body(start))?;
         let eq = SpinEquations::new(self, options.formulation);
         let state = State::new(0.0, eq.formulation().to_state(&start));

@@ -340,14 +340,15 @@ fn amount(
         (None, _) => None,
     };
     let positive = |key: &str, x: Real| {
-        if x > 0.0 {
+        if crate::invertible(x) {
             Ok(x)
         } else {
             Err(invalid(
                 t,
                 key,
                 format!(
-                    "`{key}` is {x}; it must be positive (to remove material write `hole = true`)"
+                    "`{key}` is {}; it must be positive and at least 2.2e-308 (to remove material write `hole = true`)",
+                    crate::error::short(x)
                 ),
             ))
         }

@@ -138,7 +138,10 @@ pub(super) fn friction(
         {
             return Err(t.src.error(
                 ErrorKind::Invalid,
-                format!("`{key}` must be zero or positive, not {m}"),
+                format!(
+                    "`{key}` must be zero or positive, not {}",
+                    crate::error::short(m)
+                ),
                 t.key_span(key),
             ));
         }

@@ -243,7 +243,7 @@ pub(super) fn read_joint(
         };
         if !(l > 0.0 && l.is_finite()) {
             return Err(src
-                .error(ErrorKind::Invalid, format!("the {kind}'s `{key}` must be positive, not {l} m"), key_or(t, key, &kind_span))
+                .error(ErrorKind::Invalid, format!("the {kind}'s `{key}` must be positive, not {} m", crate::error::short(l)), key_or(t, key, &kind_span))
                 .with_hint("give `length`, or place the ends apart (the length defaults to their distance at the start)"));
         }
         Ok(l)
@@ -282,7 +282,10 @@ pub(super) fn read_joint(
             if !(radius >= 0.0 && radius.is_finite()) {
                 return Err(src.error(
                     ErrorKind::Invalid,
-                    format!("`radius` must be zero or positive, not {radius} m"),
+                    format!(
+                        "`radius` must be zero or positive, not {} m",
+                        crate::error::short(radius)
+                    ),
                     t.key_span("radius"),
                 ));
             }
@@ -363,7 +366,10 @@ pub(super) fn read_joint(
             if !(radius >= 0.0 && radius.is_finite()) {
                 return Err(src.error(
                     ErrorKind::Invalid,
-                    format!("`radius` must be zero or positive, not {radius} m"),
+                    format!(
+                        "`radius` must be zero or positive, not {} m",
+                        crate::error::short(radius)
+                    ),
                     t.key_span("radius"),
                 ));
             }

@@ -321,7 +321,10 @@ pub(crate) fn build_mechanism(
             return Err(src
                 .error(
                     ErrorKind::Invalid,
-                    format!("`stabilisation` must be a positive time, not {tau} s"),
+                    format!(
+                        "`stabilisation` must be a positive time, not {} s",
+                        crate::error::short(tau)
+                    ),
                     root.key_span("stabilisation"),
                 )
                 .with_hint("the time constant over which joints pull a drift back: \"10 ms\""));

@@ -56,12 +56,16 @@ pub(super) fn read_rigid2(
         ("mass", mass, t.key_span("mass")),
         ("inertia", inertia, t.key_span("inertia")),
     ] {
-        if !(value > 0.0 && value.is_finite()) {
+        if !crate::invertible(value) {
             return Err(t
                 .src
                 .error(
                     ErrorKind::Invalid,
-                    format!("the {key} of rigid body `{name}` must be positive, not {value}"),
+                    crate::scenario::error::positive_message(
+                        &format!("the {key} of rigid body `{name}`"),
+                        value,
+                        "",
+                    ),
                     span,
                 )
                 .with_hint("a particle (no rotation) is a [[body]]; a rigid body needs a mass and a moment of inertia about its centre of mass"));

@@ -73,12 +73,16 @@ pub(super) fn read_rigid3(
             body.outline(c),
         )
     };
-    if !(mass > 0.0 && mass.is_finite()) {
+    if !crate::invertible(mass) {
         return Err(t
             .src
             .error(
                 ErrorKind::Invalid,
-                format!("the mass of rigid body `{name}` must be positive, not {mass}"),
+                crate::scenario::error::positive_message(
+                    &format!("the mass of rigid body `{name}`"),
+                    mass,
+                    "kg",
+                ),
                 t.key_span("mass"),
             )
             .with_hint("a rigid body needs a positive mass and inertia"));

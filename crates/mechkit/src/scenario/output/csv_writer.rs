@@ -4,7 +4,7 @@ use std::io;
 use std::path::Path;
 
 use super::row::{Keep, RowLayout, RowSink, csv_header};
-use super::{SCENARIO_LIMIT_HINT, StreamFile, output_limit_message, push_number};
+use super::{SCENARIO_LIMIT_HINT, StreamFile, output_limit_message, push_number, rows_end};
 use crate::Real;
 use crate::particles::{ParticleSystem, Sample};
 use crate::simulate::StopReason;
@@ -71,7 +71,7 @@ impl CsvWriter {
                     output_limit_message(
                         self.out.path(),
                         self.out.limit(),
-                        &format!("t = {} s", s.t),
+                        &rows_end(s.t, self.rows, self.last_t),
                         SCENARIO_LIMIT_HINT,
                     ),
                 ));

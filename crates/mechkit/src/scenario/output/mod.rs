@@ -6,6 +6,8 @@
 
 use std::path::Path;
 
+use crate::Real;
+use crate::csv::partial_path as temp_path;
 pub use crate::csv::write_atomic;
 pub use reserved::{ReservedFile, SUMMARY_RESERVE};
 pub use stream::{FLUSH_INTERVAL, StreamFile};
@@ -21,6 +23,22 @@ pub fn output_limit_message(file: &Path, limit: u64, at: &str, how: &str) -> Str
         ),
         super::limits::format_size(limit),
     )
+}
+
+/// Where a trajectory cut by its output limit stops and ends (for `at` of
+/// [`output_limit_message`]): the time of the row that did not fit, and how many rows the file
+/// holds, up to which time (the last one it holds, not the one refused).
+pub(crate) fn rows_end(refused_t: Real, rows: u64, last_t: Option<Real>) -> String {
+    let short = crate::error::short;
+    match last_t {
+        Some(last) => format!(
+            "t = {} s (the file holds {rows} row{}, up to t = {} s)",
+            short(refused_t),
+            if rows == 1 { "" } else { "s" },
+            short(last)
+        ),
+        None => format!("t = {} s (the file holds no row)", short(refused_t)),
+    }
 }
 
 /// How to raise a scenario run's output limit.

@@ -3,7 +3,7 @@
 //! arrays, for plots and checks without a file).
 
 use super::row::{Keep, RowLayout, RowSink, csv_columns_in};
-use super::{SCENARIO_LIMIT_HINT, output_limit_message};
+use super::{SCENARIO_LIMIT_HINT, output_limit_message, rows_end};
 use crate::Real;
 use crate::csv::Column;
 use crate::particles::{ParticleSystem, Sample};
@@ -99,7 +99,7 @@ impl TrajectoryTable {
                 output_limit_message(
                     std::path::Path::new("the trajectory in memory"),
                     8 * (self.max_rows * self.table.columns.len()) as u64,
-                    &format!("t = {} s", s.t),
+                    &rows_end(s.t, self.table.len() as u64, self.last_t),
                     SCENARIO_LIMIT_HINT,
                 ),
             ));

@@ -125,15 +125,15 @@ pub struct Files {
     pub trajectory: Option<String>,
     /// Rows in the trajectory (header excluded).
     pub trajectory_rows: u64,
+    /// The time of the trajectory's last row (s; `null` without rows): `t_end` unless the
+    /// output limit refused the rows after it.
+    pub trajectory_last_t: Option<Real>,
     /// The units of the trajectory's columns: a JSON object from column name to unit
     /// (`"trajectory.units.json"`), beside the CSV.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub units: Option<String>,
     /// Plots.
     pub plots: Vec<String>,
-    /// The time of the trajectory's last row (s); absent when it has none.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub trajectory_last_t: Option<Real>,
     /// Why an output file could not be written (a full disk: which file, the system's
     /// reason, how far it got); absent when every file was written. The run's results in
     /// this summary hold all the same, up to `t_end`.
