@@ -263,3 +263,27 @@ impl fmt::Display for ExprError {
 }
 
 impl std::error::Error for ExprError {}
+
+#[cfg(test)]
+mod tests {
+    use super::{ExprError, ExprErrorKind};
+    use crate::Span;
+
+    /// Issue 26: a caller that parsed `_r0___ + _r1_____` for `max(x) + final(v)` showed its
+    /// placeholders in the message; `with_text_restored` puts the user's text back.
+    #[test]
+    fn issue_026_placeholders_are_restored_in_messages_and_hints() {
+        let e = ExprError::new(
+            ExprErrorKind::Dimension {
+                message: "cannot add `_r0___` (m) and `_r1_____` (m/s)".into(),
+                hint: Some("check `_r1_____`".into()),
+            },
+            Span::new(0, 17),
+            "max(x) + final(v)",
+        )
+        .with_text_restored("_r1_____", "final(v)")
+        .with_text_restored("_r0___", "max(x)");
+        assert_eq!(e.message(), "cannot add `max(x)` (m) and `final(v)` (m/s)");
+        assert_eq!(e.hint().as_deref(), Some("check `final(v)`"));
+    }
+}

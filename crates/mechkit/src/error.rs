@@ -69,3 +69,30 @@ pub enum Error {
     #[error(transparent)]
     Scenario(#[from] crate::scenario::ScenarioError),
 }
+
+#[cfg(test)]
+mod tests {
+    use super::invertible;
+    use crate::particles::{ParticleSystem, SystemError};
+
+    /// Issue 26: a subnormal mass (1e-320 kg) is positive and finite, but 1/m overflows and
+    /// the run failed at its first step; every inverted amount must be [`invertible`].
+    #[test]
+    fn issue_026_a_subnormal_mass_is_not_invertible_and_is_refused() {
+        for bad in [0.0, -1.0, 1e-320, f64::INFINITY, f64::NAN] {
+            assert!(!invertible(bad), "{bad}");
+        }
+        for good in [f64::MIN_POSITIVE, 1e-300, 1.0, f64::MAX] {
+            assert!(invertible(good) && (1.0 / good).is_finite(), "{good}");
+        }
+        let e = ParticleSystem::builder(1)
+            .body("dust", 1e-320)
+            .build()
+            .expect_err("a subnormal mass");
+        assert!(matches!(e, SystemError::BadMass { .. }));
+        assert!(e.to_string().contains("not 1e-320 kg"), "{e}");
+        let e = crate::rigid::free3d::FreeBody::new([1.0, 1.0, 1.0], 1e-320)
+            .expect_err("a subnormal mass");
+        assert!(e.to_string().contains("1e-320 kg"), "{e}");
+    }
+}

@@ -25,7 +25,7 @@ macro_rules! wr {
 
 fn show(p: &[(String, f64)]) -> String {
     p.iter()
-        .map(|(k, v)| format!("{k} = {v}"))
+        .map(|(k, v)| format!("{k} = {}", mechkit::expr::short_number(*v)))
         .collect::<Vec<_>>()
         .join(", ")
 }
@@ -87,9 +87,9 @@ fn diff_text(d: &Differentiation) -> String {
         wr!(
             out,
             "at {x} = {}:\n  symbolic  {}\n  numeric   {} ± {:.1e} (central differences, Richardson extrapolation)\n  {}\n",
-            c.at,
-            c.symbolic,
-            c.numeric,
+            mechkit::expr::short_number(c.at),
+            mechkit::expr::short_number(c.symbolic),
+            mechkit::expr::short_number(c.numeric),
             c.numeric_error,
             if c.agree {
                 "the two agree"
@@ -160,7 +160,12 @@ fn integrate_text(i: &Integration) -> String {
         } else {
             format!(" with {}", show(&i.parameters))
         };
-        wr!(out, "from {} to {}{given}:\n", d.from, d.to);
+        wr!(
+            out,
+            "from {} to {}{given}:\n",
+            mechkit::expr::short_number(d.from),
+            mechkit::expr::short_number(d.to)
+        );
         if let Some(c) = d.closed_form {
             wr!(out, "  closed form  {c}\n");
         }
@@ -168,7 +173,7 @@ fn integrate_text(i: &Integration) -> String {
             Ok(q) => wr!(
                 out,
                 "  quadrature   {} ± {:.1e} ({} evaluations)\n",
-                q.value,
+                mechkit::expr::short_number(q.value),
                 q.error,
                 q.evaluations
             ),
@@ -339,13 +344,24 @@ pub fn units(args: &UnitsArgs) -> Result<Outcome> {
 /// `60 km/h = 16.67 m/s   [velocity]`, then the value in the unit asked unless that is the SI
 /// unit itself (the line would repeat).
 fn units_text(c: &Conversion) -> String {
-    let mut out = format!("{} = {} {}", c.input, c.si, c.si_unit);
+    let mut out = format!(
+        "{} = {} {}",
+        c.input,
+        mechkit::expr::short_number(c.si),
+        c.si_unit
+    );
     if !c.quantity.is_empty() {
         wr!(out, "   [{}]", c.quantity);
     }
     out.push('\n');
     if let Some(to) = c.converted.as_ref().filter(|_| !c.converted_to_si()) {
-        wr!(out, "{} = {} {}\n", c.input, to.value, to.unit);
+        wr!(
+            out,
+            "{} = {} {}\n",
+            c.input,
+            mechkit::expr::short_number(to.value),
+            to.unit
+        );
     }
     out
 }

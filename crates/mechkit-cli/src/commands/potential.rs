@@ -201,7 +201,8 @@ fn gradient_text(f: &FieldForce) -> String {
 
 fn text(a: &PotentialAnalysis) -> String {
     let x = &a.var;
-    let (lo, hi) = a.range;
+    let short = mechkit::expr::short_number;
+    let (lo, hi) = (short(a.range.0), short(a.range.1));
     let mut out = String::new();
     match &a.potential {
         Some(u) if a.potential_origin == Origin::Given => {
@@ -227,7 +228,7 @@ fn text(a: &PotentialAnalysis) -> String {
             let _ = write!(
                 out,
                 "  {x} = {:<22} {:<9} U = {:<12.6} U'' = {:.6}",
-                e.x,
+                short(e.x),
                 e.stability.name(),
                 e.potential,
                 e.curvature
@@ -241,7 +242,8 @@ fn text(a: &PotentialAnalysis) -> String {
     for s in &a.singularities {
         let _ = writeln!(
             out,
-            "singular near {x} = {s}: U or F is infinite or undefined there"
+            "singular near {x} = {}: U or F is infinite or undefined there",
+            short(*s)
         );
     }
     if let Some(c) = &a.energy {
@@ -249,7 +251,7 @@ fn text(a: &PotentialAnalysis) -> String {
         if c.turning_points.is_empty() {
             let _ = writeln!(out, "  no turning point in [{lo}, {hi}]");
         } else {
-            let list: Vec<String> = c.turning_points.iter().map(|t| format!("{t}")).collect();
+            let list: Vec<String> = c.turning_points.iter().map(|t| short(*t)).collect();
             let _ = writeln!(out, "  turning points {x} = {}", list.join(", "));
         }
         for r in &c.regions {
@@ -319,7 +321,10 @@ fn motion_text(a: &PotentialAnalysis, m: &Motion) -> String {
         (false, false) => {
             // no turning point: the body keeps the direction it starts with
             let right = m.moves_right_first(&a.model);
-            let (lo, hi) = (m.left.x(), m.right.x());
+            let (lo, hi) = (
+                mechkit::expr::short_number(m.left.x()),
+                mechkit::expr::short_number(m.right.x()),
+            );
             let (bound, side) = if right {
                 (m.right, "right")
             } else {

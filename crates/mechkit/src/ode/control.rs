@@ -297,3 +297,41 @@ pub enum AdaptiveError {
         non_finite: bool,
     },
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{AdaptiveConfig, ConfigError};
+
+    /// Issue 26: `h_min > h_max` (or a first step below `h_min`) failed at the first step of
+    /// the run; it is refused by `validate`, before any step.
+    #[test]
+    fn issue_026_step_limits_in_the_wrong_order_are_refused() {
+        let config = AdaptiveConfig {
+            h_min: Some(1.0),
+            h_max: 1e-3,
+            ..AdaptiveConfig::default()
+        };
+        assert!(matches!(
+            config.validate(2),
+            Err(ConfigError::StepOrder {
+                small: "h_min",
+                large: "h_max",
+                ..
+            })
+        ));
+        let config = AdaptiveConfig {
+            h_min: Some(1e-3),
+            h0: Some(1e-6),
+            ..AdaptiveConfig::default()
+        };
+        let e = config.validate(2).unwrap_err();
+        assert_eq!(e.to_string(), "h_min = 0.001 must not exceed h0 = 1e-6");
+        let config = AdaptiveConfig {
+            h_min: Some(1e-3),
+            h0: Some(1e-3),
+            h_max: 1e-3,
+            ..AdaptiveConfig::default()
+        };
+        assert_eq!(config.validate(2), Ok(()));
+    }
+}

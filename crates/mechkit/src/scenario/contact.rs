@@ -240,7 +240,8 @@ pub(crate) fn read_contacts(
                 ErrorKind::Invalid,
                 format!(
                     "{what} overlap by {} m at t = 0",
-                    crate::error::short(o.depth)
+                    // six digits: a difference of positions carries rounding noise
+                    crate::error::short(format!("{:.5e}", o.depth).parse().unwrap_or(o.depth))
                 ),
                 span,
             )

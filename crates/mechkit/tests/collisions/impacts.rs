@@ -95,7 +95,7 @@ fn overlapping_bodies_and_bad_restitution_are_refused() {
     let e = Scenario::from_str("o.toml", &overlap)
         .unwrap_err()
         .to_string();
-    assert!(e.contains("`b` and `c` overlap by 5.0"), "{e}");
+    assert!(e.contains("`b` and `c` overlap by 0.005 m"), "{e}");
     let bad = CRADLE.replace("restitution = 1", "restitution = 1.2");
     let e = Scenario::from_str("e.toml", &bad).unwrap_err().to_string();
     assert!(e.contains("between 0") && e.contains("e.toml:"), "{e}");
