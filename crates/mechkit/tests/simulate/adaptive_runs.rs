@@ -236,15 +236,25 @@ fn fuzz_output_times_without_an_end_are_bounded() {
 /// Fuzz finding (scenario, after 4.61 M inputs): a bouncing ball with `[output] interval =
 /// "2 fs"` up to `t_max = 5.06 s`, 2.5·10^15 output times. The 200 steps the fuzz target
 /// allows could not bound them, and an in-memory run (a sweep, the gallery), which has no file
-/// to reach the output limit, interpolated rows for ever. The output times now end where the
-/// trajectory could no longer fit in the output limit, with a warning that says how to raise
-/// it; the run itself goes on to its end.
+/// to reach the output limit, interpolated rows for ever. Since issue 26 an interval that asks
+/// for more than `MAX_STEPS` = 10^9 output times is refused when the file is read, at the
+/// interval; below that, the output times end where the trajectory could no longer fit in the
+/// output limit, with a warning that says how to raise it, and the run goes on to its end.
 #[test]
 fn fuzz_a_femtosecond_output_interval_ends_at_the_output_limit() {
     let text = std::fs::read_to_string(
         crate::util::workspace().join("fuzz/regressions/scenario/femtosecond-output-interval.toml"),
     )
     .unwrap();
+    let e = mechkit::scenario::Scenario::from_str("ball.toml", &text).unwrap_err();
+    assert_eq!(e.location.as_ref().map(|l| l.line), Some(45), "{e}");
+    assert!(
+        e.message
+            .contains("2530000000000000 output times, more than the 1000000000"),
+        "{e}"
+    );
+    // 5.06·10^8 output times of 10 ns: within the bound, beyond the output limit
+    let text = text.replace("interval = \"2 fs\"", "interval = \"10 ns\"");
     let mut scenario = mechkit::scenario::Scenario::from_str("ball.toml", &text).unwrap();
     // 1 MB holds at most 1e6/(2*8) rows of t, x, y, vx, vy, K, work.gravity, power.gravity
     // of at least one digit and one comma each
@@ -262,21 +272,21 @@ fn fuzz_a_femtosecond_output_interval_ends_at_the_output_limit() {
         .warnings
         .iter()
         .find(|w| {
-            w.contains("output every 2e-15 s up to t_max = 5.06 s asks for 2.530e15 output times")
+            w.contains("output every 1e-8 s up to t_max = 5.06 s asks for 5.060e8 output times")
         })
         .unwrap_or_else(|| panic!("{:?}", out.summary.warnings));
     assert!(
         warning.contains("raise the output limit (`[output] max_size`"),
         "{warning}"
     );
-    assert!(warning.contains("more than the 62500 allowed: the output ends at t = 1.25e-10 s"));
-    // 62,500 output times of 2 fs, then only the apexes (the first after the first bounce)
+    assert!(warning.contains("more than the 62500 allowed: the output ends at t = 0.000625"));
+    // 62,500 output times of 10 ns, then only the apexes (the first after the first bounce)
     let points = &out.plots[0].series[0].points;
     let last_grid = points
         .iter()
         .filter(|p| p.0 < 0.1)
         .map(|p| p.0)
         .fold(0.0, f64::max);
-    assert!((last_grid - 1.25e-10).abs() < 1e-20, "{last_grid}");
+    assert!((last_grid - 6.25e-4).abs() < 1e-12, "{last_grid}");
     assert!(points.iter().filter(|p| p.0 >= 0.1).all(|p| p.0 > 0.4));
 }
