@@ -5,7 +5,8 @@
 //!
 //! Exit codes:
 //! - 0: success;
-//! - 1: the computation failed (the simulation diverged; the output so far is kept);
+//! - 1: the computation failed (the simulation diverged; the output so far is kept; an
+//!   answer that is not a finite number, which is never printed);
 //! - 2: bad input (usage, unreadable or invalid file, units, unwritable output directory);
 //! - 101: an internal error (a bug), reported as `error: internal error, …`;
 //! - 130: stopped by Ctrl-C (SIGINT) or SIGTERM after finishing the outputs (`serve` ends
@@ -20,6 +21,7 @@ mod failure;
 mod gallery;
 mod plot;
 mod serve;
+mod xml;
 
 use std::ffi::OsString;
 use std::io::Write as _;
@@ -91,6 +93,17 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
         Ok(commands::Outcome::ComputationFailed) => 1,
         Ok(commands::Outcome::Interrupted) => EXIT_INTERRUPTED,
         Err(e) if is_broken_pipe(&e) => 0,
+        Err(e) if e.downcast_ref::<mechkit::finite::NonFinite>().is_some() => {
+            // the computation ran, and its answer is not a number: exit 1 (the finiteness
+            // rule), not 2 (bad input)
+            eprintln!(
+                "error: {}\n  = hint: the inputs are too large or too close to a singularity \
+                 for a finite answer in double precision; rescale them (other units) or move \
+                 away from the singular point",
+                failure::message(&e)
+            );
+            1
+        }
         Err(e) => {
             eprintln!("error: {}", failure::message(&e));
             2

@@ -186,6 +186,9 @@ fn svg_text(plot: &PlotData, title: &str, style: Style) -> Result<String> {
         }
         root.present().map_err(|e| anyhow!("{e}"))?;
     }
+    // plotters escapes `&`, `<` and `>` in text, but keeps the characters XML 1.0 forbids (a
+    // title with control characters): dropped, so the file is well-formed whatever it says
+    let svg = crate::xml::drop_forbidden(&svg).into_owned();
     Ok(svg::rescale(&svg, f64::from(CANVAS)))
 }
 

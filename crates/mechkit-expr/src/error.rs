@@ -17,6 +17,8 @@ pub enum ExprErrorKind {
     SingleEquals,
     /// A number that does not parse.
     BadNumber(String),
+    /// A number too large for a double (`1e309`): it would be read as infinity.
+    NumberTooLarge(String),
     /// A token where something else was expected.
     UnexpectedToken {
         /// The token found.
@@ -160,6 +162,9 @@ impl ExprError {
             ExprErrorKind::UnexpectedChar(c) => format!("unexpected character `{c}`"),
             ExprErrorKind::SingleEquals => "`=` is not an operator here".into(),
             ExprErrorKind::BadNumber(s) => format!("`{s}` is not a number"),
+            ExprErrorKind::NumberTooLarge(s) => {
+                format!("`{s}` is too large for a double-precision number (at most about 1.8e308)")
+            }
             ExprErrorKind::UnexpectedToken { found, expected } => {
                 format!("expected {expected}, found {found}")
             }
@@ -201,6 +206,11 @@ impl ExprError {
                 Some("check for a missing or doubled operator, or a stray `)` or `,`".into())
             }
             ExprErrorKind::SingleEquals => Some("write `==` to compare".into()),
+            ExprErrorKind::NumberTooLarge(_) => Some(
+                "write it in other units, or scale the formula (divide it by a constant), so \
+                 that its numbers stay below 1e308"
+                    .into(),
+            ),
             ExprErrorKind::MissingOperator { found } => {
                 let unit = found
                     .strip_prefix("name `")

@@ -110,6 +110,13 @@ pub fn tokenize(src: &str) -> Result<Vec<Token>, ExprError> {
                     src,
                 )
             })?;
+            if value.is_infinite() {
+                return Err(ExprError::new(
+                    ExprErrorKind::NumberTooLarge(text.to_string()),
+                    Span::new(i, end),
+                    src,
+                ));
+            }
             out.push(Token {
                 tok: Tok::Num(value),
                 span: Span::new(i, end),

@@ -200,7 +200,8 @@ impl Number {
         other.recip().map(|r| self.times(r))
     }
 
-    /// `self^n` for an integer `n` (exact for rationals unless it overflows); `None` for
+    /// `self^n` for an integer `n` (exact for rationals unless it overflows; `n` beyond the
+    /// `i32` range is not saturated, which would change the sign of a negative base); `None` for
     /// `0^-n`.
     pub fn powi(self, n: i128) -> Option<Number> {
         if n < 0 {
@@ -213,10 +214,10 @@ impl Number {
                     (Some(p), Some(q)) if p.abs() <= LIMIT && q <= LIMIT => {
                         Some(Number::rational(p, q))
                     }
-                    _ => Some(Number::Float((a as f64 / b as f64).powi(n32 as i32))),
+                    _ => Some(Number::Float(float_powi(a as f64 / b as f64, n))),
                 }
             }
-            Number::Float(x) => Some(Number::Float(x.powi(n as i32))),
+            Number::Float(x) => Some(Number::Float(float_powi(x, n))),
         }
     }
 
@@ -282,6 +283,15 @@ impl fmt::Display for Number {
             Number::Rational(n, d) => write!(f, "{n}/{d}"),
             Number::Float(x) => write!(f, "{}", crate::ast::format_number(*x)),
         }
+    }
+}
+
+/// `x^n` for a whole `n ≥ 0` of any size: repeated multiplication within the `i32` range,
+/// else `powf` (whose integer powers keep the sign of a negative base), never a saturated `n`.
+fn float_powi(x: f64, n: i128) -> f64 {
+    match i32::try_from(n) {
+        Ok(k) => x.powi(k),
+        Err(_) => x.powf(n as f64),
     }
 }
 

@@ -22,12 +22,13 @@ use mechkit_expr::units::UnitError;
 use thiserror::Error;
 
 use crate::Real;
-use crate::inputs::InputError;
+use crate::inputs::{Input, InputError};
 
 mod convert;
 mod derivative;
 mod equation;
 mod integral;
+mod singular;
 mod solve;
 
 pub use convert::{Conversion, Converted, convert};
@@ -55,6 +56,42 @@ pub enum CalculusError {
     /// A value of a named input does not fit the question.
     #[error("{0}")]
     Input(#[from] InputError),
+}
+
+/// Checks that `name`, given as the variable of a question (`--var`, `--for`), is a name of
+/// the formula language (`x`, `theta_1`, `ball.x`), not a formula (`x+y`), a number or a
+/// built-in constant (`pi`): differentiating with respect to `x+y` has no meaning, and
+/// treating it as a name would print nonsense.
+///
+/// ```
+/// use mechkit::inputs::Input;
+/// assert!(mechkit::calculus::check_variable("theta_1", Input::Variable).is_ok());
+/// let e = mechkit::calculus::check_variable("x+y", Input::Variable).unwrap_err();
+/// assert!(e.to_string().starts_with("`x+y` is not a name"));
+/// ```
+pub fn check_variable(name: &str, input: Input) -> Result<(), CalculusError> {
+    let bad = |why: &str| {
+        Err(InputError::new(
+            input,
+            format!(
+                "`{name}` is not a name{why}: the variable must be one name of the formula, \
+                 such as x, t or theta_1"
+            ),
+        )
+        .into())
+    };
+    match mechkit_expr::parse(name).map(|p| p.expr) {
+        Ok(mechkit_expr::Expr::Var(v)) if v == name => {
+            if mechkit_expr::builtin_constant(&v).is_some() {
+                bad(" but a built-in constant")
+            } else {
+                Ok(())
+            }
+        }
+        Ok(mechkit_expr::Expr::Var(_)) => bad(" (spaces around it)"),
+        Ok(mechkit_expr::Expr::Num(_)) => bad(" but a number"),
+        _ => bad(""),
+    }
 }
 
 /// Values given for the names of a formula (`--set a=1,b=2`), SI.

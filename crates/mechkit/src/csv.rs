@@ -114,6 +114,24 @@ impl Table {
         Some(self.rows().map(|r| r[k]).collect())
     }
 
+    /// The first value that is not finite, as (row from 1, column name, value): what the
+    /// finiteness rule checks before a table of results is written.
+    ///
+    /// ```
+    /// use mechkit::csv::{Column, Table};
+    /// let mut t = Table::new([Column::new("t", "s"), Column::new("W", "J")]);
+    /// t.push(&[0.0, 1.0]);
+    /// assert_eq!(t.first_non_finite(), None);
+    /// t.push(&[1.0, f64::INFINITY]);
+    /// assert_eq!(t.first_non_finite(), Some((2, "W", f64::INFINITY)));
+    /// ```
+    pub fn first_non_finite(&self) -> Option<(usize, &str, Real)> {
+        let k = self.columns.len().max(1);
+        let i = self.values.iter().position(|x| !x.is_finite())?;
+        let column = self.columns.get(i % k).map_or("", |c| c.name.as_str());
+        Some((i / k + 1, column, self.values[i]))
+    }
+
     /// The CSV text: the header row, then one row per line.
     pub fn to_csv(&self) -> String {
         let mut out = header_line(self.columns.iter().map(|c| c.name.as_str()));

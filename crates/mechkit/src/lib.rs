@@ -80,6 +80,8 @@ pub mod elliptic;
 pub mod energy;
 mod error;
 pub mod figure;
+#[cfg(feature = "serde")]
+pub mod finite;
 pub mod forces;
 pub mod function;
 pub mod inputs;

@@ -183,10 +183,51 @@ pub fn vector(text: &str, what: &str, dim: Dimension) -> Result<Vec<Real>, Value
         .collect()
 }
 
+/// Checks that the two ends of an interval, each `(input, text)` (`("--from", "1 m")`), share
+/// a dimension when both carry units: `--from "1 m" --to "2 s"` has no meaning. A bare number
+/// or a formula has no unit of its own (SI), and fits any.
+///
+/// ```
+/// use mechkit::values::same_dimension;
+/// assert!(same_dimension(("--from", "1 m"), ("--to", "2 km")).is_ok());
+/// assert!(same_dimension(("--from", "1 m"), ("--to", "2")).is_ok());
+/// let e = same_dimension(("--from", "1 m"), ("--to", "2 s")).unwrap_err();
+/// assert_eq!(e.input, "--from");
+/// assert!(e.message.starts_with("--from `1 m` and --to `2 s` have different dimensions"));
+/// ```
+///
+/// # Errors
+/// Two ends with units of different dimensions.
+pub fn same_dimension(a: (&str, &str), b: (&str, &str)) -> Result<(), ValueError> {
+    let dim = |t: &str| {
+        Quantity::parse(t)
+            .ok()
+            .map(|q| q.dim)
+            .filter(|d| !d.is_none())
+    };
+    match (dim(a.1), dim(b.1)) {
+        (Some(da), Some(db)) if da != db => Err(fail(
+            a.0,
+            format!(
+                "{} `{}` and {} `{}` have different dimensions ({} and {}): the ends of an \
+                 interval are values of one quantity; give both in units of the same dimension",
+                a.0,
+                a.1.trim(),
+                b.0,
+                b.1.trim(),
+                da.describe(),
+                db.describe()
+            ),
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// `A:B` (each end as in [`value`]); `flag` names the input in errors.
 ///
 /// # Errors
-/// Text without one colon outside parentheses, an end that does not read, equal ends.
+/// Text without one colon outside parentheses, an end that does not read, equal ends, ends
+/// with units of different dimensions ([`same_dimension`]).
 pub fn interval(text: &str, flag: &str, params: &Params) -> Result<(Real, Real), ValueError> {
     let Some((a, b)) = split_interval(text) else {
         return Err(fail(
@@ -200,6 +241,12 @@ pub fn interval(text: &str, flag: &str, params: &Params) -> Result<(Real, Real),
             ..e
         })
     };
+    same_dimension((&format!("{flag} start"), a), (&format!("{flag} end"), b)).map_err(|e| {
+        ValueError {
+            input: flag.to_string(),
+            ..e
+        }
+    })?;
     let (a, b) = (at(a, "start")?, at(b, "end")?);
     if a == b {
         return Err(fail(

@@ -242,22 +242,10 @@ fn time_stamp(t: f64) -> String {
     }
 }
 
-/// `text` with the characters XML gives a meaning escaped, and those it forbids (control
-/// characters other than tab and newline) dropped.
+/// `text` with the characters XML gives a meaning escaped, and those it forbids dropped
+/// ([`crate::xml::escape`], the one XML escape).
 pub(super) fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&apos;"),
-            c if c.is_control() && c != '\t' && c != '\n' => {}
-            c => out.push(c),
-        }
-    }
-    out
+    crate::xml::escape(text)
 }
 
 /// A pixel coordinate to two decimals, without trailing zeros: `12.25`, `640`.

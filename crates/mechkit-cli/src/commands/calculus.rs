@@ -104,7 +104,10 @@ fn diff_text(d: &Differentiation) -> String {
 pub fn integrate(args: &IntegrateArgs) -> Result<Outcome> {
     let p = params(args.set.as_deref())?;
     let limits = match (&args.from, &args.to) {
-        (Some(a), Some(b)) => Some((value(a, "--from", &p)?, value(b, "--to", &p)?)),
+        (Some(a), Some(b)) => {
+            mechkit::values::same_dimension(("--from", a), ("--to", b))?;
+            Some((value(a, "--from", &p)?, value(b, "--to", &p)?))
+        }
         (None, None) => None,
         _ => bail!("give both --from and --to for a definite integral"),
     };

@@ -169,11 +169,15 @@ fn man(args: &crate::args::ManArgs) -> anyhow::Result<Outcome> {
 
 /// Prints a command's result: its JSON with `--json`, else the text report unless `--quiet`.
 /// `value` is the library's result type; its JSON shape is defined there.
+///
+/// The finiteness rule: a result that holds an infinity or NaN is not printed at all (in
+/// either form); the error ([`mechkit::finite::NonFinite`], exit 1) names the quantity.
 pub fn report<T: serde::Serialize>(
     flags: crate::args::Report,
     value: &T,
     text: impl FnOnce() -> String,
 ) -> anyhow::Result<()> {
+    mechkit::finite::check_finite(value)?;
     if flags.json {
         let mut json = serde_json::to_string_pretty(value)?;
         json.push('\n');

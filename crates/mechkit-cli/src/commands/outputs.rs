@@ -16,8 +16,17 @@ pub fn create_dir(dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("--out: cannot create {}", dir.display()))
 }
 
-/// Writes `dir/NAME.csv` and its units sidecar; returns the CSV's path.
+/// Writes `dir/NAME.csv` and its units sidecar; returns the CSV's path. The finiteness rule:
+/// a table that holds an infinity or NaN is not written ([`mechkit::finite::NonFinite`],
+/// exit 1, naming its row and column).
 pub fn write_table(dir: &Path, name: &str, table: &Table) -> Result<String> {
+    if let Some((row, column, value)) = table.first_non_finite() {
+        return Err(mechkit::finite::NonFinite {
+            quantity: format!("{column} in row {row} of {name}.csv"),
+            value,
+        }
+        .into());
+    }
     let path = table
         .write(dir, name)
         .with_context(|| format!("cannot write {}", dir.join(format!("{name}.csv")).display()))?;

@@ -105,23 +105,7 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
         plot::render(&overlay, &title, &path, args.plots)?;
         plot_path = Some(path);
     }
-    let failed = table
-        .rows
-        .iter()
-        .filter(|r| {
-            matches!(
-                r.stop_reason.as_str(),
-                "diverged" | "step_too_small" | "zeno"
-            )
-        })
-        .count();
-    if failed > 0 {
-        eprintln!(
-            "warning: {failed} of {} runs failed (see stop_reason in {})",
-            table.rows.len(),
-            csv.display()
-        );
-    }
+    let failed = failures(&table, &csv.display().to_string());
     let rate = table.rows.len() as f64 / seconds.max(1e-9);
     let done = SweepDone {
         scenario: name.clone(),
@@ -156,7 +140,65 @@ pub fn sweep(args: &SweepArgs, cancel: &Cancel) -> Result<Outcome> {
         );
         return Ok(Outcome::Interrupted);
     }
-    Ok(Outcome::Success)
+    Ok(outcome(&table))
+}
+
+/// The number of failed runs, with a warning on stderr naming `file` when there are any
+/// (and the first failure's diagnosis when every run failed).
+fn failures(table: &mechkit::scenario::sweep::SweepTable, file: &str) -> usize {
+    let failed = table.rows.iter().filter(|r| r.failed()).count();
+    if failed == 0 {
+        return 0;
+    }
+    if failed == table.rows.len() {
+        let first = table.rows.iter().find(|r| r.failed());
+        let diagnosis = first
+            .map(|r| {
+                let why = r.diagnosis.as_deref().unwrap_or(r.stop_reason.as_str());
+                format!(
+                    "; the first, run {} ({}), {}: {why}",
+                    r.index,
+                    params_text(table, r),
+                    r.stop_reason
+                )
+            })
+            .unwrap_or_default();
+        eprintln!(
+            "error: every run failed ({failed} of {}){diagnosis}\n  = hint: see stop_reason in {file}; \
+             run one point with `mechkit run` (its constants set in the file) to see it fail",
+            table.rows.len()
+        );
+    } else {
+        eprintln!(
+            "warning: {failed} of {} runs failed (see stop_reason in {file})",
+            table.rows.len()
+        );
+    }
+    failed
+}
+
+/// `v0=1, k=2`: a run's parameter values.
+fn params_text(
+    table: &mechkit::scenario::sweep::SweepTable,
+    row: &mechkit::scenario::sweep::SweepRow,
+) -> String {
+    table
+        .params
+        .iter()
+        .zip(&row.values)
+        .map(|(p, v)| format!("{p}={}", super::input::show(*v)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Exit 1 when every run failed (a sweep of nothing but failures answers nothing); else 0,
+/// the failed runs being rows with their `stop_reason` and a warning.
+fn outcome(table: &mechkit::scenario::sweep::SweepTable) -> Outcome {
+    if !table.rows.is_empty() && table.rows.iter().all(|r| r.failed()) {
+        Outcome::ComputationFailed
+    } else {
+        Outcome::Success
+    }
 }
 
 /// A sweep without `-o`: its table on stdout as CSV (or, with `--json`, what was done), a
@@ -178,7 +220,7 @@ fn print_table(
         threads,
         seconds,
         runs_per_second: rate,
-        failed: 0,
+        failed: failures(table, "the table"),
         csv: None,
         plot: None,
     };
@@ -194,7 +236,7 @@ fn print_table(
     if cancel.is_cancelled() {
         return Ok(Outcome::Interrupted);
     }
-    Ok(Outcome::Success)
+    Ok(outcome(table))
 }
 
 pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {

@@ -45,11 +45,33 @@ impl Quantity {
             source: text.to_string(),
         })?;
         let rest = &text[rest_start..];
+        let too_large = |message: String, span: Span| UnitError {
+            kind: UnitErrorKind::NumberTooLarge(message),
+            span,
+            source: text.to_string(),
+        };
+        if number.is_infinite() {
+            let start = text.len() - text.trim_start().len();
+            let digits = text[start..rest_start].trim_end();
+            return Err(too_large(
+                format!("`{digits}` is too large for a double-precision number"),
+                Span::new(start, start + digits.len()),
+            ));
+        }
         if rest.trim().is_empty() {
             return Ok(Quantity::number(number));
         }
         let unit = parse_unit_at(text, rest_start)?;
-        Ok(Quantity::new(number * unit.factor, unit.dim))
+        let value = number * unit.factor;
+        if value.is_infinite() {
+            let shown = text.trim();
+            let start = text.len() - text.trim_start().len();
+            return Err(too_large(
+                format!("`{shown}` in SI units is too large for a double-precision number"),
+                Span::new(start, start + shown.len()),
+            ));
+        }
+        Ok(Quantity::new(value, unit.dim))
     }
 
     /// Where the unit of `"<number> <unit>"` starts: the byte index after the leading number
@@ -135,6 +157,9 @@ pub enum UnitErrorKind {
     /// A unit whose exponents or size leave the exact or floating-point range
     /// (`(((km^12)^12)^12)^12`); says which.
     TooLarge(String),
+    /// A number too large for a double (`1e309 m`), or one whose value in SI units is
+    /// (`1e308 km`); says which.
+    NumberTooLarge(String),
 }
 
 /// An error reading a quantity or unit, pointing into the text.
@@ -155,9 +180,9 @@ impl UnitError {
             UnitErrorKind::NoNumber => format!("`{}` does not start with a number", self.source),
             UnitErrorKind::UnknownUnit { name, .. } => format!("unknown unit `{name}`"),
             UnitErrorKind::Syntax(expected) => format!("expected {expected} in the unit"),
-            UnitErrorKind::Power { message, .. } | UnitErrorKind::TooLarge(message) => {
-                message.clone()
-            }
+            UnitErrorKind::Power { message, .. }
+            | UnitErrorKind::TooLarge(message)
+            | UnitErrorKind::NumberTooLarge(message) => message.clone(),
         }
     }
 
@@ -170,6 +195,11 @@ impl UnitError {
             UnitErrorKind::Syntax(_) => Some("units combine with `*`, `/` and `^`, e.g. \"kg*m/s^2\", \"30 1/m\" or \"1e5 N/m^(3/2)\"".into()),
             UnitErrorKind::Power { hint, .. } => Some(hint.clone()),
             UnitErrorKind::TooLarge(_) => Some("write the unit with smaller powers".into()),
+            UnitErrorKind::NumberTooLarge(_) => Some(
+                "a double-precision number is at most about 1.8e308: write the value in \
+                 larger units or scale the problem"
+                    .into(),
+            ),
         }
     }
 

@@ -19,6 +19,7 @@ pub struct Derivative {
 
 /// `d/dx` of `text`.
 pub fn derivative(text: &str, x: &str) -> Result<Derivative, CalculusError> {
+    super::check_variable(x, Input::Variable)?;
     let input = Sym::from_expr(&parse(text)?.expr);
     let result = input.diff(x);
     Ok(Derivative { input, result })

@@ -52,6 +52,7 @@ pub(super) fn equation(text: &str) -> Result<(Sym, Vec<String>), CalculusError> 
 
 /// Refuses an unknown that is not written in the equation(s) `text` (whose names are `names`).
 pub(super) fn check_unknown(x: &str, text: &str, names: &[String]) -> Result<(), CalculusError> {
+    super::check_variable(x, crate::inputs::Input::Unknowns)?;
     if names.iter().any(|n| n == x) {
         return Ok(());
     }

@@ -4,6 +4,7 @@
 
 use mechkit_expr::{Sym, parse};
 
+use super::singular::{Singularity, show_point};
 use super::{CalculusError, Params, lookup};
 use crate::Real;
 use crate::function::Function;
@@ -101,22 +102,61 @@ pub fn integral(
     limits: Option<(Real, Real)>,
     params: &Params,
 ) -> Result<Integral, CalculusError> {
+    super::check_variable(x, Input::Variable)?;
     let input = Sym::from_expr(&parse(text)?.expr);
     let anti = input.integrate(x);
     let (antiderivative, assumptions) = match anti {
         Some(a) => (Some(a.result), a.assumptions),
         None => (None, Vec::new()),
     };
+    // a pole in [a, b] makes the integral diverge: refused, naming the point; an integrable
+    // singularity inside is a breakpoint of the quadrature (the rule never samples it)
+    let mut breaks = Vec::new();
+    if let Some((from, to)) = limits {
+        for s in super::singular::singularities(&input, x, params, from, to) {
+            if !s.integrable() {
+                return Err(diverges(text.trim(), x, s, (from, to)).into());
+            }
+            if s.at != from && s.at != to {
+                breaks.push(s.at);
+            }
+        }
+        if from > to {
+            breaks.reverse();
+        }
+    }
     let definite = limits.map(|(from, to)| {
         let env = lookup(params);
         let at = |f: &Sym, v: Real| f.eval(&|n| if n == x { Some(v) } else { env(n) });
-        let quad = quadrature(
-            |v| at(&input, v).unwrap_or(Real::NAN),
-            from,
-            to,
-            Tolerance::default(),
-        )
-        .map_err(|e| e.to_string());
+        let ends: Vec<Real> = std::iter::once(from)
+            .chain(breaks.iter().copied())
+            .chain(std::iter::once(to))
+            .collect();
+        let quad = ends
+            .windows(2)
+            .map(|w| {
+                quadrature(
+                    |v| at(&input, v).unwrap_or(Real::NAN),
+                    w[0],
+                    w[1],
+                    Tolerance::default(),
+                )
+            })
+            .try_fold(
+                QuadResult {
+                    value: 0.0,
+                    error: 0.0,
+                    evaluations: 0,
+                },
+                |sum, piece| {
+                    piece.map(|q| QuadResult {
+                        value: sum.value + q.value,
+                        error: sum.error + q.error,
+                        evaluations: sum.evaluations + q.evaluations,
+                    })
+                },
+            )
+            .map_err(|e| e.to_string());
         // the closed form counts only if it is continuous on the interval: compare with the
         // quadrature's value (a jump in ln|x| across 0 would show as a disagreement)
         let closed_form = antiderivative.as_ref().and_then(|big_f| {
@@ -160,6 +200,33 @@ pub fn integral(
         assumptions,
         definite,
     })
+}
+
+/// The refusal of a definite integral across a pole: `1/x^2` is not integrable at x = 0.
+fn diverges(input: &str, x: &str, s: Singularity, (from, to): (Real, Real)) -> InputError {
+    let at = show_point(s.at);
+    let growth = if s.order.is_finite() {
+        let distance = if s.at == 0.0 {
+            format!("|{x}|")
+        } else {
+            format!("|{x} - {at}|")
+        };
+        format!(
+            "; near it the integrand grows like 1/{distance}^{}",
+            show_point((s.order * 100.0).round() / 100.0)
+        )
+    } else {
+        String::new()
+    };
+    InputError::new(
+        Input::Limits,
+        format!(
+            "`{input}` is not integrable at {x} = {at} in [{}, {}]: the integral diverges{growth}\n  \
+             = hint: integrate up to a point before {at} (or from one after it), where the value is finite",
+            show_point(from),
+            show_point(to)
+        ),
+    )
 }
 
 /// One fixed rule's estimate of a definite integral, next to the exact value.
@@ -283,10 +350,13 @@ pub struct Integration {
 }
 
 impl Integration {
-    /// Whether nothing could be computed: no closed form, and no definite value either.
+    /// Whether nothing could be computed: no closed form, and no definite value either; or,
+    /// when limits were given, no definite value (neither its closed form nor quadrature).
     pub fn found_nothing(&self) -> bool {
-        self.antiderivative.is_none()
-            && self.definite.as_ref().is_none_or(|d| d.quadrature.is_err())
+        match &self.definite {
+            Some(d) => d.closed_form.is_none() && d.quadrature.is_err(),
+            None => self.antiderivative.is_none(),
+        }
     }
 }
 

@@ -207,8 +207,17 @@ fn numeric_map<S: serde::Serializer>(
     v: &Option<Vec<(String, Real)>>,
     s: S,
 ) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
     match v {
-        Some(v) => super::text::params(v, s),
+        // a value that is not finite (the system is singular for these values) is null, as
+        // documented on the field: not an answer, so the finiteness rule passes it
+        Some(v) => {
+            let mut map = s.serialize_map(Some(v.len()))?;
+            for (k, x) in v {
+                map.serialize_entry(k, &x.is_finite().then_some(*x))?;
+            }
+            map.end()
+        }
         None => s.serialize_none(),
     }
 }

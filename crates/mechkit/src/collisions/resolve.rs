@@ -15,6 +15,7 @@
 
 mod error;
 mod restitution;
+mod scale;
 
 pub use error::CollisionError;
 pub use restitution::Restitution;
@@ -99,7 +100,27 @@ impl Collision {
     /// assert!((out.v1[0] - 3.0 / 1.7).abs() < 1e-15 && (out.v2[0] - 3.0 / 1.7).abs() < 1e-15);
     /// assert!((out.normal_impulse - 1.5 * 3.0 / 1.7).abs() < 1e-14);
     /// ```
+    ///
+    /// The arithmetic is done on velocities and masses scaled by powers of two to at most 1
+    /// (exact), and the results scaled back: velocities near ±1e308 give their exact answer
+    /// instead of an overflow in `v1 − v2` or `m·v`; a result that is not representable (the
+    /// kinetic energy of 1 kg at 1e200 m/s) is infinite, which the front refuses.
     pub fn resolve(&self) -> Result<Resolution, CollisionError> {
+        self.check()?;
+        let (scaled, k) = scale::scaled(self);
+        Ok(match scaled.resolve_scaled()? {
+            Resolution::Collided(mut out) => {
+                scale::unscale(&mut out, self, k);
+                Resolution::Collided(out)
+            }
+            Resolution::Separating { approach_speed } => Resolution::Separating {
+                approach_speed: approach_speed * k.velocity,
+            },
+        })
+    }
+
+    /// The checks of the input that [`Collision::resolve`] makes before anything is computed.
+    fn check(&self) -> Result<(), CollisionError> {
         let d = self.normal.len();
         if !(1..=3).contains(&d) || self.v1.len() != d || self.v2.len() != d {
             return Err(CollisionError::Dimension);
@@ -124,11 +145,43 @@ impl Collision {
         {
             return Err(CollisionError::NotFinite);
         }
-        let len = dot(&self.normal, &self.normal).sqrt();
-        if len == 0.0 {
+        Ok(())
+    }
+
+    /// [`Collision::resolve`] on velocities and masses of order 1 at most.
+    fn resolve_scaled(&self) -> Result<Resolution, CollisionError> {
+        let d = self.normal.len();
+        if !(1..=3).contains(&d) || self.v1.len() != d || self.v2.len() != d {
+            return Err(CollisionError::Dimension);
+        }
+        for (which, m) in [(1, self.m1), (2, self.m2)] {
+            if m.is_nan() || m <= 0.0 {
+                return Err(CollisionError::Mass { which, mass: m });
+            }
+        }
+        if self.m1.is_infinite() && self.m2.is_infinite() {
+            return Err(CollisionError::BothImmovable);
+        }
+        if self.friction.is_nan() || self.friction < 0.0 {
+            return Err(CollisionError::Friction { mu: self.friction });
+        }
+        if !self
+            .v1
+            .iter()
+            .chain(&self.v2)
+            .chain(&self.normal)
+            .all(|x| x.is_finite())
+        {
+            return Err(CollisionError::NotFinite);
+        }
+        // the normal's length, scaled so that its square neither overflows nor underflows
+        let big = self.normal.iter().fold(0.0, |m: Real, x| m.max(x.abs()));
+        if big == 0.0 {
             return Err(CollisionError::ZeroNormal);
         }
-        let n: Vec<Real> = self.normal.iter().map(|x| x / len).collect();
+        let unit: Vec<Real> = self.normal.iter().map(|x| x / big).collect();
+        let len = dot(&unit, &unit).sqrt();
+        let n: Vec<Real> = unit.iter().map(|x| x / len).collect();
         let u: Vec<Real> = self.v1.iter().zip(&self.v2).map(|(a, b)| a - b).collect();
         let un = dot(&u, &n);
         if un <= 0.0 {
@@ -312,6 +365,62 @@ mod tests {
         });
         assert_eq!(o.sticks, Some(false));
         assert!((o.v1[0] - 0.7).abs() < 1e-15);
+    }
+
+    /// Issue 26: at ±1e308 the relative velocity and the momenta overflowed, and the
+    /// velocities after came out 0 or NaN. They are exact now; the energies, which are not
+    /// representable, are infinite (refused by the fronts' finiteness rule).
+    #[test]
+    fn issue_026_velocities_near_the_largest_double_are_resolved_exactly() {
+        let big = 1e308;
+        let o = collided(&Collision::head_on(
+            1.0,
+            big,
+            1.0,
+            -big,
+            Restitution::ELASTIC,
+        ));
+        assert_eq!((o.v1[0], o.v2[0]), (-big, big));
+        // 2e308 is not a double: an answer the fronts refuse, not a wrong one
+        assert!(o.approach_speed.is_infinite());
+        let o = collided(&Collision::head_on(
+            2.0,
+            big,
+            2.0,
+            0.0,
+            Restitution::ELASTIC,
+        ));
+        assert_eq!((o.v1[0], o.v2[0]), (0.0, big));
+        assert_eq!(o.normal_impulse, 2.0 * big);
+        assert!(o.kinetic_before.is_infinite());
+        // huge masses: the velocities are those of equal masses
+        let o = collided(&Collision::head_on(
+            1e308,
+            1.0,
+            1e308,
+            0.0,
+            Restitution::ELASTIC,
+        ));
+        assert_eq!((o.v1[0], o.v2[0]), (0.0, 1.0));
+        assert_eq!(o.kinetic_before, 0.5e308);
+        // tiny values are kept too
+        let o = collided(&Collision::head_on(
+            1.0,
+            1e-300,
+            1.0,
+            0.0,
+            Restitution::ELASTIC,
+        ));
+        assert_eq!((o.v1[0], o.v2[0]), (0.0, 1e-300));
+        // the same answers as before for ordinary values
+        let o = collided(&Collision::head_on(
+            0.2,
+            15.0,
+            1.5,
+            0.0,
+            Restitution::PERFECTLY_INELASTIC,
+        ));
+        assert!((o.v1[0] - 3.0 / 1.7).abs() < 1e-15);
     }
 
     #[test]

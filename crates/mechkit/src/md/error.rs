@@ -85,6 +85,57 @@ pub enum MdError {
         /// The value given.
         value: Real,
     },
+    /// A parameter below the smallest normal double (2.2e-308): dividing by it overflows.
+    #[error(
+        "{input} is {value}, below 2.2e-308, the smallest number double precision holds in full: the accelerations would overflow"
+    )]
+    Subnormal {
+        /// Which parameter.
+        input: MdInput,
+        /// The value given.
+        value: Real,
+    },
+    /// The fastest particle at the start moves farther than the cut-off in one step: the
+    /// forces would not see it pass through its neighbours (a temperature or a time step
+    /// far too large).
+    #[error(
+        "the fastest atom moves {distance:e} in one step of dt = {dt:e} at the start (its speed is {speed:e}), more than the cut-off {cutoff}: the run would not resolve a single collision"
+    )]
+    StepTooLong {
+        /// The time step.
+        dt: Real,
+        /// The largest speed at the start.
+        speed: Real,
+        /// `speed · dt`.
+        distance: Real,
+        /// The cut-off of the pair potential.
+        cutoff: Real,
+    },
+    /// Two particles at the same place: the pair force between them is infinite.
+    #[error(
+        "atoms {first} and {second} (counted from 1) are at the same place, ({}, {}, {}): the force between them is infinite",
+        .at[0], .at[1], .at[2]
+    )]
+    Coincident {
+        /// The first atom (1-based, in the order given).
+        first: usize,
+        /// The second.
+        second: usize,
+        /// Where they are.
+        at: [Real; 3],
+    },
+    /// A thermo quantity stopped being finite during a run.
+    #[error(
+        "the run diverged at step {step}: the {quantity} is {value}; use a smaller time step, a lower temperature or start from a lattice"
+    )]
+    NotFinite {
+        /// The step at which it was noticed.
+        step: usize,
+        /// Which quantity (`temperature`, `pressure`, …).
+        quantity: &'static str,
+        /// Its value.
+        value: Real,
+    },
     /// A dimension other than 1, 2 or 3.
     #[error("the dimension is {dim}; it must be 1, 2 or 3")]
     Dimension {
@@ -174,7 +225,11 @@ impl MdError {
     /// The input the error is about, when it is about one.
     pub fn input(&self) -> Option<MdInput> {
         match self {
-            Self::NotPositive { input, .. } | Self::TooMany { input, .. } => Some(*input),
+            Self::NotPositive { input, .. }
+            | Self::Subnormal { input, .. }
+            | Self::TooMany { input, .. } => Some(*input),
+            Self::StepTooLong { .. } => Some(MdInput::TimeStep),
+            Self::Coincident { .. } => Some(MdInput::Atoms),
             Self::NoCells { .. } | Self::TooFewParticles { .. } => Some(MdInput::Atoms),
             Self::BoxTooSmall { .. } => Some(MdInput::BoxLength),
             _ => None,

@@ -160,6 +160,11 @@ impl<P: PairPotential> Md<P> {
             observer.step(step);
             if step % thermo_every == 0 || step == plan.steps {
                 let row = self.thermo();
+                // the finiteness rule: a row that is not all numbers is not written
+                if let Some(e) = not_finite(&row) {
+                    stop = MdStop::Diverged(e);
+                    break;
+                }
                 observer.thermo(&row)?;
                 rows.push(row);
             }
@@ -172,8 +177,14 @@ impl<P: PairPotential> Md<P> {
         }
         if rows.last().is_none_or(|r| r.step != self.steps()) {
             let row = self.thermo();
-            observer.thermo(&row)?;
-            rows.push(row);
+            match not_finite(&row) {
+                None => {
+                    observer.thermo(&row)?;
+                    rows.push(row);
+                }
+                Some(e) if stop == MdStop::Completed => stop = MdStop::Diverged(e),
+                Some(_) => {}
+            }
         }
         Ok(MdRun {
             rows,
@@ -181,6 +192,24 @@ impl<P: PairPotential> Md<P> {
             seconds: start.elapsed().as_secs_f64(),
         })
     }
+}
+
+/// The first quantity of a thermo row that is not finite, as the error that stops the run.
+fn not_finite(row: &Thermo) -> Option<MdError> {
+    [
+        ("kinetic energy", row.kinetic),
+        ("potential energy", row.potential),
+        ("total energy", row.total),
+        ("temperature", row.temperature),
+        ("pressure", row.pressure),
+    ]
+    .into_iter()
+    .find(|(_, v)| !v.is_finite())
+    .map(|(quantity, value)| MdError::NotFinite {
+        step: row.step,
+        quantity,
+        value,
+    })
 }
 
 #[cfg(test)]

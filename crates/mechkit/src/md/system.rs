@@ -94,7 +94,11 @@ impl<P: PairPotential> Md<P> {
             if !(value.is_finite() && value > 0.0) {
                 return Err(MdError::NotPositive { input, value });
             }
+            if value < Real::MIN_POSITIVE {
+                return Err(MdError::Subnormal { input, value });
+            }
         }
+        check_start(&x, &v, config.dt, potential.cutoff())?;
         if config.threads == 0 {
             return Err(MdError::NotPositive {
                 input: MdInput::Threads,
@@ -146,6 +150,13 @@ impl<P: PairPotential> Md<P> {
         };
         md.rebuild();
         md.update_forces();
+        // atoms that overlap without coinciding: no finite energy to start from
+        if !md.sums.potential.is_finite() {
+            return Err(MdError::Diverged {
+                step: 0,
+                energy: md.sums.potential,
+            });
+        }
         Ok(md)
     }
 
@@ -313,4 +324,41 @@ impl<P: PairPotential> Md<P> {
     pub fn pair_sums(&self) -> PairSums {
         self.sums
     }
+}
+
+/// The start of a run that cannot work, refused before it: two particles at the same place
+/// (an infinite force), or a particle moving farther than the cut-off in one step (the
+/// velocities of a temperature far too high, or a time step far too long).
+fn check_start(x: &[[Real; 3]], v: &[[Real; 3]], dt: Real, cutoff: Real) -> Result<(), MdError> {
+    let mut order: Vec<usize> = (0..x.len()).collect();
+    let key = |i: usize| x[i].map(|c| (c + 0.0).to_bits());
+    order.sort_unstable_by_key(|&i| key(i));
+    if let Some(w) = order.windows(2).find(|w| key(w[0]) == key(w[1])) {
+        let (first, second) = (w[0].min(w[1]), w[0].max(w[1]));
+        return Err(MdError::Coincident {
+            first: first + 1,
+            second: second + 1,
+            at: x[first],
+        });
+    }
+    let speed = v
+        .iter()
+        .map(|u| {
+            let big = u.iter().fold(0.0, |m: Real, c| m.max(c.abs()));
+            if big == 0.0 || !big.is_finite() {
+                return big;
+            }
+            big * u.iter().map(|c| (c / big).powi(2)).sum::<Real>().sqrt()
+        })
+        .fold(0.0, Real::max);
+    let distance = speed * dt;
+    if !(distance <= cutoff) {
+        return Err(MdError::StepTooLong {
+            dt,
+            speed,
+            distance,
+            cutoff,
+        });
+    }
+    Ok(())
 }

@@ -4,6 +4,8 @@
 //!   [`MAX_STEPS`] unless `max_steps` bounds the run itself (`t_max = 1e300` with
 //!   `dt = 1 ms` would be 10^302 steps: a run for ever).
 //! - `max_steps` may be at most [`MAX_STEPS`].
+//! - A fixed step may not be longer than the run (`dt > t_max − t0`): one step of 20 s
+//!   over a run of 10 s is no simulation of it (a feather would reach −4530 m/s).
 //! - A fixed step must move the time: `t + dt > t` in double precision at every time the run
 //!   reaches (a subnormal `dt`, or one below the spacing of the numbers near `t_max`, would
 //!   leave `t` where it is).
@@ -63,6 +65,19 @@ pub enum StepBoundError {
         num(*.0)
     )]
     SubnormalStep(Real),
+    /// A fixed step longer than the whole run: `dt > t_max − t0`.
+    #[error(
+        "the time step dt = {} s is longer than the run, from t = {} s to t_max = {} s: one step would cover all of it",
+        num(*dt), num(*t0), num(*t_max)
+    )]
+    StepLongerThanRun {
+        /// The step (s).
+        dt: Real,
+        /// The start (s).
+        t0: Real,
+        /// The end (s).
+        t_max: Real,
+    },
     /// `max_steps` above [`MAX_STEPS`].
     #[error("max_steps = {0} is more than the {MAX_STEPS} steps a run may take")]
     MaxStepsTooLarge(u64),
@@ -95,6 +110,10 @@ impl StepBoundError {
                 "a step must be at least {} s at t = {} s (a relative 2.2e-16 of the time); choose a larger dt",
                 short(spacing(*t)),
                 num(*t)
+            ),
+            StepBoundError::StepLongerThanRun { t0, t_max, .. } => format!(
+                "choose a step much shorter than the run, e.g. dt = {} s (a thousandth of it), or a later t_max",
+                short((t_max - t0) / 1000.0)
             ),
             StepBoundError::SubnormalStep(_) => {
                 "choose a step the run can take, e.g. dt = \"1 ms\"".into()
@@ -217,6 +236,12 @@ pub fn check_step_bound(
     if dt < Real::MIN_POSITIVE {
         return Err(StepBoundError::SubnormalStep(dt));
     }
+    if let Some(tm) = t_max
+        && dt > tm - t0
+        && tm > t0
+    {
+        return Err(StepBoundError::StepLongerThanRun { dt, t0, t_max: tm });
+    }
     let planned = t_max.map(|tm| {
         let steps = ((tm - t0) / dt).ceil();
         (tm, steps)
@@ -293,6 +318,29 @@ mod tests {
             e,
             StepBoundError::MaxStepsTooLarge(9_200_000_000_000_000_000)
         );
+    }
+
+    /// Issue 26: `dt = 20 s` with `t_max = 10 s` ran one step past the end without a word.
+    #[test]
+    fn issue_026_a_step_longer_than_the_run_is_refused() {
+        let e = check_step_bound(&fixed(20.0), 0.0, Some(10.0), None).unwrap_err();
+        assert_eq!(
+            e,
+            StepBoundError::StepLongerThanRun {
+                dt: 20.0,
+                t0: 0.0,
+                t_max: 10.0
+            }
+        );
+        assert!(
+            e.to_string().contains("dt = 20 s is longer than the run"),
+            "{e}"
+        );
+        assert!(e.hint().contains("dt = 0.01 s"), "{}", e.hint());
+        let e = check_step_bound(&fixed(1.5), 1.0, Some(2.0), Some(5)).unwrap_err();
+        assert!(matches!(e, StepBoundError::StepLongerThanRun { .. }), "{e}");
+        // one step that covers the run exactly is a run
+        assert_eq!(check_step_bound(&fixed(10.0), 0.0, Some(10.0), None), Ok(1));
     }
 
     #[test]

@@ -54,6 +54,21 @@ pub struct SweepRow {
     /// The recorded plot, when asked for.
     #[cfg_attr(feature = "serde", serde(skip))]
     pub plot: Option<PlotData>,
+    /// What went wrong, for a run that failed ([`SweepRow::failed`]): the run's divergence
+    /// message (not a column of `sweep.csv`).
+    #[cfg_attr(feature = "serde", serde(skip))]
+    pub diagnosis: Option<String>,
+}
+
+impl SweepRow {
+    /// Whether the run failed numerically (`diverged`, `step_too_small`, `zeno`: what makes
+    /// `mechkit run` exit with 1).
+    pub fn failed(&self) -> bool {
+        matches!(
+            self.stop_reason.as_str(),
+            "diverged" | "step_too_small" | "zeno"
+        )
+    }
 }
 
 /// Runs the points of `grid` (the shard's slice of them, when one is given) of the scenario
@@ -125,6 +140,7 @@ pub fn run_sweep(
             energy_end: s.energy.end,
             work_energy_residual: s.work_energy_residual,
             plot: out.plots.into_iter().next(),
+            diagnosis: s.divergence.as_ref().map(|d| d.message.clone()),
         };
         on_done();
         Ok(row)

@@ -420,6 +420,7 @@ mod tests {
                         PlotData::new("v(x)", "v_x", "x [m]", "v [m/s]")
                             .with_series(Series::line("v", vec![(0.0, v), (1.0, v)])),
                     ),
+                    diagnosis: None,
                 }
             })
             .collect();
