@@ -168,7 +168,8 @@ fn text(o: &Collided) -> String {
         show(o.kinetic_after),
         show(o.kinetic_lost),
         if o.kinetic_before > 0.0 {
-            100.0 * o.kinetic_lost / o.kinetic_before
+            // the ratio first: 100·K_lost overflows for energies near 1e308
+            100.0 * (o.kinetic_lost / o.kinetic_before)
         } else {
             0.0
         }

@@ -43,6 +43,20 @@ pub fn derive(args: &DeriveArgs) -> Result<Outcome> {
         write_files(args, dir, &mut d)?;
     }
     report(args.report, &d, || text(&d))?;
+    // the finiteness rule: a column whose derivative is not finite anywhere has no answer
+    if let Some(c) = d
+        .columns
+        .iter()
+        .find(|c| c.velocity.is_none() || c.acceleration.is_none())
+    {
+        eprintln!(
+            "error: the derivative of `{}` is not finite: its values or their differences \
+             overflow double precision\n  = hint: rescale the data (other units) before \
+             differentiating",
+            c.name
+        );
+        return Ok(Outcome::ComputationFailed);
+    }
     Ok(Outcome::Success)
 }
 

@@ -54,6 +54,7 @@ mod issue_026;
 mod issue_026_integrity;
 mod issue_026_integrity_signals;
 mod issue_026_messages;
+mod issue_026_answers;
 mod limits;
 mod mass;
 mod md;

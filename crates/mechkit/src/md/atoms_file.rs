@@ -105,6 +105,39 @@ impl AtomsFile {
         Ok(Self { dim, vectors })
     }
 
+    /// The 1-based line of `text` (a file named `name`, read by [`AtomsFile::parse`]) that
+    /// holds particle `index` (0-based), for a message that points at it.
+    ///
+    /// ```
+    /// use mechkit::md::AtomsFile;
+    /// assert_eq!(AtomsFile::line_of("p.csv", "# pair\nx,y\n0,0\n\n1,0\n", 1), Some(5));
+    /// assert_eq!(AtomsFile::line_of("p.xyz", "2\npair\nAr 0 0 0\nAr 1 0 0\n", 1), Some(4));
+    /// ```
+    pub fn line_of(name: &str, text: &str, index: usize) -> Option<usize> {
+        if name.to_ascii_lowercase().ends_with(".xyz") {
+            return Some(index + 3);
+        }
+        let mut seen_data = false;
+        let mut k = 0;
+        for (i, raw) in text.lines().enumerate() {
+            let row = raw.trim();
+            if row.is_empty() || row.starts_with('#') {
+                continue;
+            }
+            let numeric = row.split(',').all(|f| f.trim().parse::<Real>().is_ok());
+            let header = !seen_data && !numeric;
+            seen_data = true;
+            if header {
+                continue;
+            }
+            if k == index {
+                return Some(i + 1);
+            }
+            k += 1;
+        }
+        None
+    }
+
     /// Parses XYZ text (see the module docs).
     ///
     /// # Example

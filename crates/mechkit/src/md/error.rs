@@ -87,7 +87,7 @@ pub enum MdError {
     },
     /// A parameter below the smallest normal double (2.2e-308): dividing by it overflows.
     #[error(
-        "{input} is {value}, below 2.2e-308, the smallest number double precision holds in full: the accelerations would overflow"
+        "{input} is {value:e}, below 2.2e-308, the smallest number double precision holds in full: the accelerations would overflow"
     )]
     Subnormal {
         /// Which parameter.
@@ -99,7 +99,8 @@ pub enum MdError {
     /// forces would not see it pass through its neighbours (a temperature or a time step
     /// far too large).
     #[error(
-        "the fastest atom moves {distance:e} in one step of dt = {dt:e} at the start (its speed is {speed:e}), more than the cut-off {cutoff}: the run would not resolve a single collision"
+        "the fastest atom moves {} in one step of dt = {} at the start (its speed is {}), more than the cut-off {}: the run would not resolve a single collision",
+        short(*.distance), short(*.dt), short(*.speed), short(*.cutoff)
     )]
     StepTooLong {
         /// The time step.
@@ -234,6 +235,17 @@ impl MdError {
             Self::BoxTooSmall { .. } => Some(MdInput::BoxLength),
             _ => None,
         }
+    }
+}
+
+/// A number for a message: 6 significant digits, in exponent form outside 1e-4..1e6
+/// (`2.4978e48`, not 49 digits).
+fn short(x: Real) -> String {
+    let r = round6(x);
+    if r == 0.0 || !r.is_finite() || (1e-4..1e6).contains(&r.abs()) {
+        format!("{r}")
+    } else {
+        format!("{r:e}")
     }
 }
 

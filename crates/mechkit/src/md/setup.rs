@@ -205,6 +205,13 @@ pub enum SetupError {
         /// The positions' dimension.
         dim: usize,
     },
+    /// Two particles of the positions at the same place (an infinite force).
+    Coincident {
+        /// Where each is given: `file:line`, or `particle N` of an array.
+        places: (String, String),
+        /// Where they are.
+        at: [Real; 3],
+    },
     /// Velocities that do not match the positions.
     Velocities {
         /// The velocities' file, or None for an array.
@@ -270,6 +277,16 @@ impl SetupError {
                 "{}: {} for {dim}-D positions; give 1 or {dim}",
                 name(MdOption::Box),
                 count(*given, "length", "lengths")
+            ),
+            Self::Coincident { places, at } => format!(
+                "{}: {} and {} are at the same place, ({}, {}, {}): the force between two \
+                 particles at one point is infinite\n  = hint: move one of them, or remove it",
+                name(MdOption::Positions),
+                places.0,
+                places.1,
+                at[0],
+                at[1],
+                at[2]
             ),
             Self::Velocities {
                 path,
@@ -419,6 +436,9 @@ impl Setup {
             }
         };
         let sim_box = SimBox::new(dim, lengths, [periodic; 3])?;
+        if let Some((i, j)) = super::system::coincident_pair(&atoms.vectors) {
+            return Err(coincident(path.as_deref(), (i, j), atoms.vectors[i]));
+        }
         let n = atoms.vectors.len();
         let v = match (&o.velocities, o.temperature) {
             (Some(given), _) => {
@@ -445,6 +465,23 @@ impl Setup {
             v,
             origin,
         })
+    }
+}
+
+/// The error for particles `i` and `j` (0-based) at the same place `at`: each named by its
+/// line of the file `path`, or its number in an array.
+fn coincident(path: Option<&Path>, (i, j): (usize, usize), at: [Real; 3]) -> SetupError {
+    let text = path.and_then(|p| std::fs::read_to_string(p).ok());
+    let place = |k: usize| match (path, &text) {
+        (Some(p), Some(text)) => match AtomsFile::line_of(&p.to_string_lossy(), text, k) {
+            Some(line) => format!("{}:{line}", p.display()),
+            None => format!("particle {} of {}", k + 1, p.display()),
+        },
+        _ => format!("particle {}", k + 1),
+    };
+    SetupError::Coincident {
+        places: (place(i), place(j)),
+        at,
     }
 }
 

@@ -326,15 +326,24 @@ impl<P: PairPotential> Md<P> {
     }
 }
 
+/// Two particles at exactly the same place (0-based, the first in order first), if any:
+/// found by sorting, O(N log N).
+pub(crate) fn coincident_pair(x: &[[Real; 3]]) -> Option<(usize, usize)> {
+    let mut order: Vec<usize> = (0..x.len()).collect();
+    let key = |i: usize| x[i].map(|c| (c + 0.0).to_bits());
+    order.sort_unstable_by_key(|&i| (key(i), i));
+    order
+        .windows(2)
+        .filter(|w| key(w[0]) == key(w[1]))
+        .map(|w| (w[0].min(w[1]), w[0].max(w[1])))
+        .min()
+}
+
 /// The start of a run that cannot work, refused before it: two particles at the same place
 /// (an infinite force), or a particle moving farther than the cut-off in one step (the
 /// velocities of a temperature far too high, or a time step far too long).
 fn check_start(x: &[[Real; 3]], v: &[[Real; 3]], dt: Real, cutoff: Real) -> Result<(), MdError> {
-    let mut order: Vec<usize> = (0..x.len()).collect();
-    let key = |i: usize| x[i].map(|c| (c + 0.0).to_bits());
-    order.sort_unstable_by_key(|&i| key(i));
-    if let Some(w) = order.windows(2).find(|w| key(w[0]) == key(w[1])) {
-        let (first, second) = (w[0].min(w[1]), w[0].max(w[1]));
+    if let Some((first, second)) = coincident_pair(x) {
         return Err(MdError::Coincident {
             first: first + 1,
             second: second + 1,
