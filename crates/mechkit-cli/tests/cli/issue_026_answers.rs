@@ -235,7 +235,7 @@ fn issue_026_md_stops_at_the_first_thermo_value_that_is_not_finite() {
     let out = dir.run(&[
         "md",
         "--cells",
-        "3",
+        "4",
         "--dt",
         "0.4",
         "--steps",
