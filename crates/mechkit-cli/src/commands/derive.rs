@@ -39,10 +39,8 @@ pub fn derive(args: &DeriveArgs) -> Result<Outcome> {
         }
         other => anyhow!("{other}"),
     })?;
-    if let Some(dir) = &args.out {
-        write_files(args, dir, &mut d)?;
-    }
-    report(args.report, &d, || text(&d))?;
+    // the finiteness rule before any file: an answer that is not finite writes nothing
+    mechkit::finite::check_finite(&d)?;
     // the finiteness rule: a column whose derivative is not finite anywhere has no answer
     if let Some(c) = d
         .columns
@@ -57,6 +55,10 @@ pub fn derive(args: &DeriveArgs) -> Result<Outcome> {
         );
         return Ok(Outcome::ComputationFailed);
     }
+    if let Some(dir) = &args.out {
+        write_files(args, dir, &mut d)?;
+    }
+    report(args.report, &d, || text(&d))?;
     Ok(Outcome::Success)
 }
 

@@ -178,6 +178,18 @@ pub fn report<T: serde::Serialize>(
     text: impl FnOnce() -> String,
 ) -> anyhow::Result<()> {
     mechkit::finite::check_finite(value)?;
+    report_summary(flags, value, text)
+}
+
+/// [`report`] for a scenario run's summary, the documented exception to the finiteness rule:
+/// a summary value that is NaN or infinite (the work of a force on a run that diverged, an
+/// observable of an empty run) is written as `null` (docs/scenario.md, "summary.json"), and a
+/// run that failed says so itself (exit 1).
+pub fn report_summary<T: serde::Serialize>(
+    flags: crate::args::Report,
+    value: &T,
+    text: impl FnOnce() -> String,
+) -> anyhow::Result<()> {
     if flags.json {
         let mut json = serde_json::to_string_pretty(value)?;
         json.push('\n');

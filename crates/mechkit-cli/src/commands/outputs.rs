@@ -16,17 +16,10 @@ pub fn create_dir(dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("--out: cannot create {}", dir.display()))
 }
 
-/// Writes `dir/NAME.csv` and its units sidecar; returns the CSV's path. The finiteness rule:
-/// a table that holds an infinity or NaN is not written ([`mechkit::finite::NonFinite`],
-/// exit 1, naming its row and column).
+/// Writes `dir/NAME.csv` and its units sidecar; returns the CSV's path. A table may hold
+/// NaN or ±inf where a quantity is not defined (docs/scenario.md, "Output files"): the
+/// finiteness rule is for answers ([`super::report`]), not for the samples of a curve.
 pub fn write_table(dir: &Path, name: &str, table: &Table) -> Result<String> {
-    if let Some((row, column, value)) = table.first_non_finite() {
-        return Err(mechkit::finite::NonFinite {
-            quantity: format!("{column} in row {row} of {name}.csv"),
-            value,
-        }
-        .into());
-    }
     let path = table
         .write(dir, name)
         .with_context(|| format!("cannot write {}", dir.join(format!("{name}.csv")).display()))?;

@@ -57,7 +57,7 @@ pub fn run(args: &RunArgs, cancel: &Cancel) -> Result<Outcome> {
         },
         |d| format!("wrote {}\n", d.display()),
     );
-    super::report(args.report, &out.summary, || {
+    super::report_summary(args.report, &out.summary, || {
         format!("{}{wrote}", out.summary.to_text())
     })?;
     let held = dir.as_ref().map_or_else(String::new, |d| {

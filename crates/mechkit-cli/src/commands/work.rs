@@ -129,6 +129,8 @@ fn data(args: &Data<'_>) -> Result<Outcome> {
         }
         other => anyhow!("{other}"),
     })?;
+    // the finiteness rule before any file: an answer that is not finite writes nothing
+    mechkit::finite::check_finite(&w)?;
     if let Some(dir) = args.out {
         write_files(args, dir, &mut w)?;
     }

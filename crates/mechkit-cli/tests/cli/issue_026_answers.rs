@@ -218,7 +218,7 @@ fn issue_026_md_refuses_a_start_that_cannot_work() {
         vec!["md", "--dt", "1e308", "--steps", "5"],
     ] {
         dir.run(&args)
-            .assert_bad_input(&["--dt", "more than the cut-off 2.5"]);
+            .assert_bad_input(&["--dt", "more than the box's shortest edge"]);
     }
     dir.create("p.csv", "# three atoms\nx,y,z\n0,0,0\n1.5,0,0\n\n0,0,0\n");
     dir.run(&["md", "--positions", "p.csv", "--box", "10", "--steps", "5"])

@@ -95,12 +95,11 @@ pub enum MdError {
         /// The value given.
         value: Real,
     },
-    /// The fastest particle at the start moves farther than the cut-off in one step: the
-    /// forces would not see it pass through its neighbours (a temperature or a time step
-    /// far too large).
+    /// The fastest particle at the start moves farther than the box in one step (a
+    /// temperature or a time step far too large).
     #[error(
-        "the fastest atom moves {} in one step of dt = {} at the start (its speed is {}), more than the cut-off {}: the run would not resolve a single collision",
-        short(*.distance), short(*.dt), short(*.speed), short(*.cutoff)
+        "the fastest atom moves {} in one step of dt = {} at the start (its speed is {}), more than the box's shortest edge {}: a step would carry it across the whole box",
+        short(*.distance), short(*.dt), short(*.speed), short(*.edge)
     )]
     StepTooLong {
         /// The time step.
@@ -109,8 +108,8 @@ pub enum MdError {
         speed: Real,
         /// `speed · dt`.
         distance: Real,
-        /// The cut-off of the pair potential.
-        cutoff: Real,
+        /// The shortest edge of the box.
+        edge: Real,
     },
     /// Two particles at the same place: the pair force between them is infinite.
     #[error(

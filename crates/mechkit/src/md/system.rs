@@ -98,7 +98,12 @@ impl<P: PairPotential> Md<P> {
                 return Err(MdError::Subnormal { input, value });
             }
         }
-        check_start(&x, &v, config.dt, potential.cutoff())?;
+        let lengths = sim_box.lengths();
+        let edge = lengths[..sim_box.dim()]
+            .iter()
+            .copied()
+            .fold(Real::INFINITY, Real::min);
+        check_start(&x, &v, config.dt, edge)?;
         if config.threads == 0 {
             return Err(MdError::NotPositive {
                 input: MdInput::Threads,
@@ -340,9 +345,11 @@ pub(crate) fn coincident_pair(x: &[[Real; 3]]) -> Option<(usize, usize)> {
 }
 
 /// The start of a run that cannot work, refused before it: two particles at the same place
-/// (an infinite force), or a particle moving farther than the cut-off in one step (the
-/// velocities of a temperature far too high, or a time step far too long).
-fn check_start(x: &[[Real; 3]], v: &[[Real; 3]], dt: Real, cutoff: Real) -> Result<(), MdError> {
+/// (an infinite force), or a particle crossing more than the whole box (its shortest edge
+/// `edge`) in one step: the velocities of a temperature far too high, or a time step far too
+/// long, for which a step is no motion through the box (a merely too large step that the
+/// box holds is a run that diverges, found as it goes).
+fn check_start(x: &[[Real; 3]], v: &[[Real; 3]], dt: Real, edge: Real) -> Result<(), MdError> {
     if let Some((first, second)) = coincident_pair(x) {
         return Err(MdError::Coincident {
             first: first + 1,
@@ -361,12 +368,12 @@ fn check_start(x: &[[Real; 3]], v: &[[Real; 3]], dt: Real, cutoff: Real) -> Resu
         })
         .fold(0.0, Real::max);
     let distance = speed * dt;
-    if !(distance <= cutoff) {
+    if !(distance <= edge) {
         return Err(MdError::StepTooLong {
             dt,
             speed,
             distance,
-            cutoff,
+            edge,
         });
     }
     Ok(())

@@ -140,6 +140,7 @@ pub fn all_cases() -> impl Iterator<Item = &'static Case> {
         super::planar::CASES,
         super::limits::CASES,
         super::reliability::CASES,
+        super::answers::CASES,
     ]
     .into_iter()
     .flatten()

@@ -15,6 +15,7 @@
 //!
 //! Each case runs once per test process (the runs are shared by the tests through a cache).
 
+mod answers;
 mod body;
 mod calculus;
 mod case;
