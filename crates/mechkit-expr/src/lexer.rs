@@ -242,6 +242,20 @@ mod tests {
         tokenize(src).unwrap().into_iter().map(|t| t.tok).collect()
     }
 
+    /// Issue 26: `1e309*x` read the number as infinity; it is refused at its column.
+    #[test]
+    fn issue_026_a_number_too_large_for_a_double_is_refused_at_its_column() {
+        let e = tokenize("2*x + 1e309").unwrap_err();
+        assert!(
+            matches!(e.kind, ExprErrorKind::NumberTooLarge(ref n) if n == "1e309"),
+            "{e}"
+        );
+        assert_eq!((e.span.start, e.span.end), (6, 11));
+        assert!(tokenize("1.7e308*x").is_ok());
+        // a number too small for a double is 0 (or subnormal), as in every language
+        assert_eq!(kinds("1e-400"), vec![Tok::Num(0.0)]);
+    }
+
     #[test]
     fn numbers_and_names() {
         assert_eq!(

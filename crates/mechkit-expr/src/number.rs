@@ -299,6 +299,21 @@ fn float_powi(x: f64, n: i128) -> f64 {
 mod tests {
     use super::*;
 
+    /// Issue 26: an exponent beyond the `i32` range was cast (`as i32`): 3e9 wrapped to a
+    /// negative power, and a saturated one changed the sign of a negative base.
+    #[test]
+    fn issue_026_powers_beyond_i32_are_not_wrapped_or_saturated() {
+        let big = 3_000_000_000_i128;
+        assert_eq!(Number::Float(-1.0).powi(big), Some(Number::Float(1.0)));
+        assert_eq!(Number::Float(-1.0).powi(big + 1), Some(Number::Float(-1.0)));
+        assert_eq!(
+            Number::rational(-3, 2).powi(big),
+            Some(Number::Float(f64::INFINITY))
+        );
+        assert_eq!(Number::rational(3, 2).powi(-big), Some(Number::Float(0.0)));
+        assert_eq!(Number::Float(0.5).powi(big), Some(Number::Float(0.0)));
+    }
+
     #[test]
     fn decimals_are_exact() {
         assert_eq!(Number::from_f64(0.5), Number::rational(1, 2));

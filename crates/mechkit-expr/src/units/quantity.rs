@@ -275,6 +275,24 @@ mod tests {
         Quantity::parse(s).unwrap_or_else(|e| panic!("{e}"))
     }
 
+    /// Issue 26: `1e309 m` was `inf m`; a number or a value in SI that overflows a double is
+    /// an error at the number (or at the whole quantity).
+    #[test]
+    fn issue_026_a_number_too_large_for_a_double_is_refused() {
+        let e = Quantity::parse("  1e309 m").unwrap_err();
+        assert!(matches!(e.kind, UnitErrorKind::NumberTooLarge(_)), "{e}");
+        assert_eq!((e.span.start, e.span.end), (2, 7));
+        assert!(e.hint().unwrap().contains("1.8e308"));
+        let e = Quantity::parse("1e308 km").unwrap_err();
+        assert!(
+            e.message().contains("`1e308 km` in SI units is too large"),
+            "{e}"
+        );
+        assert!(Quantity::parse("-1e309").is_err());
+        assert_eq!(q("1e308 m").value, 1e308);
+        assert_eq!(q("1e308 mm").value, 1e305);
+    }
+
     #[test]
     fn course_quantities() {
         assert_eq!(q("9.8 m/s^2"), Quantity::new(9.8, Dimension::ACCELERATION));

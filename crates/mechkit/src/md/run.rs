@@ -317,4 +317,70 @@ mod tests {
             Some(MdInput::FrameEvery)
         );
     }
+
+    /// Issue 26: starts that cannot work are refused by `Md::new`, naming the input; a run
+    /// stops at the first thermo row that is not finite and hands none such out.
+    #[test]
+    fn issue_026_starts_that_cannot_work_are_refused_and_no_row_is_not_finite() {
+        let (sim_box, x) = Lattice::Fcc.build(4, 0.8442).unwrap();
+        let lj = || LennardJones::reduced(2.5).unwrap();
+        let v = maxwell_boltzmann(1.44, 1.0, 3, x.len(), 7).unwrap();
+        let config = |dt: Real, mass: Real| MdConfig {
+            dt,
+            mass,
+            ..MdConfig::default()
+        };
+        let refused = |x: Vec<[Real; 3]>, v: Vec<[Real; 3]>, c: MdConfig| match Md::new(
+            sim_box,
+            lj(),
+            x,
+            v,
+            c,
+        ) {
+            Ok(_) => panic!("accepted"),
+            Err(e) => e,
+        };
+        let e = refused(x.clone(), v.clone(), config(0.005, 1e-320));
+        assert_eq!(e.input(), Some(MdInput::Mass));
+        assert!(matches!(e, MdError::Subnormal { .. }), "{e}");
+        let e = refused(x.clone(), v.clone(), config(1e308, 1.0));
+        assert_eq!(e.input(), Some(MdInput::TimeStep));
+        let hot = maxwell_boltzmann(1e100, 1.0, 3, x.len(), 7).unwrap();
+        let e = refused(x.clone(), hot, config(0.005, 1.0));
+        assert!(matches!(e, MdError::StepTooLong { .. }), "{e}");
+        let mut twins = x.clone();
+        twins[9] = twins[3];
+        let e = refused(twins, v.clone(), config(0.005, 1.0));
+        assert!(
+            matches!(
+                e,
+                MdError::Coincident {
+                    first: 4,
+                    second: 10,
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        // a step far too long for the forces (but within the box): the run stops at the
+        // first row that is not finite, and every row handed out is finite
+        let mut md = Md::new(sim_box, lj(), x, v, config(0.4, 1.0)).unwrap();
+        let mut rec = Recorder {
+            rows: Vec::new(),
+            frames: Vec::new(),
+            steps: 0,
+            limit: usize::MAX,
+        };
+        let run = md
+            .run_observed(
+                &RunPlan::new(200, 1, None).unwrap(),
+                &Cancel::new(),
+                &mut rec,
+            )
+            .unwrap();
+        assert!(matches!(run.stop, MdStop::Diverged(_)), "{:?}", run.stop);
+        assert!(not_finite(run.rows.last().unwrap()).is_none());
+        assert!(run.rows.iter().all(|r| not_finite(r).is_none()));
+        assert_eq!(rec.rows.len(), run.rows.len());
+    }
 }
