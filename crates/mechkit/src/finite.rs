@@ -15,7 +15,7 @@
 //! assert_eq!(e.to_string(), "the result samples[1] is inf, not a finite number");
 //! ```
 
-use std::fmt;
+use std::fmt::{self, Write as _};
 
 use serde::ser::{self, Serialize};
 
@@ -52,11 +52,10 @@ impl std::error::Error for NonFinite {}
 /// `Ok` if every number in `value` is finite, else the first that is not.
 pub fn check_finite<T: Serialize + ?Sized>(value: &T) -> Result<(), NonFinite> {
     let mut walker = Walker { path: Vec::new() };
+    // a value that cannot be serialised (`Stop::Custom`) holds no number to print
     match value.serialize(&mut walker) {
-        Ok(()) => Ok(()),
         Err(Stop::Found(e)) => Err(e),
-        // a value that cannot be serialised holds no number to print
-        Err(Stop::Custom) => Ok(()),
+        Ok(()) | Err(Stop::Custom) => Ok(()),
     }
 }
 
@@ -80,7 +79,9 @@ impl Walker {
                     out.push('.');
                     out.push_str(name);
                 }
-                Step::Index(i) => out.push_str(&format!("[{i}]")),
+                Step::Index(i) => {
+                    let _ = write!(out, "[{i}]");
+                }
             }
         }
         out

@@ -194,7 +194,12 @@ fn params_text(
 /// Exit 1 when every run failed (a sweep of nothing but failures answers nothing); else 0,
 /// the failed runs being rows with their `stop_reason` and a warning.
 fn outcome(table: &mechkit::scenario::sweep::SweepTable) -> Outcome {
-    if !table.rows.is_empty() && table.rows.iter().all(|r| r.failed()) {
+    if !table.rows.is_empty()
+        && table
+            .rows
+            .iter()
+            .all(mechkit::scenario::sweep::SweepRow::failed)
+    {
         Outcome::ComputationFailed
     } else {
         Outcome::Success

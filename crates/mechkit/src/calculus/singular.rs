@@ -178,10 +178,12 @@ mod tests {
         singularities(&f, "x", &[("c".into(), 1.0)], a, b)
     }
 
+    /// (integrand, a, b, the points and whether each is integrable)
+    type Case = (&'static str, Real, Real, &'static [(Real, bool)]);
+
     #[test]
     fn issue_026_poles_are_found_and_told_from_integrable_singularities() {
-        // (integrand, a, b, the points, whether each is integrable)
-        let cases: &[(&str, Real, Real, &[(Real, bool)])] = &[
+        let cases: &[Case] = &[
             ("1/x", -1.0, 1.0, &[(0.0, false)]),
             ("1/x^2", -1.0, 1.0, &[(0.0, false)]),
             ("1/x", 0.0, 1.0, &[(0.0, false)]),

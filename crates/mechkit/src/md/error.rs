@@ -229,8 +229,9 @@ impl MdError {
             | Self::Subnormal { input, .. }
             | Self::TooMany { input, .. } => Some(*input),
             Self::StepTooLong { .. } => Some(MdInput::TimeStep),
-            Self::Coincident { .. } => Some(MdInput::Atoms),
-            Self::NoCells { .. } | Self::TooFewParticles { .. } => Some(MdInput::Atoms),
+            Self::Coincident { .. } | Self::NoCells { .. } | Self::TooFewParticles { .. } => {
+                Some(MdInput::Atoms)
+            }
             Self::BoxTooSmall { .. } => Some(MdInput::BoxLength),
             _ => None,
         }

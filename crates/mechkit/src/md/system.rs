@@ -368,7 +368,8 @@ fn check_start(x: &[[Real; 3]], v: &[[Real; 3]], dt: Real, edge: Real) -> Result
         })
         .fold(0.0, Real::max);
     let distance = speed * dt;
-    if !(distance <= edge) {
+    // (NaN or infinite distances are refused too)
+    if distance.is_nan() || distance > edge {
         return Err(MdError::StepTooLong {
             dt,
             speed,
