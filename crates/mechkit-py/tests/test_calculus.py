@@ -84,12 +84,12 @@ def test_an_infinite_limit():
     assert without_value(i) == cli_json("integrate", "exp(-x)", "--from", "0", "--to", "inf")
 
 
-def test_value_is_none_when_the_closed_form_jumps():
-    # ln|x| across 0: a closed form exists, but the integral does not
-    i = mechkit.integrate("1/x", "x", -1, 2)
-    assert i["definite"]["closed_form"] is not None
-    assert i["definite"]["quadrature"] is None
-    assert i["value"] is None
+def test_an_integral_across_a_pole_is_refused():
+    # ln|x| across 0: a closed form exists, but the integral does not (issue 26: refused,
+    # naming the pole, instead of a value of None beside a closed form)
+    with pytest.raises(mechkit.MechkitError) as e:
+        mechkit.integrate("1/x", "x", -1, 2)
+    assert "is not integrable at x = 0 in [-1, 2]" in str(e.value)
 
 
 def test_no_closed_form_takes_the_quadrature():

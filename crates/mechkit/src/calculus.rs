@@ -147,7 +147,9 @@ pub(crate) mod text {
     pub fn params<S: Serializer>(p: &[(String, Real)], s: S) -> Result<S::Ok, S::Error> {
         let mut map = s.serialize_map(Some(p.len()))?;
         for (k, v) in p {
-            map.serialize_entry(k, v)?;
+            // a value given as `inf` is an input echoed as null (JSON has no infinity), not
+            // an answer: the finiteness rule passes it
+            map.serialize_entry(k, &v.is_finite().then_some(*v))?;
         }
         map.end()
     }

@@ -78,8 +78,11 @@ impl serde::Serialize for Definite {
             evaluations: usize,
         }
         let mut st = s.serialize_struct("Definite", 6)?;
-        st.serialize_field("from", &self.from)?;
-        st.serialize_field("to", &self.to)?;
+        // an infinite limit is an input, echoed as null (JSON has no infinity): not an
+        // answer, so the finiteness rule passes it
+        let limit = |x: Real| x.is_finite().then_some(x);
+        st.serialize_field("from", &limit(self.from))?;
+        st.serialize_field("to", &limit(self.to))?;
         st.serialize_field("closed_form", &self.closed_form)?;
         st.serialize_field(
             "quadrature",
