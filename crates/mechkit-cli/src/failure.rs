@@ -28,7 +28,16 @@ pub fn message(e: &anyhow::Error) -> String {
 /// Replaces Rust's panic message by [`internal_error`]. With `RUST_BACKTRACE` set, the
 /// default message (and backtrace) is printed as well, for whoever debugs it. The exit status
 /// of a panic stays 101.
+///
+/// Installed once per process: [`crate::main_with_args`] runs once per command, and a caller
+/// that runs many commands in one process (the Python package, the `command_line` fuzz
+/// target) would otherwise wrap the hook once more each time, a chain that grows without end.
 pub fn install_panic_hook() {
+    static INSTALLED: std::sync::Once = std::sync::Once::new();
+    INSTALLED.call_once(install);
+}
+
+fn install() {
     let default = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info: &PanicHookInfo<'_>| {
         if std::env::var_os("RUST_BACKTRACE").is_some_and(|v| v != "0") {
@@ -71,6 +80,21 @@ mod tests {
         let e = anyhow::Error::new(std::io::Error::other("disk full"))
             .context("cannot write out.csv: disk full");
         assert_eq!(message(&e), "cannot write out.csv: disk full");
+    }
+
+    /// Found by the `command_line` fuzz target, which runs a command per input: each run
+    /// wrapped the panic hook in one more closure.
+    #[test]
+    fn issue_026_fuzz_the_panic_hook_is_installed_once() {
+        install_panic_hook();
+        let first = std::panic::take_hook();
+        let first_at = std::ptr::from_ref(&*first).cast::<()>();
+        std::panic::set_hook(first);
+        install_panic_hook();
+        let second = std::panic::take_hook();
+        let second_at = std::ptr::from_ref(&*second).cast::<()>();
+        std::panic::set_hook(second);
+        assert_eq!(first_at, second_at, "a second hook wraps the first");
     }
 
     #[test]

@@ -31,6 +31,7 @@ use mechkit::simulate::Cancel;
 
 pub use args::PlotStyle;
 pub use plot::PNG_DPI;
+pub use serve::routes as serve_routes;
 
 /// The SVG text of `plot` as `mechkit` draws it into a file (`mechkit run -o DIR` writes the
 /// same bytes to `DIR/v_x.svg`): titled `title` (a run's plots: the scenario's title), in

@@ -8,6 +8,12 @@
 //!
 //! See `docs/reliability.md` for how the targets are run and what they found.
 
+pub mod browser;
+pub mod command_line;
+pub mod python_front;
+
+use std::sync::OnceLock;
+
 use mechkit::Real;
 use mechkit::calculus;
 use mechkit::collisions::Restitution;
@@ -317,11 +323,76 @@ pub fn options(data: &[u8]) {
         let _ = mechkit::values::vector(line, "--v", mechkit::units::Dimension::VELOCITY)
             .map_err(|e| e.to_string());
         let _ = mechkit::scenario::ConstantOverride::parse_list(line).map_err(|e| e.to_string());
+        values(line, &params);
     }
 }
 
+/// The rest of `mechkit::values`, which the command line and the Python package read their
+/// values with: a quantity of each dimension the commands ask for, an interval in either
+/// order, pixels and pixel scales (`com --image`), an image coordinate with and without a
+/// scale, a parameter list, and lists split outside brackets as vectors and `--at` lists are.
+fn values(line: &str, params: &[(String, Real)]) {
+    use mechkit::units::Dimension;
+    use mechkit::values;
+    for dim in [
+        Dimension::NONE,
+        Dimension::LENGTH,
+        Dimension::MASS,
+        Dimension::TIME,
+        Dimension::VELOCITY,
+        Dimension::FORCE,
+    ] {
+        let _ = values::quantity(line, "--q", dim).map_err(|e| e.to_string());
+    }
+    let _ = values::interval(line, "--in", params).map_err(|e| e.to_string());
+    let _ = values::pixels(line, "--at").map_err(|e| e.to_string());
+    let _ = values::pixel_scale(line, "--scale").map_err(|e| e.to_string());
+    for scaled in [false, true] {
+        let _ =
+            values::image_coordinate(line, "--about", scaled, "--scale").map_err(|e| e.to_string());
+    }
+    let _ = values::params(line).map_err(|e| e.to_string());
+    for sep in [',', ';', ':'] {
+        for item in values::split_top_level(line, sep) {
+            let _ = values::value(item, "--at", params).map_err(|e| e.to_string());
+        }
+    }
+}
+
+/// A whole `mechkit` command line, run in-process in a private working directory: see
+/// [`command_line`](mod@command_line). A CSV cell written by the command that is not a finite
+/// number panics (a finding), as a panic of the command does.
+///
+/// # Panics
+/// When the working directory cannot be made, or the command wrote a non-finite number.
+pub fn command_line(data: &[u8]) {
+    static WORKDIR: OnceLock<command_line::Workdir> = OnceLock::new();
+    let workdir = WORKDIR.get_or_init(|| {
+        command_line::Workdir::enter().expect("a working directory for the commands")
+    });
+    if command_line::run_in(workdir, data).is_some() {
+        let bad = command_line::non_finite_outputs(workdir.path());
+        assert!(bad.is_empty(), "non-finite numbers written: {bad:?}");
+    }
+}
+
+/// A request to `mechkit serve`'s routes: see [`browser`](mod@browser).
+///
+/// # Panics
+/// When the workspace cannot be made, or a check of [`browser`](mod@browser) fails.
+pub fn browser(data: &[u8]) {
+    static SITE: OnceLock<browser::Site> = OnceLock::new();
+    SITE.get_or_init(|| browser::Site::new().expect("a workspace for the server"))
+        .request(data);
+}
+
+pub use python_front::python_front;
+
 /// The targets by name, as the fuzz binaries and the replay test know them.
 pub const TARGETS: &[(&str, Target)] = &[
+    ("command_line", command_line),
+    ("browser", browser),
+    ("python_front", python_front),
     ("expression", expression),
     ("calculus", calculus),
     ("units", units),

@@ -131,3 +131,17 @@ fn options_seeds_and_regressions() {
     inputs.extend(regressions("options"));
     replay("options", &inputs, 20);
 }
+
+#[test]
+fn browser_seeds_and_regressions() {
+    let mut inputs = read_all(files(&repo().join("fuzz/seeds/browser"), &[]));
+    inputs.extend(regressions("browser"));
+    replay("browser", &inputs, 20);
+}
+
+#[test]
+fn python_front_seeds_and_regressions() {
+    let mut inputs = read_all(files(&repo().join("fuzz/seeds/python_front"), &[]));
+    inputs.extend(regressions("python_front"));
+    replay("python_front", &inputs, 10);
+}

@@ -29,4 +29,4 @@ mod run;
 mod server;
 mod workspace;
 
-pub use server::serve;
+pub use server::{routes, serve};

@@ -3,6 +3,7 @@
 //! then the runs stopped and the server's folders removed.
 
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
+use std::path::Path;
 use std::sync::Arc;
 use std::time::Duration;
 
@@ -87,6 +88,29 @@ pub fn serve(args: &ServeArgs, cancel: &Cancel) -> Result<Outcome> {
     served.context("the server failed")?;
     eprintln!("mechkit serve: stopped");
     Ok(Outcome::Success)
+}
+
+/// The app's routes over the workspace `dir`, as `mechkit serve --dir DIR --max-runs 1` serves
+/// them on `127.0.0.1:port` (the host guard answers only requests that name it), with the
+/// gallery when it can be extracted and runs bounded by `run_time` and `output` bytes. For
+/// callers that send requests to the router itself, without a socket (the `browser` fuzz
+/// target: tower's `oneshot`); the handlers need a tokio runtime. The runs' folder (under the
+/// temporary directory) goes with the last handle on the router's state.
+pub fn routes(dir: &Path, port: u16, run_time: Duration, output: u64) -> Result<Router> {
+    let workspace = Workspace::open(dir)?;
+    let registry =
+        Registry::new(scratch(), 1).context("cannot create the server's folder for the runs")?;
+    let app = Arc::new(App {
+        workspace,
+        gallery: Gallery::extract().ok(),
+        registry,
+        limits: Limits {
+            run_time,
+            output,
+            runs: 1,
+        },
+    });
+    Ok(router(app, Guard::loopback(port)))
 }
 
 /// The routes, the body limit and the host guard.

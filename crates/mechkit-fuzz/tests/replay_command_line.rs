@@ -1,0 +1,42 @@
+//! Replays the `command_line` target's seeds (the command lines of the documentation and the
+//! gallery) and its saved findings (`fuzz/regressions/command_line/`). Apart from
+//! `replay.rs` because the target makes its working directory the process's current one.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+fn inputs(dir: &Path) -> Vec<PathBuf> {
+    let mut out: Vec<PathBuf> = fs::read_dir(dir)
+        .map(|d| d.flatten().map(|e| e.path()).collect())
+        .unwrap_or_default();
+    out.retain(|p| p.is_file() && p.extension().is_none_or(|e| e != "py"));
+    out.sort();
+    out
+}
+
+#[test]
+fn command_line_seeds_and_regressions() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut paths = inputs(&repo.join("fuzz/seeds/command_line"));
+    assert!(paths.len() >= 100, "{} seeds", paths.len());
+    paths.extend(inputs(&repo.join("fuzz/regressions/command_line")));
+    let mut failed = Vec::new();
+    let mut ran = 0;
+    for path in &paths {
+        let bytes = fs::read(path).expect("a readable input");
+        let result = std::panic::catch_unwind(|| mechkit_fuzz::command_line(&bytes));
+        if result.is_err() {
+            failed.push(path.display().to_string());
+        }
+        if mechkit_fuzz::command_line::CommandLine::from_bytes(&bytes).is_some() {
+            ran += 1;
+        }
+    }
+    assert!(failed.is_empty(), "command_line panicked on: {failed:#?}");
+    // the seeds are command lines the target runs, not ones it skips
+    assert!(
+        ran * 10 >= paths.len() * 9,
+        "{ran} of {} inputs ran",
+        paths.len()
+    );
+}
