@@ -109,7 +109,9 @@ impl ExprError {
             }
         };
         match &mut self.kind {
-            ExprErrorKind::BadNumber(s) | ExprErrorKind::FunctionAsValue(s) => fix(s),
+            ExprErrorKind::BadNumber(s)
+            | ExprErrorKind::NumberTooLarge(s)
+            | ExprErrorKind::FunctionAsValue(s) => fix(s),
             ExprErrorKind::UnexpectedToken { found, expected } => {
                 fix(found);
                 fix(expected);

@@ -7,7 +7,6 @@
 use std::path::Path;
 
 use crate::Real;
-use crate::csv::partial_path as temp_path;
 pub use crate::csv::write_atomic;
 pub use reserved::{ReservedFile, SUMMARY_RESERVE};
 pub use stream::{FLUSH_INTERVAL, StreamFile};
