@@ -27,7 +27,7 @@ use mechkit::scenario::sweep::{Parameter, Sampling, SweepGrid};
 use mechkit::units::Quantity;
 
 /// The subcommands the first byte chooses from: every one but `serve` (a server that runs
-/// until stopped; its handlers have their own target, [`crate::browser`]).
+/// until stopped; its handlers have their own target, [`crate::browser()`]).
 pub const SUBCOMMANDS: &[&str] = &[
     "run",
     "check",
