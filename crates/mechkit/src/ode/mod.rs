@@ -36,8 +36,6 @@ mod method;
 mod polynomial;
 mod proof;
 mod radau5;
-#[cfg(test)]
-mod radau5_tests;
 mod radau_tableau;
 pub mod reference;
 mod rk4;

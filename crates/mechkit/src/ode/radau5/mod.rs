@@ -33,6 +33,13 @@ use super::state::State;
 use super::system::OdeSystem;
 use crate::Real;
 
+mod newton;
+mod scale;
+#[cfg(test)]
+mod tests;
+
+use newton::cont_at;
+
 /// The most Newton iterations of one step.
 pub const NEWTON_MAX_ITER: usize = 6;
 
@@ -212,140 +219,10 @@ impl Radau5 {
         self.f0_at = None;
     }
 
-    fn eval<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: Real, y: &[Real], out: usize) {
+    pub(super) fn eval<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: Real, y: &[Real], out: usize) {
         sys.rhs_into(t, y, &mut self.f[out]);
         self.stats.evaluations += 1;
     }
-
-    /// Forms the Jacobian at `(t, y)`, whose derivative is `self.f0`.
-    fn jacobian<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: Real, y: &[Real]) {
-        let n = y.len();
-        self.implicit.jacobians += 1;
-        self.jac_ready = true;
-        self.jac_current = true;
-        self.lu_h = None;
-        if sys.jacobian_into(t, y, &mut self.jac) {
-            return;
-        }
-        self.implicit.jacobians_by_differences += 1;
-        self.y_stage.copy_from_slice(y);
-        for j in 0..n {
-            let yj = y[j];
-            let delta = (Real::EPSILON * yj.abs().max(1e-5)).sqrt();
-            self.y_stage[j] = yj + delta;
-            let delta = self.y_stage[j] - yj;
-            sys.rhs_into(t, &self.y_stage, &mut self.f[0]);
-            self.stats.evaluations += 1;
-            for i in 0..n {
-                self.jac[i * n + j] = (self.f[0][i] - self.f0[i]) / delta;
-            }
-            self.y_stage[j] = yj;
-        }
-    }
-
-    /// Factors `(γ/h − J)` and `((α + iβ)/h − J)`; `false` when either is singular.
-    fn factor(&mut self, n: usize, h: Real) -> bool {
-        self.implicit.decompositions += 1;
-        let (g, a, b) = (self.rt.gamma / h, self.rt.alpha / h, self.rt.beta / h);
-        let jac = &self.jac;
-        let real = self.lu_real.factor(n, |r, c| {
-            if r == c {
-                g - jac[r * n + c]
-            } else {
-                -jac[r * n + c]
-            }
-        });
-        let complex = self.lu_complex.factor(n, |r, c| {
-            if r == c {
-                Complex::new(a - jac[r * n + c], b)
-            } else {
-                Complex::new(-jac[r * n + c], 0.0)
-            }
-        });
-        let ok = real.is_ok() && complex.is_ok();
-        self.lu_h = ok.then_some(h);
-        ok
-    }
-
-    fn norm(&self, v: &[Real]) -> Real {
-        let n = self.controlled(v.len());
-        if n == 0 {
-            return 0.0;
-        }
-        let sum: Real = (0..n)
-            .map(|i| {
-                let r = v[i] / self.scale[i];
-                if self.scale[i] > 0.0 {
-                    r * r
-                } else if v[i] == 0.0 {
-                    0.0
-                } else {
-                    Real::INFINITY
-                }
-            })
-            .sum();
-        (sum / n as Real).sqrt()
-    }
-
-    fn controlled(&self, n: usize) -> usize {
-        self.config.error_components.unwrap_or(n).min(n)
-    }
-
-    fn set_scale(&mut self, y0: &[Real], y1: Option<&[Real]>) {
-        for i in 0..y0.len() {
-            let size = match y1 {
-                Some(y1) => y0[i].abs().max(y1[i].abs()),
-                None => y0[i].abs(),
-            };
-            self.scale[i] = self.config.atol.at(i) + self.config.rtol.at(i) * size;
-        }
-    }
-
-    /// A first step from the sizes of `y` and `f` (Hairer, *Solving ODEs I*, Sec. II.4, for
-    /// an error of order 3).
-    fn initial_step<S: OdeSystem + ?Sized>(
-        &mut self,
-        sys: &S,
-        t: Real,
-        y: &[Real],
-        span: Real,
-    ) -> Real {
-        let n = y.len();
-        self.set_scale(y, None);
-        let d0 = self.norm(y);
-        let f0 = self.f0.clone();
-        let d1 = self.norm(&f0);
-        let mut h0 = if d0 < 1e-5 || d1 < 1e-5 {
-            1e-6
-        } else {
-            0.01 * d0 / d1
-        };
-        h0 = h0.min(self.config.h_max).min(span);
-        for i in 0..n {
-            self.y_stage[i] = y[i] + h0 * f0[i];
-        }
-        let ys = std::mem::take(&mut self.y_stage);
-        self.eval(sys, t + h0, &ys, 0);
-        self.y_stage = ys;
-        let diff: Vec<Real> = (0..n).map(|i| self.f[0][i] - f0[i]).collect();
-        let d2 = self.norm(&diff) / h0;
-        let h1 = if d1.max(d2) <= 1e-15 {
-            (h0 * 1e-3).max(1e-6)
-        } else {
-            (0.01 / d1.max(d2)).powf(1.0 / 4.0)
-        };
-        let h = (100.0 * h0).min(h1).min(self.config.h_max).min(span);
-        if h > 0.0 && h.is_finite() {
-            h
-        } else {
-            Real::min(1e-6, self.config.h_max).min(span)
-        }
-    }
-}
-
-/// `sⁱ`-weighted value of the collocation polynomial `Σₖ qₖ sᵏ` (without `y₀`).
-fn cont_at(cont: &[Real], n: usize, i: usize, s: Real) -> Real {
-    s * (cont[i] + s * (cont[n + i] + s * cont[2 * n + i]))
 }
 
 impl Radau5 {
@@ -505,109 +382,6 @@ impl Radau5 {
             self.h = Some(h_next.min(self.config.h_max));
             return Ok(t_new - t);
         }
-    }
-
-    /// The simplified Newton iteration for the stages of a step of `h` from `(t, y)`; the
-    /// iterations and the last contraction rate, or `None` when it diverges or is too slow.
-    fn newton<S: OdeSystem + ?Sized>(
-        &mut self,
-        sys: &S,
-        t: Real,
-        y: &[Real],
-        h: Real,
-    ) -> Option<(usize, Real)> {
-        let n = y.len();
-        let rt = self.rt.clone();
-        // starting values: the last polynomial extrapolated, else zero
-        if self.cont_valid && self.last_h > 0.0 {
-            let ratio = h / self.last_h;
-            for i in 0..n {
-                let at_end = cont_at(&self.cont, n, i, 1.0);
-                for k in 0..3 {
-                    self.z[k][i] = cont_at(&self.cont, n, i, 1.0 + rt.c[k] * ratio) - at_end;
-                }
-            }
-        } else {
-            for z in &mut self.z {
-                z.fill(0.0);
-            }
-        }
-        for i in 0..n {
-            let w = RadauTableau::apply(&rt.ti, [self.z[0][i], self.z[1][i], self.z[2][i]]);
-            for k in 0..3 {
-                self.w[k][i] = w[k];
-            }
-        }
-        let mut eta = self.eta.max(Real::EPSILON).powf(0.8);
-        let mut norm_old: Option<Real> = None;
-        let mut rate = 1.0;
-        for k in 0..NEWTON_MAX_ITER {
-            self.implicit.newton_iterations += 1;
-            for s in 0..3 {
-                for i in 0..n {
-                    self.y_stage[i] = y[i] + self.z[s][i];
-                }
-                let ys = std::mem::take(&mut self.y_stage);
-                self.eval(sys, t + rt.c[s] * h, &ys, s);
-                self.y_stage = ys;
-                if self.f[s].iter().any(|v| !v.is_finite()) {
-                    return None;
-                }
-            }
-            // residuals in W coordinates, then the two solves
-            let (g, a, b) = (rt.gamma / h, rt.alpha / h, rt.beta / h);
-            let mut dw0 = vec![0.0; n];
-            for i in 0..n {
-                let f = RadauTableau::apply(&rt.ti, [self.f[0][i], self.f[1][i], self.f[2][i]]);
-                let (w0, w1, w2) = (self.w[0][i], self.w[1][i], self.w[2][i]);
-                dw0[i] = f[0] - g * w0;
-                self.cbuf[i] = Complex::new(f[1] - a * w1 + b * w2, f[2] - b * w1 - a * w2);
-            }
-            self.lu_real.solve(&mut dw0);
-            let mut cb = std::mem::take(&mut self.cbuf);
-            self.lu_complex.solve(&mut cb);
-            let mut sum = 0.0;
-            let nc = self.controlled(n);
-            for i in 0..n {
-                let (d0, d1, d2) = (dw0[i], cb[i].re, cb[i].im);
-                if i < nc && self.scale[i] > 0.0 {
-                    let s = self.scale[i];
-                    sum += (d0 / s).powi(2) + (d1 / s).powi(2) + (d2 / s).powi(2);
-                }
-                self.w[0][i] += d0;
-                self.w[1][i] += d1;
-                self.w[2][i] += d2;
-            }
-            self.cbuf = cb;
-            let norm = (sum / (3 * nc.max(1)) as Real).sqrt();
-            if !norm.is_finite() {
-                return None;
-            }
-            if let Some(old) = norm_old {
-                rate = norm / old;
-                if rate >= 0.99 {
-                    return None;
-                }
-                if rate.powi((NEWTON_MAX_ITER - 1 - k) as i32) / (1.0 - rate) * norm
-                    > self.newton_tol
-                {
-                    return None;
-                }
-                eta = rate / (1.0 - rate);
-            }
-            for i in 0..n {
-                let z = RadauTableau::apply(&rt.t, [self.w[0][i], self.w[1][i], self.w[2][i]]);
-                for s in 0..3 {
-                    self.z[s][i] = z[s];
-                }
-            }
-            if norm == 0.0 || eta * norm <= self.newton_tol {
-                self.eta = eta;
-                return Some((k + 1, if norm_old.is_some() { rate } else { 0.0 }));
-            }
-            norm_old = Some(norm);
-        }
-        None
     }
 
     fn too_small(&self, t: Real, h: Real, h_min: Real, y: &[Real]) -> AdaptiveError {

@@ -1,8 +1,8 @@
 //! Radau IIA(5) against exact solutions, an explicit method on a stiff system, and its
 //! order.
 
-use super::*;
 use crate::Real;
+use crate::ode::*;
 
 struct Decay;
 impl OdeSystem for Decay {
