@@ -367,6 +367,13 @@ fn values(line: &str, params: &[(String, Real)]) {
 pub fn command_line(data: &[u8]) {
     static WORKDIR: OnceLock<command_line::Workdir> = OnceLock::new();
     let workdir = WORKDIR.get_or_init(|| {
+        // as in the `mechkit` binary, whose Rust runtime ignores SIGPIPE: a write to a closed
+        // pipe is an error the command reports, not the end of the process (libFuzzer's
+        // `main` leaves SIGPIPE at its default, and the CI smoke was killed by it)
+        let _ = signal_hook::flag::register(
+            signal_hook::consts::SIGPIPE,
+            std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false)),
+        );
         command_line::Workdir::enter().expect("a working directory for the commands")
     });
     let _ = command_line::run_in(workdir, data);
