@@ -93,6 +93,9 @@ pub struct Radau5 {
     w: [Vec<Real>; 3],
     f: [Vec<Real>; 3],
     y_stage: Vec<Real>,
+    /// The error estimate's right-hand side, and the real Newton correction.
+    rhs: Vec<Real>,
+    dw0: Vec<Real>,
     scale: Vec<Real>,
     err: Vec<Real>,
     cbuf: Vec<Complex<Real>>,
@@ -138,6 +141,8 @@ impl Radau5 {
             w: Default::default(),
             f: Default::default(),
             y_stage: Vec::new(),
+            rhs: Vec::new(),
+            dw0: Vec::new(),
             scale: Vec::new(),
             err: Vec::new(),
             cbuf: Vec::new(),
@@ -205,6 +210,8 @@ impl Radau5 {
         for v in [
             &mut self.f0,
             &mut self.y_stage,
+            &mut self.rhs,
+            &mut self.dw0,
             &mut self.scale,
             &mut self.err,
             &mut self.last_y0,
@@ -298,15 +305,17 @@ impl Radau5 {
             for i in 0..n {
                 self.y_stage[i] = state.y[i] + self.z[2][i];
             }
-            let y_new = self.y_stage.clone();
+            // `y_stage` holds the new state until the step is accepted or retried
+            let y_new = std::mem::take(&mut self.y_stage);
             self.set_scale(&state.y, Some(&y_new));
+            self.y_stage = y_new;
             let d = self.rt.d;
             for i in 0..n {
                 self.err[i] = self.f0[i]
                     + (d[0] * self.z[0][i] + d[1] * self.z[1][i] + d[2] * self.z[2][i]) / h;
             }
             let mut e = std::mem::take(&mut self.err);
-            let rhs = e.clone();
+            self.rhs.copy_from_slice(&e);
             self.lu_real.solve(&mut e);
             let mut err = self.norm(&e);
             if err > 1.0 && (first || rejected) {
@@ -314,7 +323,7 @@ impl Radau5 {
                 let probe: Vec<Real> = (0..n).map(|i| state.y[i] + e[i]).collect();
                 self.eval(sys, t, &probe, 0);
                 for i in 0..n {
-                    e[i] = self.f[0][i] - self.f0[i] + rhs[i];
+                    e[i] = self.f[0][i] - self.f0[i] + self.rhs[i];
                 }
                 self.lu_real.solve(&mut e);
                 err = self.norm(&e);
@@ -370,14 +379,14 @@ impl Radau5 {
             self.last_t0 = t;
             self.last_h = t_new - t;
             self.last_y0.copy_from_slice(&state.y);
-            state.y.copy_from_slice(&y_new);
+            state.y.copy_from_slice(&self.y_stage);
             state.t = t_new;
-            self.eval(sys, t_new, &y_new, 0);
+            self.eval(sys, t_new, &state.y, 0);
             self.f0.copy_from_slice(&self.f[0]);
             self.f0_at = Some(t_new);
             self.jac_current = false;
             if recompute_jac {
-                self.jacobian(sys, t_new, &y_new);
+                self.jacobian(sys, t_new, &state.y);
             }
             self.h = Some(h_next.min(self.config.h_max));
             return Ok(t_new - t);

@@ -115,7 +115,7 @@ impl Radau5 {
             }
             // residuals in W coordinates, then the two solves
             let (g, a, b) = (rt.gamma / h, rt.alpha / h, rt.beta / h);
-            let mut dw0 = vec![0.0; n];
+            let mut dw0 = std::mem::take(&mut self.dw0);
             for i in 0..n {
                 let f = RadauTableau::apply(&rt.ti, [self.f[0][i], self.f[1][i], self.f[2][i]]);
                 let (w0, w1, w2) = (self.w[0][i], self.w[1][i], self.w[2][i]);
@@ -138,6 +138,7 @@ impl Radau5 {
                 self.w[2][i] += d2;
             }
             self.cbuf = cb;
+            self.dw0 = dw0;
             let norm = (sum / (3 * nc.max(1)) as Real).sqrt();
             if !norm.is_finite() {
                 return None;
