@@ -8,13 +8,13 @@ use crate::ast::{BinOp, Func};
 
 /// A value inside a [`KernelBuilder`]'s body.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Val(u32);
+pub struct Val(pub(super) u32);
 
 /// Builds the body of a [`Kernel`]: values are combined with IEEE operations in the order
 /// given (nothing is reassociated; constants are folded, repeated operations shared).
 #[derive(Debug, Clone)]
 pub struct KernelBuilder {
-    dag: Dag,
+    pub(super) dag: Dag,
     /// The value each slot takes at the end of an iteration.
     stores: Vec<u32>,
 }

@@ -5,6 +5,7 @@
 //! [`Program::eval_jet`] bound a formula and its derivative over a box (see
 //! [`crate::interval`]), by the same instructions.
 
+mod derivative;
 mod domain;
 mod ir;
 #[cfg(feature = "jit")]

@@ -18,5 +18,7 @@ pub use kinematics::{Kinematics, dot, norm};
 pub use names::{NO_PLANAR, NameContext, PlanarNames, RigidName};
 pub use sample::{Evaluation, Sample, SampleKind};
 pub use state_expr::StateExpr;
-pub use system::{Body, Extra, ParticleSystem, ParticleSystemBuilder, SystemError};
+pub use system::{
+    Body, CompiledJacobian, Extra, ParticleSystem, ParticleSystemBuilder, SystemError,
+};
 pub use vars::{BodyRef, Coordinates, PointRef, SpinField, SpinRef, StateVar, VarLevel};

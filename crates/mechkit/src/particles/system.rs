@@ -3,6 +3,9 @@
 use thiserror::Error;
 
 mod evaluate;
+mod jacobian;
+
+pub use jacobian::CompiledJacobian;
 
 use super::kinematics::{Kinematics, dot};
 use super::spin::{Mat3, Spinner};
@@ -98,6 +101,9 @@ pub struct ParticleSystem {
     variable: Vec<(usize, usize)>,
     /// The rigid bodies turning in space.
     spinners: Vec<Spinner>,
+    /// The compiled Jacobian of the accelerations, built the first time an implicit method
+    /// asks for it (`None` inside when it cannot be compiled).
+    jacobian: std::sync::OnceLock<Option<CompiledJacobian>>,
 }
 
 /// Builds a [`ParticleSystem`].
@@ -323,6 +329,7 @@ impl ParticleSystemBuilder {
             velocity_dependent,
             coordinates: self.coordinates,
             spinners,
+            jacobian: std::sync::OnceLock::new(),
         })
     }
 }

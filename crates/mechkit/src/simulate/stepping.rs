@@ -119,6 +119,29 @@ impl OdeSystem for WorkSystem<'_> {
             }
         }
     }
+    /// `[[0, I, 0], [∂a/∂q, ∂a/∂v, 0], [0, 0, 0]]` from the system's compiled Jacobian, when
+    /// it has one. The work rows are left zero: the works do not act back on the motion, so
+    /// the simplified Newton iteration converges for them once it has for the motion.
+    fn jacobian_into(&self, t: Real, y: &[Real], jac: &mut [Real]) -> bool {
+        let n = self.n;
+        let (q, v) = (&y[..n], &y[n..2 * n]);
+        let mut da_dq = vec![0.0; n * n];
+        let mut da_dv = vec![0.0; n * n];
+        if !crate::ode::SecondOrderSystem::accel_jacobian_into(
+            self.sys, t, q, v, &mut da_dq, &mut da_dv,
+        ) {
+            return false;
+        }
+        let m = self.dim();
+        jac.fill(0.0);
+        for i in 0..n {
+            jac[i * m + n + i] = 1.0;
+            let row = (n + i) * m;
+            jac[row..row + n].copy_from_slice(&da_dq[i * n..(i + 1) * n]);
+            jac[row + n..row + 2 * n].copy_from_slice(&da_dv[i * n..(i + 1) * n]);
+        }
+        true
+    }
 }
 
 /// What advances the state: a fixed-step stepper, or the adaptive integrator with its
@@ -191,6 +214,17 @@ impl Engine {
     pub fn adaptive_stats(&self) -> Option<AdaptiveStats> {
         match self {
             Engine::Adaptive { rk, .. } => Some(rk.stats()),
+            Engine::Fixed { .. } => None,
+        }
+    }
+
+    /// When the explicit pair's stiffness test fired (see [`AdaptiveRk::stiff_from`]).
+    pub fn stiff_from(&self) -> Option<Real> {
+        match self {
+            Engine::Adaptive { rk, .. } => match &**rk {
+                Pair::Explicit(rk) => rk.stiff_from(),
+                _ => None,
+            },
             Engine::Fixed { .. } => None,
         }
     }

@@ -132,4 +132,19 @@ impl SecondOrderSystem for ParticleSystem {
     fn velocity_dependent(&self) -> bool {
         self.velocity_dependent
     }
+
+    /// From the compiled Jacobian ([`super::CompiledJacobian`]) when the system has one.
+    fn accel_jacobian_into(
+        &self,
+        t: Real,
+        q: &[Real],
+        v: &[Real],
+        da_dq: &mut [Real],
+        da_dv: &mut [Real],
+    ) -> bool {
+        self.jacobian
+            .get_or_init(|| super::CompiledJacobian::build(self))
+            .as_ref()
+            .is_some_and(|j| j.eval_into(t, q, v, da_dq, da_dv))
+    }
 }
