@@ -18,6 +18,7 @@ use super::control::{
 use super::fixed::{Dop853, Dopri5, FixedTableau, Kernel};
 use super::stages::{Sparse, Stages, sparse};
 use super::state::State;
+use super::stiffness::StiffnessTest;
 use super::system::OdeSystem;
 use super::tableau::{DenseKind, Tableau};
 use crate::Real;
@@ -55,6 +56,8 @@ pub struct AdaptiveRk {
     pub(super) dense: Vec<Real>,
     /// Stage 0 holds `f(t, y)` of the current state at this time.
     k0_at: Option<Real>,
+    /// Hairer's stiffness test, for pairs with a second stage at the step's end.
+    stiffness: Option<StiffnessTest>,
 }
 
 impl AdaptiveRk {
@@ -70,6 +73,7 @@ impl AdaptiveRk {
         let s = tableau.stages();
         let err_w = sparse(&tableau.e);
         Ok(Self {
+            stiffness: StiffnessTest::for_tableau(&tableau),
             stages: Stages::new(&tableau),
             kernel: Kernel::for_tableau(&tableau),
             fsal_in_error: err_w.iter().any(|(l, _)| *l == s),
@@ -104,6 +108,12 @@ impl AdaptiveRk {
     /// The counters so far.
     pub fn stats(&self) -> AdaptiveStats {
         self.stats
+    }
+
+    /// When Hairer's stiffness test first fired: from that time stability, not accuracy,
+    /// limited the steps for many steps in a row (an implicit method would take far fewer).
+    pub fn stiff_from(&self) -> Option<Real> {
+        self.stiffness.as_ref().and_then(|t| t.from)
     }
 
     /// The step size the next step will try.
@@ -307,6 +317,16 @@ impl AdaptiveRk {
                 if !self.fsal_in_error {
                     self.stages.eval_into(sys, t_new, &self.y_new, s);
                     self.stats.evaluations += 1;
+                }
+                if let Some(test) = &mut self.stiffness {
+                    test.check(
+                        &mut self.stages,
+                        s,
+                        h,
+                        &self.y_new,
+                        &mut self.err_buf,
+                        t_new,
+                    );
                 }
                 self.stats.accepted += 1;
                 // h_new = h · safety · err^(-α) · err_prev^β, in logarithms (one ln, one exp)

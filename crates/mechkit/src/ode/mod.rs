@@ -42,6 +42,7 @@ mod rk4;
 mod stages;
 mod state;
 mod stepper;
+mod stiffness;
 mod symplectic;
 mod system;
 mod tableau;

@@ -326,6 +326,10 @@ impl<'r> Run<'r> {
             o.finish(&last)?;
         }
         let span = self.state.t - self.initial.t;
+        let mut warnings = self.warnings;
+        if let Some(t) = self.engine.stiff_from() {
+            warnings.push(stiffness_warning(self.stepping.method(), t));
+        }
         Ok(RunReport {
             method: self.stepping.method(),
             dt: self.stepping.dt().unwrap_or(if steps > 0 {
@@ -350,7 +354,15 @@ impl<'r> Run<'r> {
             events: self.book.records,
             divergence: self.failure,
             ledger: self.ledger,
-            warnings: self.warnings,
+            warnings,
         })
     }
+}
+
+/// What the stiffness test of an explicit pair says, and what to do about it.
+fn stiffness_warning(method: crate::ode::Method, t: Real) -> String {
+    format!(
+        "the problem is stiff from t = {} s: {method}'s steps were limited by stability, not accuracy, for 15 steps in a row (Hairer's test); method = \"radau5\" takes far fewer steps",
+        crate::error::short(t)
+    )
 }
