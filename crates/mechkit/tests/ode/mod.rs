@@ -4,3 +4,4 @@ mod energy_behaviour;
 mod fsal;
 mod long_runs;
 mod orders;
+mod testset;

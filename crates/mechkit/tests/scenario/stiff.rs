@@ -186,3 +186,47 @@ fn radau5_uses_the_compiled_jacobian_of_formula_forces() {
     // with differences each Jacobian costs 2 + 1 (the work) evaluations; ~4,890 before
     assert!(s.evaluations < 4700, "{} evaluations", s.evaluations);
 }
+
+/// A ball dropped 1 mm onto a Hertz floor of k = 10¹⁰ N/m^1.5 with contact damping comes to
+/// rest at the static compression `(m g/k)^(2/3)`; radau5 takes a small fraction of DOP853's
+/// steps (held by the contact's stability bound) and DOP853 says the problem is stiff.
+#[test]
+fn a_ball_settles_on_a_hertz_floor_of_k_1e10() {
+    let text = r#"
+dimensions = 1
+[constants]
+k = "1e10 N/m^1.5"
+c = "1e4 N*s/m"
+g = "9.81 m/s^2"
+[[body]]
+name = "ball"
+mass = "0.1 kg"
+position = "1 mm"
+velocity = "0 m/s"
+[[force]]
+name = "floor"
+kind = "expression"
+F = "k*max(-x, 0)^1.5 - c*v*heaviside(-x) - m*g"
+[integrator]
+method = "METHOD"
+rtol = 1e-8
+atol = 1e-12
+[stop]
+t_max = "0.5 s"
+[observe]
+x_end = "final(x)"
+"#;
+    let implicit = run(&text.replace("METHOD", "radau5"));
+    let rest = -(0.1_f64 * 9.81 / 1e10).powf(2.0 / 3.0);
+    let x = implicit.observables["x_end"];
+    assert!((x - rest).abs() < 1e-6 * rest.abs(), "{x} vs {rest}");
+    let explicit = run(&text.replace("METHOD", "dop853"));
+    assert!((explicit.observables["x_end"] - rest).abs() < 1e-6 * rest.abs());
+    assert!(
+        implicit.steps * 10 < explicit.steps,
+        "{} vs {} steps",
+        implicit.steps,
+        explicit.steps
+    );
+    assert!(explicit.warnings.iter().any(|w| w.contains("stiff from")));
+}
