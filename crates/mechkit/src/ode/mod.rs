@@ -46,6 +46,7 @@ mod stiffness;
 mod symplectic;
 mod system;
 mod tableau;
+pub mod testset;
 mod verlet;
 
 pub use adaptive::AdaptiveRk;

@@ -1,12 +1,16 @@
-//! The problems of the standard test sets (Hairer & Wanner, *Solving ODEs I and II*; Mazzia &
+//! Problems of the standard ODE test sets (Hairer & Wanner, *Solving ODEs I and II*; Mazzia &
 //! Magherini, *Test Set for IVP Solvers*), each with its exact Jacobian and its reference
-//! solution as published.
+//! solution as published: what the implicit methods are validated and benchmarked on (the
+//! tests, `cargo bench -p mechkit --bench stiff`). The non-stiff classics are in
+//! [`super::reference`].
 
-use mechkit::Real;
-use mechkit::ode::{OdeSystem, SecondOrderSystem};
+use super::{OdeSystem, SecondOrderSystem};
+use crate::Real;
 
 /// Van der Pol's oscillator `x'' = μ (1 − x²) x' − x`, μ = 1000, from (2, 0).
+#[derive(Debug, Clone, Copy)]
 pub struct VanDerPol {
+    /// The damping parameter μ.
     pub mu: Real,
 }
 
@@ -33,9 +37,11 @@ impl SecondOrderSystem for VanDerPol {
 
 /// Robertson's chemical kinetics (Hairer & Wanner II, Sec. IV.1); reference at t = 40 from
 /// there (computed with RADAU5 at tolerance 1e-14).
+#[derive(Debug, Clone, Copy)]
 pub struct Robertson;
 
 impl Robertson {
+    /// `y(40)`.
     pub const REFERENCE_40: [Real; 3] = [
         0.715_827_068_719_397_4,
         9.185_534_764_557_192e-6,
@@ -70,11 +76,15 @@ impl OdeSystem for Robertson {
 
 /// HIRES: eight reactions of plant physiology (Schäfer 1975; Hairer & Wanner II, Sec. IV.10),
 /// from t = 0 to 321.8122; reference from the IVP test set (Mazzia & Magherini).
+#[derive(Debug, Clone, Copy)]
 pub struct Hires;
 
 impl Hires {
+    /// The end of the interval.
     pub const T_END: Real = 321.8122;
+    /// `y(0)`.
     pub const INITIAL: [Real; 8] = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0057];
+    /// `y(T_END)`.
     pub const REFERENCE: [Real; 8] = [
         0.737_131_257_332_566_8e-3,
         0.144_248_572_631_618_5e-3,
@@ -135,6 +145,7 @@ impl OdeSystem for Hires {
 
 /// The Pleiades: seven stars in a plane, masses 1 to 7, G = 1 (Hairer, Nørsett & Wanner I,
 /// Sec. II.10), from t = 0 to 3; reference positions from there.
+#[derive(Debug, Clone, Copy)]
 pub struct Pleiades;
 
 impl Pleiades {
@@ -193,10 +204,15 @@ impl SecondOrderSystem for Pleiades {
 /// A chain of `n` unit masses joined by stiff damped springs (k, c), the first tied to a wall,
 /// the last pulled by a constant force: the stiff modes die out in microseconds, the slow
 /// ones set the steps.
+#[derive(Debug, Clone, Copy)]
 pub struct SpringChain {
+    /// Number of masses (1 kg each).
     pub n: usize,
+    /// Stiffness of each spring (N/m).
     pub k: Real,
+    /// Damping of each spring (N·s/m).
     pub c: Real,
+    /// The constant force on the last mass (N).
     pub pull: Real,
 }
 

@@ -1,14 +1,12 @@
 //! The standard ODE test set (issue 28): each problem against its published reference, with
 //! radau5 (and DOP853 where the problem is not stiff, or to show that it is).
 
-mod problems;
-
 use mechkit::Real;
 use mechkit::ode::reference::Arenstorf;
+use mechkit::ode::testset::{Hires, Pleiades, Robertson, SpringChain, VanDerPol};
 use mechkit::ode::{
     AdaptiveConfig, AdaptiveRk, AdaptiveStats, OdeSystem, Radau5, State, Tableau, Tolerance,
 };
-use problems::{Hires, Pleiades, Robertson, SpringChain, VanDerPol};
 
 fn config(rtol: Real, atol: Real) -> AdaptiveConfig {
     AdaptiveConfig {
