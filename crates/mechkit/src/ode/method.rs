@@ -38,6 +38,8 @@ pub enum Method {
     Yoshida6,
     /// Radau IIA of order 5, implicit, for stiff systems ([`super::Radau5`]).
     Radau5,
+    /// Variable-order (1–5) BDF/NDF, implicit, for stiff systems ([`super::Bdf`]).
+    Bdf,
 }
 
 /// A method described: what `mechkit list-integrators` lists.
@@ -71,7 +73,7 @@ pub enum MethodKind {
 
 impl Method {
     /// Every method available.
-    pub const ALL: [Method; 13] = [
+    pub const ALL: [Method; 14] = [
         Method::Euler,
         Method::EulerCromer,
         Method::VelocityVerlet,
@@ -85,6 +87,7 @@ impl Method {
         Method::Pefrl,
         Method::Yoshida6,
         Method::Radau5,
+        Method::Bdf,
     ];
 
     /// The name used in scenario files.
@@ -103,6 +106,7 @@ impl Method {
             Method::Pefrl => "pefrl",
             Method::Yoshida6 => "yoshida6",
             Method::Radau5 => "radau5",
+            Method::Bdf => "bdf",
         }
     }
 
@@ -113,7 +117,7 @@ impl Method {
             Method::VelocityVerlet | Method::Heun => 2,
             Method::BogackiShampine => 3,
             Method::Rk4 | Method::Yoshida4 | Method::ForestRuth | Method::Pefrl => 4,
-            Method::Dopri5 | Method::Radau5 => 5,
+            Method::Dopri5 | Method::Radau5 | Method::Bdf => 5,
             Method::Yoshida6 => 6,
             Method::Dop853 => 8,
         }
@@ -131,7 +135,7 @@ impl Method {
             Method::Yoshida4 | Method::ForestRuth | Method::Pefrl | Method::Yoshida6 => {
                 MethodKind::Symplectic
             }
-            Method::Radau5 => MethodKind::Implicit,
+            Method::Radau5 | Method::Bdf => MethodKind::Implicit,
         }
     }
 
@@ -236,6 +240,9 @@ impl Method {
             Method::Radau5 => {
                 "Radau IIA, 5th order, implicit, adaptive, L-stable, for stiff systems (SciPy Radau, Hairer's RADAU5)"
             }
+            Method::Bdf => {
+                "BDF/NDF of variable order 1-5 (order 5 listed), implicit, adaptive, for stiff systems (SciPy BDF, MATLAB ode15s)"
+            }
         }
     }
 
@@ -258,6 +265,7 @@ impl Method {
             "pefrl" => Method::Pefrl,
             "yoshida6" => Method::Yoshida6,
             "radau5" | "radau" | "radau-iia" => Method::Radau5,
+            "bdf" | "ndf" | "ode15s" => Method::Bdf,
             _ => return None,
         })
     }

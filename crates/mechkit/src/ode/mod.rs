@@ -21,6 +21,7 @@
 //! step, with a guarantee where `g` has an enclosure, in time order.
 
 mod adaptive;
+mod bdf;
 mod blocks;
 mod control;
 mod dense;
@@ -50,6 +51,7 @@ pub mod testset;
 mod verlet;
 
 pub use adaptive::AdaptiveRk;
+pub use bdf::{Bdf, MAX_ORDER as BDF_MAX_ORDER};
 pub use control::{
     ATOL_PER_RTOL, AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller,
     STEPS_PER_SPAN, Tolerance,

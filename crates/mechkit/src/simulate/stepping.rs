@@ -6,7 +6,7 @@ use std::cell::RefCell;
 use super::run::{DEFAULT_MAX_STEPS, Simulation};
 use crate::Real;
 use crate::ode::{
-    AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, Method, MethodKind, OdeSystem,
+    AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, Bdf, Method, MethodKind, OdeSystem,
     Radau5, State, StepPolynomial, Stepper, hermite,
 };
 use crate::particles::{Evaluation, ParticleSystem};
@@ -178,7 +178,9 @@ impl Engine {
                 dt: *dt,
             },
             Stepping::Adaptive { method, config } => {
-                let pair = if method.kind() == MethodKind::Implicit {
+                let pair = if *method == Method::Bdf {
+                    Pair::Bdf(Bdf::new(config.clone()))
+                } else if method.kind() == MethodKind::Implicit {
                     Pair::Radau5(Radau5::new(config.clone()))
                 } else {
                     let tableau = method
@@ -321,11 +323,12 @@ impl Engine {
     }
 }
 
-/// The integrator of adaptive runs: an explicit Runge-Kutta pair, or Radau IIA(5).
+/// The integrator of adaptive runs: an explicit Runge-Kutta pair, Radau IIA(5), or BDF.
 #[allow(clippy::large_enum_variant)] // held in a Box by `Engine`
 pub(crate) enum Pair {
     Explicit(AdaptiveRk),
     Radau5(Radau5),
+    Bdf(Bdf),
 }
 
 impl Pair {
@@ -333,6 +336,7 @@ impl Pair {
         match self {
             Pair::Explicit(rk) => rk.reset(),
             Pair::Radau5(r) => r.reset(),
+            Pair::Bdf(b) => b.reset(),
         }
     }
 
@@ -340,6 +344,7 @@ impl Pair {
         match self {
             Pair::Explicit(rk) => rk.stats(),
             Pair::Radau5(r) => r.stats(),
+            Pair::Bdf(b) => b.stats(),
         }
     }
 
@@ -352,6 +357,7 @@ impl Pair {
         match self {
             Pair::Explicit(rk) => rk.step(sys, state, t_bound),
             Pair::Radau5(r) => r.step(sys, state, t_bound),
+            Pair::Bdf(b) => b.step(sys, state, t_bound),
         }
     }
 
@@ -359,6 +365,7 @@ impl Pair {
         match self {
             Pair::Explicit(rk) => rk.dense_into(sys, t, out),
             Pair::Radau5(r) => r.dense_into(t, out),
+            Pair::Bdf(b) => b.dense_into(t, out),
         }
     }
 
@@ -366,6 +373,7 @@ impl Pair {
         match self {
             Pair::Explicit(rk) => rk.dense_polynomial_into(sys, out),
             Pair::Radau5(r) => r.dense_polynomial_into(out),
+            Pair::Bdf(b) => b.dense_polynomial_into(out),
         }
     }
 }

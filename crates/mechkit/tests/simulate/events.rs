@@ -31,8 +31,15 @@ fn landing_of_a_projectile_is_located_to_rounding() {
             .unwrap();
         let e = r.event.as_ref().unwrap();
         let exact = 2.0 * vy / 9.81;
-        // methods of order >= 2 are exact for constant acceleration
-        let tol = if method.order() >= 2 { 1e-12 } else { 0.02 };
+        // methods of order >= 2 are exact for constant acceleration; BDF starts with steps of
+        // order 1 (backward Euler), whose error is held to the tolerance (rtol 1e-6)
+        let tol = if method == Method::Bdf {
+            1e-6
+        } else if method.order() >= 2 {
+            1e-12
+        } else {
+            0.02
+        };
         assert!((e.t - exact).abs() < tol, "{method}: {} vs {exact}", e.t);
         assert!(e.last_step.t < e.t && e.t <= e.crossing_step.t);
         assert!(e.last_step.q[1] >= 0.0 && e.crossing_step.q[1] < 0.0);

@@ -20,11 +20,13 @@ use super::drive::{AfterFiring, Model, drive};
 use super::event::OdeEvent;
 use super::find::Fired;
 use super::scan::StepEvents;
-use super::stepping::{Adaptive, Fixed, Implicit, Stepping};
+use super::stepping::{Adaptive, Backward, Fixed, Implicit, Stepping};
 use crate::Real;
 use thiserror::Error;
 
-use crate::ode::{AdaptiveError, AdaptiveRk, IntegrateError, OdeSystem, Radau5, State, Stepper};
+use crate::ode::{
+    AdaptiveError, AdaptiveRk, Bdf, IntegrateError, OdeSystem, Radau5, State, Stepper,
+};
 
 /// A crossing of a non-terminal event.
 #[derive(Debug, Clone, PartialEq)]
@@ -77,6 +79,8 @@ pub enum Integrator<'r, S: ?Sized> {
     Adaptive(&'r mut AdaptiveRk),
     /// Adaptive steps of the implicit Radau IIA(5), for stiff systems.
     Implicit(&'r mut Radau5),
+    /// Adaptive steps of the variable-order BDF/NDF, for stiff systems.
+    Bdf(&'r mut Bdf),
     /// Fixed steps of `dt` from the start (and from every state change), the last one
     /// shortened to land on the end time.
     Fixed {
@@ -233,6 +237,14 @@ pub fn run_events<S: OdeSystem + ?Sized>(
         )?),
         Integrator::Implicit(radau) => Ok(run_with(
             &mut Implicit(radau),
+            sys,
+            state,
+            t_end,
+            events,
+            on_progress,
+        )?),
+        Integrator::Bdf(bdf) => Ok(run_with(
+            &mut Backward(bdf),
             sys,
             state,
             t_end,

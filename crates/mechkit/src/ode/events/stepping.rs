@@ -3,7 +3,9 @@
 
 use super::driver::RunError;
 use crate::Real;
-use crate::ode::{AdaptiveError, AdaptiveRk, OdeSystem, Radau5, State, StepPolynomial, Stepper};
+use crate::ode::{
+    AdaptiveError, AdaptiveRk, Bdf, OdeSystem, Radau5, State, StepPolynomial, Stepper,
+};
 
 /// How a run of an [`OdeSystem`] steps, and the interpolant of its last step.
 pub(super) trait Stepping<S: ?Sized> {
@@ -50,6 +52,29 @@ impl<S: OdeSystem + ?Sized> Stepping<S> for Adaptive<'_> {
 pub(super) struct Implicit<'r>(pub &'r mut Radau5);
 
 impl<S: OdeSystem + ?Sized> Stepping<S> for Implicit<'_> {
+    type Error = AdaptiveError;
+
+    fn step(&mut self, sys: &S, state: &mut State, t_bound: Real) -> Result<(), AdaptiveError> {
+        self.0.step(sys, state, t_bound).map(|_| ())
+    }
+
+    fn polynomial(&mut self, _: &S, _: &State, _: &State, out: &mut StepPolynomial) {
+        self.0.dense_polynomial_into(out);
+    }
+
+    fn restart(&mut self, _: &State) {
+        self.0.reset();
+    }
+
+    fn changed(&mut self, _: &State, h: Real) {
+        self.0.reset_to_step(h);
+    }
+}
+
+/// Adaptive steps of the variable-order BDF/NDF.
+pub(super) struct Backward<'r>(pub &'r mut Bdf);
+
+impl<S: OdeSystem + ?Sized> Stepping<S> for Backward<'_> {
     type Error = AdaptiveError;
 
     fn step(&mut self, sys: &S, state: &mut State, t_bound: Real) -> Result<(), AdaptiveError> {
