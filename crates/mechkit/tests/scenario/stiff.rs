@@ -231,14 +231,30 @@ x_end = "final(x)"
     assert!(explicit.warnings.iter().any(|w| w.contains("stiff from")));
 }
 
-/// The same with `method = "bdf"` (variable-order NDF): SciPy's BDF takes about 1,000 steps
-/// here at 1e-6; the state at t = 2000 s is within 1e-4 of the reference.
+/// The same with `method = "bdf"` (variable-order NDF, as SciPy's BDF, which takes 847 steps
+/// and 2,620 evaluations here and ends 1.1e-4 from the reference): at rtol = atol = 1e-6 the
+/// state at t = 2000 s is within 2e-4 of the reference, at 1e-7 within 3e-5.
 #[test]
 fn van_der_pol_at_mu_1000_with_bdf() {
-    let s = run(&VAN_DER_POL.replace("method = \"radau5\"", "method = \"bdf\""));
+    let bdf = VAN_DER_POL.replace("method = \"radau5\"", "method = \"bdf\"");
+    let s = run(&bdf);
     let x = s.observables["x_end"];
-    assert!((x - 1.706_167_7).abs() < 1e-4, "{x}");
-    assert!(s.steps < 1500, "{} steps", s.steps);
+    eprintln!(
+        "bdf at 1e-6: x = {x}, {} steps, {} evaluations",
+        s.steps, s.evaluations
+    );
+    assert!((x - 1.706_167_7).abs() < 2e-4, "{x}");
+    assert!(s.steps < 900, "{} steps", s.steps);
+    assert!(s.evaluations < 3000, "{} evaluations", s.evaluations);
+    let tight = run(&bdf
+        .replace("rtol = 1e-6", "rtol = 1e-7")
+        .replace("atol = 1e-6", "atol = 1e-7"));
+    let x = tight.observables["x_end"];
+    eprintln!(
+        "bdf at 1e-7: x = {x}, {} steps, {} evaluations",
+        tight.steps, tight.evaluations
+    );
+    assert!((x - 1.706_167_7).abs() < 3e-5, "{x}");
 }
 
 /// The stiff damped spring with `method = "bdf"` against its closed form.

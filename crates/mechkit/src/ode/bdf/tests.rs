@@ -170,10 +170,10 @@ fn each_order_converges_at_its_order() {
     let t_end: Real = 4.0;
     let exact = |t: Real| t.sin().exp();
     for k in 1..=MAX_ORDER {
-        let errors: Vec<Real> = [40, 80, 160]
+        let errors: Vec<Real> = [40.0, 80.0, 160.0]
             .iter()
             .map(|&steps| {
-                let h = t_end / steps as Real;
+                let h: Real = t_end / steps;
                 let mut b = Bdf::with_max_order(config(1e-12, 1e-12), k);
                 b.resize(1);
                 b.held = true;
