@@ -308,3 +308,44 @@ fn bdf_takes_no_fixed_step() {
         .to_string();
     assert!(e.contains("chooses its own steps"), "{e}");
 }
+
+/// The bouncing ball of `examples/bouncing_ball.toml` with `method = "bdf"`: every bounce and
+/// apex at the times of a DOP853 run, the energy left after the bounces the same, and the
+/// ledger's work-energy residual small (the work is integrated with the motion).
+#[test]
+fn events_and_the_ledger_of_a_bdf_run_match_an_explicit_one() {
+    let text = include_str!("../../../../examples/bouncing_ball.toml");
+    let reference = run(&text.replace("method = \"dopri5\"", "method = \"dop853\""));
+    let bdf = run(&text.replace("method = \"dopri5\"", "method = \"bdf\""));
+    assert_eq!(bdf.method, "bdf");
+    assert_eq!(bdf.events.len(), reference.events.len());
+    assert!(bdf.events.len() > 10, "{}", bdf.events.len());
+    for (a, b) in bdf.events.iter().zip(&reference.events) {
+        assert_eq!((&a.name, a.occurrence), (&b.name, b.occurrence));
+        assert!(
+            (a.t - b.t).abs() < 1e-7,
+            "{} {}: {} vs {}",
+            a.name,
+            a.occurrence,
+            a.t,
+            b.t
+        );
+    }
+    let (e, e_ref) = (
+        bdf.observables["energy_remaining"],
+        reference.observables["energy_remaining"],
+    );
+    assert!((e - e_ref).abs() < 1e-7, "{e} vs {e_ref}");
+    assert!(
+        bdf.work_energy_residual.abs() < 1e-8,
+        "{}",
+        bdf.work_energy_residual
+    );
+    eprintln!(
+        "bouncing ball, bdf: {} steps, {} evaluations, {} events, residual {:e}",
+        bdf.steps,
+        bdf.evaluations,
+        bdf.events.len(),
+        bdf.work_energy_residual
+    );
+}

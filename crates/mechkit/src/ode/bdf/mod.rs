@@ -412,21 +412,17 @@ impl Bdf {
     fn choose_order(&mut self, err_norm: Real, iterations: usize) {
         let n = self.f.len();
         let k = self.order;
-        let row = |d: &[Real], j: usize| d[j * n..(j + 1) * n].to_vec();
-        let estimate = |this: &Self, order: usize, diff: usize| {
-            let v: Vec<Real> = row(&this.d, diff)
-                .iter()
-                .map(|x| this.error_const[order] * x)
-                .collect();
-            this.norm(&v)
+        let estimate = |order: usize, row: usize| {
+            let c = self.error_const[order];
+            self.norm_by(n, |i| c * self.d[row * n + i])
         };
         let err_m = if k > 1 {
-            estimate(self, k - 1, k)
+            estimate(k - 1, k)
         } else {
             Real::INFINITY
         };
         let err_p = if k < self.max_order {
-            estimate(self, k + 1, k + 2)
+            estimate(k + 1, k + 2)
         } else {
             Real::INFINITY
         };

@@ -102,16 +102,22 @@ impl Bdf {
 
     /// The RMS norm of `v` in the weights `scale`, over the controlled components.
     pub(super) fn norm(&self, v: &[Real]) -> Real {
-        let n = self.controlled(v.len());
+        self.norm_by(v.len(), |i| v[i])
+    }
+
+    /// The RMS norm of the vector `v(0), …, v(n − 1)` in the weights `scale`.
+    pub(super) fn norm_by(&self, n: usize, v: impl Fn(usize) -> Real) -> Real {
+        let n = self.controlled(n);
         if n == 0 {
             return 0.0;
         }
         let sum: Real = (0..n)
             .map(|i| {
+                let vi = v(i);
                 if self.scale[i] > 0.0 {
-                    let r = v[i] / self.scale[i];
+                    let r = vi / self.scale[i];
                     r * r
-                } else if v[i] == 0.0 {
+                } else if vi == 0.0 {
                     0.0
                 } else {
                     Real::INFINITY
