@@ -10,7 +10,9 @@
 //! sums. Conversion to an [`Expr`] prints it readably: `-2*pi*F0*cos(2*pi*x/b)/b`.
 
 pub(crate) mod build;
+mod closed_form;
 mod convert;
+mod cubic;
 mod diff;
 mod eval;
 mod expand;
@@ -18,10 +20,14 @@ mod identities;
 mod integrate;
 mod order;
 pub mod poly;
+mod quartic;
 mod rational_integral;
+mod real_roots;
 mod solve;
+mod solve_higher;
 
 pub use integrate::Antiderivative;
+pub use real_roots::{MAX_NUMERIC_DEGREE, RealRoots, real_roots};
 pub use solve::{Solutions, Solved, solve_linear};
 
 use crate::ast::{BinOp, Expr, Func};

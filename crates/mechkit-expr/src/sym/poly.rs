@@ -171,6 +171,59 @@ impl NumPoly {
         roots
     }
 
+    /// Whether every coefficient is an exact rational.
+    pub fn is_exact(&self) -> bool {
+        self.0.iter().all(|c| c.is_exact())
+    }
+
+    /// The derivative.
+    #[must_use]
+    pub fn derivative(&self) -> NumPoly {
+        NumPoly::new(
+            self.0
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(k, c)| c.times(Number::int(k as i64)))
+                .collect(),
+        )
+    }
+
+    /// The same polynomial divided by its leading coefficient (zero stays zero).
+    #[must_use]
+    pub fn monic(&self) -> NumPoly {
+        match self.0.last().and_then(|l| l.recip()) {
+            Some(r) => NumPoly::new(self.0.iter().map(|c| c.times(r)).collect()),
+            None => self.clone(),
+        }
+    }
+
+    /// The monic greatest common divisor (Euclid's algorithm); `None` when the arithmetic left
+    /// the exact rationals (a coefficient overflowed into a float), where a remainder that
+    /// should be zero may not be.
+    pub fn gcd(&self, o: &NumPoly) -> Option<NumPoly> {
+        let (mut a, mut b) = (self.monic(), o.monic());
+        while !b.is_zero() {
+            let (_, r) = a.div_rem(&b)?;
+            (a, b) = (b, r.monic());
+            if !b.is_exact() {
+                return None;
+            }
+        }
+        a.is_exact().then(|| a.monic())
+    }
+
+    /// The square-free part: the product of the distinct irreducible factors, so each root
+    /// once (`p / gcd(p, p')`, Yun). `None` as for [`NumPoly::gcd`].
+    pub fn square_free(&self) -> Option<NumPoly> {
+        if !self.is_exact() {
+            return None;
+        }
+        let g = self.gcd(&self.derivative())?;
+        let (q, r) = self.div_rem(&g)?;
+        (r.is_zero() && q.is_exact()).then_some(q)
+    }
+
     /// As a symbolic polynomial in `x`.
     pub fn to_sym(&self, x: &str) -> Sym {
         Sym::sum(

@@ -1,9 +1,9 @@
-//! Solving equations symbolically: one polynomial equation of degree one or two for one
-//! unknown (all roots), and small linear systems (Cramer's rule, so the answers come out as one
+//! Solving equations symbolically: one polynomial equation for one unknown (all its real roots:
+//! by formula up to degree two, in closed form up to degree four, see [`super::closed_form`]), and small linear systems (Cramer's rule, so the answers come out as one
 //! fraction: statics problems such as the tensions holding a chandelier).
 
 use super::Sym;
-use super::poly::coefficients;
+use super::poly::{NumPoly, coefficients};
 
 /// The solutions of `f = 0` for one unknown.
 #[derive(Debug, Clone, PartialEq)]
@@ -26,8 +26,11 @@ pub struct Solved {
 }
 
 impl Sym {
-    /// Solves `self = 0` for `x` when it is a polynomial of degree at most two in `x`; `None`
-    /// otherwise (solve numerically then).
+    /// Solves `self = 0` for `x` when it is a polynomial in `x`: of degree at most two by
+    /// formula; of degree three or four, or one whose rational roots leave a factor of degree
+    /// four at most, in closed form when its coefficients are numbers; with symbolic
+    /// coefficients when the polynomial is a power `a x^n + d` (n = 3, 4) or has the factor
+    /// `x^k`. `None` otherwise (solve numerically then).
     ///
     /// ```
     /// use mechkit_expr::Sym;
@@ -36,7 +39,29 @@ impl Sym {
     /// assert_eq!(s.solutions, Solutions::Roots(vec![Sym::int(2), Sym::int(3)]));
     /// ```
     pub fn solve(&self, x: &str) -> Option<Solved> {
-        let c = coefficients(self, x)?;
+        solve_coefficients(&coefficients(self, x)?)
+    }
+}
+
+/// Solves the polynomial with coefficients `c` (lowest degree first): up to degree two by
+/// formula, numeric ones of higher degree by [`NumPoly::closed_form_roots`], symbolic ones of
+/// higher degree by [`super::solve_higher::solve_higher`].
+pub(super) fn solve_coefficients(c: &[Sym]) -> Option<Solved> {
+    if c.len() > 3 {
+        if let Some(p) = NumPoly::from_syms(c) {
+            let roots = p.closed_form_roots()?;
+            return Some(Solved {
+                solutions: if roots.is_empty() {
+                    Solutions::NoRealRoot
+                } else {
+                    Solutions::Roots(roots)
+                },
+                assumptions: Vec::new(),
+            });
+        }
+        return super::solve_higher::solve_higher(c);
+    }
+    {
         let mut assumptions = Vec::new();
         // `-g/2 ≠ 0` says no more than `g ≠ 0`
         let nonzero = |s: &Sym, assumptions: &mut Vec<String>| {
@@ -203,43 +228,5 @@ fn det(m: &[Vec<Sym>]) -> Sym {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn linear_and_quadratic() {
-        let s = Sym::parse("m*a - F").unwrap().solve("a").unwrap();
-        assert_eq!(
-            s.solutions,
-            Solutions::Roots(vec![Sym::parse("F/m").unwrap()])
-        );
-        assert_eq!(s.assumptions, vec!["m ≠ 0"]);
-        let s = Sym::parse("x^2 + 1").unwrap().solve("x").unwrap();
-        assert_eq!(s.solutions, Solutions::NoRealRoot);
-        let s = Sym::parse("h - g*t^2/2").unwrap().solve("t").unwrap();
-        let Solutions::Roots(r) = s.solutions else {
-            panic!()
-        };
-        assert_eq!(r.len(), 2);
-        assert!(Sym::parse("sin(x) - 1/2").unwrap().solve("x").is_none());
-    }
-
-    #[test]
-    fn a_block_on_a_slope() {
-        // N - m g cos(th) = 0, m g sin(th) - f = 0 for N, f
-        let eqs = [
-            Sym::parse("N - m*g*cos(th)").unwrap(),
-            Sym::parse("m*g*sin(th) - f").unwrap(),
-        ];
-        let s = solve_linear(&eqs, &["N", "f"]).unwrap();
-        assert_eq!(s[0].to_string(), "g*m*cos(th)");
-        assert_eq!(s[1].to_string(), "g*m*sin(th)");
-        assert!(
-            solve_linear(
-                &[Sym::parse("x*y - 1").unwrap(), Sym::parse("x").unwrap()],
-                &["x", "y"]
-            )
-            .is_err()
-        );
-    }
-}
+#[path = "solve_tests.rs"]
+mod tests;
