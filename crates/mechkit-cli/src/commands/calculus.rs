@@ -300,6 +300,15 @@ fn equation_text(s: &Solution) -> String {
         Some(Solutions::Every) => {
             wr!(out, "every {x} solves it ({} = 0)\n", s.equation);
         }
+        None if s.root_bound.is_some() => {
+            let (a, b) = s.interval.unwrap_or_default();
+            wr!(
+                out,
+                "real roots of {} = 0 for {x} (all of them: every real root lies in [{a}, {b}], \
+                 Cauchy's bound):\n",
+                s.equation
+            );
+        }
         _ => {
             let (a, b) = s.interval.unwrap_or_default();
             if s.numeric.is_empty() {

@@ -3,7 +3,9 @@
 //! (Cramer's rule), with values for the other names evaluated into numbers.
 
 use mechkit_expr::Sym;
-use mechkit_expr::sym::{Solutions, solve_linear};
+use mechkit_expr::Number;
+use mechkit_expr::sym::poly::{NumPoly, coefficients};
+use mechkit_expr::sym::{Solutions, real_roots, solve_linear};
 
 use super::equation::{check_unknown, equation};
 use super::{CalculusError, Params, lookup};
@@ -13,7 +15,8 @@ use crate::roots::find_all;
 /// The answer to `lhs = rhs`.
 ///
 /// Serialized as `{equation: "lhs - rhs = 0", unknown, symbolic: [roots] | null,
-/// no_real_root, every_value, assumptions, numeric}`.
+/// no_real_root, every_value, assumptions, numeric, interval: [a, b] | null,
+/// root_bound: B | null}`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Solution {
     /// `lhs - rhs`, canonical.
@@ -27,8 +30,12 @@ pub struct Solution {
     /// Numeric values of the symbolic solutions (when every name has a value), or the roots
     /// found on the interval.
     pub numeric: Vec<Real>,
-    /// The interval searched (or that the numeric values were kept to), if one was given.
+    /// The interval searched (or that the numeric values were kept to): the one given, or
+    /// `[-B, B]` for Cauchy's bound `B` when every real root of a polynomial was searched for.
     pub interval: Option<(Real, Real)>,
+    /// Cauchy's bound `B` on the roots when the interval searched was `[-B, B]` (a polynomial
+    /// solved numerically without an interval given).
+    pub root_bound: Option<Real>,
     /// The values given to the other names.
     pub parameters: Vec<(String, Real)>,
 }
@@ -53,7 +60,7 @@ impl Solution {
 impl serde::Serialize for Solution {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeStruct;
-        let mut st = s.serialize_struct("Solution", 7)?;
+        let mut st = s.serialize_struct("Solution", 9)?;
         st.serialize_field("equation", &format!("{} = 0", self.equation))?;
         st.serialize_field("unknown", &self.unknown)?;
         st.serialize_field(
@@ -72,13 +79,18 @@ impl serde::Serialize for Solution {
         )?;
         st.serialize_field("assumptions", &self.assumptions)?;
         st.serialize_field("numeric", &self.numeric)?;
+        st.serialize_field("interval", &self.interval.map(|(a, b)| [a, b]))?;
+        st.serialize_field("root_bound", &self.root_bound)?;
         st.end()
     }
 }
 
-/// Solves one equation for `x`: symbolically when it is linear or quadratic in `x`, otherwise
-/// (or additionally, with an interval) numerically on `interval` with `params` for the other
-/// names.
+/// Solves one equation for `x`: symbolically when it is linear or quadratic in `x` (or a
+/// polynomial that [`Sym::solve`] solves in closed form); a polynomial of degree three or more
+/// whose coefficients have values in `params` in closed form with those values, or else for
+/// every real root numerically inside Cauchy's bound ([`real_roots`]); any other equation
+/// numerically on `interval` with `params` for the other names. With `interval`, only the
+/// roots in it are kept.
 pub fn solve(
     text: &str,
     x: &str,
@@ -88,21 +100,49 @@ pub fn solve(
     let (eq, names) = equation(text)?;
     check_unknown(x, text, &names)?;
     let env = lookup(params);
-    let solved = eq.solve(x);
-    let (symbolic, assumptions) = match solved {
+    let (mut symbolic, assumptions) = match eq.solve(x) {
         Some(s) => (Some(s.solutions), s.assumptions),
         None => (None, Vec::new()),
     };
     let mut numeric = Vec::new();
+    let mut root_bound = None;
+    let mut searched = false;
+    let mut interval_used = interval;
+    let within = |v: &Real| interval.is_none_or(|(a, b)| (a.min(b)..=a.max(b)).contains(v));
+    if symbolic.is_none()
+        && let Some(poly) = polynomial(&eq, x, &env, text, interval.is_some())?
+    {
+        // a polynomial of degree three or more with values for its coefficients
+        if let Some(roots) = poly.closed_form_roots() {
+            symbolic = Some(if roots.is_empty() {
+                Solutions::NoRealRoot
+            } else {
+                Solutions::Roots(roots)
+            });
+        } else if let Some(found) =
+            real_roots(&poly.0.iter().map(|c| c.to_f64()).collect::<Vec<_>>())
+        {
+            numeric = found.roots;
+            searched = true;
+            if interval.is_none() {
+                interval_used = Some((-found.bound, found.bound));
+                root_bound = Some(found.bound);
+                if numeric.is_empty() {
+                    symbolic = Some(Solutions::NoRealRoot);
+                }
+            }
+            numeric.retain(within);
+        }
+    }
     if let Some(Solutions::Roots(roots)) = &symbolic {
         numeric = roots
             .iter()
             .filter_map(|r| r.eval(&env).ok())
             .filter(|v| v.is_finite())
             .collect();
-        if let Some((a, b)) = interval {
-            numeric.retain(|v| (a.min(b)..=a.max(b)).contains(v));
-        }
+        numeric.retain(within);
+    } else if searched {
+        // every real root of the polynomial, found above
     } else if let Some((a, b)) = interval {
         let f = |v: Real| {
             eq.eval(&|n| if n == x { Some(v) } else { env(n) })
@@ -131,9 +171,69 @@ pub fn solve(
         symbolic,
         assumptions,
         numeric,
-        interval,
+        interval: interval_used,
+        root_bound,
         parameters: params.to_vec(),
     })
+}
+
+/// `eq` as a polynomial in `x` with numeric coefficients, the values given to the names
+/// substituted (exact where they are short decimals); `None` when it is not a polynomial
+/// (or too large a degree). An error when it is one of degree three or more whose
+/// coefficients still need values and no interval was given: the message names them.
+fn polynomial(
+    eq: &Sym,
+    x: &str,
+    env: &dyn Fn(&str) -> Option<Real>,
+    text: &str,
+    has_interval: bool,
+) -> Result<Option<NumPoly>, CalculusError> {
+    let Some(c) = coefficients(eq, x) else {
+        return Ok(None);
+    };
+    let mut missing: Vec<String> = c
+        .iter()
+        .flat_map(Sym::names)
+        .filter(|n| env(n).is_none())
+        .collect();
+    missing.dedup();
+    if !missing.is_empty() {
+        if has_interval {
+            return Ok(None);
+        }
+        missing.sort();
+        missing.dedup();
+        let degree = c.len() - 1;
+        return Err(CalculusError::Invalid(format!(
+            "`{text}` is a polynomial of degree {degree} in `{x}` with no closed form for \
+             symbolic coefficients: give values for {} with --set (e.g. --set {}=1)",
+            missing
+                .iter()
+                .map(|n| format!("`{n}`"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            missing[0]
+        )));
+    }
+    let numbers = c
+        .iter()
+        .map(|ci| {
+            let mut v = ci.clone();
+            for n in ci.names() {
+                let value = env(&n).expect("checked above");
+                v = v.substitute(&n, &Sym::Num(Number::from_f64(value)));
+            }
+            match v.as_num() {
+                Some(n) => Some(n),
+                None => v
+                    .eval(&|_| None)
+                    .ok()
+                    .filter(|f| f.is_finite())
+                    .map(Number::Float),
+            }
+        })
+        .collect::<Option<Vec<_>>>();
+    Ok(numbers.map(NumPoly::new).filter(|p| p.degree().is_some()))
 }
 
 /// Solves several linear equations (`;`-separated) for several unknowns, symbolically.
@@ -272,42 +372,5 @@ pub fn solve_equations(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn equations() {
-        let s = solve("x^2 - 5*x + 6 = 0", "x", None, &[]).unwrap();
-        assert_eq!(s.numeric, vec![2.0, 3.0]);
-        let s = solve("cos(x) = x", "x", Some((0.0, 1.0)), &[]).unwrap();
-        assert!((s.numeric[0] - 0.739_085_133_215_160_6).abs() < 1e-12);
-        assert!(solve("cos(x) = x", "x", None, &[]).is_err());
-        let sys = solve_system("N - m*g*cos(t) = 0; f = m*g*sin(t)", &["N", "f"]).unwrap();
-        assert_eq!(sys[1].1.to_string(), "g*m*sin(t)");
-    }
-
-    /// Issue 22: `--set` gives values to a linear system's other names.
-    #[test]
-    fn a_system_uses_the_values_given() {
-        let p = [("a".to_string(), 2.0)];
-        let Solved::System(s) =
-            solve_equations("a*x + y = 3; x - y = 1", &["x", "y"], None, &p).unwrap()
-        else {
-            panic!("a system")
-        };
-        let n = s.numeric.as_ref().unwrap();
-        assert!((n[0].1 - 4.0 / 3.0).abs() < 1e-15 && (n[1].1 - 1.0 / 3.0).abs() < 1e-15);
-        assert!(!s.singular_with_values() && s.missing().is_empty());
-        // singular for a = -1
-        let p = [("a".to_string(), -1.0)];
-        let s = solve_equations("a*x + y = 3; x - y = 1", &["x", "y"], None, &p).unwrap();
-        assert!(s.failed());
-        // no values: the symbolic solution alone
-        let Solved::System(s) =
-            solve_equations("a*x + y = 3; x - y = 1", &["x", "y"], None, &[]).unwrap()
-        else {
-            panic!("a system")
-        };
-        assert!(s.numeric.is_none() && s.missing() == ["a"]);
-    }
-}
+#[path = "solve_tests.rs"]
+mod tests;
