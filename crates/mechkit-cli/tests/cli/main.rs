@@ -55,6 +55,7 @@ mod issue_026_answers;
 mod issue_026_integrity;
 mod issue_026_integrity_signals;
 mod issue_026_messages;
+mod issue_027_solve;
 mod limits;
 mod mass;
 mod md;

@@ -57,7 +57,7 @@ fn biquadratic(p: Number, r: Number) -> Vec<Sym> {
             continue;
         };
         let tiny = 1e-14 * (p.to_f64().abs() + r.to_f64().abs().sqrt());
-        if v.abs() <= tiny && !y.as_num().is_some_and(|n| !n.is_zero()) {
+        if v.abs() <= tiny && y.as_num().is_none_or(Number::is_zero) {
             out.push(Sym::zero());
         } else if v > 0.0 {
             let root = Sym::sqrt(y);

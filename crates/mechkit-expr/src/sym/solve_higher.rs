@@ -96,7 +96,7 @@ fn checks(c: &[Sym], root: &Sym) -> bool {
             value = value * x + v;
             scale = scale * x.abs() + v.abs();
         }
-        if !(value.abs() <= 1e-9 * scale) {
+        if value.is_nan() || value.abs() > 1e-9 * scale {
             return false;
         }
         checked = true;

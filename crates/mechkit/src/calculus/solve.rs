@@ -2,8 +2,8 @@
 //! it, else numerically on an interval), or several linear equations for several unknowns
 //! (Cramer's rule), with values for the other names evaluated into numbers.
 
-use mechkit_expr::Sym;
 use mechkit_expr::Number;
+use mechkit_expr::Sym;
 use mechkit_expr::sym::poly::{NumPoly, coefficients};
 use mechkit_expr::sym::{Solutions, real_roots, solve_linear};
 

@@ -62,7 +62,10 @@ fn cubics_quartics_and_higher_degrees_without_an_interval() {
     assert_eq!(s.numeric, vec![1.0, 2.0, 3.0]);
     // without values: the message names them
     let e = solve("a*x^3 - 6*x^2 + 11*x - 6 = 0", "x", None, &[]).unwrap_err();
-    assert!(e.to_string().contains("give values for `a` with --set"), "{e}");
+    assert!(
+        e.to_string().contains("give values for `a` with --set"),
+        "{e}"
+    );
     // degree five: every real root numerically, inside Cauchy's bound 1 + max|a_k/a_n| = 2
     let s = solve("x^5 = x + 1", "x", None, &[]).unwrap();
     assert!(s.symbolic.is_none());
