@@ -20,8 +20,9 @@ pub(super) fn numeric_value(s: &Sym) -> Option<f64> {
 }
 
 /// The distinct real roots of `a u² + b u + c`, whose coefficients are expressions without
-/// names (`a ≠ 0`); a discriminant within rounding of zero gives one root.
-pub(super) fn real_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Vec<Sym> {
+/// names (`a ≠ 0`); a discriminant within rounding of zero gives one root. `None` when a value
+/// is not finite (overflow), where no root can be decided.
+pub(super) fn real_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Option<Vec<Sym>> {
     let b2 = Sym::pow(b.clone(), Sym::int(2));
     let four_ac = Sym::product(vec![Sym::int(4), a.clone(), c.clone()]);
     let disc = Sym::difference(b2.clone(), four_ac.clone());
@@ -29,7 +30,7 @@ pub(super) fn real_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Vec<Sym> {
         numeric_value(&disc),
         numeric_value(&b2).zip(numeric_value(&four_ac)),
     ) else {
-        return Vec::new();
+        return None;
     };
     let scale = scale.0.abs() + scale.1.abs();
     let two_a = Sym::product(vec![Sym::int(2), a.clone()]);
@@ -38,12 +39,12 @@ pub(super) fn real_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Vec<Sym> {
         _ => d.abs() <= 1e-12 * scale,
     };
     if zero {
-        return vec![Sym::negate(Sym::quotient(b.clone(), two_a))];
+        return Some(vec![Sym::negate(Sym::quotient(b.clone(), two_a))]);
     }
     if d < 0.0 {
-        return Vec::new();
+        return Some(Vec::new());
     }
-    [-1, 1]
+    let roots = [-1, 1]
         .into_iter()
         .map(|sign| {
             Sym::quotient(
@@ -54,7 +55,8 @@ pub(super) fn real_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Vec<Sym> {
                 two_a.clone(),
             )
         })
-        .collect()
+        .collect();
+    Some(roots)
 }
 
 impl NumPoly {
@@ -70,8 +72,11 @@ impl NumPoly {
     /// assert_eq!(p.closed_form_roots().unwrap(), vec![Sym::int(1), Sym::int(2), Sym::int(3)]);
     /// ```
     pub fn closed_form_roots(&self) -> Option<Vec<Sym>> {
-        if self.degree()? == 0 {
-            return Some(Vec::new());
+        match self.degree()? {
+            0 => return Some(Vec::new()),
+            // the rational root search and the gcd grow quickly with the degree
+            d if d > super::real_roots::MAX_NUMERIC_DEGREE => return None,
+            _ => {}
         }
         let mut rest = self.square_free().unwrap_or_else(|| self.clone());
         let mut roots = Vec::new();
@@ -94,7 +99,7 @@ impl NumPoly {
         roots.extend(match c.len() {
             0 | 1 => Vec::new(),
             2 => vec![Sym::Num(c[0].checked_div(c[1])?.negated())],
-            3 => real_quadratic(&Sym::Num(c[2]), &Sym::Num(c[1]), &Sym::Num(c[0])),
+            3 => real_quadratic(&Sym::Num(c[2]), &Sym::Num(c[1]), &Sym::Num(c[0]))?,
             4 => cubic_roots(c[3], c[2], c[1], c[0]),
             5 => quartic_roots(c[4], c[3], c[2], c[1], c[0])?,
             _ => return None,

@@ -38,7 +38,7 @@ pub(super) fn quartic_roots(
     let shift = Sym::Num(div(b, n(-4)));
     let scale = 1.0 + p.to_f64().abs() + r.to_f64().abs().sqrt();
     let u: Vec<Sym> = if negligible(q, scale.powf(1.5)) {
-        biquadratic(p, r)
+        biquadratic(p, r)?
     } else {
         ferrari(p, q, r)?
     };
@@ -49,13 +49,11 @@ pub(super) fn quartic_roots(
     )
 }
 
-/// The real roots of `u^4 + p u^2 + r`.
-fn biquadratic(p: Number, r: Number) -> Vec<Sym> {
+/// The real roots of `u^4 + p u^2 + r` (`None` when a value overflows).
+fn biquadratic(p: Number, r: Number) -> Option<Vec<Sym>> {
     let mut out = Vec::new();
-    for y in real_quadratic(&Sym::one(), &Sym::Num(p), &Sym::Num(r)) {
-        let Some(v) = numeric_value(&y) else {
-            continue;
-        };
+    for y in real_quadratic(&Sym::one(), &Sym::Num(p), &Sym::Num(r))? {
+        let v = numeric_value(&y)?;
         let tiny = 1e-14 * (p.to_f64().abs() + r.to_f64().abs().sqrt());
         if v.abs() <= tiny && y.as_num().is_none_or(Number::is_zero) {
             out.push(Sym::zero());
@@ -65,7 +63,7 @@ fn biquadratic(p: Number, r: Number) -> Vec<Sym> {
             out.push(root);
         }
     }
-    out
+    Some(out)
 }
 
 /// The real roots of `u^4 + p u^2 + q u + r` (`q ≠ 0`) through the resolvent cubic.
@@ -92,11 +90,11 @@ fn ferrari(p: Number, q: Number, r: Number) -> Option<Vec<Sym>> {
         &Sym::one(),
         &s,
         &Sym::difference(half_p_m.clone(), q_2s.clone()),
-    );
+    )?;
     out.extend(real_quadratic(
         &Sym::one(),
         &Sym::negate(s),
         &Sym::sum(vec![half_p_m, q_2s]),
-    ));
+    )?);
     Some(out)
 }

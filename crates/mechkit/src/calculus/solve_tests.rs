@@ -83,3 +83,17 @@ fn cubics_quartics_and_higher_degrees_without_an_interval() {
     // not a polynomial: still an interval needed
     assert!(solve("x^3 = cos(x)", "x", None, &[]).is_err());
 }
+
+/// Coefficients whose discriminants overflow: no closed form and no bound, so an error that
+/// asks for an interval rather than a root list missing the large roots.
+#[test]
+fn overflowing_coefficients_are_not_a_partial_answer() {
+    assert!(solve("x^3 - 1e308*x = 0", "x", None, &[]).is_err());
+    // with an interval, the roots in it
+    let s = solve("x^3 - 1e308*x = 0", "x", Some((-1.0, 1.0)), &[]).unwrap();
+    assert!(
+        s.numeric.len() == 1 && s.numeric[0].abs() < 1e-12,
+        "{:?}",
+        s.numeric
+    );
+}
