@@ -140,7 +140,7 @@ impl NumPoly {
             let g = gcd(l, d);
             (l / g).saturating_mul(d)
         });
-        let ints: Vec<i128> = self
+        let mut ints: Vec<i128> = self
             .0
             .iter()
             .map(|c| {
@@ -148,6 +148,11 @@ impl NumPoly {
                 n.saturating_mul(lcm / d)
             })
             .collect();
+        // the primitive part: 735134400*x^7 + 735134400 has the candidates of x^7 + 1
+        let content = ints.iter().fold(0i128, |g, c| gcd(g, *c));
+        for c in &mut ints {
+            *c /= content;
+        }
         let mut roots = Vec::new();
         // a zero root first
         let low = ints.iter().position(|c| *c != 0).unwrap_or(0);
@@ -158,8 +163,15 @@ impl NumPoly {
         if a0.unsigned_abs() > 1_000_000_000 || an.unsigned_abs() > 1_000_000_000 {
             return roots;
         }
-        for p in divisors(a0) {
-            for q in divisors(an) {
+        let (ps, qs) = (divisors(a0), divisors(an));
+        // each candidate costs an exact evaluation: past this many, leave the rest to the
+        // callers' other methods (as for the coefficients too large above)
+        if ps.len() * qs.len() > 20_000 {
+            return roots;
+        }
+        for p in ps {
+            for q in &qs {
+                let q = *q;
                 for sign in [1, -1] {
                     let r = Number::rational(sign * p, q);
                     if !roots.contains(&r) && self.eval(r).is_zero() {
