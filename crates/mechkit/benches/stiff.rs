@@ -12,7 +12,7 @@ use std::time::Instant;
 
 use mechkit::ode::testset::{Hires, Pleiades, Robertson, SpringChain, VanDerPol};
 use mechkit::ode::{
-    AdaptiveConfig, AdaptiveRk, AdaptiveStats, OdeSystem, Radau5, State, Tableau, Tolerance,
+    AdaptiveConfig, AdaptiveRk, AdaptiveStats, Bdf, OdeSystem, Radau5, State, Tableau, Tolerance,
 };
 
 struct Problem {
@@ -138,7 +138,7 @@ fn error(y: &[f64], reference: &[f64]) -> f64 {
 
 fn main() {
     let quick = std::env::args().any(|a| a == "--quick");
-    let methods: &[(&str, Solve)] = &[("radau5", radau5), ("dop853", dop853)];
+    let methods: &[(&str, Solve)] = &[("radau5", radau5), ("bdf", bdf), ("dop853", dop853)];
     let mut references = Vec::new();
     println!("problem\tsolver\ttol\terror\tsteps\tevaluations\tjacobians\twall_s");
     for p in problems() {

@@ -362,7 +362,7 @@ impl<'r> Run<'r> {
 /// What the stiffness test of an explicit pair says, and what to do about it.
 fn stiffness_warning(method: crate::ode::Method, t: Real) -> String {
     format!(
-        "the problem is stiff from t = {} s: {method}'s steps were limited by stability, not accuracy, for 15 steps in a row (Hairer's test); method = \"radau5\" takes far fewer steps",
+        "the problem is stiff from t = {} s: {method}'s steps were limited by stability, not accuracy, for 15 steps in a row (Hairer's test); method = \"radau5\" or \"bdf\" takes far fewer steps",
         crate::error::short(t)
     )
 }
