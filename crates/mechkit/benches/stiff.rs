@@ -114,6 +114,21 @@ fn radau5(
     (s.y, r.stats(), r.implicit_stats().jacobians)
 }
 
+fn bdf(
+    sys: &dyn OdeSystem,
+    y0: &[f64],
+    t_end: f64,
+    rtol: f64,
+    atol: f64,
+) -> (Vec<f64>, AdaptiveStats, u64) {
+    let mut r = Bdf::new(config(rtol, atol));
+    let mut s = State::new(0.0, y0.to_vec());
+    while s.t < t_end {
+        r.step(sys, &mut s, t_end).expect("bdf step");
+    }
+    (s.y, r.stats(), r.implicit_stats().jacobians)
+}
+
 fn dop853(
     sys: &dyn OdeSystem,
     y0: &[f64],

@@ -40,6 +40,8 @@ pub enum Method {
     Radau5,
     /// Variable-order (1–5) BDF/NDF, implicit, for stiff systems ([`super::Bdf`]).
     Bdf,
+    /// DOP853 until Hairer's stiffness test fires, then Radau IIA(5) (as LSODA switches).
+    Auto,
 }
 
 /// A method described: what `mechkit list-integrators` lists.
@@ -73,7 +75,7 @@ pub enum MethodKind {
 
 impl Method {
     /// Every method available.
-    pub const ALL: [Method; 14] = [
+    pub const ALL: [Method; 15] = [
         Method::Euler,
         Method::EulerCromer,
         Method::VelocityVerlet,
@@ -88,6 +90,7 @@ impl Method {
         Method::Yoshida6,
         Method::Radau5,
         Method::Bdf,
+        Method::Auto,
     ];
 
     /// The name used in scenario files.
@@ -107,6 +110,7 @@ impl Method {
             Method::Yoshida6 => "yoshida6",
             Method::Radau5 => "radau5",
             Method::Bdf => "bdf",
+            Method::Auto => "auto",
         }
     }
 
@@ -119,7 +123,7 @@ impl Method {
             Method::Rk4 | Method::Yoshida4 | Method::ForestRuth | Method::Pefrl => 4,
             Method::Dopri5 | Method::Radau5 | Method::Bdf => 5,
             Method::Yoshida6 => 6,
-            Method::Dop853 => 8,
+            Method::Dop853 | Method::Auto => 8,
         }
     }
 
@@ -135,7 +139,7 @@ impl Method {
             Method::Yoshida4 | Method::ForestRuth | Method::Pefrl | Method::Yoshida6 => {
                 MethodKind::Symplectic
             }
-            Method::Radau5 | Method::Bdf => MethodKind::Implicit,
+            Method::Radau5 | Method::Bdf | Method::Auto => MethodKind::Implicit,
         }
     }
 
@@ -243,6 +247,9 @@ impl Method {
             Method::Bdf => {
                 "BDF/NDF of variable order 1-5 (order 5 listed), implicit, adaptive, for stiff systems (SciPy BDF, MATLAB ode15s)"
             }
+            Method::Auto => {
+                "DOP853, switching to Radau IIA 5 where the problem turns stiff (Hairer's test; like LSODA), adaptive"
+            }
         }
     }
 
@@ -266,6 +273,7 @@ impl Method {
             "yoshida6" => Method::Yoshida6,
             "radau5" | "radau" | "radau-iia" => Method::Radau5,
             "bdf" | "ndf" | "ode15s" => Method::Bdf,
+            "auto" | "lsoda" => Method::Auto,
             _ => return None,
         })
     }

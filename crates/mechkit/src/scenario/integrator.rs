@@ -125,12 +125,19 @@ pub(crate) fn read_integrator(
                 .error(
                     ErrorKind::Invalid,
                     format!(
-                        "`{}` is implicit and chooses its own steps by its error estimate: it takes no `dt`",
-                        method.name()
+                        "`{}` {} and chooses its own steps by its error estimate: it takes no `dt`",
+                        method.name(),
+                        if method == Method::Auto {
+                            "turns implicit where the problem is stiff"
+                        } else {
+                            "is implicit"
+                        }
                     ),
                     t.key_span("dt"),
                 )
-                .with_hint("remove `dt`; set rtol/atol for the accuracy, and h_max to bound the steps"));
+                .with_hint(
+                    "remove `dt`; set rtol/atol for the accuracy, and h_max to bound the steps",
+                ));
         }
         if let Some(key) = adaptive_key {
             return Err(t

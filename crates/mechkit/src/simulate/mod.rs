@@ -18,6 +18,7 @@ mod event;
 mod fused;
 mod halt;
 mod observe;
+mod pair;
 mod probe;
 mod prove;
 mod rearm;

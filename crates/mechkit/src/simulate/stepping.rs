@@ -3,11 +3,12 @@
 
 use std::cell::RefCell;
 
+use super::pair::Pair;
 use super::run::{DEFAULT_MAX_STEPS, Simulation};
 use crate::Real;
 use crate::ode::{
-    AdaptiveConfig, AdaptiveError, AdaptiveRk, AdaptiveStats, Bdf, Method, MethodKind, OdeSystem,
-    Radau5, State, StepPolynomial, Stepper, hermite,
+    AdaptiveConfig, AdaptiveError, AdaptiveStats, Method, OdeSystem, State, StepPolynomial,
+    Stepper, hermite,
 };
 use crate::particles::{Evaluation, ParticleSystem};
 
@@ -178,17 +179,7 @@ impl Engine {
                 dt: *dt,
             },
             Stepping::Adaptive { method, config } => {
-                let pair = if *method == Method::Bdf {
-                    Pair::Bdf(Bdf::new(config.clone()))
-                } else if method.kind() == MethodKind::Implicit {
-                    Pair::Radau5(Radau5::new(config.clone()))
-                } else {
-                    let tableau = method
-                        .tableau()
-                        .filter(|_| method.kind() == MethodKind::Adaptive)
-                        .ok_or(crate::ode::ConfigError::NotAdaptive(method.name()))?;
-                    Pair::Explicit(AdaptiveRk::new(tableau, config.clone())?)
-                };
+                let pair = Pair::new(*method, config)?;
                 Engine::Adaptive {
                     rk: Box::new(pair),
                     y: Vec::new(),
@@ -225,6 +216,17 @@ impl Engine {
         match self {
             Engine::Adaptive { rk, .. } => match &**rk {
                 Pair::Explicit(rk) => rk.stiff_from(),
+                _ => None,
+            },
+            Engine::Fixed { .. } => None,
+        }
+    }
+
+    /// Where `method = "auto"` switched to its implicit method.
+    pub fn switched_at(&self) -> Option<Real> {
+        match self {
+            Engine::Adaptive { rk, .. } => match &**rk {
+                Pair::Auto(auto) => auto.switched_at,
                 _ => None,
             },
             Engine::Fixed { .. } => None,
@@ -319,61 +321,6 @@ impl Engine {
                 }
             }
             Engine::Adaptive { rk, .. } => rk.dense_polynomial_into(ws, out),
-        }
-    }
-}
-
-/// The integrator of adaptive runs: an explicit Runge-Kutta pair, Radau IIA(5), or BDF.
-#[allow(clippy::large_enum_variant)] // held in a Box by `Engine`
-pub(crate) enum Pair {
-    Explicit(AdaptiveRk),
-    Radau5(Radau5),
-    Bdf(Bdf),
-}
-
-impl Pair {
-    fn reset(&mut self) {
-        match self {
-            Pair::Explicit(rk) => rk.reset(),
-            Pair::Radau5(r) => r.reset(),
-            Pair::Bdf(b) => b.reset(),
-        }
-    }
-
-    fn stats(&self) -> AdaptiveStats {
-        match self {
-            Pair::Explicit(rk) => rk.stats(),
-            Pair::Radau5(r) => r.stats(),
-            Pair::Bdf(b) => b.stats(),
-        }
-    }
-
-    fn step(
-        &mut self,
-        sys: &WorkSystem<'_>,
-        state: &mut State,
-        t_bound: Real,
-    ) -> Result<Real, AdaptiveError> {
-        match self {
-            Pair::Explicit(rk) => rk.step(sys, state, t_bound),
-            Pair::Radau5(r) => r.step(sys, state, t_bound),
-            Pair::Bdf(b) => b.step(sys, state, t_bound),
-        }
-    }
-
-    fn dense_into(&mut self, sys: &WorkSystem<'_>, t: Real, out: &mut [Real]) {
-        match self {
-            Pair::Explicit(rk) => rk.dense_into(sys, t, out),
-            Pair::Radau5(r) => r.dense_into(t, out),
-            Pair::Bdf(b) => b.dense_into(t, out),
-        }
-    }
-
-    fn dense_polynomial_into(&mut self, sys: &WorkSystem<'_>, out: &mut StepPolynomial) {
-        match self {
-            Pair::Explicit(rk) => rk.dense_polynomial_into(sys, out),
-            Pair::Radau5(r) => r.dense_polynomial_into(out),
-            Pair::Bdf(b) => b.dense_polynomial_into(out),
         }
     }
 }

@@ -330,6 +330,12 @@ impl<'r> Run<'r> {
         if let Some(t) = self.engine.stiff_from() {
             warnings.push(stiffness_warning(self.stepping.method(), t));
         }
+        if let Some(t) = self.engine.switched_at() {
+            warnings.push(format!(
+                "method = \"auto\" switched from dop853 to radau5 at t = {} s, where the problem turned stiff (Hairer's test)",
+                crate::error::short(t)
+            ));
+        }
         Ok(RunReport {
             method: self.stepping.method(),
             dt: self.stepping.dt().unwrap_or(if steps > 0 {
