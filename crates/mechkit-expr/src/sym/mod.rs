@@ -21,7 +21,6 @@ mod integrate;
 mod order;
 pub mod poly;
 mod quartic;
-mod rational_integral;
 mod real_roots;
 mod solve;
 mod solve_higher;

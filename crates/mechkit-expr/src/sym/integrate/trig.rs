@@ -1,0 +1,238 @@
+//! Powers and products of `sin`/`cos` (and `tan = sin/cos`), `sinh`/`cosh` (and `tanh`) of
+//! `x`: an odd power by the substitution `u = cos x` or `u = sin x` (`u = cosh x`,
+//! `u = sinh x`), even powers by the reduction formulas, `sin^m cos^n` with both even by
+//! `sin² = 1 - cos²` (or `1 = sin² + cos²` when both are negative). `1/cos` and `1/sin` are
+//! odd powers: `∫ dx/cos = ∫ du/(1 - u²)` with `u = sin x`.
+
+use super::{Ctx, Sym, factors, integrate, var};
+use crate::ast::Func;
+use crate::number::Number;
+
+/// The largest power reduced (each step of a reduction is one rule search).
+const MAX_POWER: i64 = 40;
+
+/// Exponents of (sin, cos) or (sinh, cosh) in a product of their powers.
+struct Monomial {
+    hyperbolic: bool,
+    m: i64,
+    n: i64,
+}
+
+fn monomial(f: &Sym, x: &str) -> Option<Monomial> {
+    let (mut circular, mut hyperbolic) = (false, false);
+    let (mut m, mut n) = (0i64, 0i64);
+    for fac in factors(f) {
+        let (call, k) = match &fac {
+            Sym::Pow(b, e) => (&**b, e.as_num()?.as_integer()?),
+            other => (other, 1),
+        };
+        let k = i64::try_from(k).ok().filter(|k| k.abs() <= MAX_POWER)?;
+        let Sym::Call(func, args) = call else {
+            return None;
+        };
+        if args.len() != 1 || !matches!(&args[0], Sym::Var(v) if v == x) {
+            return None;
+        }
+        match func {
+            Func::Sin => m += k,
+            Func::Cos => n += k,
+            Func::Tan => {
+                m += k;
+                n -= k;
+            }
+            Func::Sinh => m += k,
+            Func::Cosh => n += k,
+            Func::Tanh => {
+                m += k;
+                n -= k;
+            }
+            _ => return None,
+        }
+        match func {
+            Func::Sin | Func::Cos | Func::Tan => circular = true,
+            _ => hyperbolic = true,
+        }
+    }
+    if circular == hyperbolic || (m == 0 && n == 0) {
+        return None;
+    }
+    Some(Monomial { hyperbolic, m, n })
+}
+
+/// Powers and products of the circular or hyperbolic functions of `x`.
+pub(super) fn powers(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let mono = monomial(f, &x)?;
+    integrate_monomial(&mono, ctx)
+}
+
+fn call(f: Func, x: &str) -> Sym {
+    Sym::call(f, vec![var(x)])
+}
+
+fn power(f: Func, x: &str, k: i64) -> Sym {
+    Sym::pow(call(f, x), Sym::int(k))
+}
+
+fn integrate_monomial(mono: &Monomial, ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let x = x.as_str();
+    let Monomial { hyperbolic, m, n } = *mono;
+    let (fs, fc) = if hyperbolic {
+        (Func::Sinh, Func::Cosh)
+    } else {
+        (Func::Sin, Func::Cos)
+    };
+    // sign of the square of the "other" function: sin² = 1 - cos², sinh² = cosh² - 1,
+    // cos² = 1 - sin², cosh² = 1 + sinh²
+    let odd_sin = m % 2 != 0;
+    let odd_cos = n % 2 != 0;
+    if odd_sin || odd_cos {
+        // prefer a positive odd power (a polynomial in u)
+        let use_sin_power = odd_sin && (m > 0 || !odd_cos || n < 0);
+        let u = ctx.fresh();
+        let uv = var(&u);
+        let u2 = Sym::pow(uv.clone(), Sym::int(2));
+        let g = if use_sin_power {
+            // u = cos (cosh): sin^m cos^n dx = sin^(m-1) u^n sin dx, du = ∓ sin dx
+            let s2 = if hyperbolic {
+                Sym::difference(u2, Sym::one())
+            } else {
+                Sym::difference(Sym::one(), u2)
+            };
+            let sign = if hyperbolic { 1 } else { -1 };
+            Sym::product(vec![
+                Sym::int(sign),
+                Sym::pow(s2, Sym::int((m - 1) / 2)),
+                Sym::pow(uv, Sym::int(n)),
+            ])
+        } else {
+            // u = sin (sinh): du = cos dx
+            let c2 = if hyperbolic {
+                Sym::sum(vec![Sym::one(), u2])
+            } else {
+                Sym::difference(Sym::one(), u2)
+            };
+            Sym::product(vec![
+                Sym::pow(c2, Sym::int((n - 1) / 2)),
+                Sym::pow(uv, Sym::int(m)),
+            ])
+        };
+        let g = if (use_sin_power && m > 0) || (!use_sin_power && n > 0) {
+            g.expand()
+        } else {
+            g
+        };
+        let big_g = ctx.integrate_in(&g, &u)?;
+        let back = call(if use_sin_power { fc } else { fs }, x);
+        return Some(big_g.substitute(&u, &back));
+    }
+    // both even
+    if m != 0 && n != 0 {
+        if m > 0 || n > 0 {
+            // write the power of the function with the non-negative... (even) exponent
+            // through the other one
+            let u2 = if m > 0 {
+                power(fc, x, 2)
+            } else {
+                power(fs, x, 2)
+            };
+            let other_sq = match (m > 0, hyperbolic) {
+                (true, false) => Sym::difference(Sym::one(), u2),
+                (true, true) => Sym::difference(u2, Sym::one()),
+                (false, false) => Sym::difference(Sym::one(), u2),
+                (false, true) => Sym::sum(vec![Sym::one(), u2]),
+            };
+            let (k, keep) = if m > 0 {
+                (m, power(fc, x, n))
+            } else {
+                (n, power(fs, x, m))
+            };
+            let g = Sym::product(vec![Sym::pow(other_sq, Sym::int(k / 2)), keep]).expand();
+            return integrate(&g, ctx);
+        }
+        // both negative: 1 = sin² + cos² (1 = cosh² - sinh²)
+        let a = integrate_monomial(
+            &Monomial {
+                hyperbolic,
+                m: m + 2,
+                n,
+            },
+            ctx,
+        )?;
+        let b = integrate_monomial(
+            &Monomial {
+                hyperbolic,
+                m,
+                n: n + 2,
+            },
+            ctx,
+        )?;
+        return Some(if hyperbolic {
+            Sym::difference(b, a)
+        } else {
+            Sym::sum(vec![a, b])
+        });
+    }
+    if m == 0 {
+        reduce(fc, n, ctx)
+    } else {
+        reduce(fs, m, ctx)
+    }
+}
+
+/// `∫ f(x)^k dx` for an even `k` by the reduction formulas:
+/// `∫ cos^k = cos^(k-1) sin/k + (k-1)/k ∫ cos^(k-2)`,
+/// `∫ sin^k = -sin^(k-1) cos/k + (k-1)/k ∫ sin^(k-2)`,
+/// `∫ cos^-j = sin cos^(1-j)/(j-1) + (j-2)/(j-1) ∫ cos^(2-j)`,
+/// `∫ sin^-j = -cos sin^(1-j)/(j-1) + (j-2)/(j-1) ∫ sin^(2-j)`, and the hyperbolic ones.
+fn reduce(f: Func, k: i64, ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let x = x.as_str();
+    if k == 0 {
+        return Some(var(x));
+    }
+    if !ctx.spend(1) {
+        return None;
+    }
+    let partner = match f {
+        Func::Sin => Func::Cos,
+        Func::Cos => Func::Sin,
+        Func::Sinh => Func::Cosh,
+        _ => Func::Sinh,
+    };
+    // d/dx f = s_d * partner
+    let s_d = if f == Func::Sin || !matches!(f, Func::Cos) {
+        1
+    } else {
+        -1
+    };
+    // d/dx partner = s_p * f
+    let s_p = match f {
+        Func::Sin => -1, // (cos)' = -sin
+        _ => 1,          // (sin)' = cos, (sinh)' = cosh, (cosh)' = sinh
+    };
+    // (f²)' relation: partner² = c0 + c1 f²
+    let (c0, c1) = match f {
+        Func::Sin | Func::Cos => (1, -1),
+        Func::Sinh => (1, 1),
+        _ => (-1, 1),
+    };
+    let next = reduce(f, if k > 0 { k - 2 } else { k + 2 }, ctx)?;
+    // d/dx[partner f^(j)] = s_p f^(j+1) + j s_d partner² f^(j-1)
+    //                     = s_p f^(j+1) + j s_d (c0 f^(j-1) + c1 f^(j+1))
+    //                     = (s_p + j s_d c1) f^(j+1) + j s_d c0 f^(j-1)
+    // k > 0: j = k - 1 gives f^k and f^(k-2); k < 0: j = k + 1 gives f^(k+2) and f^k
+    let j = if k > 0 { k - 1 } else { k + 1 };
+    let (hi, lo) = (s_p + j * s_d * c1, j * s_d * c0);
+    let boundary = Sym::product(vec![call(partner, x), power(f, x, j)]);
+    let (target, other) = if k > 0 { (hi, lo) } else { (lo, hi) };
+    // ∫ f^k = (boundary - other ∫ f^(other power)) / target
+    if target == 0 {
+        return None;
+    }
+    Some(Sym::product(vec![
+        Sym::Num(Number::rational(1, i128::from(target))),
+        Sym::difference(boundary, Sym::product(vec![Sym::int(other), next])),
+    ]))
+}
