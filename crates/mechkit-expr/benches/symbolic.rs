@@ -52,6 +52,45 @@ fn course(c: &mut Criterion) {
     group.finish();
 }
 
+/// The integrals issue 27 named as missing (each alone), then the whole table of course
+/// integrals of `tests/data/integrals.tsv` (the time per integral is the total over its
+/// length).
+const ISSUE_27: [&str; 13] = [
+    "sqrt(1 - x^2)",
+    "sqrt(4 + x^2)",
+    "exp(-x)*sin(x)",
+    "exp(-a*x)*cos(w*x)",
+    "sin(x)^3",
+    "cos(x)^4",
+    "1/cos(x)",
+    "ln(x)^2",
+    "x*atan(x)",
+    "1/(1 + x^2)^2",
+    "1/(c^2 - x^2)",
+    "1/(1 + exp(x))",
+    "sqrt(x^2 - 1)",
+];
+
+fn table(c: &mut Criterion) {
+    let mut group = c.benchmark_group("symbolic: integral table");
+    for src in ISSUE_27 {
+        let f = Sym::parse(src).expect("parses");
+        assert!(f.integrate("x").is_some(), "{src} has a closed form");
+        group.bench_function(src, |b| b.iter(|| black_box(&f).integrate("x")));
+    }
+    let fs = parsed(
+        include_str!("../tests/data/integrals.tsv")
+            .lines()
+            .filter(|l| !l.starts_with('#'))
+            .filter_map(|l| l.split('\t').next()),
+    );
+    assert!(fs.len() >= 100, "the table parses: {}", fs.len());
+    group.bench_function(format!("integrate all {}", fs.len()), |b| {
+        b.iter(|| integrate_all(black_box(&fs)));
+    });
+    group.finish();
+}
+
 fn slow_corpus(c: &mut Criterion) {
     let fs = parsed(include_str!("data/slow_integrals.txt").lines());
     assert!(fs.len() >= 30, "the slow inputs parse: {} of 40", fs.len());
@@ -66,5 +105,5 @@ fn slow_corpus(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, course, slow_corpus);
+criterion_group!(benches, course, table, slow_corpus);
 criterion_main!(benches);

@@ -330,7 +330,10 @@ impl Sym {
             Func::Cos | Func::Cosh | Func::Abs if is_negated(a0) => {
                 Sym::call(f, vec![Sym::negate(a0.clone())])
             }
-            Func::Abs if matches!(a0, Sym::Call(Func::Abs, _)) => a0.clone(),
+            // |abs(u)| = abs(u), |exp(u)| = exp(u), |cosh(u)| = cosh(u) (positive)
+            Func::Abs if matches!(a0, Sym::Call(Func::Abs | Func::Exp | Func::Cosh, _)) => {
+                a0.clone()
+            }
             Func::Ln => match a0 {
                 Sym::Var(v) if v == "e" => Sym::one(),
                 Sym::Call(Func::Exp, inner) => inner[0].clone(),

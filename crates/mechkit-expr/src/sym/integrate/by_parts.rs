@@ -92,7 +92,7 @@ pub(super) fn cyclic(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         match g {
             Sym::Call(Func::Exp, args) => exp_arg = Some(args[0].clone()),
             Sym::Call(func @ (Func::Sin | Func::Cos), args) => {
-                trig = Some((*func, args[0].clone()))
+                trig = Some((*func, args[0].clone()));
             }
             _ => return None,
         }

@@ -77,7 +77,7 @@ fn inverse_quadratic(a: &Sym, b: &Sym, x: &str, ctx: &mut Ctx) -> Option<Sym> {
             return Some(Sym::negate(r));
         }
         (None, Some(false)) | (Some(false), None) => {
-            return inverse_quadratic_opposite(a, b, x, ctx);
+            return Some(inverse_quadratic_opposite(a, b, x, ctx));
         }
         (Some(pa), Some(pb)) if pa != pb && a.as_num().is_some() && b.as_num().is_some() => {
             // 1/(a - c² x²) with a > 0 > b: ln|(√a + √-b x)/(√a − √-b x)| / (2 √(−a b))
@@ -102,7 +102,7 @@ fn inverse_quadratic(a: &Sym, b: &Sym, x: &str, ctx: &mut Ctx) -> Option<Sym> {
         _ => {}
     }
     if matches!((sign(a), sign(b)), (Some(pa), Some(pb)) if pa != pb) {
-        return inverse_quadratic_opposite(a, b, x, ctx);
+        return Some(inverse_quadratic_opposite(a, b, x, ctx));
     }
     // assume the unknown coefficients positive, and say so
     let (sa, sb) = (ctx.sqrt_positive(a), ctx.sqrt_positive(b));
@@ -120,7 +120,7 @@ fn inverse_quadratic(a: &Sym, b: &Sym, x: &str, ctx: &mut Ctx) -> Option<Sym> {
 
 /// `∫ dx/(a + b x²)` with `a` and `b` of opposite signs (one of them symbolic, assumed of the
 /// sign it reads with): `ln|(√a + √-b x)/(√a − √-b x)|/(2 √a √-b)` for `a > 0 > b`.
-fn inverse_quadratic_opposite(a: &Sym, b: &Sym, x: &str, ctx: &mut Ctx) -> Option<Sym> {
+fn inverse_quadratic_opposite(a: &Sym, b: &Sym, x: &str, ctx: &mut Ctx) -> Sym {
     let a_positive = match a.as_num() {
         Some(n) => !n.is_negative(),
         None => !is_negated(a),
@@ -140,5 +140,5 @@ fn inverse_quadratic_opposite(a: &Sym, b: &Sym, x: &str, ctx: &mut Ctx) -> Optio
         )),
         Sym::product(vec![Sym::int(2), sa, sb]),
     );
-    Some(if flip { Sym::negate(r) } else { r })
+    if flip { Sym::negate(r) } else { r }
 }

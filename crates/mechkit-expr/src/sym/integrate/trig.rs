@@ -34,15 +34,9 @@ fn monomial(f: &Sym, x: &str) -> Option<Monomial> {
             return None;
         }
         match func {
-            Func::Sin => m += k,
-            Func::Cos => n += k,
-            Func::Tan => {
-                m += k;
-                n -= k;
-            }
-            Func::Sinh => m += k,
-            Func::Cosh => n += k,
-            Func::Tanh => {
+            Func::Sin | Func::Sinh => m += k,
+            Func::Cos | Func::Cosh => n += k,
+            Func::Tan | Func::Tanh => {
                 m += k;
                 n -= k;
             }
@@ -130,17 +124,16 @@ fn integrate_monomial(mono: &Monomial, ctx: &mut Ctx) -> Option<Sym> {
     // both even
     if m != 0 && n != 0 {
         if m > 0 || n > 0 {
-            // write the power of the function with the non-negative... (even) exponent
-            // through the other one
+            // write the positive even power through the other function
             let u2 = if m > 0 {
                 power(fc, x, 2)
             } else {
                 power(fs, x, 2)
             };
+            // sin² = 1 - cos², cos² = 1 - sin², sinh² = cosh² - 1, cosh² = 1 + sinh²
             let other_sq = match (m > 0, hyperbolic) {
-                (true, false) => Sym::difference(Sym::one(), u2),
+                (_, false) => Sym::difference(Sym::one(), u2),
                 (true, true) => Sym::difference(u2, Sym::one()),
-                (false, false) => Sym::difference(Sym::one(), u2),
                 (false, true) => Sym::sum(vec![Sym::one(), u2]),
             };
             let (k, keep) = if m > 0 {
