@@ -6,7 +6,8 @@
 //!   integrand, odd powers of `x` times a function of `x²` (`w = x²`), functions of `exp(c x)`
 //!   (`u = exp(c x)`), square roots of a linear expression (`v = sqrt(a x + b)`);
 //! - [`trig`]: powers and products of `sin/cos`, `sinh/cosh`, `tan`, `tanh`, `sec`, `csc` by
-//!   substitution (an odd power) and reduction formulas;
+//!   substitution (an odd power) and reduction formulas, products of two different
+//!   arguments by the product-to-sum formulas;
 //! - [`roots`]: `x^k (a + b x²)^(n/2)` (what trigonometric and hyperbolic substitution give),
 //!   by reduction to `sqrt`, `asin` and logarithms;
 //! - [`rational`]: rational functions by partial fractions (rational roots with multiplicity,
@@ -40,7 +41,7 @@ pub struct Antiderivative {
 }
 
 /// Recursion limit of the rule search.
-const MAX_DEPTH: usize = 16;
+const MAX_DEPTH: usize = 12;
 
 /// Work budget of one integration: each rule search costs 1, each derivative taken to test a
 /// substitution costs its size in nodes. The course's integrals and the tests use at most a
@@ -203,6 +204,9 @@ fn rules(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         return Some(r);
     }
     if let Some(r) = trig::powers(f, ctx) {
+        return Some(r);
+    }
+    if let Some(r) = trig::product_to_sum(f, ctx) {
         return Some(r);
     }
     if let Some(r) = substitution::derivative_divides(f, ctx) {

@@ -229,3 +229,35 @@ fn reduce(f: Func, k: i64, ctx: &mut Ctx) -> Option<Sym> {
         Sym::difference(boundary, Sym::product(vec![Sym::int(other), next])),
     ]))
 }
+
+/// `sin A cos B = (sin(A + B) + sin(A − B))/2`, `sin A sin B = (cos(A − B) − cos(A + B))/2`,
+/// `cos A cos B = (cos(A − B) + cos(A + B))/2` for two different arguments linear in `x`
+/// (a driven oscillator's `sin(w*t)*cos(w0*t)`).
+pub(super) fn product_to_sum(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let Sym::Mul(fs) = f else { return None };
+    let [Sym::Call(f1, a1), Sym::Call(f2, a2)] = fs.as_slice() else {
+        return None;
+    };
+    let linear = |s: &Sym| {
+        crate::sym::poly::coefficients(s, &x)
+            .is_some_and(|c| c.len() == 2 && c.iter().all(|k| k.free_of(&x)))
+    };
+    if a1 == a2 || !linear(&a1[0]) || !linear(&a2[0]) {
+        return None;
+    }
+    let (a, b) = (a1[0].clone(), a2[0].clone());
+    let plus = Sym::sum(vec![a.clone(), b.clone()]);
+    let minus = Sym::difference(a.clone(), b.clone());
+    let half = |s: Sym| Sym::product(vec![Sym::rational(1, 2), s]);
+    let sin = |s: Sym| Sym::call(Func::Sin, vec![s]);
+    let cos = |s: Sym| Sym::call(Func::Cos, vec![s]);
+    let g = match (f1, f2) {
+        (Func::Sin, Func::Cos) => half(Sym::sum(vec![sin(plus), sin(minus)])),
+        (Func::Cos, Func::Sin) => half(Sym::difference(sin(plus), sin(minus))),
+        (Func::Sin, Func::Sin) => half(Sym::difference(cos(minus), cos(plus))),
+        (Func::Cos, Func::Cos) => half(Sym::sum(vec![cos(minus), cos(plus)])),
+        _ => return None,
+    };
+    integrate(&g, ctx)
+}
