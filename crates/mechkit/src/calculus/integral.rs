@@ -9,7 +9,9 @@ use super::{CalculusError, Params, lookup};
 use crate::Real;
 use crate::function::Function;
 use crate::inputs::{Input, InputError};
-use crate::quad::{QuadResult, Rule, Tolerance, integrate as quadrature, integrate_rule};
+use crate::quad::{
+    QuadError, QuadResult, Rule, Tolerance, integrate as quadrature, integrate_rule,
+};
 
 /// An integral: the antiderivative when the rule table has one, and the definite value by
 /// both routes when limits are given.
@@ -145,6 +147,15 @@ pub fn integral(
                     w[1],
                     Tolerance::default(),
                 )
+                .or_else(|e| match e {
+                    // an integrable singularity at an end (1/sqrt(1 - x^2) at ±1): the double
+                    // exponential rule, the integrand expanded around each end
+                    QuadError::NotConverged { .. } | QuadError::NotFinite { .. } => {
+                        super::singular::endpoint_singular(&input, x, &lookup(params), w[0], w[1])
+                            .ok_or(e)
+                    }
+                    other => Err(other),
+                })
             })
             .try_fold(
                 QuadResult {
@@ -431,6 +442,32 @@ mod tests {
         let d = i.definite.unwrap();
         assert!((d.closed_form.unwrap() - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
         assert_eq!(d.agree, Some(true));
+    }
+
+    /// Issue 27: an integrable singularity at an end is no failure of the quadrature: where
+    /// Gauss-Kronrod cannot reach the tolerance (or samples the end), tanh-sinh takes over.
+    #[test]
+    fn integrable_end_singularities_have_a_quadrature() {
+        use std::f64::consts::PI;
+        for (text, a, b, exact) in [
+            ("1/sqrt(1 - x^2)", -1.0, 1.0, PI),
+            ("1/sqrt(1 - x^2)", 1.0, -1.0, -PI),
+            ("x^2/sqrt(1 - x^2)", 0.0, 1.0, PI / 4.0),
+            ("1/sqrt(4 - x^2)", 0.0, 2.0, PI / 2.0),
+            ("1/sqrt(x)", 0.0, 1.0, 2.0),
+            ("ln(x)", 0.0, 1.0, -1.0),
+        ] {
+            let d = integral(text, "x", Some((a, b)), &[])
+                .unwrap()
+                .definite
+                .unwrap();
+            let q = d
+                .quadrature
+                .as_ref()
+                .unwrap_or_else(|e| panic!("{text}: {e}"));
+            assert!((q.value - exact).abs() < 1e-9, "{text}: {q:?}");
+            assert_ne!(d.agree, Some(false), "{text}: {d:?}");
+        }
     }
 
     #[test]

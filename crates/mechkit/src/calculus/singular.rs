@@ -15,6 +15,7 @@
 use mechkit_expr::{Interval, MapScope, Program, Sym};
 
 use crate::Real;
+use crate::quad::{QuadResult, Tolerance, tanh_sinh};
 
 /// The most interval evaluations one analysis makes (the bisection of a formula whose
 /// enclosure is loose everywhere gives up there, finding nothing).
@@ -166,6 +167,51 @@ pub fn show_point(x: Real) -> String {
     } else {
         format!("{rounded:e}")
     }
+}
+
+/// `∫ f` over `[a, b]` by the tanh-sinh rule, with `f(a + s)` and `f(b - s)` expanded in `s`
+/// so that the nodes next to an end keep their distance to it (`1 - x^2` at `x = 1 - s` is
+/// `2 s - s^2`, not `1 - 0.9999…^2`). `None` when it does not converge either.
+pub(super) fn endpoint_singular(
+    f: &Sym,
+    x: &str,
+    env: &dyn Fn(&str) -> Option<Real>,
+    a: Real,
+    b: Real,
+) -> Option<QuadResult> {
+    let (lo, hi) = (a.min(b), a.max(b));
+    if !(lo.is_finite() && hi.is_finite()) || lo == hi {
+        return None;
+    }
+    let s = "__s";
+    let around = |end: Real, sign: i64| {
+        let at = Sym::sum(vec![
+            Sym::Num(mechkit_expr::Number::from_f64(end)),
+            Sym::product(vec![Sym::int(sign), Sym::var(s)]),
+        ]);
+        f.substitute(x, &at).expand()
+    };
+    let (near_lo, near_hi) = (around(lo, 1), around(hi, -1));
+    let value = |g: &Sym, d: Real| {
+        g.eval(&|n| if n == s { Some(d) } else { env(n) })
+            .unwrap_or(Real::NAN)
+    };
+    let r = tanh_sinh(
+        |d| value(&near_lo, d),
+        |d| value(&near_hi, d),
+        lo,
+        hi,
+        Tolerance::default(),
+    )
+    .ok()?;
+    Some(if a > b {
+        QuadResult {
+            value: -r.value,
+            ..r
+        }
+    } else {
+        r
+    })
 }
 
 #[cfg(test)]
