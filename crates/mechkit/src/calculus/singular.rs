@@ -266,4 +266,30 @@ mod tests {
         assert_eq!(show_point(-1.0), "-1");
         assert_eq!(show_point(1e20), "1e20");
     }
+
+    /// Issue 27: an integrable singularity at an end is no failure of the quadrature: where
+    /// Gauss-Kronrod cannot reach the tolerance (or samples the end), tanh-sinh takes over.
+    #[test]
+    fn integrable_end_singularities_have_a_quadrature() {
+        use std::f64::consts::PI;
+        for (text, a, b, exact) in [
+            ("1/sqrt(1 - x^2)", -1.0, 1.0, PI),
+            ("1/sqrt(1 - x^2)", 1.0, -1.0, -PI),
+            ("x^2/sqrt(1 - x^2)", 0.0, 1.0, PI / 4.0),
+            ("1/sqrt(4 - x^2)", 0.0, 2.0, PI / 2.0),
+            ("1/sqrt(x)", 0.0, 1.0, 2.0),
+            ("ln(x)", 0.0, 1.0, -1.0),
+        ] {
+            let d = super::super::integral::integral(text, "x", Some((a, b)), &[])
+                .unwrap()
+                .definite
+                .unwrap();
+            let q = d
+                .quadrature
+                .as_ref()
+                .unwrap_or_else(|e| panic!("{text}: {e}"));
+            assert!((q.value - exact).abs() < 1e-9, "{text}: {q:?}");
+            assert_ne!(d.agree, Some(false), "{text}: {d:?}");
+        }
+    }
 }
