@@ -19,6 +19,7 @@ mod expand;
 mod identities;
 mod integrate;
 mod order;
+pub mod dsolve;
 pub mod poly;
 mod quartic;
 mod real_roots;

@@ -1,0 +1,102 @@
+//! Initial conditions, `x(0)=1, x'(0)=v0`.
+
+use super::solve::DsolveError;
+use crate::sym::Sym;
+
+/// `func^(order)(at) = value`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Condition {
+    /// Which derivative (0 for the function itself).
+    pub order: usize,
+    /// Where.
+    pub at: Sym,
+    /// Its value.
+    pub value: Sym,
+}
+
+impl std::fmt::Display for Condition {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}({}) = {}", "'".repeat(self.order), self.at, self.value)
+    }
+}
+
+/// Splits at the commas outside parentheses.
+fn split_top(text: &str) -> Vec<&str> {
+    let mut parts = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ',' | ';' if depth == 0 => {
+                parts.push(&text[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&text[start..]);
+    parts
+}
+
+impl Condition {
+    /// Reads `x(0)=1, x'(0)=0` for the function `func`.
+    ///
+    /// ```
+    /// use mechkit_expr::sym::dsolve::Condition;
+    /// let c = Condition::parse_list("x(0)=1, x'(0)=v0", "x").unwrap();
+    /// assert_eq!((c[1].order, c[1].value.to_string()), (1, "v0".to_string()));
+    /// ```
+    pub fn parse_list(text: &str, func: &str) -> Result<Vec<Condition>, DsolveError> {
+        let mut out: Vec<Condition> = Vec::new();
+        for part in split_top(text) {
+            let part = part.trim();
+            if part.is_empty() {
+                continue;
+            }
+            let bad = |why: &str| {
+                DsolveError::Condition(format!(
+                    "`{part}`: {why}; write conditions as {func}(0)=1, {func}'(0)=0"
+                ))
+            };
+            let rest = part
+                .strip_prefix(func)
+                .ok_or_else(|| bad(&format!("it does not start with `{func}`")))?;
+            let order = rest.chars().take_while(|&c| c == '\'').count();
+            let rest = rest[order..].trim_start();
+            let inner = rest
+                .strip_prefix('(')
+                .ok_or_else(|| bad("the point is missing, as in (0)"))?;
+            let mut depth = 1;
+            let close = inner
+                .char_indices()
+                .find(|&(_, c)| {
+                    depth += match c {
+                        '(' => 1,
+                        ')' => -1,
+                        _ => 0,
+                    };
+                    depth == 0
+                })
+                .map(|(i, _)| i)
+                .ok_or_else(|| bad("unclosed `(`"))?;
+            let value = inner[close + 1..]
+                .trim_start()
+                .strip_prefix('=')
+                .ok_or_else(|| bad("`=` and a value are missing"))?;
+            let read = |s: &str, what: &str| {
+                Sym::parse(s).map_err(|e| bad(&format!("its {what} `{}`: {}", s.trim(), e.message())))
+            };
+            let c = Condition {
+                order,
+                at: read(&inner[..close], "point")?,
+                value: read(value, "value")?,
+            };
+            if out.iter().any(|o| o.order == c.order) {
+                return Err(bad("that derivative is given twice"));
+            }
+            out.push(c);
+        }
+        Ok(out)
+    }
+}

@@ -1,0 +1,101 @@
+//! Solving `lhs(x) = rhs` for `x` when `x` occurs once in `lhs`, by peeling off one operation
+//! at a time: sums, products, powers (both roots of an even power), `ln`, `exp` and the
+//! trigonometric functions (principal branches).
+
+use crate::ast::Func;
+use crate::sym::Sym;
+
+/// Peeling depth limit.
+const MAX_DEPTH: usize = 32;
+
+/// The values of `x` with `lhs = rhs`, every branch (an even power gives two). With
+/// `constant`, `ln|u| = R + C` gives `u = C*exp(R)` (the sign and the size of `e^C` are one
+/// arbitrary constant).
+pub(super) fn solve_for(lhs: &Sym, x: &str, rhs: &Sym, constant: Option<&str>) -> Vec<Sym> {
+    peel(lhs, x, rhs.clone(), constant, 0)
+}
+
+fn peel(lhs: &Sym, x: &str, rhs: Sym, constant: Option<&str>, depth: usize) -> Vec<Sym> {
+    if depth > MAX_DEPTH || lhs.free_of(x) {
+        return Vec::new();
+    }
+    let next = |l: &Sym, r: Sym| peel(l, x, r, constant, depth + 1);
+    match lhs {
+        Sym::Var(v) if v == x => vec![rhs],
+        Sym::Add(terms) => {
+            let (with, without): (Vec<Sym>, Vec<Sym>) =
+                terms.iter().cloned().partition(|t| !t.free_of(x));
+            match with.as_slice() {
+                [one] => next(one, Sym::difference(rhs, Sym::sum(without))),
+                _ => Vec::new(),
+            }
+        }
+        Sym::Mul(factors) => {
+            let (with, without): (Vec<Sym>, Vec<Sym>) =
+                factors.iter().cloned().partition(|t| !t.free_of(x));
+            match with.as_slice() {
+                [one] => next(one, Sym::quotient(rhs, Sym::product(without))),
+                _ => Vec::new(),
+            }
+        }
+        Sym::Pow(b, e) if e.free_of(x) => {
+            let root = Sym::pow(rhs, Sym::quotient(Sym::one(), (**e).clone()));
+            let even = e
+                .as_num()
+                .and_then(|n| n.as_rational())
+                .is_some_and(|(p, _)| p % 2 == 0);
+            let mut out = next(b, root.clone());
+            if even {
+                out.extend(next(b, Sym::negate(root)));
+            }
+            out
+        }
+        Sym::Pow(b, e) if b.free_of(x) => next(
+            e,
+            Sym::quotient(
+                Sym::call(Func::Ln, vec![rhs]),
+                Sym::call(Func::Ln, vec![(**b).clone()]),
+            ),
+        ),
+        Sym::Call(f, args) if args.len() == 1 => {
+            let u = &args[0];
+            let call = |g: Func| Sym::call(g, vec![rhs.clone()]);
+            match f {
+                Func::Ln => {
+                    if let Sym::Call(Func::Abs, inner) = u {
+                        let with_constant = constant
+                            .filter(|c| rhs.diff(c).is_one() && !rhs.free_of(c))
+                            .map(|c| {
+                                Sym::product(vec![
+                                    Sym::var(c),
+                                    Sym::call(Func::Exp, vec![rhs.substitute(c, &Sym::zero())]),
+                                ])
+                            });
+                        if let Some(v) = with_constant {
+                            return next(&inner[0], v);
+                        }
+                        let mut out = next(&inner[0], call(Func::Exp));
+                        out.extend(next(&inner[0], Sym::negate(call(Func::Exp))));
+                        return out;
+                    }
+                    next(u, call(Func::Exp))
+                }
+                Func::Exp => next(u, call(Func::Ln)),
+                Func::Atan => next(u, call(Func::Tan)),
+                Func::Tan => next(u, call(Func::Atan)),
+                Func::Sin => next(u, call(Func::Asin)),
+                Func::Asin => next(u, call(Func::Sin)),
+                Func::Cos => next(u, call(Func::Acos)),
+                Func::Acos => next(u, call(Func::Cos)),
+                Func::Cbrt => next(u, Sym::pow(rhs.clone(), Sym::int(3))),
+                Func::Abs => {
+                    let mut out = next(u, rhs.clone());
+                    out.extend(next(u, Sym::negate(rhs)));
+                    out
+                }
+                _ => Vec::new(),
+            }
+        }
+        _ => Vec::new(),
+    }
+}

@@ -1,0 +1,246 @@
+//! The driver: the general solution by the first method that applies, the constants fixed by
+//! the initial conditions, and the verification by substitution.
+
+use thiserror::Error;
+
+use super::conditions::Condition;
+use super::parse::Ode;
+use super::verify::verify;
+use super::{constant, first_order, invert};
+use crate::ExprError;
+use crate::sym::{Sym, solve_linear};
+
+/// Why an equation has no closed-form answer here.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum DsolveError {
+    /// The equation does not parse (located in the user's text).
+    #[error("{0}")]
+    Formula(ExprError),
+    /// The question is malformed (what, and how to fix it).
+    #[error("{0}")]
+    Invalid(String),
+    /// An initial condition does not parse or does not fit the equation.
+    #[error("{0}")]
+    Condition(String),
+    /// No method of the table applies, or its answer did not verify.
+    #[error("no closed-form method applies to `{equation}`: {reason}")]
+    NoMethod {
+        /// The equation, `lhs - rhs = 0`, derivatives written with primes.
+        equation: String,
+        /// What was tried.
+        reason: String,
+    },
+}
+
+/// How a solution was checked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verification {
+    /// The residual (and the conditions) simplified to exactly 0.
+    Symbolic,
+    /// The residual vanished (relative 1e-8) at this many points, random values for the other
+    /// names and the free constants.
+    Numeric {
+        /// Points where it was evaluated.
+        points: usize,
+    },
+}
+
+/// A verified solution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OdeSolution {
+    /// `x(t)`, explicit.
+    pub solution: Sym,
+    /// The method, in words (`constant coefficients, under-damped`).
+    pub method: String,
+    /// Constants still free in the solution (`C1`, `C2`).
+    pub constants: Vec<String>,
+    /// Constants fixed by the initial conditions, with their values.
+    pub determined: Vec<(String, Sym)>,
+    /// What was assumed about the other names (`k/m > 0`).
+    pub assumptions: Vec<String>,
+    /// How it was verified.
+    pub verification: Verification,
+}
+
+/// A general solution (or a few candidates, the branches of a root), before the conditions.
+pub(super) struct General {
+    pub candidates: Vec<Sym>,
+    pub method: String,
+    pub assumptions: Vec<String>,
+    /// Expressions assumed positive (for the numerical check).
+    pub positive: Vec<Sym>,
+}
+
+impl Ode {
+    /// The equation as written, `lhs - rhs = 0` with primes.
+    pub fn display(&self) -> String {
+        let mut s = format!("{} = 0", self.residual);
+        for k in (1..=self.order).rev() {
+            s = s.replace(
+                &super::derivative_name(&self.func, k),
+                &format!("{}{}", self.func, "'".repeat(k)),
+            );
+        }
+        s
+    }
+
+    /// Solves the equation, with the constants fixed by `conditions` (fewer conditions than
+    /// the order leave constants `C1`, `C2` free).
+    ///
+    /// ```
+    /// use mechkit_expr::sym::dsolve::{Condition, Ode};
+    /// let ode = Ode::parse("x'' + 4*x = 0", "x", "t").unwrap();
+    /// let ic = Condition::parse_list("x(0)=1, x'(0)=0", "x").unwrap();
+    /// assert_eq!(ode.solve(&ic).unwrap().solution.to_string(), "cos(2*t)");
+    /// ```
+    pub fn solve(&self, conditions: &[Condition]) -> Result<OdeSolution, DsolveError> {
+        if conditions.len() > self.order {
+            return Err(DsolveError::Condition(format!(
+                "{} conditions for an equation of order {}: give at most one per constant",
+                conditions.len(),
+                self.order
+            )));
+        }
+        for c in conditions {
+            if c.order >= self.order {
+                return Err(DsolveError::Condition(format!(
+                    "the condition {}{c} is on a derivative of order {} but the equation is of \
+                     order {}: conditions go on {} up to its derivative of order {}",
+                    self.func,
+                    c.order,
+                    self.order,
+                    self.func,
+                    self.order - 1
+                )));
+            }
+            if !c.at.free_of(&self.var) || !c.value.free_of(&self.var) {
+                return Err(DsolveError::Condition(format!(
+                    "the condition {}{c} depends on {}: give the point and the value as numbers \
+                     or names",
+                    self.func, self.var
+                )));
+            }
+        }
+        let constants = self.fresh_constants(conditions);
+        let names: Vec<&str> = constants.iter().map(String::as_str).collect();
+        let no_method = |reason: String| DsolveError::NoMethod {
+            equation: self.display(),
+            reason,
+        };
+        if self.order > 2 {
+            return Err(no_method(format!(
+                "it is of order {}; the methods here are for orders 1 and 2",
+                self.order
+            )));
+        }
+        let general = constant::solve(self, &names)
+            .or_else(|| (self.order == 1).then(|| first_order::solve(self, &names)).flatten())
+            .ok_or_else(|| {
+                no_method(if self.order == 1 {
+                    "it is neither linear, separable (with an invertible integral) nor Bernoulli"
+                        .into()
+                } else {
+                    "only linear equations with constant coefficients are solved at order 2".into()
+                })
+            })?;
+        for candidate in &general.candidates {
+            for (solution, determined) in apply(self, candidate, &names, conditions) {
+                if let Some(verification) = verify(self, &solution, conditions, &general.positive)
+                {
+                    let constants = names
+                        .iter()
+                        .filter(|c| !solution.free_of(c))
+                        .map(|c| (*c).to_string())
+                        .collect();
+                    return Ok(OdeSolution {
+                        solution,
+                        method: general.method.clone(),
+                        constants,
+                        determined,
+                        assumptions: general.assumptions.clone(),
+                        verification,
+                    });
+                }
+            }
+        }
+        Err(no_method(format!(
+            "the {} solution did not verify by substitution{}",
+            general.method,
+            if conditions.is_empty() {
+                ""
+            } else {
+                " (or the conditions could not be met)"
+            }
+        )))
+    }
+
+    /// `C1`, `C2`, … not used in the equation or the conditions.
+    fn fresh_constants(&self, conditions: &[Condition]) -> Vec<String> {
+        let mut used = self.residual.names();
+        for c in conditions {
+            used.extend(c.at.names());
+            used.extend(c.value.names());
+        }
+        (1..)
+            .map(|i| format!("C{i}"))
+            .filter(|c| !used.contains(c))
+            .take(self.order)
+            .collect()
+    }
+}
+
+/// The solution with constants fixed by the conditions: linear constants by Cramer's rule,
+/// one constant inside a function by inverting it (every branch, the check picks).
+fn apply(
+    ode: &Ode,
+    solution: &Sym,
+    constants: &[&str],
+    conditions: &[Condition],
+) -> Vec<(Sym, Vec<(String, Sym)>)> {
+    if conditions.is_empty() {
+        return vec![(solution.clone(), Vec::new())];
+    }
+    let at = |c: &Condition| {
+        let mut d = solution.clone();
+        for _ in 0..c.order {
+            d = d.diff(&ode.var);
+        }
+        d.substitute(&ode.var, &c.at)
+    };
+    let eqs: Vec<Sym> = conditions
+        .iter()
+        .map(|c| Sym::difference(at(c), c.value.clone()))
+        .collect();
+    let subsets: Vec<Vec<&str>> = match (conditions.len(), constants) {
+        (1, [a, b]) => vec![vec![*a], vec![*b]],
+        _ => vec![constants[..conditions.len()].to_vec()],
+    };
+    let fix = |vals: &[(String, Sym)]| {
+        let mut s = solution.clone();
+        for (c, v) in vals {
+            s = s.substitute(c, v);
+        }
+        (s, vals.to_vec())
+    };
+    for subset in &subsets {
+        if let Ok(values) = solve_linear(&eqs, subset) {
+            let vals: Vec<(String, Sym)> = subset
+                .iter()
+                .map(|c| (*c).to_string())
+                .zip(values)
+                .collect();
+            return vec![fix(&vals)];
+        }
+    }
+    let mut out = Vec::new();
+    if let [c] = conditions {
+        for k in constants {
+            let value_at = at(c);
+            for v in invert::solve_for(&value_at, k, &c.value, None) {
+                out.push(fix(&[((*k).to_string(), v)]));
+            }
+        }
+    }
+    out
+}
