@@ -1,5 +1,5 @@
-//! `mechkit.integrate`, `diff`, `solve` and `units`: the one-question calculus of `mechkit
-//! integrate | diff | solve | units`, each one call of `mechkit::calculus` whose result comes
+//! `mechkit.integrate`, `diff`, `solve`, `dsolve` and `units`: the one-question calculus of
+//! `mechkit integrate | diff | solve | dsolve | units`, each one call of `mechkit::calculus` whose result comes
 //! back as the dict the command's `--json` prints.
 //!
 //! A value is a Python number (SI; `inf` where the command line takes `inf`) or a string read
@@ -49,6 +49,8 @@ fn keyword(input: Input) -> &'static str {
         Input::TargetUnit => "to",
         Input::Params => "params",
         Input::Variable => "var",
+        Input::Function => "func",
+        Input::InitialConditions => "ic",
         _ => "the formula",
     }
 }
@@ -302,6 +304,27 @@ pub fn solve<'py>(
         calculus::solve_equations(&equation, &unknowns, range, &p)
     });
     let s = check(result, what)?;
+    to_dict(py, serde_json::to_string(&s))
+}
+
+/// `mechkit dsolve EQUATION --func F --var T [--ic IC] --set ...`: an ordinary differential
+/// equation (primes for the derivatives) in closed form, verified by substitution. Returns the
+/// command's JSON as a dict; an equation without a closed form raises `MechkitError`.
+#[pyfunction]
+#[pyo3(signature = (equation, func = "x", var = "t", ic = None, *, set = None, **params))]
+#[allow(clippy::too_many_arguments)] // the command's flags, one keyword each
+pub fn dsolve<'py>(
+    py: Python<'py>,
+    equation: &str,
+    func: &str,
+    var: &str,
+    ic: Option<&str>,
+    set: Option<&Bound<'py, PyAny>>,
+    params: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let p = self::params(set, params)?;
+    let result = py.detach(|| calculus::dsolve(equation, func, var, ic, &p));
+    let s = check(result, "equation")?;
     to_dict(py, serde_json::to_string(&s))
 }
 

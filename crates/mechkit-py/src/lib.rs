@@ -86,7 +86,7 @@ mod native {
 
     // calculus and data (integrate, diff, solve, units; trapz, cumtrapz, simpson, derive)
     #[pymodule_export]
-    use super::calculus::{diff, integrate, solve, units};
+    use super::calculus::{diff, dsolve, integrate, solve, units};
     #[pymodule_export]
     use super::data::{cumtrapz, derive, simpson, trapz};
     // batch: md, sweep and plots (batch.rs, plot.rs)

@@ -266,3 +266,16 @@ def test_units_errors():
     with pytest.raises(mechkit.MechkitError) as e:
         mechkit.units("1 m", to="s")
     assert str(e.value) == cli_error("units", "1 m", "--to", "s")
+
+
+def test_dsolve_is_the_command_lines():
+    d = mechkit.dsolve("m*x'' + k*x = 0", ic="x(0)=1, x'(0)=0", m=1, k=4)
+    assert d["solution"] == "cos(2*t)"
+    assert d["verified"] is True
+    assert d == cli_json("dsolve", "m*x'' + k*x = 0", "--ic", "x(0)=1, x'(0)=0", "--set", "m=1,k=4")
+    free = mechkit.dsolve("m*x'' = -k*x")
+    assert free["constants"] == ["C1", "C2"] and free["assumptions"] == ["k/m > 0"]
+    with pytest.raises(mechkit.MechkitError, match="no closed form"):
+        mechkit.dsolve("x'' + sin(x) = 0")
+    with pytest.raises(mechkit.MechkitError, match="^ic: "):
+        mechkit.dsolve("x' = x", ic="y(0)=1")

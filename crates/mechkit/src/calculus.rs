@@ -5,7 +5,8 @@
 //! on an interval) or of a linear system, and unit conversion.
 //!
 //! Each question has a result type whose serde shape is what `mechkit diff | integrate | solve
-//! | units --json` prints: [`Differentiation`], [`Integration`], [`Solved`], [`Conversion`].
+//! | units | dsolve --json` prints: [`Differentiation`], [`Integration`], [`Solved`],
+//! [`Conversion`], [`OdeSolved`].
 //!
 //! ```
 //! use mechkit::calculus::{Solved, solve_equations};
@@ -26,6 +27,7 @@ use crate::inputs::{Input, InputError};
 
 mod convert;
 mod derivative;
+mod dsolve;
 mod equation;
 mod integral;
 mod singular;
@@ -35,6 +37,7 @@ pub use convert::{Conversion, Converted, convert};
 pub use derivative::{
     Derivative, DerivativeCheck, Differentiation, derivative, derivative_at, differentiate,
 };
+pub use dsolve::{OdeSolved, dsolve};
 pub use integral::{
     Definite, Integral, Integration, RuleEstimate, integral, integration, rule_estimates,
 };
@@ -56,6 +59,10 @@ pub enum CalculusError {
     /// A value of a named input does not fit the question.
     #[error("{0}")]
     Input(#[from] InputError),
+    /// The question is well posed but has no closed-form answer here (what was tried, and
+    /// where a numerical answer is).
+    #[error("{0}")]
+    NoClosedForm(String),
 }
 
 /// Checks that `name`, given as the variable of a question (`--var`, `--for`), is a name of

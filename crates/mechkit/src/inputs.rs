@@ -79,6 +79,10 @@ pub enum Input {
     Smoothing,
     /// The number of samples of a grid ([`crate::sample_bound`]).
     Samples,
+    /// The unknown function of a differential equation.
+    Function,
+    /// Initial conditions of a differential equation.
+    InitialConditions,
 }
 
 /// A value that does not answer the question, with the input it came from and what would fix

@@ -1,5 +1,6 @@
 //! Integration tests of the mechkit library, one module per area (as in nalgebra's tests).
 
+mod calculus;
 mod collisions;
 mod data;
 mod deriv;

@@ -49,6 +49,7 @@ from ._native import (
     cumtrapz,
     derive,
     diff,
+    dsolve,
     impulse,
     inertia,
     integrate,
@@ -73,13 +74,14 @@ __all__ = [
     "SweepResult",
     "__version__",
     # the course's commands as functions, each returning the command's --json (mechkit
-    # integrate | diff | solve | units | derive | potential | collide | impulse | com |
+    # integrate | diff | solve | dsolve | units | derive | potential | collide | impulse | com |
     # inertia | md | sweep), and the sample rules
     "collide",
     "com",
     "cumtrapz",
     "derive",
     "diff",
+    "dsolve",
     "impulse",
     "inertia",
     "integrate",

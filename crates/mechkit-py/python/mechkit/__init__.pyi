@@ -190,6 +190,25 @@ def integrate(
     'atan(x/sqrt(a))/sqrt(a)'
     """
 
+def dsolve(
+    equation: str,
+    func: str = "x",
+    var: str = "t",
+    ic: Optional[str] = None,
+    *,
+    set: Optional[Union[Dict[str, _Value], str]] = None,
+    **params: _Value,
+) -> Dict[str, Any]:
+    """``mechkit dsolve EQUATION --func F --var T --ic IC --set ...``: an ordinary
+    differential equation written with primes, solved in closed form and verified by
+    substitution; the command's ``--json`` as a dict (``solution``, ``method``,
+    ``constants``, ``ic``, ``determined``, ``assumptions``, ``verified``, ``verification``).
+    An equation without a closed form raises MechkitError.
+
+    >>> mechkit.dsolve("x'' + 4*x = 0", ic="x(0)=1, x'(0)=0")["solution"]
+    'cos(2*t)'
+    """
+
 def diff(
     expr: str,
     var: str = "x",

@@ -1,0 +1,3 @@
+//! The one-question calculus: differential equations in closed form.
+
+mod dsolve;
