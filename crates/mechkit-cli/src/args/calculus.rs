@@ -1,4 +1,4 @@
-//! `mechkit diff`, `integrate`, `solve` and `units`: formulas and quantities.
+//! `mechkit diff`, `integrate`, `solve`, `dsolve` and `units`: formulas and quantities.
 
 use super::whole_count;
 
@@ -72,6 +72,31 @@ pub struct SolveArgs {
     pub interval: Option<String>,
     /// Values of the other names (numbers, quantities or formulas), e.g. "m=2,g=9.81" or
     /// "th=pi/6"; with a linear system, its solution is also evaluated with them.
+    #[arg(long, allow_hyphen_values = true)]
+    pub set: Option<String>,
+    /// `--json` and `-q/--quiet`.
+    #[command(flatten)]
+    pub report: crate::args::Report,
+}
+
+/// `mechkit dsolve`.
+#[derive(Debug, clap::Args)]
+pub struct DsolveArgs {
+    /// The differential equation with primes for the derivatives, e.g.
+    /// "m*x'' + c*x' + k*x = F0*cos(w*t)".
+    #[arg(allow_hyphen_values = true)]
+    pub equation: String,
+    /// The unknown function.
+    #[arg(long, default_value = "x")]
+    pub func: String,
+    /// The independent variable.
+    #[arg(long, default_value = "t")]
+    pub var: String,
+    /// Initial conditions, e.g. "x(0)=1, x'(0)=0" (the constants C1, C2 stay free without).
+    #[arg(long, allow_hyphen_values = true)]
+    pub ic: Option<String>,
+    /// Values of the other names, e.g. "m=1,c=0.2,k=4": substituted before solving (they
+    /// decide the damping case).
     #[arg(long, allow_hyphen_values = true)]
     pub set: Option<String>,
     /// `--json` and `-q/--quiet`.

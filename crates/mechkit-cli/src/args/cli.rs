@@ -5,10 +5,10 @@ use clap::{Parser, Subcommand};
 
 use super::{
     AnimateArgs, BeadArgs, CheckArgs, CollideArgs, ComArgs, CompletionsArgs, DeriveArgs, DiffArgs,
-    FrictionArgs, GalleryArgs, ImpulseArgs, InertiaArgs, IntegrateArgs, ListArgs, ManArgs, MdArgs,
-    PotentialArgs, PowerArgs, RelativeArgs, RigidCollideArgs, RocketArgs, RollArgs, RotationArgs,
-    RunArgs, ServeArgs, SolveArgs, SpinArgs, SweepArgs, SweepMergeArgs, TerminalArgs, UnitsArgs,
-    WorkArgs,
+    DsolveArgs, FrictionArgs, GalleryArgs, ImpulseArgs, InertiaArgs, IntegrateArgs, ListArgs,
+    ManArgs, MdArgs, PotentialArgs, PowerArgs, RelativeArgs, RigidCollideArgs, RocketArgs,
+    RollArgs, RotationArgs, RunArgs, ServeArgs, SolveArgs, SpinArgs, SweepArgs, SweepMergeArgs,
+    TerminalArgs, UnitsArgs, WorkArgs,
 };
 
 const EXAMPLES: &str = r#"Examples:
@@ -24,6 +24,7 @@ const EXAMPLES: &str = r#"Examples:
   mechkit integrate "-F0*sin(2*pi*x/b)" --from 0 --to 1/4 --set F0=1,b=1 --method left --n 10,100
   mechkit solve "x^2 - 5*x + 6 = 0" --for x
   mechkit solve "cos(x) = x" --for x --in 0:1
+  mechkit dsolve "m*x'' + c*x' + k*x = 0" --ic "x(0)=1, x'(0)=0" --set m=1,c=0.4,k=4
   mechkit units "60 km/h" --to m/s
   mechkit potential "U0*((a/r)^12-(b/r)^6)" --var r --range 0.8:3 --set U0=1,a=1,b=1 --energy=-0.1
   mechkit derive examples/data/fallingtennisball02.txt --smooth 21:2
@@ -85,6 +86,8 @@ pub enum Command {
     Integrate(IntegrateArgs),
     /// Solve an equation, or a `;`-separated linear system.
     Solve(SolveArgs),
+    /// Solve a differential equation in closed form (verified by substitution).
+    Dsolve(DsolveArgs),
     /// Convert a quantity to SI or to another unit, and show its dimension.
     Units(UnitsArgs),
     /// A potential U(x) (or a force F(x)): the force, equilibria and their stability, turning

@@ -25,7 +25,7 @@ mod terminal;
 
 pub use animate::AnimateArgs;
 pub use bead::BeadArgs;
-pub use calculus::{DiffArgs, IntegrateArgs, SolveArgs, UnitsArgs};
+pub use calculus::{DiffArgs, DsolveArgs, IntegrateArgs, SolveArgs, UnitsArgs};
 pub use cli::{Cli, Command};
 use counts::{whole_count, whole_u64};
 pub use friction::FrictionArgs;

@@ -9,6 +9,7 @@ mod collide;
 mod com;
 mod com_image;
 mod derive;
+mod dsolve;
 mod friction;
 mod gallery;
 pub(crate) mod gallery_run;
@@ -59,6 +60,7 @@ pub fn dispatch(cli: Cli, cancel: &Cancel) -> anyhow::Result<Outcome> {
         Command::Diff(args) => calculus::diff(&args),
         Command::Integrate(args) => calculus::integrate(&args),
         Command::Solve(args) => calculus::solve(&args),
+        Command::Dsolve(args) => dsolve::dsolve(&args),
         Command::Units(args) => calculus::units(&args),
         Command::Potential(args) => potential::potential(&args),
         Command::Power(args) => power::power(&args),

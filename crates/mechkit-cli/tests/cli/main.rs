@@ -38,6 +38,7 @@ mod conventions;
 mod data;
 mod diverge;
 mod docs;
+mod dsolve;
 mod energy;
 mod errors;
 mod friction;

@@ -69,17 +69,22 @@ impl serde::Serialize for OdeSolved {
             "verification",
             match self.verification {
                 Verification::Symbolic => "symbolic",
-                _ => "numeric",
+                Verification::Numeric { .. } => "numeric",
             },
         )?;
-        struct P<'a>(&'a [(String, Real)]);
-        impl serde::Serialize for P<'_> {
-            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-                super::text::params(self.0, s)
-            }
-        }
-        st.serialize_field("parameters", &P(&self.parameters))?;
+        st.serialize_field("parameters", &Parameters(&self.parameters))?;
         st.end()
+    }
+}
+
+/// Name-value pairs as a JSON object.
+#[cfg(feature = "serde")]
+struct Parameters<'a>(&'a [(String, Real)]);
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for Parameters<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        super::text::params(self.0, s)
     }
 }
 

@@ -123,7 +123,10 @@ fn every_equation_of_the_table_matches_its_exact_and_numerical_solution() {
             );
         }
     }
-    println!("{} equations, {symbolic} equal to the exact form symbolically", rows.len());
+    println!(
+        "{} equations, {symbolic} equal to the exact form symbolically",
+        rows.len()
+    );
 }
 
 #[test]
@@ -147,5 +150,8 @@ fn no_method_points_to_a_numerical_solution() {
     let e = dsolve("x'' + sin(x) = 0", "x", "t", None, &[])
         .unwrap_err()
         .to_string();
-    assert!(e.contains("no closed form") && e.contains("mechkit run"), "{e}");
+    assert!(
+        e.contains("no closed form") && e.contains("mechkit run"),
+        "{e}"
+    );
 }

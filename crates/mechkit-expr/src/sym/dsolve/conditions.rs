@@ -16,7 +16,13 @@ pub struct Condition {
 
 impl std::fmt::Display for Condition {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}({}) = {}", "'".repeat(self.order), self.at, self.value)
+        write!(
+            f,
+            "{}({}) = {}",
+            "'".repeat(self.order),
+            self.at,
+            self.value
+        )
     }
 }
 
@@ -85,7 +91,8 @@ impl Condition {
                 .strip_prefix('=')
                 .ok_or_else(|| bad("`=` and a value are missing"))?;
             let read = |s: &str, what: &str| {
-                Sym::parse(s).map_err(|e| bad(&format!("its {what} `{}`: {}", s.trim(), e.message())))
+                Sym::parse(s)
+                    .map_err(|e| bad(&format!("its {what} `{}`: {}", s.trim(), e.message())))
             };
             let c = Condition {
                 order,

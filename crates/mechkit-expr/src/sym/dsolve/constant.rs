@@ -26,7 +26,8 @@ pub(super) fn solve(ode: &Ode, constants: &[&str]) -> Option<General> {
         .map(|k| derivative_name(&ode.func, k))
         .collect();
     let a: Vec<Sym> = names.iter().map(|n| ode.residual.diff(n)).collect();
-    if a.iter().any(|ak| !ak.free_of(t) || names.iter().any(|n| !ak.free_of(n)))
+    if a.iter()
+        .any(|ak| !ak.free_of(t) || names.iter().any(|n| !ak.free_of(n)))
         || a[ode.order].is_zero()
     {
         return None;
@@ -174,7 +175,11 @@ fn basis(a: &[Sym], t: &str) -> Basis {
         }
         // sqrt(w^2) is w up to a sign, which the constant of the sine takes
         let w = match &q {
-            Sym::Pow(b, n) if n.as_num().and_then(|n| n.as_integer()).is_some_and(|k| k % 2 == 0) => {
+            Sym::Pow(b, n)
+                if n.as_num()
+                    .and_then(|n| n.as_integer())
+                    .is_some_and(|k| k % 2 == 0) =>
+            {
                 Sym::pow((**b).clone(), Sym::quotient((**n).clone(), Sym::int(2)))
             }
             _ => Sym::sqrt(q.clone()),

@@ -108,10 +108,7 @@ fn rewrite(s: &Sym, t: &str) -> Sym {
                     Sym::call(Func::Cos, vec![phi]),
                 );
                 if *f == Func::Sin {
-                    Sym::sum(vec![
-                        Sym::product(vec![sb, cp]),
-                        Sym::product(vec![cb, sp]),
-                    ])
+                    Sym::sum(vec![Sym::product(vec![sb, cp]), Sym::product(vec![cb, sp])])
                 } else {
                     Sym::difference(Sym::product(vec![cb, cp]), Sym::product(vec![sb, sp]))
                 }
@@ -248,10 +245,13 @@ fn multiplicity(c: &[Sym], a: &Sym, b: &Sym) -> usize {
     let zero = |s: Sym| s.expand().is_zero();
     let sq = |s: &Sym| Sym::pow(s.clone(), Sym::int(2));
     if c.len() == 2 {
-        return usize::from(b.is_zero() && zero(Sym::sum(vec![
-            c[0].clone(),
-            Sym::product(vec![c[1].clone(), a.clone()]),
-        ])));
+        return usize::from(
+            b.is_zero()
+                && zero(Sym::sum(vec![
+                    c[0].clone(),
+                    Sym::product(vec![c[1].clone(), a.clone()]),
+                ])),
+        );
     }
     let d1 = Sym::sum(vec![
         Sym::product(vec![Sym::int(2), c[2].clone(), a.clone()]),
@@ -262,11 +262,15 @@ fn multiplicity(c: &[Sym], a: &Sym, b: &Sym) -> usize {
         Sym::product(vec![c[1].clone(), a.clone()]),
         c[0].clone(),
     ]);
-    match (zero(re), zero(d1.clone()), b.is_zero()) {
-        (true, true, true) => 2,
-        (true, _, true) => 1,
-        (true, true, false) => 1,
-        _ => 0,
+    // a real root is double when the derivative vanishes too; a complex one needs the
+    // imaginary part, b (2 a2 a + a1), to vanish to be a root at all
+    let (root, d1_zero) = (zero(re), zero(d1));
+    if !root || (!b.is_zero() && !d1_zero) {
+        0
+    } else if b.is_zero() && d1_zero {
+        2
+    } else {
+        1
     }
 }
 

@@ -102,7 +102,10 @@ fn original(pos: usize, edits: &[Edit]) -> usize {
 fn relocate(e: ExprError, text: &str, func: &str, edits: &[Edit]) -> ExprError {
     let mut e = e;
     for k in (1..=4).rev() {
-        e = e.with_text_restored(&derivative_name(func, k), &format!("{func}{}", "'".repeat(k)));
+        e = e.with_text_restored(
+            &derivative_name(func, k),
+            &format!("{func}{}", "'".repeat(k)),
+        );
     }
     let start = original(e.span.start, edits).min(text.len());
     let end = original(e.span.end, edits).clamp(start, text.len());

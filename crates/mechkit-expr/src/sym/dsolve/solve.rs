@@ -135,7 +135,11 @@ impl Ode {
             )));
         }
         let general = constant::solve(self, &names)
-            .or_else(|| (self.order == 1).then(|| first_order::solve(self, &names)).flatten())
+            .or_else(|| {
+                (self.order == 1)
+                    .then(|| first_order::solve(self, &names))
+                    .flatten()
+            })
             .ok_or_else(|| {
                 no_method(if self.order == 1 {
                     "it is neither linear, separable (with an invertible integral) nor Bernoulli"
@@ -146,8 +150,7 @@ impl Ode {
             })?;
         for candidate in &general.candidates {
             for (solution, determined) in apply(self, candidate, &names, conditions) {
-                if let Some(verification) = verify(self, &solution, conditions, &general.positive)
-                {
+                if let Some(verification) = verify(self, &solution, conditions, &general.positive) {
                     let constants = names
                         .iter()
                         .filter(|c| !solution.free_of(c))

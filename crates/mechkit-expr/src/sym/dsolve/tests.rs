@@ -34,8 +34,16 @@ fn oscillators_in_every_damping_case() {
     let s = solve("x'' + 4*x = 0", "x(0)=1, x'(0)=0");
     assert_eq!(s.solution.to_string(), "cos(2*t)");
     assert_eq!(s.verification, Verification::Symbolic);
-    agrees(&solve("x'' + 3*x' + 2*x = 0", "x(0)=1, x'(0)=0").solution, "2*exp(-t) - exp(-2*t)", &[]);
-    agrees(&solve("x'' + 2*x' + x = 0", "x(0)=1, x'(0)=0").solution, "(1 + t)*exp(-t)", &[]);
+    agrees(
+        &solve("x'' + 3*x' + 2*x = 0", "x(0)=1, x'(0)=0").solution,
+        "2*exp(-t) - exp(-2*t)",
+        &[],
+    );
+    agrees(
+        &solve("x'' + 2*x' + x = 0", "x(0)=1, x'(0)=0").solution,
+        "(1 + t)*exp(-t)",
+        &[],
+    );
     agrees(
         &solve("x'' + 2*x' + 5*x = 0", "x(0)=1, x'(0)=-1").solution,
         "exp(-t)*cos(2*t)",
@@ -47,7 +55,11 @@ fn oscillators_in_every_damping_case() {
 fn symbolic_coefficients_assume_and_say_so() {
     let s = solve("m*x'' = -k*x", "x(0)=A, x'(0)=0");
     assert_eq!(s.assumptions, vec!["k/m > 0"]);
-    agrees(&s.solution, "A*cos(sqrt(k/m)*t)", &[("k", 2.0), ("m", 0.5), ("A", 0.3)]);
+    agrees(
+        &s.solution,
+        "A*cos(sqrt(k/m)*t)",
+        &[("k", 2.0), ("m", 0.5), ("A", 0.3)],
+    );
     let s = solve("m*x'' + c*x' + k*x = 0", "");
     assert_eq!(s.constants, vec!["C1", "C2"]);
     assert!(s.method.contains("under-damped"), "{}", s.method);
@@ -58,7 +70,11 @@ fn forcing_and_resonance() {
     let s = solve("x'' + w^2*x = cos(w*t)", "x(0)=0, x'(0)=0");
     assert!(s.method.contains("resonance"), "{}", s.method);
     agrees(&s.solution, "t*sin(w*t)/(2*w)", &[("w", 1.3)]);
-    agrees(&solve("x'' + x = t^2", "x(0)=0, x'(0)=0").solution, "t^2 - 2 + 2*cos(t)", &[]);
+    agrees(
+        &solve("x'' + x = t^2", "x(0)=0, x'(0)=0").solution,
+        "t^2 - 2 + 2*cos(t)",
+        &[],
+    );
     agrees(
         &solve("x'' - x = exp(t)", "x(0)=0, x'(0)=0").solution,
         "t*exp(t)/2 - exp(t)/4 + exp(-t)/4",
@@ -73,21 +89,37 @@ fn forcing_and_resonance() {
 
 #[test]
 fn first_order_methods() {
-    agrees(&solve("x' = -k*x", "x(0)=x0").solution, "x0*exp(-k*t)", &[("k", 0.7), ("x0", 2.0)]);
-    agrees(&solve("x' + x/t = t^2", "x(1)=1").solution, "t^3/4 + 3/(4*t)", &[]);
+    agrees(
+        &solve("x' = -k*x", "x(0)=x0").solution,
+        "x0*exp(-k*t)",
+        &[("k", 0.7), ("x0", 2.0)],
+    );
+    agrees(
+        &solve("x' + x/t = t^2", "x(1)=1").solution,
+        "t^3/4 + 3/(4*t)",
+        &[],
+    );
     agrees(&solve("x' = x^2", "x(0)=1").solution, "1/(1 - t)", &[]);
     agrees(&solve("x' = 1 + x^2", "x(0)=0").solution, "tan(t)", &[]);
     agrees(&solve("x' = t/x", "x(0)=2").solution, "sqrt(t^2 + 4)", &[]);
     let s = solve("x' + x = x^3", "x(0)=1/2");
-    assert!(s.method.starts_with("Bernoulli") || s.method == "separable", "{}", s.method);
+    assert!(
+        s.method.starts_with("Bernoulli") || s.method == "separable",
+        "{}",
+        s.method
+    );
     agrees(&s.solution, "1/sqrt(1 + 3*exp(2*t))", &[]);
 }
 
 #[test]
 fn what_is_refused() {
-    let e = Ode::parse("x'' + x = 0'", "x", "t").unwrap_err().to_string();
+    let e = Ode::parse("x'' + x = 0'", "x", "t")
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("column 12"), "{e}");
-    let e = Ode::parse("x'' + * x = 0", "x", "t").unwrap_err().to_string();
+    let e = Ode::parse("x'' + * x = 0", "x", "t")
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("column 7"), "{e}");
     assert!(Ode::parse("x + 1 = 0", "x", "t").is_err());
     let ode = Ode::parse("x'' + sin(x) = 0", "x", "t").unwrap();
@@ -120,7 +152,10 @@ fn show() {
         let ode = Ode::parse(eq, "x", "t").unwrap();
         let c = Condition::parse_list(ic, "x").unwrap();
         match ode.solve(&c) {
-            Ok(s) => println!("{eq} | {ic} => {} [{}] {:?} {:?}", s.solution, s.method, s.assumptions, s.verification),
+            Ok(s) => println!(
+                "{eq} | {ic} => {} [{}] {:?} {:?}",
+                s.solution, s.method, s.assumptions, s.verification
+            ),
             Err(e) => println!("{eq} | {ic} => ERR {e}"),
         }
     }

@@ -27,7 +27,10 @@ pub(super) fn verify(
         }
         d.substitute(&ode.var, &c.at)
     };
-    let conds: Vec<(Sym, Sym)> = conditions.iter().map(|c| (at(c), c.value.clone())).collect();
+    let conds: Vec<(Sym, Sym)> = conditions
+        .iter()
+        .map(|c| (at(c), c.value.clone()))
+        .collect();
     if residual.expand().is_zero()
         && conds
             .iter()
@@ -98,7 +101,10 @@ pub(super) fn verify(
         for (a, v) in &conds {
             // the scale of the condition: the terms of the solution's value there
             let scale = match a {
-                Sym::Add(ts) => ts.iter().map(|t| t.eval(&base).map_or(f64::NAN, f64::abs)).sum(),
+                Sym::Add(ts) => ts
+                    .iter()
+                    .map(|t| t.eval(&base).map_or(f64::NAN, f64::abs))
+                    .sum(),
                 other => other.eval(&base).map_or(f64::NAN, f64::abs),
             };
             let (a, v) = (a.eval(&base).ok()?, v.eval(&base).ok()?);
