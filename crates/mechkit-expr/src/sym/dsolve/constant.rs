@@ -6,6 +6,7 @@ use super::forcing::undetermined;
 use super::parse::{Ode, derivative_name};
 use super::solve::General;
 use crate::ast::Func;
+use crate::number::Number;
 use crate::sym::Sym;
 use crate::sym::identities::is_negated;
 
@@ -134,8 +135,8 @@ fn basis(a: &[Sym], t: &str) -> Basis {
             )
         } else {
             let beta = Sym::quotient(Sym::sqrt(Sym::Num(d.negated())), two_a2.clone());
-            let beta = if beta.as_num().is_some_and(|b| b.is_negative())
-                || a2.as_num().is_some_and(|n| n.is_negative())
+            let beta = if beta.as_num().is_some_and(Number::is_negative)
+                || a2.as_num().is_some_and(Number::is_negative)
             {
                 Sym::negate(beta)
             } else {
@@ -173,11 +174,25 @@ fn basis(a: &[Sym], t: &str) -> Basis {
                 w2,
             );
         }
-        // sqrt(w^2) is w up to a sign, which the constant of the sine takes
+        // sqrt(w^2) is w up to a sign, which the constant of the sine takes; w^2 > 0 says
+        // no more than w ≠ 0
+        if let Sym::Pow(b, n) = &q
+            && n.as_num()
+                .and_then(Number::as_integer)
+                .is_some_and(|k| k % 2 == 0)
+        {
+            let w = Sym::pow((**b).clone(), Sym::quotient((**n).clone(), Sym::int(2)));
+            return Basis {
+                functions: oscillating(&Sym::zero(), &w, t),
+                case: ", under-damped (oscillating)".into(),
+                assumptions: vec![format!("{w} ≠ 0")],
+                positive: Vec::new(),
+            };
+        }
         let w = match &q {
             Sym::Pow(b, n)
                 if n.as_num()
-                    .and_then(|n| n.as_integer())
+                    .and_then(Number::as_integer)
                     .is_some_and(|k| k % 2 == 0) =>
             {
                 Sym::pow((**b).clone(), Sym::quotient((**n).clone(), Sym::int(2)))

@@ -42,7 +42,7 @@ fn peel(lhs: &Sym, x: &str, rhs: Sym, constant: Option<&str>, depth: usize) -> V
             let root = Sym::pow(rhs, Sym::quotient(Sym::one(), (**e).clone()));
             let even = e
                 .as_num()
-                .and_then(|n| n.as_rational())
+                .and_then(crate::number::Number::as_rational)
                 .is_some_and(|(p, _)| p % 2 == 0);
             let mut out = next(b, root.clone());
             if even {

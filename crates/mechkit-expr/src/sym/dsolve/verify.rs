@@ -84,9 +84,8 @@ pub(super) fn verify(
         }
         let tv = -1.5 + 4.0 * frac(0.754_877_666 * f64::from(trial) + 0.2);
         let env = |n: &str| if n == ode.var { Some(tv) } else { base(n) };
-        let r = match residual.eval(&env) {
-            Ok(r) => r,
-            Err(_) => return None,
+        let Ok(r) = residual.eval(&env) else {
+            return None;
         };
         let scale: f64 = terms
             .iter()
