@@ -133,7 +133,7 @@ impl Ode {
     /// use mechkit_expr::sym::dsolve::Ode;
     /// let ode = Ode::parse("m*x'' = -k*x", "x", "t").unwrap();
     /// assert_eq!(ode.order, 2);
-    /// assert_eq!(ode.residual.to_string(), "k*x + m*__x_d2");
+    /// assert_eq!(ode.residual.to_string(), "__x_d2*m + k*x");
     /// ```
     pub fn parse(text: &str, func: &str, var: &str) -> Result<Ode, DsolveError> {
         if func == var {
