@@ -6,6 +6,9 @@ use super::ir::Inst;
 use super::kernel::{KernelBuilder, Val};
 use crate::ast::{BinOp, Func};
 
+/// An instruction without a derivative the kernel can express.
+struct NoRule;
+
 impl KernelBuilder {
     /// `∂y/∂x` for each `y` of `outputs`, where `x` is a value of this body (usually a slot's
     /// starting value, [`KernelBuilder::get`]): `Some(None)` where the derivative is zero by
@@ -38,7 +41,7 @@ impl KernelBuilder {
         }
         for i in (x.0 + 1)..=last {
             let inst = self.dag.insts[i as usize];
-            tangent[i as usize] = self.tangent(inst, Val(i), &tangent)?;
+            tangent[i as usize] = self.tangent(inst, Val(i), &tangent).ok()?;
         }
         Some(
             outputs
@@ -54,11 +57,12 @@ impl KernelBuilder {
         )
     }
 
-    /// The tangent of instruction `inst` (whose value is `y`), from its operands' tangents.
-    fn tangent(&mut self, inst: Inst, y: Val, t: &[Option<Val>]) -> Option<Option<Val>> {
+    /// The tangent of instruction `inst` (whose value is `y`), from its operands' tangents
+    /// (`None`: zero by structure).
+    fn tangent(&mut self, inst: Inst, y: Val, t: &[Option<Val>]) -> Result<Option<Val>, NoRule> {
         let d = |r: u32| t[r as usize];
         let v = Val;
-        Some(match inst {
+        Ok(match inst {
             Inst::Const(_)
             | Inst::Load(_)
             | Inst::Not(_)
@@ -95,10 +99,7 @@ impl KernelBuilder {
             Inst::Pow(a, b) => self.power(v(a), v(b), y, d(a), d(b)),
             Inst::Call1(f, a) => match d(a) {
                 None => None,
-                Some(da) => match self.outer(f, v(a), y)? {
-                    None => None,
-                    Some(g) => Some(self.times(g, da)),
-                },
+                Some(da) => self.outer(f, v(a), y)?.map(|g| self.times(g, da)),
             },
             Inst::Call2(f, a, b) => match f {
                 Func::Min | Func::Max => {
@@ -120,7 +121,7 @@ impl KernelBuilder {
                         self.div(n, den)
                     })
                 }
-                _ => return None,
+                _ => return Err(NoRule),
             },
             Inst::Select(c, a, b) => match (d(a), d(b)) {
                 (None, None) => None,
@@ -146,8 +147,8 @@ impl KernelBuilder {
     /// `a * b`, without multiplying by an exact 1.
     fn times(&mut self, a: Val, b: Val) -> Val {
         match (self.as_constant(a), self.as_constant(b)) {
-            (Some(c), _) if c == 1.0 => b,
-            (_, Some(c)) if c == 1.0 => a,
+            (Some(1.0), _) => b,
+            (_, Some(1.0)) => a,
             _ => self.mul(a, b),
         }
     }
@@ -191,8 +192,8 @@ impl KernelBuilder {
         Val(self.dag.fold(Inst::Pow(a.0, b.0)))
     }
 
-    /// `f'(a)` given `y = f(a)`: `Some(None)` for steps (zero), `None` when unknown.
-    fn outer(&mut self, f: Func, a: Val, y: Val) -> Option<Option<Val>> {
+    /// `f'(a)` given `y = f(a)`: `None` for steps (zero).
+    fn outer(&mut self, f: Func, a: Val, y: Val) -> Result<Option<Val>, NoRule> {
         let one = self.constant(1.0);
         let g = match f {
             Func::Sin => self.call(Func::Cos, a),
@@ -243,10 +244,10 @@ impl KernelBuilder {
                 self.div(one, s)
             }
             Func::Abs => self.call(Func::Sign, a),
-            Func::Sign | Func::Floor | Func::Ceil | Func::Heaviside => return Some(None),
-            Func::Atan2 | Func::Min | Func::Max | Func::If => return None,
+            Func::Sign | Func::Floor | Func::Ceil | Func::Heaviside => return Ok(None),
+            Func::Atan2 | Func::Min | Func::Max | Func::If => return Err(NoRule),
         };
-        Some(Some(g))
+        Ok(Some(g))
     }
 }
 

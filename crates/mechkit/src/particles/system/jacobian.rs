@@ -100,7 +100,7 @@ impl CompiledJacobian {
         let mut slots = vec![0.0; self.kernel.slots()];
         slots[0] = t;
         slots[1..=n].copy_from_slice(q);
-        slots[1 + n..1 + 2 * n].copy_from_slice(v);
+        slots[(1 + n)..=(2 * n)].copy_from_slice(v);
         self.kernel.run(&mut slots, 1);
         let out = &slots[1 + 2 * n..];
         da_dq.copy_from_slice(&out[..n * n]);
