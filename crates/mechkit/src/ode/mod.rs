@@ -49,6 +49,7 @@ mod system;
 mod tableau;
 pub mod testset;
 mod verlet;
+mod weights;
 
 pub use adaptive::AdaptiveRk;
 pub use bdf::{Bdf, MAX_ORDER as BDF_MAX_ORDER};

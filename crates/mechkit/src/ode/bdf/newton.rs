@@ -6,6 +6,7 @@
 use super::{Bdf, NEWTON_MAX_ITER};
 use crate::Real;
 use crate::ode::OdeSystem;
+use crate::ode::weights::{first_step, set_weights, trial_step, weighted_rms};
 
 impl Bdf {
     /// Forms the Jacobian at `(t, y)` (by differences: `n + 1` evaluations).
@@ -107,24 +108,7 @@ impl Bdf {
 
     /// The RMS norm of the vector `v(0), …, v(n − 1)` in the weights `scale`.
     pub(super) fn norm_by(&self, n: usize, v: impl Fn(usize) -> Real) -> Real {
-        let n = self.controlled(n);
-        if n == 0 {
-            return 0.0;
-        }
-        let sum: Real = (0..n)
-            .map(|i| {
-                let vi = v(i);
-                if self.scale[i] > 0.0 {
-                    let r = vi / self.scale[i];
-                    r * r
-                } else if vi == 0.0 {
-                    0.0
-                } else {
-                    Real::INFINITY
-                }
-            })
-            .sum();
-        (sum / n as Real).sqrt()
+        weighted_rms(&self.scale, self.controlled(n), v)
     }
 
     pub(super) fn controlled(&self, n: usize) -> usize {
@@ -133,13 +117,7 @@ impl Bdf {
 
     /// The weights `atol + rtol max(|y₀|, |y₁|)`.
     pub(super) fn set_scale(&mut self, y0: &[Real], y1: Option<&[Real]>) {
-        for i in 0..y0.len() {
-            let size = match y1 {
-                Some(y1) => y0[i].abs().max(y1[i].abs()),
-                None => y0[i].abs(),
-            };
-            self.scale[i] = self.config.atol.at(i) + self.config.rtol.at(i) * size;
-        }
+        set_weights(&self.config, y0, y1, &mut self.scale);
     }
 
     /// A first step for order 1 from the sizes of `y`, `f = f(t, y)` (in `self.f0`) and the
@@ -155,12 +133,7 @@ impl Bdf {
         self.set_scale(y, None);
         let d0 = self.norm(y);
         let d1 = self.norm(&self.f0);
-        let mut h0 = if d0 < 1e-5 || d1 < 1e-5 {
-            1e-6
-        } else {
-            0.01 * d0 / d1
-        };
-        h0 = h0.min(self.config.h_max).min(span);
+        let h0 = trial_step(&self.config, d0, d1, span);
         for i in 0..n {
             self.y_work[i] = y[i] + h0 * self.f0[i];
         }
@@ -170,16 +143,6 @@ impl Bdf {
             self.dy[i] = self.f[i] - self.f0[i];
         }
         let d2 = self.norm(&self.dy) / h0;
-        let h1 = if d1.max(d2) <= 1e-15 {
-            (h0 * 1e-3).max(1e-6)
-        } else {
-            (0.01 / d1.max(d2)).sqrt()
-        };
-        let h = (100.0 * h0).min(h1).min(self.config.h_max).min(span);
-        if h > 0.0 && h.is_finite() {
-            h
-        } else {
-            Real::min(1e-6, self.config.h_max).min(span)
-        }
+        first_step(&self.config, h0, d1, d2, span, 1)
     }
 }

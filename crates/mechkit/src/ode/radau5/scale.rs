@@ -6,26 +6,11 @@
 use super::Radau5;
 use crate::Real;
 use crate::ode::OdeSystem;
+use crate::ode::weights::{first_step, set_weights, trial_step, weighted_rms};
 
 impl Radau5 {
     pub(super) fn norm(&self, v: &[Real]) -> Real {
-        let n = self.controlled(v.len());
-        if n == 0 {
-            return 0.0;
-        }
-        let sum: Real = (0..n)
-            .map(|i| {
-                let r = v[i] / self.scale[i];
-                if self.scale[i] > 0.0 {
-                    r * r
-                } else if v[i] == 0.0 {
-                    0.0
-                } else {
-                    Real::INFINITY
-                }
-            })
-            .sum();
-        (sum / n as Real).sqrt()
+        weighted_rms(&self.scale, self.controlled(v.len()), |i| v[i])
     }
 
     pub(super) fn controlled(&self, n: usize) -> usize {
@@ -33,13 +18,7 @@ impl Radau5 {
     }
 
     pub(super) fn set_scale(&mut self, y0: &[Real], y1: Option<&[Real]>) {
-        for i in 0..y0.len() {
-            let size = match y1 {
-                Some(y1) => y0[i].abs().max(y1[i].abs()),
-                None => y0[i].abs(),
-            };
-            self.scale[i] = self.config.atol.at(i) + self.config.rtol.at(i) * size;
-        }
+        set_weights(&self.config, y0, y1, &mut self.scale);
     }
 
     /// A first step from the sizes of `y` and `f` (Hairer, *Solving ODEs I*, Sec. II.4, for
@@ -56,12 +35,7 @@ impl Radau5 {
         let d0 = self.norm(y);
         let f0 = self.f0.clone();
         let d1 = self.norm(&f0);
-        let mut h0 = if d0 < 1e-5 || d1 < 1e-5 {
-            1e-6
-        } else {
-            0.01 * d0 / d1
-        };
-        h0 = h0.min(self.config.h_max).min(span);
+        let h0 = trial_step(&self.config, d0, d1, span);
         for i in 0..n {
             self.y_stage[i] = y[i] + h0 * f0[i];
         }
@@ -70,16 +44,6 @@ impl Radau5 {
         self.y_stage = ys;
         let diff: Vec<Real> = (0..n).map(|i| self.f[0][i] - f0[i]).collect();
         let d2 = self.norm(&diff) / h0;
-        let h1 = if d1.max(d2) <= 1e-15 {
-            (h0 * 1e-3).max(1e-6)
-        } else {
-            (0.01 / d1.max(d2)).powf(1.0 / 4.0)
-        };
-        let h = (100.0 * h0).min(h1).min(self.config.h_max).min(span);
-        if h > 0.0 && h.is_finite() {
-            h
-        } else {
-            Real::min(1e-6, self.config.h_max).min(span)
-        }
+        first_step(&self.config, h0, d1, d2, span, 3)
     }
 }
