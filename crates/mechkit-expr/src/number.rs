@@ -239,6 +239,33 @@ impl Number {
         Some(Number::rational(root(n)?, root(d)?))
     }
 
+    /// A positive rational as `a^k · r` with `a` the largest factor made of primes below 1000
+    /// (`396/25`, k = 2 → `(6/5, 11)`): what comes out of a `k`-th root. `None` when nothing
+    /// comes out, or for a negative number or a float.
+    pub fn split_power(self, k: u32) -> Option<(Number, Number)> {
+        let Number::Rational(n, d) = self else {
+            return None;
+        };
+        if n <= 0 || k < 2 {
+            return None;
+        }
+        let take = |mut v: i128| -> (i128, i128) {
+            let mut out = 1i128;
+            let mut p = 2i128;
+            while p < 1000 && p.checked_pow(k).is_some_and(|pk| pk <= v) {
+                let pk = p.pow(k);
+                while v % pk == 0 {
+                    v /= pk;
+                    out *= p;
+                }
+                p += 1;
+            }
+            (out, v)
+        };
+        let ((on, n1), (od, d1)) = (take(n), take(d));
+        (on != 1 || od != 1).then(|| (Number::rational(on, od), Number::rational(n1, d1)))
+    }
+
     /// Total order (NaN last).
     pub fn total_cmp(&self, other: &Number) -> Ordering {
         match (self, other) {

@@ -193,6 +193,13 @@ impl Sym {
                     && let Some(v) = root.powi(p)
                 {
                     return Sym::Num(v);
+                } else if let Some((p, q)) = e.as_rational()
+                    && let Ok(q) = u32::try_from(q)
+                    && let Some((outside, inside)) = b.split_power(q)
+                    && let Some(factor) = outside.powi(p)
+                {
+                    // sqrt(396/25) = 6*sqrt(11)/5: the perfect powers come out of a root
+                    return Sym::product(vec![Sym::Num(factor), Sym::pow(Sym::Num(inside), exp)]);
                 } else if !b.is_exact() || !e.is_exact() {
                     return Sym::Num(Number::Float(crate::ast::pow(b.to_f64(), e.to_f64())));
                 }
