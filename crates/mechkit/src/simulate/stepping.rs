@@ -24,7 +24,7 @@ pub enum Stepping {
     },
     /// Steps chosen by the error estimate of a Runge-Kutta pair or an implicit method.
     Adaptive {
-        /// The method (one with [`MethodKind::Adaptive`] or [`MethodKind::Implicit`]).
+        /// The method (one with [`crate::ode::MethodKind::Adaptive`] or [`crate::ode::MethodKind::Implicit`]).
         method: Method,
         /// Tolerances and limits.
         config: AdaptiveConfig,
