@@ -5,6 +5,12 @@
 use super::control::AdaptiveConfig;
 use crate::Real;
 
+/// How many of `n` components the error is measured on (`error_components`, the leading
+/// ones: the motion, not the works carried along).
+pub(super) fn controlled(config: &AdaptiveConfig, n: usize) -> usize {
+    config.error_components.unwrap_or(n).min(n)
+}
+
 /// Writes the weights `atol_i + rtol_i max(|y0_i|, |y1_i|)` into `w`.
 pub(super) fn set_weights(
     config: &AdaptiveConfig,

@@ -6,7 +6,7 @@
 use super::{Bdf, NEWTON_MAX_ITER};
 use crate::Real;
 use crate::ode::OdeSystem;
-use crate::ode::weights::{first_step, set_weights, trial_step, weighted_rms};
+use crate::ode::weights::{controlled, first_step, set_weights, trial_step, weighted_rms};
 
 impl Bdf {
     /// Forms the Jacobian at `(t, y)` (by differences: `n + 1` evaluations).
@@ -112,7 +112,7 @@ impl Bdf {
     }
 
     pub(super) fn controlled(&self, n: usize) -> usize {
-        self.config.error_components.unwrap_or(n).min(n)
+        controlled(&self.config, n)
     }
 
     /// The weights `atol + rtol max(|y₀|, |y₁|)`.

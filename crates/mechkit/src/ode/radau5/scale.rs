@@ -6,7 +6,7 @@
 use super::Radau5;
 use crate::Real;
 use crate::ode::OdeSystem;
-use crate::ode::weights::{first_step, set_weights, trial_step, weighted_rms};
+use crate::ode::weights::{controlled, first_step, set_weights, trial_step, weighted_rms};
 
 impl Radau5 {
     pub(super) fn norm(&self, v: &[Real]) -> Real {
@@ -14,7 +14,7 @@ impl Radau5 {
     }
 
     pub(super) fn controlled(&self, n: usize) -> usize {
-        self.config.error_components.unwrap_or(n).min(n)
+        controlled(&self.config, n)
     }
 
     pub(super) fn set_scale(&mut self, y0: &[Real], y1: Option<&[Real]>) {
