@@ -7,7 +7,7 @@
 
 #![allow(unsafe_code)]
 
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
 use cranelift_codegen::ir::condcodes::FloatCC;
 use std::collections::HashMap;
@@ -21,6 +21,7 @@ use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
 use cranelift_jit::{JITBuilder, JITModule};
 use cranelift_module::{Linkage, Module, default_libcall_names};
 
+use super::cache::{self, Cache, Word};
 use super::ir::{Inst, Ir};
 use super::kernel::Body;
 use crate::ast::{BinOp, Func};
@@ -306,7 +307,27 @@ fn slot_offset(s: u32) -> Result<i32, String> {
     i32::try_from(8 * u64::from(s)).map_err(|e| err(&e))
 }
 
+/// Compiled formulas, shared by equal instruction lists.
+static PROGRAMS: Cache<Native> = Cache::new();
+
+/// Formulas whose code is kept now.
+#[cfg(test)]
+pub(super) fn programs_kept() -> usize {
+    PROGRAMS.len()
+}
+
+/// Compiled kernels, shared by equal bodies.
+static KERNELS: Cache<NativeKernel> = Cache::new();
+
 impl Native {
+    /// The native code of `ir`: the code compiled before for the same instructions, else
+    /// compiled now ([`Native::compile`]) and kept for the next.
+    pub(super) fn shared(ir: &Ir) -> Result<Arc<Native>, String> {
+        let mut key = cache::key(&ir.insts);
+        key.push(Word::extra(ir.result));
+        PROGRAMS.get_or_compile(key, || Native::compile(ir))
+    }
+
     pub(super) fn compile(ir: &Ir) -> Result<Native, String> {
         let mut m = Jit::new(&ir.insts)?;
         let mut sig = m.module.make_signature();
@@ -366,6 +387,14 @@ impl Drop for NativeKernel {
 }
 
 impl NativeKernel {
+    /// The native code of `body`, shared as [`Native::shared`].
+    pub(super) fn shared(body: &Body) -> Result<Arc<NativeKernel>, String> {
+        let mut key = cache::key(&body.insts);
+        key.extend(body.stores.iter().map(|&s| Word::extra(s)));
+        key.push(Word::extra(u32::try_from(body.slots).map_err(|e| err(&e))?));
+        KERNELS.get_or_compile(key, || NativeKernel::compile(body))
+    }
+
     pub(super) fn compile(body: &Body) -> Result<NativeKernel, String> {
         let mut m = Jit::new(&body.insts)?;
         let ptr = m.pointer_type();

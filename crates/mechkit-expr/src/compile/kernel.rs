@@ -237,9 +237,7 @@ impl Kernel {
     pub fn native(mut self) -> Kernel {
         #[cfg(feature = "jit")]
         if self.native.is_none() && super::jit::enabled() {
-            self.native = super::jit::NativeKernel::compile(&self.body)
-                .ok()
-                .map(Arc::new);
+            self.native = super::jit::NativeKernel::shared(&self.body).ok();
         }
         self
     }

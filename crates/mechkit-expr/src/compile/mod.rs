@@ -1,10 +1,13 @@
 //! Formulas compiled for the hot loop: names resolved to slots of a variable slice, constants
 //! folded, common sub-expressions computed once. Two evaluators agree bit for bit: a portable
 //! interpreter, and native code generated with Cranelift (feature `jit`, the default fast
-//! path; [`Program::native`] attaches it). Over intervals, [`Program::eval_interval`] and
+//! path; [`Program::native`] attaches it, shared with every program of the same
+//! instructions, so a sweep that rebuilds its scenario per run compiles each formula once). Over intervals, [`Program::eval_interval`] and
 //! [`Program::eval_jet`] bound a formula and its derivative over a box (see
 //! [`crate::interval`]), by the same instructions.
 
+#[cfg(feature = "jit")]
+mod cache;
 mod derivative;
 mod domain;
 mod ir;
@@ -79,9 +82,15 @@ impl Program {
     pub fn native(mut self) -> Program {
         #[cfg(feature = "jit")]
         if self.native.is_none() && self.ir.as_constant().is_none() && jit::enabled() {
-            self.native = jit::Native::compile(&self.ir).ok().map(Arc::new);
+            self.native = jit::Native::shared(&self.ir).ok();
         }
         self
+    }
+
+    /// The native code attached, for tests of its sharing.
+    #[cfg(all(test, feature = "jit"))]
+    pub(crate) fn native_code(&self) -> Option<&Arc<jit::Native>> {
+        self.native.as_ref()
     }
 
     /// Whether evaluation runs native code.
