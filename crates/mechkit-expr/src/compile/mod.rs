@@ -89,7 +89,7 @@ impl Program {
 
     /// The native code attached, for tests of its sharing.
     #[cfg(all(test, feature = "jit"))]
-    pub(crate) fn native_code(&self) -> Option<&Arc<jit::Native>> {
+    fn native_code(&self) -> Option<&Arc<jit::Native>> {
         self.native.as_ref()
     }
 
