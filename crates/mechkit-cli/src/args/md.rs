@@ -77,6 +77,16 @@ pub struct MdArgs {
     /// Neighbour-list skin in σ.
     #[arg(long, default_value_t = 0.3, allow_hyphen_values = true)]
     pub skin: f64,
+    /// Check the neighbour list every this many steps (LAMMPS: neigh_modify every N); 1,
+    /// the default, never misses a pair; larger saves builds and reports any that came late
+    /// ("dangerous builds").
+    #[arg(value_parser = super::whole_count, long, default_value_t = 1, allow_hyphen_values = true)]
+    pub neigh_every: usize,
+    /// At a check, rebuild only if an atom moved more than half the skin (yes, the default)
+    /// or always (no) (LAMMPS: neigh_modify check yes|no).
+    #[arg(long, value_name = "yes|no", default_value = "yes", action = clap::ArgAction::Set,
+        value_parser = clap::builder::BoolishValueParser::new())]
+    pub neigh_check: bool,
     /// Threads for the forces (results are bit-identical for any number).
     #[arg(value_parser = super::whole_count, long, default_value_t = 1, allow_hyphen_values = true)]
     pub threads: usize,

@@ -30,6 +30,7 @@ fn flag(option: MdOption) -> &'static str {
         MdOption::Steps => "--steps",
         MdOption::ThermoEvery => "--thermo-every",
         MdOption::XyzEvery => "--xyz-every",
+        MdOption::NeighEvery => "--neigh-every",
     }
 }
 
@@ -73,6 +74,8 @@ pub fn options(args: &MdArgs) -> Result<MdOptions> {
         cutoff: args.cutoff,
         shift: args.shift,
         skin: args.skin,
+        neigh_every: args.neigh_every,
+        neigh_check: args.neigh_check,
         threads: args.threads,
         thermo_every: args.thermo_every,
         xyz_every: args.xyz_every,

@@ -14,7 +14,7 @@ use super::arguments::{count, flag, number, text, type_name, whole};
 use crate::errors::MechkitError;
 
 /// The keyword arguments `mechkit.md` takes.
-pub const NAMES: [&str; 23] = [
+pub const NAMES: [&str; 25] = [
     "lattice",
     "cells",
     "density",
@@ -35,6 +35,8 @@ pub const NAMES: [&str; 23] = [
     "cutoff",
     "shift",
     "skin",
+    "neigh_every",
+    "neigh_check",
     "threads",
     "thermo_every",
     "xyz_every",
@@ -100,6 +102,8 @@ fn set(o: &mut MdOptions, key: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         "cutoff" => o.cutoff = number(key, value)?,
         "shift" => o.shift = flag(key, value)?,
         "skin" => o.skin = number(key, value)?,
+        "neigh_every" => o.neigh_every = count(key, value)?,
+        "neigh_check" => o.neigh_check = flag(key, value)?,
         "threads" => o.threads = count(key, value)?,
         "thermo_every" => o.thermo_every = count(key, value)?,
         "xyz_every" => o.xyz_every = Some(count(key, value)?),

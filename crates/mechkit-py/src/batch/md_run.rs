@@ -128,6 +128,7 @@ fn keyword(option: MdOption) -> &'static str {
         MdOption::Steps => "steps",
         MdOption::ThermoEvery => "thermo_every",
         MdOption::XyzEvery => "xyz_every",
+        MdOption::NeighEvery => "neigh_every",
     }
 }
 

@@ -41,6 +41,8 @@ pub enum MdInput {
     ThermoEvery,
     /// The steps between frames.
     FrameEvery,
+    /// The steps between neighbour-list checks.
+    NeighEvery,
 }
 
 impl MdInput {
@@ -51,6 +53,7 @@ impl MdInput {
             Self::Temperature => "the temperature",
             Self::TimeStep => "the time step dt",
             Self::Skin => "the skin",
+            Self::NeighEvery => "the steps between neighbour-list checks",
             Self::Threads => "the number of threads",
             Self::Cutoff => "the cut-off",
             Self::Mass => "the mass",

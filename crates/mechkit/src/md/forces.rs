@@ -12,7 +12,8 @@ use rayon::prelude::*;
 
 use crate::Real;
 
-use super::neighbour::{SlabList, half_lengths, near_image};
+use super::kernel::pair_kernel;
+use super::neighbour::{SlabList, half_lengths};
 use super::{NeighbourList, PairPotential, SimBox};
 
 /// The potential energy and the virial W = Σ_pairs r_ij · F_ij of a force evaluation.
@@ -62,6 +63,33 @@ pub fn compute_forces_with<P: PairPotential>(
     pool: Option<&rayon::ThreadPool>,
     scratch: &mut ForceScratch,
 ) -> PairSums {
+    forces::<P, true>(potential, sim_box, list, x, f, pool, scratch)
+}
+
+/// The forces only, as [`compute_forces_with`] computes them bit for bit, without the energy
+/// and the virial (a step whose energy nobody reads).
+pub(crate) fn forces_only<P: PairPotential>(
+    potential: &P,
+    sim_box: &SimBox,
+    list: &NeighbourList,
+    x: &[[Real; 3]],
+    f: &mut [[Real; 3]],
+    pool: Option<&rayon::ThreadPool>,
+    scratch: &mut ForceScratch,
+) {
+    forces::<P, false>(potential, sim_box, list, x, f, pool, scratch);
+}
+
+/// The forces, and the sums when `ENERGY`.
+fn forces<P: PairPotential, const ENERGY: bool>(
+    potential: &P,
+    sim_box: &SimBox,
+    list: &NeighbourList,
+    x: &[[Real; 3]],
+    f: &mut [[Real; 3]],
+    pool: Option<&rayon::ThreadPool>,
+    scratch: &mut ForceScratch,
+) -> PairSums {
     assert!(
         x.len() == list.len() && f.len() == list.len(),
         "compute_forces: {} positions and {} forces for a list of {} particles",
@@ -93,7 +121,7 @@ pub fn compute_forces_with<P: PairPotential>(
             }
             fl.clear();
             fl.resize(own + next, [0.0; 3]);
-            pair_kernel(potential, (lengths, half), rc2, slab, own, xl, fl)
+            pair_kernel::<P, ENERGY>(potential, (lengths, half), rc2, slab, own, xl, fl)
         };
     let partial: Vec<(Real, Real)> = match pool {
         Some(pool) => pool.install(|| {
@@ -138,80 +166,6 @@ pub fn compute_forces_with<P: PairPotential>(
         sums.virial += w;
     }
     sums
-}
-
-/// One slab's pairs: forces into `fl` (indexed like `xl`: own particles, then the next
-/// slab's), returning the slab's energy and virial.
-#[inline(never)]
-fn pair_kernel<P: PairPotential>(
-    potential: &P,
-    box_: ([Real; 3], [Real; 3]),
-    rc2: Real,
-    slab: &SlabList,
-    own: usize,
-    xl: &[[Real; 3]],
-    fl: &mut [[Real; 3]],
-) -> (Real, Real) {
-    let (mut u_sum, mut w_sum) = (0.0, 0.0);
-    for i in 0..own {
-        let nb = &slab.neighbours[slab.start[i]..slab.start[i + 1]];
-        let (acc, u, w) = if slab.wraps[i] {
-            row::<P, true>(potential, box_, rc2, xl[i], nb, xl, fl)
-        } else {
-            row::<P, false>(potential, box_, rc2, xl[i], nb, xl, fl)
-        };
-        u_sum += u;
-        w_sum += w;
-        let fi = &mut fl[i];
-        fi[0] += acc[0];
-        fi[1] += acc[1];
-        fi[2] += acc[2];
-    }
-    (u_sum, w_sum)
-}
-
-/// The pairs of one particle at `xi` with its listed partners `nb`: their reactions go into
-/// `fl`, the particle's own force, the energy and the virial are returned. `WRAP`: apply
-/// the minimum image (`box_` = lengths and half-lengths), else the plain difference.
-#[inline]
-fn row<P: PairPotential, const WRAP: bool>(
-    potential: &P,
-    (lengths, half): ([Real; 3], [Real; 3]),
-    rc2: Real,
-    xi: [Real; 3],
-    nb: &[u32],
-    xl: &[[Real; 3]],
-    fl: &mut [[Real; 3]],
-) -> ([Real; 3], Real, Real) {
-    let (mut acc, mut u_sum, mut w_sum) = ([0.0; 3], 0.0, 0.0);
-    for &w in nb {
-        let w = w as usize;
-        let xj = xl[w];
-        let (mut dx, mut dy, mut dz) = (xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
-        if WRAP {
-            dx = near_image(dx, lengths[0], half[0]);
-            dy = near_image(dy, lengths[1], half[1]);
-            dz = near_image(dz, lengths[2], half[2]);
-        }
-        let r2 = dx * dx + dy * dy + dz * dz;
-        // Branch-free: pairs beyond the cut-off are evaluated at r = r_c and multiplied
-        // by 0 (about 30 % of a list with a 0.3σ skin; a branch on them mispredicts,
-        // and LLVM turns a select of the results back into one).
-        let mask = Real::from(u8::from(r2 < rc2));
-        let (u, f_over_r) = potential.energy_force(r2.min(rc2));
-        let (u, f_over_r) = (mask * u, mask * f_over_r);
-        let (fx, fy, fz) = (f_over_r * dx, f_over_r * dy, f_over_r * dz);
-        acc[0] += fx;
-        acc[1] += fy;
-        acc[2] += fz;
-        let fj = &mut fl[w];
-        fj[0] -= fx;
-        fj[1] -= fy;
-        fj[2] -= fz;
-        u_sum += u;
-        w_sum += f_over_r * r2;
-    }
-    (acc, u_sum, w_sum)
 }
 
 /// The same sums over all pairs (minimum image, no list): the O(N²) reference the

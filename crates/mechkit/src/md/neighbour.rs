@@ -21,6 +21,7 @@ use crate::Real;
 
 use super::SimBox;
 use super::cell_list::{CellList, REACH};
+use super::list_build::SlabBuild;
 
 /// Half the box length on periodic axes, ∞ on open ones.
 pub(crate) fn half_lengths(sim_box: &SimBox) -> [Real; 3] {
@@ -70,33 +71,6 @@ pub struct NeighbourList {
     layer_slab: Vec<usize>,
 }
 
-/// Appends `first + k` for each candidate k closer to `xi` than √r2 (minimum image if
-/// `WRAP`), by branch-free compaction: every candidate is written and those in range kept
-/// (a branch on them would mispredict often).
-#[inline]
-fn scan<const WRAP: bool>(
-    xi: [Real; 3],
-    candidates: &[[Real; 3]],
-    first: u32,
-    r2: Real,
-    (lengths, half): ([Real; 3], [Real; 3]),
-    out: &mut Vec<u32>,
-) {
-    let mut k = out.len();
-    out.resize(k + candidates.len(), 0);
-    for (j, xj) in (first..).zip(candidates) {
-        let (mut dx, mut dy, mut dz) = (xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
-        if WRAP {
-            dx = near_image(dx, lengths[0], half[0]);
-            dy = near_image(dy, lengths[1], half[1]);
-            dz = near_image(dz, lengths[2], half[2]);
-        }
-        out[k] = j;
-        k += usize::from(dx * dx + dy * dy + dz * dz < r2);
-    }
-    out.truncate(k);
-}
-
 impl NeighbourList {
     /// The half list of pairs closer than `range` (minimum image on periodic axes), built
     /// through a cell list, on `pool` when given (same result either way). Positions must
@@ -123,79 +97,17 @@ impl NeighbourList {
         self.range = range;
         self.cells.rebuild(sim_box, x, range, pool);
         self.split_slabs(sim_box.is_periodic()[0]);
-        let lengths = sim_box.lengths();
-        let box_ = (lengths, half_lengths(sim_box));
-        let periodic = sim_box.is_periodic();
-        let single = self.slabs.len() == 1;
-        let r2 = range * range;
-        let (cells, bounds, next, layer_slab) =
-            (&self.cells, &self.bounds, &self.next, &self.layer_slab);
-        let build_slab = |(s, list): (usize, &mut SlabList)| {
-            let (lo, hi) = (bounds[s], bounds[s + 1]);
-            let lo_next = next[s].map_or(0, |t| bounds[t]);
-            let own = hi - lo;
-            list.start.clear();
-            list.neighbours.clear();
-            list.wraps.clear();
-            list.shift_next = next[s].is_some_and(|t| t < s);
-            list.start.push(0);
-            for i in lo..hi {
-                let xi = cells.sorted[i];
-                let c = cells.coords(cells.cell[i]);
-                let edge = |a: usize| periodic[a] && (c[a] < REACH || c[a] + REACH >= cells.n[a]);
-                let wraps = (single && edge(0)) || edge(1) || edge(2);
-                list.wraps.push(wraps);
-                for &cx in cells.adjacent[0][c[0]].as_slice() {
-                    let t = layer_slab[cx as usize];
-                    let same = t == s;
-                    if !same && next[s] != Some(t) {
-                        continue;
-                    }
-                    for &cy in cells.adjacent[1][c[1]].as_slice() {
-                        // The z-adjacent cells in runs: each run is one range of atoms.
-                        for &(z0, z1) in cells.adjacent[2][c[2]].runs() {
-                            let row = (cx as usize * cells.n[1] + cy as usize) * cells.n[2];
-                            let (mut a, b) = (
-                                cells.first[row + z0 as usize],
-                                cells.first[row + z1 as usize + 1],
-                            );
-                            // Inside the slab the lower sorted index owns the pair.
-                            let base = if same {
-                                a = a.max(i + 1);
-                                lo
-                            } else {
-                                lo_next
-                            };
-                            let offset = if same { 0 } else { own };
-                            if a >= b {
-                                continue;
-                            }
-                            let first = (a - base + offset) as u32;
-                            let shift = if !same && list.shift_next {
-                                lengths[0]
-                            } else {
-                                0.0
-                            };
-                            let xi = [xi[0] - shift, xi[1], xi[2]];
-                            let candidates = &cells.sorted[a..b];
-                            if wraps {
-                                scan::<true>(xi, candidates, first, r2, box_, &mut list.neighbours);
-                            } else {
-                                scan::<false>(
-                                    xi,
-                                    candidates,
-                                    first,
-                                    r2,
-                                    box_,
-                                    &mut list.neighbours,
-                                );
-                            }
-                        }
-                    }
-                }
-                list.start.push(list.neighbours.len());
-            }
+        let build = SlabBuild {
+            cells: &self.cells,
+            bounds: &self.bounds,
+            next: &self.next,
+            layer_slab: &self.layer_slab,
+            periodic: sim_box.is_periodic(),
+            single: self.slabs.len() == 1,
+            box_: (sim_box.lengths(), half_lengths(sim_box)),
+            r2: range * range,
         };
+        let build_slab = |(s, list): (usize, &mut SlabList)| build.slab(s, list);
         match pool {
             Some(pool) => pool.install(|| {
                 self.slabs.par_iter_mut().enumerate().for_each(build_slab);

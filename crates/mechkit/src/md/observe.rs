@@ -133,17 +133,18 @@ impl<P: PairPotential> Md<P> {
 
     /// Energies, temperature and pressure now.
     pub fn thermo(&self) -> Thermo {
+        let sums = self.pair_sums();
         let d = self.sim_box.dim() as Real;
         let n = self.len() as Real;
         let kinetic = self.kinetic_energy();
         let temperature = 2.0 * kinetic / (d * (n - 1.0).max(1.0));
-        let pressure = (n * temperature + self.sums.virial / d) / self.sim_box.volume();
+        let pressure = (n * temperature + sums.virial / d) / self.sim_box.volume();
         Thermo {
             step: self.steps,
             t: self.steps as Real * self.config.dt,
             kinetic,
-            potential: self.sums.potential,
-            total: kinetic + self.sums.potential,
+            potential: sums.potential,
+            total: kinetic + sums.potential,
             temperature,
             pressure,
         }

@@ -27,6 +27,9 @@ pub struct MdReport {
     pub atom_steps_per_second: Real,
     /// Neighbour-list builds.
     pub list_builds: usize,
+    /// Builds that came after an atom had moved more than half the skin
+    /// ([`Md::dangerous_builds`]): pairs may have been missed when not 0.
+    pub dangerous_builds: usize,
     /// (E_last − E_first)/N (ε): the energy drift of velocity Verlet.
     pub energy_change_per_atom: Real,
     /// The mean-square displacement ⟨|x(t) − x(0)|²⟩ (σ²).
@@ -57,6 +60,7 @@ impl<P: PairPotential> Md<P> {
             seconds: run.seconds,
             atom_steps_per_second: atom_steps / run.seconds.max(1e-12),
             list_builds: self.rebuilds(),
+            dangerous_builds: self.dangerous_builds(),
             energy_change_per_atom: energy_change,
             msd: self.mean_square_displacement(),
             thermo: run.rows.iter().map(|r| r.per_atom(n)).collect(),

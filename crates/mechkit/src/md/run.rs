@@ -153,12 +153,15 @@ impl<P: PairPotential> Md<P> {
                 stop = MdStop::Full;
                 break;
             }
-            if let Err(e) = self.run(1) {
+            let row_due = step % thermo_every == 0 || step == plan.steps;
+            let frame_due = plan.frame_every.is_some_and(|k| step % k.max(1) == 0);
+            // the energy is summed at the steps whose rows or frames are taken
+            if let Err(e) = self.step_checked(row_due || frame_due) {
                 stop = MdStop::Diverged(e);
                 break;
             }
             observer.step(step);
-            if step % thermo_every == 0 || step == plan.steps {
+            if row_due {
                 let row = self.thermo();
                 // the finiteness rule: a row that is not all numbers is not written
                 if let Some(e) = not_finite(&row) {
@@ -168,7 +171,7 @@ impl<P: PairPotential> Md<P> {
                 observer.thermo(&row)?;
                 rows.push(row);
             }
-            if plan.frame_every.is_some_and(|k| step % k.max(1) == 0) {
+            if frame_due {
                 observer.frame(self)?;
             }
         }
@@ -176,6 +179,7 @@ impl<P: PairPotential> Md<P> {
             stop = MdStop::Full;
         }
         if rows.last().is_none_or(|r| r.step != self.steps()) {
+            self.refresh_sums();
             let row = self.thermo();
             match not_finite(&row) {
                 None => {

@@ -64,6 +64,11 @@ pub struct MdOptions {
     pub shift: bool,
     /// The neighbour list's skin.
     pub skin: Real,
+    /// Steps between neighbour-list checks (LAMMPS's `neigh_modify every`).
+    pub neigh_every: usize,
+    /// Whether a due check rebuilds only when a particle moved more than half the skin
+    /// (`check yes`) or always (`check no`).
+    pub neigh_check: bool,
     /// Threads of the force loop.
     pub threads: usize,
     /// Steps between thermo rows.
@@ -95,6 +100,8 @@ impl Default for MdOptions {
             cutoff: 2.5,
             shift: false,
             skin: 0.3,
+            neigh_every: 1,
+            neigh_check: true,
             threads: 1,
             thermo_every: 50,
             xyz_every: None,
@@ -157,6 +164,7 @@ pub enum MdOption {
     Steps,
     ThermoEvery,
     XyzEvery,
+    NeighEvery,
 }
 
 impl MdOption {
@@ -179,6 +187,7 @@ impl MdOption {
             MdInput::Steps => Self::Steps,
             MdInput::ThermoEvery => Self::ThermoEvery,
             MdInput::FrameEvery => Self::XyzEvery,
+            MdInput::NeighEvery => Self::NeighEvery,
             _ => return None,
         })
     }
@@ -502,6 +511,8 @@ impl From<&MdOptions> for super::MdConfig {
             skin: o.skin,
             mass: o.mass,
             threads: o.threads,
+            neigh_every: o.neigh_every,
+            neigh_check: o.neigh_check,
         }
     }
 }

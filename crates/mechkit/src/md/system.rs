@@ -11,7 +11,7 @@ use rayon::prelude::*;
 
 use crate::Real;
 
-use super::forces::{CHUNK, compute_forces_with};
+use super::forces::{CHUNK, compute_forces_with, forces_only};
 use super::{ForceScratch, MdError, MdInput, NeighbourList, PairPotential, PairSums, SimBox};
 
 /// One particle's position and velocity (updated) with its force and its position at the
@@ -32,16 +32,26 @@ pub struct MdConfig {
     pub mass: Real,
     /// Threads for forces and list builds (1 = serial); the results do not depend on it.
     pub threads: usize,
+    /// Steps between neighbour-list checks (LAMMPS's `neigh_modify every N`): 1 checks
+    /// after every step, which never misses a pair; a larger N saves the checks' builds
+    /// between them and counts the builds that came late ([`Md::dangerous_builds`]).
+    pub neigh_every: usize,
+    /// At a due check: rebuild only if some particle has moved more than half the skin since
+    /// the last build (`check yes`, the default), or always (`check no`).
+    pub neigh_check: bool,
 }
 
 impl Default for MdConfig {
-    /// The LJ melt's settings: dt = 0.005 τ, skin 0.3 σ, m = 1, one thread.
+    /// The LJ melt's settings: dt = 0.005 τ, skin 0.3 σ, m = 1, one thread, the list
+    /// checked after every step.
     fn default() -> Self {
         Self {
             dt: 0.005,
             skin: 0.3,
             mass: 1.0,
             threads: 1,
+            neigh_every: 1,
+            neigh_check: true,
         }
     }
 }
@@ -63,10 +73,18 @@ pub struct Md<P: PairPotential> {
     pub(crate) x0: Vec<[Real; 3]>,
     pub(crate) list: NeighbourList,
     pub(crate) sums: PairSums,
+    /// Whether `sums` are of the current positions (a step may skip them).
+    sums_current: bool,
     scratch: ForceScratch,
     pool: Option<rayon::ThreadPool>,
     pub(crate) steps: usize,
     rebuilds: usize,
+    /// Steps since the last list build.
+    since_build: usize,
+    /// Whether a particle has moved more than half the skin since the last build.
+    moved_far: bool,
+    /// Builds that came after a particle had moved more than half the skin.
+    dangerous: usize,
 }
 
 impl<P: PairPotential> Md<P> {
@@ -104,6 +122,12 @@ impl<P: PairPotential> Md<P> {
             .copied()
             .fold(Real::INFINITY, Real::min);
         check_start(&x, &v, config.dt, edge)?;
+        if config.neigh_every == 0 {
+            return Err(MdError::NotPositive {
+                input: MdInput::NeighEvery,
+                value: 0.0,
+            });
+        }
         if config.threads == 0 {
             return Err(MdError::NotPositive {
                 input: MdInput::Threads,
@@ -148,10 +172,14 @@ impl<P: PairPotential> Md<P> {
             shift: vec![[0.0; 3]; n],
             list: NeighbourList::default(),
             sums: PairSums::default(),
+            sums_current: false,
             scratch: ForceScratch::default(),
             pool,
             steps: 0,
             rebuilds: 0,
+            since_build: 0,
+            moved_far: false,
+            dangerous: 0,
         };
         md.rebuild();
         md.update_forces();
@@ -190,6 +218,11 @@ impl<P: PairPotential> Md<P> {
             .rebuild(&self.sim_box, &self.x, range, self.pool.as_ref());
         self.x_built.clone_from(&self.x);
         self.rebuilds += 1;
+        // a particle moved more than half the skin before this build: a pair may have come
+        // within the cut-off unlisted
+        self.dangerous += usize::from(self.moved_far);
+        self.moved_far = false;
+        self.since_build = 0;
     }
 
     /// Forces, energy and virial at the current positions.
@@ -203,10 +236,26 @@ impl<P: PairPotential> Md<P> {
             self.pool.as_ref(),
             &mut self.scratch,
         );
+        self.sums_current = true;
     }
 
-    /// One velocity-Verlet step.
+    /// Sums the energy and the virial of the current positions if the last step skipped
+    /// them (the forces come out the same, bit for bit).
+    pub(crate) fn refresh_sums(&mut self) {
+        if !self.sums_current {
+            self.update_forces();
+        }
+    }
+
+    /// One velocity-Verlet step; the energy and the virial are up to date after it.
     pub fn step(&mut self) {
+        self.advance(true);
+    }
+
+    /// One velocity-Verlet step, summing the energy and the virial only when `energy` (a
+    /// step whose energy nobody reads skips them; [`Md::pair_sums`] is then stale until the
+    /// next step with it). Returns whether every new velocity is finite.
+    fn advance(&mut self, energy: bool) -> bool {
         let h = 0.5 * self.config.dt / self.config.mass;
         let dt = self.config.dt;
         let limit = 0.25 * self.config.skin * self.config.skin;
@@ -239,40 +288,91 @@ impl<P: PairPotential> Md<P> {
                 .map(drift)
                 .fold(false, |a, b| a | b),
         };
-        if moved_far {
+        self.since_build += 1;
+        let due = self.since_build.is_multiple_of(self.config.neigh_every);
+        if due && (moved_far || !self.config.neigh_check) {
             self.rebuild();
+        } else {
+            self.moved_far |= moved_far;
         }
-        self.update_forces();
-        let kick = |(v, f): (&mut [Real; 3], &[Real; 3])| {
+        if energy {
+            self.update_forces();
+        } else {
+            self.sums_current = false;
+            forces_only(
+                &self.potential,
+                &self.sim_box,
+                &self.list,
+                &self.x,
+                &mut self.f,
+                self.pool.as_ref(),
+                &mut self.scratch,
+            );
+        }
+        // Second half kick; reports whether the velocity is finite.
+        let kick = |(v, f): (&mut [Real; 3], &[Real; 3])| -> bool {
             for a in 0..3 {
                 v[a] += h * f[a];
             }
+            v.iter().all(|c| c.is_finite())
         };
-        match &self.pool {
+        let finite = match &self.pool {
             Some(pool) => pool.install(|| {
                 self.v
                     .par_iter_mut()
                     .zip(&self.f)
                     .with_min_len(CHUNK)
-                    .for_each(kick);
+                    .map(kick)
+                    .reduce(|| true, |a, b| a & b)
             }),
-            None => self.v.iter_mut().zip(&self.f).for_each(kick),
-        }
+            None => self
+                .v
+                .iter_mut()
+                .zip(&self.f)
+                .map(kick)
+                .fold(true, |a, b| a & b),
+        };
         self.steps += 1;
+        finite
     }
 
-    /// `steps` steps; fails if the energy stops being finite (checked after each step).
+    /// `steps` steps; fails if a velocity or the energy stops being finite (velocities
+    /// checked after each step, the energy after the last; the energy and the virial are
+    /// summed at the last step only).
     pub fn run(&mut self, steps: usize) -> Result<(), MdError> {
-        for _ in 0..steps {
-            self.step();
-            if !self.sums.potential.is_finite() {
-                return Err(MdError::Diverged {
-                    step: self.steps,
-                    energy: self.sums.potential,
-                });
-            }
+        for k in 1..=steps {
+            self.step_checked(k == steps)?;
         }
         Ok(())
+    }
+
+    /// One step, the energy summed when `energy`; fails as [`Md::run`] does.
+    pub(crate) fn step_checked(&mut self, energy: bool) -> Result<(), MdError> {
+        let finite = self.advance(energy);
+        if !finite {
+            self.refresh_sums();
+        }
+        if !finite || (energy && !self.sums.potential.is_finite()) {
+            return Err(self.divergence());
+        }
+        Ok(())
+    }
+
+    /// Why the state reached is not a state: the energy if it is not finite, else the
+    /// kinetic energy (a velocity that overflowed).
+    fn divergence(&self) -> MdError {
+        if self.sums.potential.is_finite() {
+            MdError::NotFinite {
+                step: self.steps,
+                quantity: "kinetic energy",
+                value: self.kinetic_energy(),
+            }
+        } else {
+            MdError::Diverged {
+                step: self.steps,
+                energy: self.sums.potential,
+            }
+        }
     }
 
     /// Positions (wrapped into the box at the last list build).
@@ -320,6 +420,13 @@ impl<P: PairPotential> Md<P> {
         self.rebuilds
     }
 
+    /// Builds that came after some particle had moved more than half the skin since the
+    /// build before (LAMMPS's "dangerous builds"): between them a pair may have come within
+    /// the cut-off without being listed. Always 0 with `neigh_every = 1` and `check yes`.
+    pub fn dangerous_builds(&self) -> usize {
+        self.dangerous
+    }
+
     /// The neighbour list in use.
     pub fn neighbour_list(&self) -> &NeighbourList {
         &self.list
@@ -327,6 +434,7 @@ impl<P: PairPotential> Md<P> {
 
     /// Potential energy and virial of the current positions.
     pub fn pair_sums(&self) -> PairSums {
+        debug_assert!(self.sums_current, "the sums of a step that skipped them");
         self.sums
     }
 }

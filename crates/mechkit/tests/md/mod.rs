@@ -6,3 +6,4 @@ mod lattice;
 mod melt;
 mod neighbour;
 mod pair;
+mod rebuild;
