@@ -9,7 +9,8 @@
 //! momentum from a seeded generator ([`Xoshiro256`]). Observables: energies, temperature,
 //! virial pressure ([`Thermo`], its CSV columns with units), g(r) (`rdf_table`) and the
 //! mean-square displacement; frames as extended XYZ; initial particles may be read from a
-//! small CSV or XYZ file ([`AtomsFile`]). A run of many steps hands its thermo rows and frames
+//! small CSV or XYZ file ([`AtomsFile`]); the state a run starts from, with its settings,
+//! exports to LAMMPS ([`Md::lammps_export`]). A run of many steps hands its thermo rows and frames
 //! to an [`MdObserver`] as they come ([`Md::run_observed`], stopped by a `Cancel` handle) and
 //! ends in an [`MdReport`]. Forces
 //! run on `threads` threads over a fixed split of the box into slabs, with a result
@@ -36,6 +37,8 @@ mod cell_list;
 mod error;
 mod forces;
 mod kernel;
+mod lammps;
+mod lammps_data;
 mod lattice;
 mod list_build;
 mod neighbour;
@@ -59,6 +62,9 @@ pub const MAX_THREADS: usize = 256;
 pub use atoms_file::AtomsFile;
 pub use error::{MdError, MdInput};
 pub use forces::{ForceScratch, PairSums, all_pairs_forces, compute_forces, compute_forces_with};
+pub use lammps::{
+    LAMMPS_DATA, LAMMPS_INPUT, LAMMPS_TABLE, LammpsExport, LammpsPair, TABLE_INNER, TABLE_POINTS,
+};
 pub use lattice::Lattice;
 pub use neighbour::NeighbourList;
 pub use observe::{Thermo, ThermoPerAtom};

@@ -8,7 +8,7 @@
 
 use crate::Real;
 
-use super::{MdError, MdInput};
+use super::{LammpsPair, MdError, MdInput};
 
 /// A central pair potential, zero beyond its cut-off.
 pub trait PairPotential: Sync + Send {
@@ -16,6 +16,11 @@ pub trait PairPotential: Sync + Send {
     fn cutoff(&self) -> Real;
     /// `(U(r), F(r)/r)` for `r² < r_c²`, where F = −dU/dr (positive = repulsive).
     fn energy_force(&self, r2: Real) -> (Real, Real);
+    /// The same law as a native LAMMPS pair style, where LAMMPS has one; `None` (the
+    /// default): [`Md::lammps_export`](super::Md::lammps_export) tabulates it instead.
+    fn lammps_pair(&self) -> Option<LammpsPair> {
+        None
+    }
 }
 
 /// Lennard-Jones, U = 4ε[(σ/r)¹² − (σ/r)⁶], cut at r_c and optionally shifted so U(r_c) = 0.
@@ -85,6 +90,16 @@ impl PairPotential for LennardJones {
         let u = 4.0 * self.epsilon * sr6 * (sr6 - 1.0) - self.shift;
         let f_over_r = 24.0 * self.epsilon * sr6 * (2.0 * sr6 - 1.0) * inv2;
         (u, f_over_r)
+    }
+
+    fn lammps_pair(&self) -> Option<LammpsPair> {
+        Some(LammpsPair::LjCut {
+            epsilon: self.epsilon,
+            sigma: self.sigma,
+            cutoff: self.cutoff,
+            // U(r_c) is zero only at r_c = σ, where shifting changes nothing
+            shift: self.shift != 0.0,
+        })
     }
 }
 

@@ -36,6 +36,10 @@ pub struct MdReport {
     pub msd: Real,
     /// The thermo rows, energies per atom.
     pub thermo: Vec<ThermoPerAtom>,
+    /// The directory of the LAMMPS export of the run's start ([`Md::lammps_export`]), when
+    /// one was written (in the JSON only then).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub lammps_export: Option<String>,
     /// Why the run ended (not in the JSON: a front reports it as an error or an exit code).
     #[cfg_attr(feature = "serde", serde(skip))]
     pub stop: MdStop,
@@ -64,6 +68,7 @@ impl<P: PairPotential> Md<P> {
             energy_change_per_atom: energy_change,
             msd: self.mean_square_displacement(),
             thermo: run.rows.iter().map(|r| r.per_atom(n)).collect(),
+            lammps_export: None,
             stop: run.stop.clone(),
         }
     }
