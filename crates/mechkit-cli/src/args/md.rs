@@ -100,6 +100,12 @@ pub struct MdArgs {
     /// Extended-XYZ frame every this many steps (needs --out).
     #[arg(value_parser = super::whole_count, long, requires = "out", allow_hyphen_values = true)]
     pub xyz_every: Option<usize>,
+    /// Write DIR/in.lammps and DIR/data.lammps (and DIR/pair.table for soft-sphere and
+    /// spring): the state the run starts from with its potential, time step, neighbour and
+    /// thermo settings, to continue it in LAMMPS (`cd DIR && lmp -in in.lammps`); the run
+    /// itself still happens.
+    #[arg(long, value_name = "DIR")]
+    pub export_lammps: Option<PathBuf>,
     /// Largest file to write, e.g. `10GB` (default 1 GB); the run stops cleanly with a
     /// message when thermo.csv or trajectory.xyz would pass it.
     #[arg(long, value_name = "SIZE", allow_hyphen_values = true)]

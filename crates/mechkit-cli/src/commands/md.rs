@@ -10,8 +10,8 @@ use anyhow::{Context, Result, anyhow};
 use indicatif::{ProgressBar, ProgressStyle};
 use mechkit::csv::{self, header_line, push_row, units_file_name, write_atomic};
 use mechkit::md::{
-    Md, MdConfig, MdObserver, MdOptions, MdReport, MdStop, PairPotential, Potential, RDF_BINS,
-    RunPlan, Setup, Thermo, WithPotential,
+    LAMMPS_INPUT, Md, MdConfig, MdObserver, MdOptions, MdReport, MdStop, PairPotential, Potential,
+    RDF_BINS, RunPlan, Setup, Thermo, WithPotential,
 };
 use mechkit::scenario::{DEFAULT_MAX_OUTPUT, StreamFile, output_limit_message, parse_size};
 use mechkit::simulate::Cancel;
@@ -210,6 +210,20 @@ fn run<P: PairPotential>(r: Runner<'_>, potential: P) -> Result<Outcome> {
     let dim = s.sim_box.dim();
     let mut md =
         Md::new(s.sim_box, potential, s.x, s.v, MdConfig::from(options)).map_err(with_flag)?;
+    // the state the run starts from, written before the run so a stopped run keeps it
+    let exported = match &args.export_lammps {
+        Some(dir) => {
+            md.lammps_export(plan).write(dir).map_err(|e| {
+                anyhow!(
+                    "--export-lammps: cannot write the LAMMPS files: {e}\n  = hint: give a \
+                         directory (it is created if missing) where in.lammps and data.lammps \
+                         can be written"
+                )
+            })?;
+            Some(dir.display().to_string())
+        }
+        None => None,
+    };
     let limit = match &args.max_output {
         Some(size) => parse_size(size).map_err(|e| anyhow!("--max-output: {e}"))?,
         None => DEFAULT_MAX_OUTPUT,
@@ -262,7 +276,8 @@ fn run<P: PairPotential>(r: Runner<'_>, potential: P) -> Result<Outcome> {
             .write(dir, "rdf")
             .with_context(|| format!("cannot write {}", dir.join("rdf.csv").display()))?;
     }
-    let report = md.report(&run, &s.origin, &args.potential);
+    let mut report = md.report(&run, &s.origin, &args.potential);
+    report.lammps_export = exported;
     super::report(args.report, &report, || text(&report))?;
     if report.dangerous_builds > 0 && !args.report.quiet {
         eprintln!(
@@ -310,5 +325,11 @@ fn text(r: &MdReport) -> String {
         "{} steps on {} thread(s) in {:.3} s: {:.3e} atom-steps/s, {} list builds, msd {:.4}",
         r.steps, r.threads, r.seconds, r.atom_steps_per_second, r.list_builds, r.msd
     );
+    if let Some(dir) = &r.lammps_export {
+        let _ = writeln!(
+            out,
+            "LAMMPS export of the start in {dir}: cd {dir} && lmp -in {LAMMPS_INPUT}"
+        );
+    }
     out
 }

@@ -61,6 +61,7 @@ mod limits;
 mod mass;
 mod md;
 mod md_gallery;
+mod md_lammps;
 mod messages;
 mod plots;
 mod relative;
