@@ -8,6 +8,7 @@
 //! Needs Debian's LAMMPS (`apt-get install -y lammps`, binary `lmp`): without it on the PATH
 //! a test prints a note and passes, unless `CI` is set, where it fails.
 
+use std::fmt::Write as _;
 use std::process::Command;
 
 use crate::util::Dir;
@@ -133,16 +134,11 @@ fn shifted_2d_lj_and_an_open_cluster_continue_in_lammps() {
         "10",
     ];
     compare(&dir, &hex);
-    // a 3-D cluster of 27 atoms in open space, leaving its box's bounds is allowed
+    // a 3-D cluster of 27 atoms 1.12σ apart in open space
     let mut csv = String::from("x,y,z\n");
-    for i in 0..27 {
-        let (a, b, c) = (i % 3, (i / 3) % 3, i / 9);
-        csv += &format!(
-            "{},{},{}\n",
-            1.12 * a as f64,
-            1.12 * b as f64,
-            1.12 * c as f64
-        );
+    for i in 0..27_u8 {
+        let [a, b, c] = [i % 3, (i / 3) % 3, i / 9].map(|k| 1.12 * f64::from(k));
+        let _ = writeln!(csv, "{a},{b},{c}");
     }
     dir.create("cluster.csv", &csv);
     let open = [

@@ -32,6 +32,7 @@
 //! Numbers are written in full precision (Rust's shortest representation that reads back to
 //! the same `f64`).
 
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use crate::Real;
@@ -131,7 +132,7 @@ impl<P: PairPotential> Md<P> {
         let n = self.len();
         let mut s = String::new();
         let mut line = |key: &str, value: String| {
-            s.push_str(&format!("{key:<15} {value}\n"));
+            let _ = writeln!(s, "{key:<15} {value}");
         };
         line(
             "# mechkit md",

@@ -115,7 +115,7 @@ fn open_and_low_dimensional_boxes() {
     );
     // 1-D, periodic: y fixed, the temperature over N − 1 degrees of freedom
     let b = SimBox::periodic(1, [10.0, 0.0, 0.0]).unwrap();
-    let x: Vec<_> = (0..10).map(|i| [i as f64, 0.0, 0.0]).collect();
+    let x: Vec<_> = (0..10_u8).map(|i| [f64::from(i), 0.0, 0.0]).collect();
     let v = maxwell_boltzmann(0.1, 1.0, 1, 10, 3).unwrap();
     let spring = LinearSpring::new(2.0, 1.0, 1.5).unwrap();
     let md = Md::new(b, spring, x, v, MdConfig::default()).unwrap();
@@ -162,7 +162,7 @@ fn numbers_read_back_exactly() {
         1e-7,
         6.02e23,
         -2.5e-300,
-        123456.789,
+        123_456.789,
     ] {
         let s = num(x);
         assert_eq!(s.parse::<f64>().unwrap().to_bits(), x.to_bits(), "{s}");
