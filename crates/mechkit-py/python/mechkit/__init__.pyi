@@ -368,11 +368,14 @@ def md(
     threads: int = 1,
     thermo_every: int = 50,
     xyz_every: Optional[int] = None,
+    export_lammps: Union[str, os.PathLike[str], None] = None,
 ) -> MdResult:
     """``mechkit md`` in memory: the options under the command's names and defaults (the
     Lennard-Jones melt). ``positions``/``velocities``: a CSV or XYZ file, or an ``(N, d)``
-    array. The GIL is released; Ctrl-C stops the run and raises KeyboardInterrupt. Bad
-    values raise MechkitError naming the argument."""
+    array. ``export_lammps``: a directory to write the run's start into as LAMMPS files
+    (``in.lammps``, ``data.lammps``; run there with ``lmp -in in.lammps``). The GIL is
+    released; Ctrl-C stops the run and raises KeyboardInterrupt. Bad values raise
+    MechkitError naming the argument."""
 
 class MdResult:
     """The result of ``mechkit.md()``."""

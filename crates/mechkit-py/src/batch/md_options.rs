@@ -14,7 +14,7 @@ use super::arguments::{count, flag, number, text, type_name, whole};
 use crate::errors::MechkitError;
 
 /// The keyword arguments `mechkit.md` takes.
-pub const NAMES: [&str; 25] = [
+pub const NAMES: [&str; 26] = [
     "lattice",
     "cells",
     "density",
@@ -40,6 +40,7 @@ pub const NAMES: [&str; 25] = [
     "threads",
     "thermo_every",
     "xyz_every",
+    "export_lammps",
 ];
 
 /// The options from `mechkit.md`'s keyword arguments (None stands for a flag left out);
@@ -52,7 +53,9 @@ pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<MdOptions> {
     };
     for (key, value) in kwargs.iter() {
         let key: String = key.extract()?;
-        if !value.is_none() {
+        if key == "export_lammps" {
+            // not an option of the run: `export_lammps`
+        } else if !value.is_none() {
             set(&mut o, &key, &value)?;
         } else if !NAMES.contains(&key.as_str()) {
             return Err(unknown(&key));
@@ -78,6 +81,29 @@ pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<MdOptions> {
         ));
     }
     Ok(o)
+}
+
+/// `export_lammps`: the directory of a LAMMPS export of the run's start (a `str` or a path),
+/// or None.
+pub fn export_lammps(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Option<PathBuf>> {
+    let Some(value) = kwargs
+        .map(|k| k.get_item("export_lammps"))
+        .transpose()?
+        .flatten()
+    else {
+        return Ok(None);
+    };
+    if value.is_none() {
+        return Ok(None);
+    }
+    if value.is_instance_of::<PyString>() || value.hasattr("__fspath__")? {
+        return Ok(Some(value.extract()?));
+    }
+    Err(PyTypeError::new_err(format!(
+        "export_lammps: a {}; give the directory to write in.lammps and data.lammps into, \
+         as a str or a path",
+        type_name(&value)
+    )))
 }
 
 fn set(o: &mut MdOptions, key: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {

@@ -5,6 +5,7 @@
 //! distribution, the final state and the frames (`md_result.rs`).
 
 use std::convert::Infallible;
+use std::path::Path;
 
 use mechkit::md::{
     Md, MdConfig, MdObserver, MdOption, MdOptions, MdReport, PairPotential, Potential, RDF_BINS,
@@ -14,7 +15,7 @@ use mechkit::simulate::Cancel;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use super::md_options::from_kwargs;
+use super::md_options::{export_lammps, from_kwargs};
 use super::md_result::MdResult;
 use crate::errors::MechkitError;
 
@@ -26,10 +27,13 @@ use crate::errors::MechkitError;
 #[pyfunction]
 #[pyo3(signature = (**options))]
 pub fn md(py: Python<'_>, options: Option<&Bound<'_, PyDict>>) -> PyResult<MdResult> {
+    let export = export_lammps(options)?;
     let options = from_kwargs(options)?;
     let cancel = Cancel::new();
     let handle = cancel.clone();
-    let outcome = crate::interrupt::run(py, &cancel, move || run(&options, &handle))?;
+    let outcome = crate::interrupt::run(py, &cancel, move || {
+        run(&options, export.as_deref(), &handle)
+    })?;
     let outcome = outcome.map_err(MechkitError::new_err)?;
     MdResult::new(py, outcome)
 }
@@ -49,7 +53,7 @@ pub(super) struct Outcome {
 
 /// Builds the system as `mechkit md` does and runs it; an error is the message, naming the
 /// keyword argument behind it.
-fn run(o: &MdOptions, cancel: &Cancel) -> Result<Outcome, String> {
+fn run(o: &MdOptions, export: Option<&Path>, cancel: &Cancel) -> Result<Outcome, String> {
     let plan = o.plan().map_err(named)?;
     let potential = Potential::from_options(o).map_err(named)?;
     let setup = Setup::from_options(o, potential.cutoff()).map_err(named)?;
@@ -57,6 +61,7 @@ fn run(o: &MdOptions, cancel: &Cancel) -> Result<Outcome, String> {
         options: o,
         plan: &plan,
         setup,
+        export,
         cancel,
     })
 }
@@ -66,6 +71,7 @@ struct Runner<'a> {
     options: &'a MdOptions,
     plan: &'a RunPlan,
     setup: Setup,
+    export: Option<&'a Path>,
     cancel: &'a Cancel,
 }
 
@@ -77,18 +83,29 @@ impl WithPotential for Runner<'_> {
             options: o,
             plan,
             setup: s,
+            export,
             cancel,
         } = self;
         let cutoff = potential.cutoff();
         let dim = s.sim_box.dim();
         let mut md = Md::new(s.sim_box, potential, s.x, s.v, MdConfig::from(o)).map_err(named)?;
+        // the state the run starts from, written before the run
+        if let Some(dir) = export {
+            md.lammps_export(plan).write(dir).map_err(|e| {
+                format!(
+                    "export_lammps: cannot write the LAMMPS files: {e}; give a directory (it \
+                     is created if missing) where in.lammps and data.lammps can be written"
+                )
+            })?;
+        }
         let mut frames = Frames {
             dim,
             positions: Vec::new(),
             steps: Vec::new(),
         };
         let Ok(run) = md.run_observed(plan, cancel, &mut frames);
-        let report = md.report(&run, &s.origin, &o.potential);
+        let mut report = md.report(&run, &s.origin, &o.potential);
+        report.lammps_export = export.map(|d| d.display().to_string());
         let flat = |vectors: &[[f64; 3]]| -> Vec<f64> {
             vectors.iter().flat_map(|p| p[..dim].to_vec()).collect()
         };
