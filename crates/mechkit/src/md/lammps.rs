@@ -131,13 +131,14 @@ impl<P: PairPotential> Md<P> {
         let dim = self.sim_box.dim();
         let n = self.len();
         let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "# LAMMPS input written by mechkit md ({n} atoms, {dim}-D): the run from its start;\n\
+             # run it here with `lmp -in {LAMMPS_INPUT}`"
+        );
         let mut line = |key: &str, value: String| {
             let _ = writeln!(s, "{key:<15} {value}");
         };
-        line(
-            "# mechkit md",
-            format!("export: {n} atoms, {dim}-D; run with `lmp -in {LAMMPS_INPUT}` here"),
-        );
         line("units", "lj".into());
         line("dimension", dim.max(2).to_string());
         line("boundary", boundary(self).join(" "));
