@@ -7,3 +7,4 @@ mod spatial;
 mod spatial_joints;
 mod stiff;
 mod sweep;
+mod sweep_parts;

@@ -77,4 +77,8 @@ pub enum SweepError {
     /// Runs given twice, or missing.
     #[error("{0}")]
     Coverage(String),
+    /// Bytes that are not a sweep's part ([`super::SweepTable::from_bytes`]): damaged, or
+    /// written by another version of mechkit.
+    #[error("{0}")]
+    BadPart(String),
 }

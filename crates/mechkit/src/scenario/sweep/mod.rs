@@ -5,7 +5,8 @@
 //! every later constant, body and force that uses it is resolved again. Runs are independent
 //! and their rows are ordered by run index, so the table is the same whatever the number of
 //! threads, and `--shard K/N` slices (runs with `index % N == K - 1`) merged back by
-//! [`merge_parts`] equal the unsharded table byte for byte.
+//! [`merge_parts`] (from their files) or [`merge_tables`] (in memory, carried between
+//! processes as [`SweepTable::to_bytes`]) equal the unsharded table byte for byte.
 //!
 //! ```
 //! use mechkit::scenario::sweep::{Parameter, Sampling, SweepGrid, SweepOptions, run_sweep};
@@ -39,13 +40,16 @@
 
 mod error;
 mod grid;
+mod merge;
 mod param;
 mod run;
 mod table;
+mod wire;
 
 pub use error::SweepError;
 pub use grid::{Sampling, Shard, SweepGrid};
+pub use merge::{SweepPart, merge_parts, merge_tables};
 pub(crate) use param::unknown_override;
 pub use param::{ConstantOverride, MAX_RUNS, Parameter};
 pub use run::{SweepOptions, SweepRow, run_sweep};
-pub use table::{SweepPart, SweepTable, manifest_name, merge_parts};
+pub use table::{SweepTable, manifest_name};

@@ -11,16 +11,15 @@
 //!                       "runs": 51, "shard": null}
 //! ```
 
-use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::{Shard, SweepError, SweepGrid, SweepRow};
+use super::{Shard, SweepGrid, SweepRow};
 use crate::Real;
 use crate::figure::{ColourScale, PlotData, Series};
 use crate::scenario::push_number;
 
-const MAGIC: &str = "mechkit sweep of ";
+pub(super) const MAGIC: &str = "mechkit sweep of ";
 
 /// The most curves an overlay tells apart by a legend (the plot palette's colours): a sweep
 /// of one parameter with more runs colours them by the parameter's value.
@@ -288,111 +287,6 @@ fn short(v: f64) -> String {
 /// `sweep.part2.manifest.json`).
 pub fn manifest_name(csv: &str) -> String {
     format!("{}.manifest.json", csv.strip_suffix(".csv").unwrap_or(csv))
-}
-
-/// One part of a sharded sweep, as read from its files.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SweepPart {
-    /// The CSV file's name (for messages).
-    pub name: String,
-    /// The CSV text.
-    pub csv: String,
-    /// The text of the manifest beside it ([`SweepTable::manifest_json`]).
-    pub manifest: String,
-}
-
-/// Merges the parts of one sharded sweep into the whole: its CSV text and its manifest
-/// (`shard` null). The parts must come from the same sweep (the same manifest line and header)
-/// and hold every run exactly once; rows come out in run order, byte for byte as the
-/// unsharded sweep writes them.
-pub fn merge_parts(parts: &[SweepPart]) -> Result<(String, String), SweepError> {
-    let Some(first) = parts.first() else {
-        return Err(SweepError::Coverage(
-            "no parts to merge\n  = hint: give the directory of the sweep.partK.csv files, or the files".into(),
-        ));
-    };
-    let mut sweep: Option<(String, &str)> = None;
-    let mut rows: BTreeMap<usize, (&str, &str)> = BTreeMap::new();
-    let mut duplicates = Vec::new();
-    let mut runs = 0;
-    for part in parts {
-        let file = &part.name;
-        let not = |reason: &str| SweepError::NotATable {
-            file: file.clone(),
-            reason: reason.to_string(),
-        };
-        let manifest: serde_json::Value = serde_json::from_str(&part.manifest)
-            .map_err(|e| not(&format!("its manifest is not JSON: {e}")))?;
-        let identity = manifest
-            .get("sweep")
-            .and_then(serde_json::Value::as_str)
-            .filter(|m| m.starts_with(MAGIC))
-            .ok_or_else(|| not("its manifest has no `sweep` of `mechkit sweep of …`"))?
-            .to_string();
-        let n = manifest
-            .get("runs")
-            .and_then(serde_json::Value::as_u64)
-            .ok_or_else(|| not("its manifest has no number of `runs`"))?;
-        let mut lines = part.csv.lines();
-        let header = lines.next().ok_or_else(|| not("no header row"))?;
-        match &sweep {
-            None => {
-                runs = usize::try_from(n).map_err(|_| not("too many runs"))?;
-                sweep = Some((identity, header));
-            }
-            Some((m, h)) => {
-                let what = if *m != identity {
-                    "the manifest"
-                } else if *h != header {
-                    "the header row"
-                } else {
-                    ""
-                };
-                if !what.is_empty() {
-                    return Err(SweepError::Mismatch {
-                        first: first.name.clone(),
-                        file: file.clone(),
-                        what: what.into(),
-                    });
-                }
-            }
-        }
-        for line in lines.filter(|l| !l.is_empty()) {
-            let index = line
-                .split(',')
-                .next()
-                .and_then(|i| i.parse::<usize>().ok())
-                .filter(|&i| i < runs)
-                .ok_or_else(|| not(&format!("the row `{line}` has no run index below {runs}")))?;
-            if let Some((other, _)) = rows.insert(index, (file.as_str(), line)) {
-                duplicates.push(format!("run {index} is in {other} and {file}"));
-            }
-        }
-    }
-    if !duplicates.is_empty() {
-        return Err(SweepError::Coverage(format!(
-            "runs given twice: {}\n  = hint: give each shard's part once",
-            duplicates.join("; ")
-        )));
-    }
-    if rows.len() != runs {
-        let missing: Vec<usize> = (0..runs).filter(|i| !rows.contains_key(i)).collect();
-        let shown: Vec<String> = missing.iter().take(10).map(ToString::to_string).collect();
-        return Err(SweepError::Coverage(format!(
-            "{} of {runs} runs are missing: {}{}\n  = hint: run the missing shards (with --shard K/N, run i is in shard i % N + 1) and merge again",
-            missing.len(),
-            shown.join(", "),
-            if missing.len() > 10 { ", …" } else { "" }
-        )));
-    }
-    let (identity, header) = sweep.expect("at least one part was read");
-    let mut out = format!("{header}\n");
-    for (_, line) in rows.values() {
-        out.push_str(line);
-        out.push('\n');
-    }
-    let whole = serde_json::json!({"sweep": identity, "runs": runs, "shard": null});
-    Ok((out, format!("{whole:#}\n")))
 }
 
 #[cfg(test)]
