@@ -33,7 +33,9 @@ impl SweepTable {
         }
         for list in [&self.params, &self.units, &self.observables] {
             count(&mut w, list.len());
-            list.iter().for_each(|s| string(&mut w, s));
+            for s in list {
+                string(&mut w, s);
+            }
         }
         count(&mut w, self.rows.len());
         for r in &self.rows {
@@ -101,7 +103,9 @@ fn number(w: &mut Vec<u8>, x: Real) {
 
 fn numbers(w: &mut Vec<u8>, xs: &[Real]) {
     count(w, xs.len());
-    xs.iter().for_each(|&x| number(w, x));
+    for &x in xs {
+        number(w, x);
+    }
 }
 
 fn string(w: &mut Vec<u8>, s: &str) {
