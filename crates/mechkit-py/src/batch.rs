@@ -10,8 +10,12 @@ mod arguments;
 mod md_options;
 mod md_result;
 mod md_run;
+mod sweep_parts;
+mod sweep_result;
 mod sweep_run;
 
 pub use md_result::MdResult;
 pub use md_run::md;
-pub use sweep_run::{SweepResult, sweep};
+pub use sweep_parts::{sweep_merge, sweep_part, sweep_plan};
+pub use sweep_result::SweepResult;
+pub use sweep_run::sweep;

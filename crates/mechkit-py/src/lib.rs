@@ -91,7 +91,7 @@ mod native {
     use super::data::{cumtrapz, derive, simpson, trapz};
     // batch: md, sweep and plots (batch.rs, plot.rs)
     #[pymodule_export]
-    use super::batch::{MdResult, SweepResult, md, sweep};
+    use super::batch::{MdResult, SweepResult, md, sweep, sweep_merge, sweep_part, sweep_plan};
     #[pymodule_export]
     use super::plot::Plot;
 
