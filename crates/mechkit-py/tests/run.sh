@@ -8,7 +8,8 @@
 # $CARGO_TARGET_DIR/py-venv (target/py-venv), made anew each time. Needs python3 (3.9 or
 # later) with venv and pip, and PyPI for maturin, numpy, pandas, pytest, scipy (the peer the
 # tests compare with), nbclient, nbformat and ipykernel (to run the example notebooks) and
-# vermin (to check that the Python files need nothing newer than 3.9).
+# vermin (to check that the Python files need nothing newer than 3.9), and dask[distributed]
+# (for `mechkit.sweep(..., client=...)` on a LocalCluster).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
@@ -20,7 +21,7 @@ rm -rf "$venv"
 python3 -m venv "$venv"
 echo "run.sh: building and installing ./crates/mechkit-py[pandas] into $venv (a release build)"
 start=$SECONDS
-"$venv/bin/python" -m pip install --quiet --disable-pip-version-check "./crates/mechkit-py[pandas]" pytest scipy nbclient nbformat ipykernel vermin
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check "./crates/mechkit-py[pandas]" pytest scipy nbclient nbformat ipykernel vermin "dask[distributed]"
 echo "run.sh: pip install took $((SECONDS - start)) s"
 
 export PYTHONDONTWRITEBYTECODE=1

@@ -57,10 +57,10 @@ from ._native import (
     potential,
     simpson,
     solve,
-    sweep,
     trapz,
     units,
 )
+from ._sweep import sweep
 
 __all__ = [
     "Animation",

@@ -1,7 +1,7 @@
 """Type stubs of mechkit (the classes are implemented in Rust, in ``mechkit._native``)."""
 
 import os
-from typing import Any, Dict, List, Literal, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Literal, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -412,8 +412,9 @@ class MdResult:
 
 def sweep(
     scenario: Union[Scenario, str, os.PathLike[str]],
-    set: Union[str, Sequence[str], None] = None,
+    set: Union[str, Sequence[str], Mapping[str, Union[str, float, Sequence[float]]], None] = None,
     *,
+    client: Any = None,
     random: Optional[int] = None,
     seed: Optional[int] = None,
     shard: Optional[str] = None,
@@ -425,7 +426,14 @@ def sweep(
     arguments: ``v0="0:5:51"``, ``k=[1, 2, 4]``, ``m=2.0`` (SI); the last varies fastest.
     ``random``/``seed``/``shard``/``threads`` as the command's options; ``plot``: the plot
     each run records for the overlay (None: the scenario's first; False: none). The GIL is
-    released; Ctrl-C stops the sweep and raises KeyboardInterrupt."""
+    released; Ctrl-C stops the sweep and raises KeyboardInterrupt. ``set`` may also be a
+    dict of the keyword forms (``{"v0": "0:5:51"}``).
+
+    ``client``: a ``dask.distributed.Client`` (``pip install 'mechkit[dask]'``) runs the
+    sweep on its cluster, a few shards per worker thread, from the scenario's text; the parts
+    are merged as ``mechkit sweep-merge`` merges them, so the result equals the one without
+    a client to the bit. Ctrl-C cancels the shards; a failing run raises its
+    ``MechkitError`` here. ``shard`` and ``threads`` go without ``client``."""
 
 class SweepResult:
     """The result of ``mechkit.sweep()``."""
