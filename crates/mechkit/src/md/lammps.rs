@@ -170,7 +170,14 @@ impl<P: PairPotential> Md<P> {
             }
         };
         line("neighbor", format!("{} bin", num(self.config.skin)));
-        line("neigh_modify", "every 1 delay 0 check yes".into());
+        line(
+            "neigh_modify",
+            format!(
+                "every {} delay 0 check {}",
+                self.config.neigh_every,
+                if self.config.neigh_check { "yes" } else { "no" }
+            ),
+        );
         line("timestep", num(self.config.dt));
         line("fix", "1 all nve".into());
         if dim < 3 {

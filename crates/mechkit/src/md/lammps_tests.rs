@@ -88,6 +88,21 @@ fn input_script_has_the_runs_settings() {
     assert!(e.table.is_none());
     let unshifted = melt(4, false).lammps_export(&RunPlan::new(40, 8, None).unwrap());
     assert_eq!(setting(&unshifted.input, "pair_modify"), ["shift no"]);
+    // the list policy of the run (LAMMPS's bench/in.lj: every 20 check no)
+    let (sim_box, x) = Lattice::Fcc.build(4, 0.8442).unwrap();
+    let v = maxwell_boltzmann(1.44, 1.0, 3, x.len(), 7).unwrap();
+    let config = MdConfig {
+        neigh_every: 20,
+        neigh_check: false,
+        ..MdConfig::default()
+    };
+    let lj = LennardJones::reduced(2.5).unwrap();
+    let md = Md::new(sim_box, lj, x, v, config).unwrap();
+    let e = md.lammps_export(&RunPlan::new(40, 8, None).unwrap());
+    assert_eq!(
+        setting(&e.input, "neigh_modify"),
+        ["every 20 delay 0 check no"]
+    );
 }
 
 #[test]
