@@ -109,6 +109,19 @@ def test_md_lattice_melt_equals_the_command(tmp_path):
     assert list(df.columns) == list(thermo) and df.attrs["units"] == units
 
 
+def test_md_lammps_list_policy_equals_the_command(tmp_path):
+    # LAMMPS's bench/in.lj: the list checked every 20 steps, rebuilt whether needed or not
+    flags = ["--cells", "4", "--steps", "40", "--neigh-every", "20", "--neigh-check", "no"]
+    report, thermo, _, _, _ = cli_md(tmp_path, *flags)
+    melt = mechkit.md(cells=4, steps=40, neigh_every=20, neigh_check=False)
+    assert untimed(melt.report) == untimed(report)
+    assert melt.report["list_builds"] == 3
+    assert melt.report["dangerous_builds"] >= 1
+    assert_columns_equal(melt.thermo, thermo)
+    checked = mechkit.md(cells=4, steps=40)
+    assert checked.report["dangerous_builds"] == 0
+
+
 def test_md_positions_as_an_array_equal_the_file(tmp_path):
     flags = ["--box", "16", "--potential", "spring", "--k", "1", "--rest-length", "1"]
     flags += ["--cutoff", "1.5", "--dt", "0.008051636", "--steps", "2000"]
@@ -154,6 +167,7 @@ def cli_error(*args):
         ),
         ({"cells": 0}, ["--cells", "0"], "cells"),
         ({"thermo_every": 0}, ["--thermo-every", "0"], "thermo_every"),
+        ({"neigh_every": 0}, ["--neigh-every", "0"], "neigh_every"),
         ({"lattice": "bcc"}, ["--lattice", "bcc"], "lattice"),
         ({"potential": "morse"}, ["--potential", "morse"], "potential"),
     ],

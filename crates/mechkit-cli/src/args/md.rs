@@ -85,7 +85,7 @@ pub struct MdArgs {
     /// At a check, rebuild only if an atom moved more than half the skin (yes, the default)
     /// or always (no) (LAMMPS: neigh_modify check yes|no).
     #[arg(long, value_name = "yes|no", default_value = "yes", action = clap::ArgAction::Set,
-        value_parser = clap::builder::BoolishValueParser::new())]
+        value_parser = yes_no)]
     pub neigh_check: bool,
     /// Threads for the forces (results are bit-identical for any number).
     #[arg(value_parser = super::whole_count, long, default_value_t = 1, allow_hyphen_values = true)]
@@ -113,4 +113,13 @@ pub struct MdArgs {
     /// `--json` and `-q/--quiet` (no report, no progress bar).
     #[command(flatten)]
     pub report: crate::args::Report,
+}
+
+/// `yes` or `no` (LAMMPS's words), as a flag's value.
+fn yes_no(s: &str) -> Result<bool, String> {
+    match s {
+        "yes" => Ok(true),
+        "no" => Ok(false),
+        _ => Err("give yes or no (as LAMMPS's neigh_modify check)".into()),
+    }
 }

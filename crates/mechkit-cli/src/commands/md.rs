@@ -279,7 +279,7 @@ fn run<P: PairPotential>(r: Runner<'_>, potential: P) -> Result<Outcome> {
     let mut report = md.report(&run, &s.origin, &args.potential);
     report.lammps_export = exported;
     super::report(args.report, &report, || text(&report))?;
-    if report.dangerous_builds > 0 && !args.report.quiet {
+    if report.dangerous_builds > 0 {
         eprintln!(
             "warning: {} of the {} neighbour-list builds came after an atom had moved more than half the skin since the build before: pairs may have come within the cut-off unlisted\n  = hint: --neigh-every 1 (the default) checks after every step; or a larger --skin",
             report.dangerous_builds, report.list_builds

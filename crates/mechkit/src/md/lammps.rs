@@ -100,6 +100,12 @@ impl LammpsExport {
         let named = |path: &Path, e: std::io::Error| {
             std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
         };
+        if dir.exists() && !dir.is_dir() {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::AlreadyExists,
+                format!("{} is a file, not a directory", dir.display()),
+            ));
+        }
         std::fs::create_dir_all(dir).map_err(|e| named(dir, e))?;
         let mut written = Vec::new();
         for (name, text) in self.files() {
