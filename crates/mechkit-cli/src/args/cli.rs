@@ -232,6 +232,8 @@ mod negative_values {
         "format",
         "dir",
         "host",
+        "neigh_check",
+        "export_lammps",
     ];
 
     /// Issue 11: a negative number (or a list or range starting with one) given to any
