@@ -4,8 +4,11 @@
 //! the same scenario again for each of its runs; the instructions of most of its formulas do
 //! not change from run to run, so their code is compiled once and shared.
 //!
-//! The key is the exact instruction list (constants by their bits, so two bodies share code
-//! only when they compute the same thing bit for bit). At most [`MOST`] bodies of each kind
+//! The key is the exact instruction list. A formula's code reads its constants from a table
+//! that goes with each program, so formulas that differ only in a constant's value (a sweep
+//! over a drag coefficient) share it; a loop kernel's constants are built into its code (the
+//! fused loops keep them in registers), so kernels share code only when their constants are
+//! equal bit for bit. At most [`MOST`] bodies of each kind
 //! are kept; past that the table is emptied (code still in use lives on with its users).
 
 use std::collections::HashMap;
@@ -44,13 +47,14 @@ impl Word {
     }
 }
 
-/// The identity of an instruction list.
-pub(super) fn key(insts: &[Inst]) -> Vec<Word> {
+/// The identity of an instruction list; with `constants`, the constants' values are part of
+/// it (code with the values built in), else only their places (code that reads them).
+pub(super) fn key(insts: &[Inst], constants: bool) -> Vec<Word> {
     insts
         .iter()
         .map(|&i| match i {
             Inst::Const(c) => Word {
-                bits: c.to_bits(),
+                bits: if constants { c.to_bits() } else { 0 },
                 ..Word::new(0, [0; 3])
             },
             Inst::Load(s) => Word::new(1, [s, 0, 0]),
@@ -141,8 +145,9 @@ mod tests {
             .native()
     }
 
-    /// A formula compiled twice gets the same code; one that differs in a constant's last
-    /// bit, or in an operand, gets its own, and each computes its own value.
+    /// A formula compiled twice gets the same code, and so does one that differs only in a
+    /// constant's value (down to its last bit), each computing its own value; one that
+    /// differs in an operation gets its own.
     #[test]
     fn equal_bodies_share_code_and_different_ones_do_not() {
         let a = program("-k*x + sin(x)", 2.0);
@@ -151,11 +156,12 @@ mod tests {
         let d = program("-k*x - sin(x)", 2.0);
         let (na, nb) = (a.native_code().unwrap(), b.native_code().unwrap());
         assert!(Arc::ptr_eq(na, nb));
-        assert!(!Arc::ptr_eq(na, c.native_code().unwrap()));
+        assert!(Arc::ptr_eq(na, c.native_code().unwrap()));
         assert!(!Arc::ptr_eq(na, d.native_code().unwrap()));
         let x = [0.3];
         assert_eq!(a.eval(&x), -2.0 * 0.3 + 0.3f64.sin());
         assert_eq!(c.eval(&x), c.eval_interpreted(&x));
+        assert_ne!(c.eval(&x), a.eval(&x));
         assert_eq!(d.eval(&x), -2.0 * 0.3 - 0.3f64.sin());
     }
 

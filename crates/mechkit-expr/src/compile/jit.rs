@@ -33,7 +33,7 @@ pub(super) fn enabled() -> bool {
 
 /// A function in executable memory and the module that owns that memory.
 pub(super) struct Native {
-    func: extern "C" fn(*const f64) -> f64,
+    func: extern "C" fn(*const f64, *const f64) -> f64,
     module: Mutex<Option<JITModule>>,
 }
 
@@ -220,20 +220,29 @@ impl Jit {
     }
 }
 
-/// Emits `insts` (SSA: operands are earlier instructions); `load` gives the value of a slot.
+/// The value of a program's constant: the k-th `Const` of its instructions, of value c.
+type ConstantFn<'a> = &'a mut dyn FnMut(&mut FunctionBuilder, usize, f64) -> Result<Value, String>;
+
+/// Emits `insts` (SSA: operands are earlier instructions); `load` gives the value of a slot,
+/// `constant` that of the k-th constant.
 fn emit_insts(
     b: &mut FunctionBuilder,
     insts: &[Inst],
     refs: &HashMap<&'static str, FuncRef>,
     load: &mut dyn FnMut(&mut FunctionBuilder, u32) -> Result<Value, String>,
+    constant: ConstantFn<'_>,
 ) -> Result<Vec<Value>, String> {
     let one = b.ins().f64const(1.0);
     let zero = b.ins().f64const(0.0);
     let mut regs: Vec<Value> = Vec::with_capacity(insts.len());
+    let mut constants = 0;
     for inst in insts {
         let r = |k: u32| regs[k as usize];
         let v = match *inst {
-            Inst::Const(c) => b.ins().f64const(c),
+            Inst::Const(c) => {
+                constants += 1;
+                constant(b, constants - 1, c)?
+            }
             Inst::Load(s) => load(b, s)?,
             Inst::Neg(a) => b.ins().fneg(r(a)),
             Inst::Not(a) => {
@@ -319,18 +328,48 @@ pub(super) fn programs_kept() -> usize {
 /// Compiled kernels, shared by equal bodies.
 static KERNELS: Cache<NativeKernel> = Cache::new();
 
+/// A program's native code and the values of its constants, which the code reads from
+/// memory: programs that differ only in their constants' values share the code.
+#[derive(Debug, Clone)]
+pub(super) struct Attached {
+    pub(super) code: Arc<Native>,
+    constants: Arc<[f64]>,
+}
+
+impl Attached {
+    /// Calls the native code. `vars` must hold every slot the program reads (checked by the
+    /// caller).
+    #[inline]
+    pub(super) fn call(&self, vars: &[f64]) -> f64 {
+        (self.code.func)(vars.as_ptr(), self.constants.as_ptr())
+    }
+}
+
 impl Native {
-    /// The native code of `ir`: the code compiled before for the same instructions, else
-    /// compiled now ([`Native::compile`]) and kept for the next.
-    pub(super) fn shared(ir: &Ir) -> Result<Arc<Native>, String> {
-        let mut key = cache::key(&ir.insts);
+    /// The native code of `ir` with its constants: the code compiled before for the same
+    /// instructions (constants' values aside), else compiled now ([`Native::compile`]) and
+    /// kept for the next.
+    pub(super) fn shared(ir: &Ir) -> Result<Attached, String> {
+        let mut key = cache::key(&ir.insts, false);
         key.push(Word::extra(ir.result));
-        PROGRAMS.get_or_compile(key, || Native::compile(ir))
+        let code = PROGRAMS.get_or_compile(key, || Native::compile(ir))?;
+        let constants = ir
+            .insts
+            .iter()
+            .filter_map(|i| match i {
+                Inst::Const(c) => Some(*c),
+                _ => None,
+            })
+            .collect();
+        Ok(Attached { code, constants })
     }
 
+    /// Compiles `ir` as `fn(vars, constants) -> f64`, the k-th constant read from
+    /// `constants[k]`.
     pub(super) fn compile(ir: &Ir) -> Result<Native, String> {
         let mut m = Jit::new(&ir.insts)?;
         let mut sig = m.module.make_signature();
+        sig.params.push(AbiParam::new(m.pointer_type()));
         sig.params.push(AbiParam::new(m.pointer_type()));
         sig.returns.push(AbiParam::new(types::F64));
         let code = m.define(sig, |b, refs| {
@@ -338,29 +377,34 @@ impl Native {
             b.switch_to_block(block);
             b.append_block_params_for_function_params(block);
             let vars = b.block_params(block)[0];
-            let regs = emit_insts(b, &ir.insts, refs, &mut |b, s| {
-                Ok(b.ins()
-                    .load(types::F64, MemFlagsData::trusted(), vars, slot_offset(s)?))
-            })?;
+            let table = b.block_params(block)[1];
+            let regs = emit_insts(
+                b,
+                &ir.insts,
+                refs,
+                &mut |b, s| {
+                    Ok(b.ins()
+                        .load(types::F64, MemFlagsData::trusted(), vars, slot_offset(s)?))
+                },
+                &mut |b, k, _| {
+                    let k = u32::try_from(k).map_err(|e| err(&e))?;
+                    Ok(b.ins()
+                        .load(types::F64, MemFlagsData::trusted(), table, slot_offset(k)?))
+                },
+            )?;
             let result = regs[ir.result as usize];
             b.ins().return_(&[result]);
             Ok(())
         })?;
-        // SAFETY: the function was built above with the signature (pointer) -> f64 and the
-        // C calling convention of the host, which is what this type says.
-        let func =
-            unsafe { std::mem::transmute::<*const u8, extern "C" fn(*const f64) -> f64>(code) };
+        // SAFETY: the function was built above with the signature (pointer, pointer) -> f64
+        // and the C calling convention of the host, which is what this type says.
+        let func = unsafe {
+            std::mem::transmute::<*const u8, extern "C" fn(*const f64, *const f64) -> f64>(code)
+        };
         Ok(Native {
             func,
             module: Mutex::new(Some(m.module)),
         })
-    }
-
-    /// Calls the native function. `vars` must hold every slot the program reads (checked by
-    /// the caller).
-    #[inline]
-    pub(super) fn call(&self, vars: &[f64]) -> f64 {
-        (self.func)(vars.as_ptr())
     }
 }
 
@@ -389,7 +433,7 @@ impl Drop for NativeKernel {
 impl NativeKernel {
     /// The native code of `body`, shared as [`Native::shared`].
     pub(super) fn shared(body: &Body) -> Result<Arc<NativeKernel>, String> {
-        let mut key = cache::key(&body.insts);
+        let mut key = cache::key(&body.insts, true);
         key.extend(body.stores.iter().map(|&s| Word::extra(s)));
         key.push(Word::extra(u32::try_from(body.slots).map_err(|e| err(&e))?));
         KERNELS.get_or_compile(key, || NativeKernel::compile(body))
@@ -429,9 +473,13 @@ impl NativeKernel {
             b.ins().brif(done, exit, &[], looped, &[]);
 
             b.switch_to_block(looped);
-            let regs = emit_insts(b, &body.insts, refs, &mut |b, s| {
-                Ok(b.use_var(vars[s as usize]))
-            })?;
+            let regs = emit_insts(
+                b,
+                &body.insts,
+                refs,
+                &mut |b, s| Ok(b.use_var(vars[s as usize])),
+                &mut |b, _, c| Ok(b.ins().f64const(c)),
+            )?;
             for (var, r) in vars.iter().zip(&body.stores) {
                 b.def_var(*var, regs[*r as usize]);
             }

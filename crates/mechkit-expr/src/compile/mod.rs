@@ -31,6 +31,7 @@ pub fn native_code() -> bool {
     }
 }
 
+#[cfg(any(test, not(feature = "jit")))]
 use std::sync::Arc;
 
 use ir::Ir;
@@ -54,7 +55,7 @@ use crate::scope::Scope;
 pub struct Program {
     ir: Ir,
     #[cfg(feature = "jit")]
-    native: Option<Arc<jit::Native>>,
+    native: Option<jit::Attached>,
     #[cfg(not(feature = "jit"))]
     native: Option<Arc<()>>,
 }
@@ -90,7 +91,7 @@ impl Program {
     /// The native code attached, for tests of its sharing.
     #[cfg(all(test, feature = "jit"))]
     fn native_code(&self) -> Option<&Arc<jit::Native>> {
-        self.native.as_ref()
+        self.native.as_ref().map(|a| &a.code)
     }
 
     /// Whether evaluation runs native code.
