@@ -225,7 +225,7 @@ pub(crate) struct Body {
 pub struct Kernel {
     body: Body,
     #[cfg(feature = "jit")]
-    native: Option<Arc<super::jit::NativeKernel>>,
+    native: Option<Arc<super::jit_kernel::NativeKernel>>,
     #[cfg(not(feature = "jit"))]
     native: Option<Arc<()>>,
 }
@@ -237,7 +237,7 @@ impl Kernel {
     pub fn native(mut self) -> Kernel {
         #[cfg(feature = "jit")]
         if self.native.is_none() && super::jit::enabled() {
-            self.native = super::jit::NativeKernel::shared(&self.body).ok();
+            self.native = super::jit_kernel::NativeKernel::shared(&self.body).ok();
         }
         self
     }

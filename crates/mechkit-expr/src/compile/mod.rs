@@ -13,6 +13,8 @@ mod domain;
 mod ir;
 #[cfg(feature = "jit")]
 mod jit;
+#[cfg(feature = "jit")]
+mod jit_kernel;
 mod kernel;
 
 pub use kernel::{Kernel, KernelBuilder, Val};
