@@ -365,6 +365,8 @@ def md(
     cutoff: float = 2.5,
     shift: bool = False,
     skin: float = 0.3,
+    neigh_every: int = 1,
+    neigh_check: bool = True,
     threads: int = 1,
     thermo_every: int = 50,
     xyz_every: Optional[int] = None,
@@ -373,7 +375,9 @@ def md(
     """``mechkit md`` in memory: the options under the command's names and defaults (the
     Lennard-Jones melt). ``positions``/``velocities``: a CSV or XYZ file, or an ``(N, d)``
     array. ``export_lammps``: a directory to write the run's start into as LAMMPS files
-    (``in.lammps``, ``data.lammps``; run there with ``lmp -in in.lammps``). The GIL is
+    (``in.lammps``, ``data.lammps``; run there with ``lmp -in in.lammps``).
+    ``neigh_every``/``neigh_check``: LAMMPS's ``neigh_modify every N check yes|no`` (the
+    report's ``dangerous_builds`` counts builds that came late). The GIL is
     released; Ctrl-C stops the run and raises KeyboardInterrupt. Bad values raise
     MechkitError naming the argument."""
 
