@@ -63,12 +63,14 @@ pub fn compute_forces_with<P: PairPotential>(
     pool: Option<&rayon::ThreadPool>,
     scratch: &mut ForceScratch,
 ) -> PairSums {
-    forces::<P, true>(potential, sim_box, list, x, f, pool, scratch)
+    forces_summed(potential, sim_box, list, x, f, pool, scratch, true)
 }
 
-/// The forces only, as [`compute_forces_with`] computes them bit for bit, without the energy
-/// and the virial (a step whose energy nobody reads).
-pub(crate) fn forces_only<P: PairPotential>(
+/// [`compute_forces_with`], the energy and the virial summed only when `energy` (else the
+/// sums are zero; the forces are the same bits either way: a step whose energy nobody reads
+/// skips them).
+#[allow(clippy::too_many_arguments)] // compute_forces_with's, and the choice
+pub(crate) fn forces_summed<P: PairPotential>(
     potential: &P,
     sim_box: &SimBox,
     list: &NeighbourList,
@@ -76,8 +78,13 @@ pub(crate) fn forces_only<P: PairPotential>(
     f: &mut [[Real; 3]],
     pool: Option<&rayon::ThreadPool>,
     scratch: &mut ForceScratch,
-) {
-    forces::<P, false>(potential, sim_box, list, x, f, pool, scratch);
+    energy: bool,
+) -> PairSums {
+    if energy {
+        forces::<P, true>(potential, sim_box, list, x, f, pool, scratch)
+    } else {
+        forces::<P, false>(potential, sim_box, list, x, f, pool, scratch)
+    }
 }
 
 /// The forces, and the sums when `ENERGY`.

@@ -11,7 +11,7 @@ use rayon::prelude::*;
 
 use crate::Real;
 
-use super::forces::{CHUNK, compute_forces_with, forces_only};
+use super::forces::{CHUNK, forces_summed};
 use super::{ForceScratch, MdError, MdInput, NeighbourList, PairPotential, PairSums, SimBox};
 
 /// One particle's position and velocity (updated) with its force and its position at the
@@ -227,7 +227,12 @@ impl<P: PairPotential> Md<P> {
 
     /// Forces, energy and virial at the current positions.
     fn update_forces(&mut self) {
-        self.sums = compute_forces_with(
+        self.update(true);
+    }
+
+    /// Forces at the current positions, and the energy and the virial when `energy`.
+    fn update(&mut self, energy: bool) {
+        let sums = forces_summed(
             &self.potential,
             &self.sim_box,
             &self.list,
@@ -235,8 +240,12 @@ impl<P: PairPotential> Md<P> {
             &mut self.f,
             self.pool.as_ref(),
             &mut self.scratch,
+            energy,
         );
-        self.sums_current = true;
+        if energy {
+            self.sums = sums;
+        }
+        self.sums_current = energy;
     }
 
     /// Sums the energy and the virial of the current positions if the last step skipped
@@ -295,20 +304,7 @@ impl<P: PairPotential> Md<P> {
         } else {
             self.moved_far |= moved_far;
         }
-        if energy {
-            self.update_forces();
-        } else {
-            self.sums_current = false;
-            forces_only(
-                &self.potential,
-                &self.sim_box,
-                &self.list,
-                &self.x,
-                &mut self.f,
-                self.pool.as_ref(),
-                &mut self.scratch,
-            );
-        }
+        self.update(energy);
         // Second half kick; reports whether the velocity is finite.
         let kick = |(v, f): (&mut [Real; 3], &[Real; 3])| -> bool {
             for a in 0..3 {
