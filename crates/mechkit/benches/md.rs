@@ -40,7 +40,7 @@ fn md(c: &mut Criterion) {
                 .build()
                 .unwrap()
         });
-        let x = md.positions().to_vec();
+        let x = md.positions();
         let mut f = vec![[0.0; 3]; x.len()];
         let lj = LennardJones::reduced(2.5).unwrap();
         let list = md.neighbour_list().clone();

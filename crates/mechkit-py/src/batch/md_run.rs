@@ -111,8 +111,8 @@ impl WithPotential for Runner<'_> {
         };
         Ok(Outcome {
             rdf: md.radial_distribution(RDF_BINS, cutoff + o.skin),
-            positions: flat(md.positions()),
-            velocities: flat(md.velocities()),
+            positions: flat(&md.positions()),
+            velocities: flat(&md.velocities()),
             report,
             rows: run.rows,
             dim,

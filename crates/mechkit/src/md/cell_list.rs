@@ -90,11 +90,11 @@ pub(crate) struct CellList {
     pub(crate) first: Vec<usize>,
     /// Sorted index → original index.
     pub(crate) order: Vec<u32>,
-    /// Original index → sorted index.
-    pub(crate) rank: Vec<u32>,
     /// The cell of each sorted particle.
     pub(crate) cell: Vec<u32>,
-    /// Positions in sorted order.
+    /// Positions in sorted order, for lists built from positions in their original order
+    /// ([`NeighbourList::rebuild`](super::NeighbourList::rebuild)); a run keeps its
+    /// particles sorted and leaves this empty.
     pub(crate) sorted: Vec<[Real; 3]>,
     /// For each axis and each cell index along it, the distinct adjacent cell indices.
     pub(crate) adjacent: [Vec<Adjacent>; 3],
@@ -182,15 +182,12 @@ impl CellList {
         }
         self.order.clear();
         self.order.resize(x.len(), 0);
-        self.rank.clear();
-        self.rank.resize(x.len(), 0);
         self.cell.clear();
         self.cell.resize(x.len(), 0);
         // Each cell's start serves as its fill pointer, then is shifted back.
         for (i, &c) in self.which.iter().enumerate() {
             let k = &mut self.first[c as usize];
             self.order[*k] = i as u32;
-            self.rank[i] = *k as u32;
             self.cell[*k] = c;
             *k += 1;
         }
@@ -198,9 +195,6 @@ impl CellList {
             self.first[c] = self.first[c - 1];
         }
         self.first[0] = 0;
-        self.sorted.clear();
-        self.sorted
-            .extend(self.order.iter().map(|&i| x[i as usize]));
     }
 
     /// The cell coordinates of cell `c`.
@@ -246,8 +240,8 @@ mod tests {
         assert_eq!(n, [1, 1, 1]);
     }
 
-    /// The sort is a permutation, `rank` is its inverse, and cells come in order with
-    /// every particle in the cell that contains it.
+    /// The sort is a permutation, and cells come in order with every particle in the cell
+    /// that contains it.
     #[test]
     fn sorting_permutation_round_trips() {
         let (b, mut x) = Lattice::Fcc.build(4, 0.8442).unwrap();
@@ -261,11 +255,9 @@ mod tests {
         let mut cells = CellList::default();
         cells.rebuild(&b, &x, 2.8, None);
         let mut seen = vec![false; x.len()];
-        for (k, &i) in cells.order.iter().enumerate() {
+        for &i in &cells.order {
             assert!(!seen[i as usize]);
             seen[i as usize] = true;
-            assert_eq!(cells.rank[i as usize] as usize, k);
-            assert_eq!(cells.sorted[k], x[i as usize]);
         }
         assert!(cells.cell.windows(2).all(|w| w[0] <= w[1]));
         for c in 0..cells.first.len() - 1 {
@@ -274,7 +266,7 @@ mod tests {
                 let cc = cells.coords(c as u32);
                 for (a, &ca) in cc.iter().enumerate() {
                     let lo = ca as Real * cells.width[a];
-                    let p = cells.sorted[k][a];
+                    let p = x[cells.order[k] as usize][a];
                     assert!(p >= lo - 1e-12 && p < lo + cells.width[a] + 1e-12);
                 }
             }

@@ -2,18 +2,17 @@
 //!
 //! Each listed pair is evaluated once and, by Newton's third law, adds (F/r)(r_ij) (xᵢ − xⱼ)
 //! to particle i and its opposite to j, its energy U(r_ij) and its virial (F/r) r_ij² to
-//! the sums. The slabs of the list ([`NeighbourList`]) run independently, each into its
-//! own buffer `[own particles | next slab's particles]`; then particle k's force is its own
-//! slab's entry plus the previous slab's entry for it, in that fixed order, and the
-//! energies are added in slab order. Neither the slabs nor any order depends on the number
-//! of threads: serial and parallel runs are bit-identical.
-
-use rayon::prelude::*;
+//! the sums. The particles are taken in the list's sorted order. The slabs of the list
+//! ([`NeighbourList`]) run independently: each adds into its own particles' forces and into
+//! a buffer of reactions on the next slab's; then each buffer is added to the slab after it.
+//! The slabs are split in halves, recursively, into a fixed tree whose halves run in
+//! parallel, and the energies are added up that tree. Neither the slabs nor any order
+//! depends on the number of threads: serial and parallel runs are bit-identical.
 
 use crate::Real;
 
-use super::kernel::pair_kernel;
-use super::neighbour::{SlabList, half_lengths};
+use super::kernel::{SlabData, pair_kernel};
+use super::neighbour::half_lengths;
 use super::{NeighbourList, PairPotential, SimBox};
 
 /// The potential energy and the virial W = Σ_pairs r_ij · F_ij of a force evaluation.
@@ -25,14 +24,14 @@ pub struct PairSums {
     pub virial: Real,
 }
 
-/// One slab's local positions and forces: its own particles, then the next slab's.
-type SlabBuffers = (Vec<[Real; 3]>, Vec<[Real; 3]>);
-
-/// Per-slab position and force buffers of [`compute_forces_with`], kept between calls so a
-/// step allocates nothing.
+/// Buffers of [`compute_forces_with`], kept between calls so a step allocates nothing: each
+/// slab's reactions on the next slab, and the positions and forces in sorted order when
+/// the particles are not stored sorted.
 #[derive(Debug, Clone, Default)]
 pub struct ForceScratch {
-    slabs: Vec<SlabBuffers>,
+    next: Vec<Vec<[Real; 3]>>,
+    xs: Vec<[Real; 3]>,
+    fs: Vec<[Real; 3]>,
 }
 
 /// Particles per work unit of the per-particle loops (gathers, integrator).
@@ -53,7 +52,8 @@ pub fn compute_forces<P: PairPotential>(
     compute_forces_with(potential, sim_box, list, x, f, pool, &mut scratch)
 }
 
-/// [`compute_forces`] with buffers kept in `scratch`.
+/// [`compute_forces`] with buffers kept in `scratch`. The particles are in the order the
+/// list was built from; they are sorted into `scratch` and their forces put back.
 pub fn compute_forces_with<P: PairPotential>(
     potential: &P,
     sim_box: &SimBox,
@@ -63,40 +63,51 @@ pub fn compute_forces_with<P: PairPotential>(
     pool: Option<&rayon::ThreadPool>,
     scratch: &mut ForceScratch,
 ) -> PairSums {
-    forces_summed(potential, sim_box, list, x, f, pool, scratch, true)
+    check_lengths(list, x, f);
+    let order = list.order();
+    let (mut xs, mut fs) = (
+        std::mem::take(&mut scratch.xs),
+        std::mem::take(&mut scratch.fs),
+    );
+    xs.clear();
+    xs.extend(order.iter().map(|&i| x[i as usize]));
+    fs.resize(x.len(), [0.0; 3]);
+    let sums = forces_summed(potential, sim_box, list, &xs, &mut fs, pool, scratch, true);
+    for (&i, fk) in order.iter().zip(&fs) {
+        f[i as usize] = *fk;
+    }
+    (scratch.xs, scratch.fs) = (xs, fs);
+    sums
 }
 
-/// [`compute_forces_with`], the energy and the virial summed only when `energy` (else the
-/// sums are zero; the forces are the same bits either way: a step whose energy nobody reads
-/// skips them).
+/// The forces on particles stored in the list's sorted order (`xs`, `fs`), the energy and
+/// the virial summed only when `energy` (else the sums are zero; the forces are the same
+/// bits either way: a step whose energy nobody reads skips them).
 #[allow(clippy::too_many_arguments)] // compute_forces_with's, and the choice
 pub(crate) fn forces_summed<P: PairPotential>(
     potential: &P,
     sim_box: &SimBox,
     list: &NeighbourList,
-    x: &[[Real; 3]],
-    f: &mut [[Real; 3]],
+    xs: &[[Real; 3]],
+    fs: &mut [[Real; 3]],
     pool: Option<&rayon::ThreadPool>,
     scratch: &mut ForceScratch,
     energy: bool,
 ) -> PairSums {
-    if energy {
-        forces::<P, true>(potential, sim_box, list, x, f, pool, scratch)
-    } else {
-        forces::<P, false>(potential, sim_box, list, x, f, pool, scratch)
+    check_lengths(list, xs, fs);
+    let (u, w) = match pool {
+        Some(pool) => {
+            pool.install(|| forces(potential, sim_box, list, xs, fs, true, scratch, energy))
+        }
+        None => forces(potential, sim_box, list, xs, fs, false, scratch, energy),
+    };
+    PairSums {
+        potential: u,
+        virial: w,
     }
 }
 
-/// The forces, and the sums when `ENERGY`.
-fn forces<P: PairPotential, const ENERGY: bool>(
-    potential: &P,
-    sim_box: &SimBox,
-    list: &NeighbourList,
-    x: &[[Real; 3]],
-    f: &mut [[Real; 3]],
-    pool: Option<&rayon::ThreadPool>,
-    scratch: &mut ForceScratch,
-) -> PairSums {
+fn check_lengths(list: &NeighbourList, x: &[[Real; 3]], f: &[[Real; 3]]) {
     assert!(
         x.len() == list.len() && f.len() == list.len(),
         "compute_forces: {} positions and {} forces for a list of {} particles",
@@ -104,75 +115,96 @@ fn forces<P: PairPotential, const ENERGY: bool>(
         f.len(),
         list.len()
     );
+}
+
+/// The two passes: every slab's pairs, then every slab's buffer into the slab after it.
+#[allow(clippy::too_many_arguments)] // forces_summed's, resolved
+fn forces<P: PairPotential>(
+    potential: &P,
+    sim_box: &SimBox,
+    list: &NeighbourList,
+    xs: &[[Real; 3]],
+    fs: &mut [[Real; 3]],
+    par: bool,
+    scratch: &mut ForceScratch,
+    energy: bool,
+) -> (Real, Real) {
     let lengths = sim_box.lengths();
-    let half = half_lengths(sim_box);
+    let box_ = (lengths, half_lengths(sim_box));
     let rc2 = potential.cutoff() * potential.cutoff();
-    let order = list.order();
-    scratch
-        .slabs
-        .resize_with(list.slab_count(), Default::default);
-    let slab_task =
-        |(s, (slab, (xl, fl))): (usize, (&SlabList, &mut SlabBuffers))| -> (Real, Real) {
-            let (own, next) = list.slab_sizes(s);
-            let lo = list.bounds[s];
-            xl.clear();
-            xl.extend(order[lo..lo + own].iter().map(|&i| x[i as usize]));
-            if let Some(t) = list.next[s] {
-                let lo_next = list.bounds[t];
-                // Across the periodic x edge: shifted so no pair needs the x minimum image.
-                let shift = if slab.shift_next { lengths[0] } else { 0.0 };
-                xl.extend(order[lo_next..lo_next + next].iter().map(|&i| {
-                    let p = x[i as usize];
-                    [p[0] + shift, p[1], p[2]]
-                }));
-            }
-            fl.clear();
-            fl.resize(own + next, [0.0; 3]);
-            pair_kernel::<P, ENERGY>(potential, (lengths, half), rc2, slab, own, xl, fl)
+    let bounds = &list.bounds;
+    let range = |s: usize| bounds[s]..bounds[s + 1];
+    scratch.next.resize_with(list.slab_count(), Vec::new);
+    let pairs = |s: usize, f_own: &mut [[Real; 3]], f_next: &mut Vec<[Real; 3]>| {
+        let slab = &list.slabs[s];
+        f_own.fill([0.0; 3]);
+        f_next.clear();
+        f_next.resize(list.slab_sizes(s).1, [0.0; 3]);
+        let data = SlabData {
+            x_own: &xs[range(s)],
+            x_next: list.next[s].map_or(&xs[..0], |t| &xs[range(t)]),
+            shift_next: if slab.shift_next { lengths[0] } else { 0.0 },
+            f_own,
+            f_next,
         };
-    let partial: Vec<(Real, Real)> = match pool {
-        Some(pool) => pool.install(|| {
-            list.slabs
-                .par_iter()
-                .zip(scratch.slabs.par_iter_mut())
-                .enumerate()
-                .map(slab_task)
-                .collect()
-        }),
-        None => list
-            .slabs
-            .iter()
-            .zip(scratch.slabs.iter_mut())
-            .enumerate()
-            .map(slab_task)
-            .collect(),
-    };
-    let slabs = &scratch.slabs;
-    let gather = |(c, out): (usize, &mut [[Real; 3]])| {
-        for (k, fi) in out.iter_mut().enumerate() {
-            let r = list.cells.rank[c * CHUNK + k] as usize;
-            let s = list.slab_of[r] as usize;
-            let local = r - list.bounds[s];
-            let mut sum = slabs[s].1[local];
-            if let Some(p) = list.prev[s] {
-                let other = slabs[p].1[list.slab_sizes(p).0 + local];
-                for a in 0..3 {
-                    sum[a] += other[a];
-                }
-            }
-            *fi = sum;
+        if energy {
+            pair_kernel::<P, true>(potential, box_, rc2, slab, data)
+        } else {
+            pair_kernel::<P, false>(potential, box_, rc2, slab, data)
         }
     };
-    match pool {
-        Some(pool) => pool.install(|| f.par_chunks_mut(CHUNK).enumerate().for_each(gather)),
-        None => f.chunks_mut(CHUNK).enumerate().for_each(gather),
-    }
-    let mut sums = PairSums::default();
-    for (u, w) in partial {
-        sums.potential += u;
-        sums.virial += w;
-    }
+    let sums = slab_tree(fs, bounds, &mut scratch.next, 0, par, &pairs);
+    let next = &scratch.next;
+    let add_previous = |t: usize, f_own: &mut [[Real; 3]], (): &mut ()| {
+        if let Some(p) = list.prev[t] {
+            for (fk, gk) in f_own.iter_mut().zip(&next[p]) {
+                for a in 0..3 {
+                    fk[a] += gk[a];
+                }
+            }
+        }
+        (0.0, 0.0)
+    };
+    let mut units = vec![(); list.slab_count()];
+    slab_tree(fs, bounds, &mut units, 0, par, &add_previous);
     sums
+}
+
+/// `task` on every slab (numbered from `first`) with its own range of `f` and its entry of
+/// `extra`, the slabs split in halves into a fixed tree (the halves on two threads of the
+/// current pool when `par`); returns the sum of the tasks' pairs up that tree.
+fn slab_tree<T: Send, F>(
+    f: &mut [[Real; 3]],
+    bounds: &[usize],
+    extra: &mut [T],
+    first: usize,
+    par: bool,
+    task: &F,
+) -> (Real, Real)
+where
+    F: Fn(usize, &mut [[Real; 3]], &mut T) -> (Real, Real) + Sync,
+{
+    let count = bounds.len() - 1;
+    if count == 1 {
+        return task(first, f, &mut extra[0]);
+    }
+    let mid = count / 2;
+    let (fa, fb) = f.split_at_mut(bounds[mid] - bounds[0]);
+    let (ea, eb) = extra.split_at_mut(mid);
+    let (ba, bb) = (&bounds[..=mid], &bounds[mid..]);
+    let mut left = move || slab_tree(fa, ba, ea, first, par, task);
+    let mut right = move || slab_tree(fb, bb, eb, first + mid, par, task);
+    let (a, b) = if par && f_len_worth(bounds) {
+        rayon::join(left, right)
+    } else {
+        (left(), right())
+    };
+    (a.0 + b.0, a.1 + b.1)
+}
+
+/// Whether the particles between `bounds`' ends are enough to split over two threads.
+fn f_len_worth(bounds: &[usize]) -> bool {
+    bounds[bounds.len() - 1] - bounds[0] >= CHUNK
 }
 
 /// The same sums over all pairs (minimum image, no list): the O(N²) reference the

@@ -28,24 +28,34 @@ const LANES: usize = 4;
 /// The box for the minimum image: lengths and half-lengths (∞ on open axes).
 pub(super) type BoxHalves = ([Real; 3], [Real; 3]);
 
-/// One slab's pairs: forces into `fl` (indexed like `xl`: own particles, then the next
-/// slab's), returning the slab's energy and virial (zero unless `ENERGY`).
+/// A slab's positions and forces: its own particles' (sorted), and the next slab's.
+pub(super) struct SlabData<'a> {
+    pub(super) x_own: &'a [[Real; 3]],
+    pub(super) x_next: &'a [[Real; 3]],
+    /// The next slab lies this far on in x (one box length across the periodic x edge).
+    pub(super) shift_next: Real,
+    /// Forces on the own particles (added to).
+    pub(super) f_own: &'a mut [[Real; 3]],
+    /// Reactions on the next slab's particles (added to).
+    pub(super) f_next: &'a mut [[Real; 3]],
+}
+
+/// One slab's pairs: forces added into `data`'s force slices, returning the slab's energy
+/// and virial (zero unless `ENERGY`).
 pub(super) fn pair_kernel<P: PairPotential, const ENERGY: bool>(
     potential: &P,
     box_: BoxHalves,
     rc2: Real,
     slab: &SlabList,
-    own: usize,
-    xl: &[[Real; 3]],
-    fl: &mut [[Real; 3]],
+    data: SlabData<'_>,
 ) -> (Real, Real) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: the host has AVX2, which is all `pair_kernel_avx2` is compiled for.
         #[allow(unsafe_code)]
-        return unsafe { pair_kernel_avx2::<P, ENERGY>(potential, box_, rc2, slab, own, xl, fl) };
+        return unsafe { pair_kernel_avx2::<P, ENERGY>(potential, box_, rc2, slab, data) };
     }
-    pair_kernel_lanes::<P, ENERGY>(potential, box_, rc2, slab, own, xl, fl)
+    pair_kernel_lanes::<P, ENERGY>(potential, box_, rc2, slab, data)
 }
 
 /// [`pair_kernel_lanes`] compiled for AVX2.
@@ -56,11 +66,9 @@ fn pair_kernel_avx2<P: PairPotential, const ENERGY: bool>(
     box_: BoxHalves,
     rc2: Real,
     slab: &SlabList,
-    own: usize,
-    xl: &[[Real; 3]],
-    fl: &mut [[Real; 3]],
+    data: SlabData<'_>,
 ) -> (Real, Real) {
-    pair_kernel_lanes::<P, ENERGY>(potential, box_, rc2, slab, own, xl, fl)
+    pair_kernel_lanes::<P, ENERGY>(potential, box_, rc2, slab, data)
 }
 
 /// The kernel for any host; inlined into the AVX2 version.
@@ -70,26 +78,38 @@ fn pair_kernel_lanes<P: PairPotential, const ENERGY: bool>(
     box_: BoxHalves,
     rc2: Real,
     slab: &SlabList,
-    own: usize,
-    xl: &[[Real; 3]],
-    fl: &mut [[Real; 3]],
+    data: SlabData<'_>,
 ) -> (Real, Real) {
+    let SlabData {
+        x_own,
+        x_next,
+        shift_next,
+        f_own,
+        f_next,
+    } = data;
     let (mut u_sum, mut w_sum) = (0.0, 0.0);
-    for i in 0..own {
-        let nb = &slab.neighbours[slab.start[i]..slab.start[i + 1]];
-        let (acc, u, w) = if slab.wraps[i] {
-            row::<P, true, ENERGY>(potential, box_, rc2, xl[i], nb, xl, fl)
+    for (i, &xi) in x_own.iter().enumerate() {
+        let (same, next) = slab.partners(i);
+        let xi_next = [xi[0] - shift_next, xi[1], xi[2]];
+        let ((a, u, w), (b, u2, w2)) = if slab.wraps[i] {
+            (
+                row::<P, true, ENERGY>(potential, box_, rc2, xi, same, x_own, f_own),
+                row::<P, true, ENERGY>(potential, box_, rc2, xi_next, next, x_next, f_next),
+            )
         } else {
-            row::<P, false, ENERGY>(potential, box_, rc2, xl[i], nb, xl, fl)
+            (
+                row::<P, false, ENERGY>(potential, box_, rc2, xi, same, x_own, f_own),
+                row::<P, false, ENERGY>(potential, box_, rc2, xi_next, next, x_next, f_next),
+            )
         };
         if ENERGY {
-            u_sum += u;
-            w_sum += w;
+            u_sum += u + u2;
+            w_sum += w + w2;
         }
-        let fi = &mut fl[i];
-        fi[0] += acc[0];
-        fi[1] += acc[1];
-        fi[2] += acc[2];
+        let fi = &mut f_own[i];
+        fi[0] += a[0] + b[0];
+        fi[1] += a[1] + b[1];
+        fi[2] += a[2] + b[2];
     }
     (u_sum, w_sum)
 }
@@ -215,18 +235,43 @@ mod tests {
         let lj = LennardJones::new(1.1, 0.95, 2.5, true).unwrap();
         let box_ = (b.lengths(), half_lengths(&b));
         let mut lengths = std::collections::BTreeSet::new();
+        let xs = &list.cells.sorted;
+        let range = |s: usize| list.bounds[s]..list.bounds[s + 1];
         for s in 0..list.slab_count() {
             let slab = &list.slabs[s];
             let (own, next) = list.slab_sizes(s);
-            let xl: Vec<[Real; 3]> = (0..own + next).map(|k| x[k % x.len()]).collect();
-            let (mut f1, mut f2) = (vec![[0.0; 3]; own + next], vec![[0.0; 3]; own + next]);
-            let a = pair_kernel::<_, true>(&lj, box_, 6.25, slab, own, &xl, &mut f1);
-            let c = pair_kernel_lanes::<_, true>(&lj, box_, 6.25, slab, own, &xl, &mut f2);
+            let x_next = list.next[s].map_or(&xs[..0], |t| &xs[range(t)]);
+            let shift_next = if slab.shift_next { b.lengths()[0] } else { 0.0 };
+            let run = |f: &mut Vec<[Real; 3]>, g: &mut Vec<[Real; 3]>, portable, energy| {
+                f.clear();
+                f.resize(own, [0.0; 3]);
+                g.clear();
+                g.resize(next, [0.0; 3]);
+                let data = SlabData {
+                    x_own: &xs[range(s)],
+                    x_next,
+                    shift_next,
+                    f_own: f,
+                    f_next: g,
+                };
+                match (portable, energy) {
+                    (false, true) => pair_kernel::<_, true>(&lj, box_, 6.25, slab, data),
+                    (true, true) => pair_kernel_lanes::<_, true>(&lj, box_, 6.25, slab, data),
+                    (_, false) => pair_kernel::<_, false>(&lj, box_, 6.25, slab, data),
+                }
+            };
+            let (mut f1, mut g1, mut f2, mut g2) = (vec![], vec![], vec![], vec![]);
+            let a = run(&mut f1, &mut g1, false, true);
+            let c = run(&mut f2, &mut g2, true, true);
             assert_eq!(a, c);
-            assert_eq!(f1, f2);
-            let (u, w) = pair_kernel::<_, false>(&lj, box_, 6.25, slab, own, &xl, &mut f2);
-            assert_eq!((u, w), (0.0, 0.0));
-            lengths.extend((0..own).map(|i| (slab.start[i + 1] - slab.start[i]) % LANES));
+            assert_eq!((&f1, &g1), (&f2, &g2));
+            assert_eq!(run(&mut f2, &mut g2, false, false), (0.0, 0.0));
+            assert_eq!((&f1, &g1), (&f2, &g2));
+            for i in 0..own {
+                let (same, next) = slab.partners(i);
+                lengths.insert(same.len() % LANES);
+                lengths.insert(next.len() % LANES);
+            }
         }
         assert_eq!(lengths.len(), LANES, "rows of every remainder: {lengths:?}");
     }

@@ -60,11 +60,11 @@ pub(crate) fn data_file<P: PairPotential>(md: &Md<P>) -> String {
         "\nMasses\n\n1 {}\n\nAtoms # atomic\n",
         num(md.config.mass)
     );
-    for (i, p) in md.x.iter().enumerate() {
+    for (i, p) in md.positions().iter().enumerate() {
         let _ = writeln!(s, "{} 1 {} {} {}", i + 1, num(p[0]), num(p[1]), num(p[2]));
     }
     s.push_str("\nVelocities\n\n");
-    for (i, v) in md.v.iter().enumerate() {
+    for (i, v) in md.velocities().iter().enumerate() {
         let _ = writeln!(s, "{} {} {} {}", i + 1, num(v[0]), num(v[1]), num(v[2]));
     }
     s

@@ -18,6 +18,8 @@ use super::neighbour::{SlabList, near_image};
 /// What every slab's build reads.
 pub(super) struct SlabBuild<'a> {
     pub(super) cells: &'a CellList,
+    /// The positions in sorted order.
+    pub(super) x: &'a [[Real; 3]],
     /// Slab s holds the sorted particles `bounds[s]..bounds[s + 1]`.
     pub(super) bounds: &'a [usize],
     /// The slab after each slab, if any.
@@ -55,64 +57,72 @@ impl SlabBuild<'_> {
     /// The build for any host; inlined into the AVX2 version.
     #[inline(always)]
     fn slab_any(&self, s: usize, list: &mut SlabList) {
-        let (cells, next, lengths) = (self.cells, self.next, self.box_.0);
+        let (cells, next, lengths, xs) = (self.cells, self.next, self.box_.0, self.x);
         let (lo, hi) = (self.bounds[s], self.bounds[s + 1]);
         let lo_next = next[s].map_or(0, |t| self.bounds[t]);
-        let own = hi - lo;
         list.start.clear();
+        list.mid.clear();
         list.neighbours.clear();
         list.wraps.clear();
         list.shift_next = next[s].is_some_and(|t| t < s);
+        // Across the periodic x edge the next slab lies one box length further on.
+        let shift = if list.shift_next { lengths[0] } else { 0.0 };
         list.start.push(0);
         for i in lo..hi {
-            let xi = cells.sorted[i];
+            let xi = xs[i];
             let c = cells.coords(cells.cell[i]);
             let edge = |a: usize| self.periodic[a] && (c[a] < REACH || c[a] + REACH >= cells.n[a]);
             let wraps = (self.single && edge(0)) || edge(1) || edge(2);
             list.wraps.push(wraps);
-            for &cx in cells.adjacent[0][c[0]].as_slice() {
-                let t = self.layer_slab[cx as usize];
-                let same = t == s;
-                if !same && next[s] != Some(t) {
-                    continue;
+            // Partners in the slab first, then those in the next slab.
+            for same in [true, false] {
+                if !same && next[s].is_none() {
+                    break;
                 }
-                for &cy in cells.adjacent[1][c[1]].as_slice() {
-                    // The z-adjacent cells in runs: each run is one range of atoms.
-                    for &(z0, z1) in cells.adjacent[2][c[2]].runs() {
-                        let row = (cx as usize * cells.n[1] + cy as usize) * cells.n[2];
-                        let (mut a, b) = (
-                            cells.first[row + z0 as usize],
-                            cells.first[row + z1 as usize + 1],
-                        );
-                        // Inside the slab the lower sorted index owns the pair.
-                        let base = if same {
-                            a = a.max(i + 1);
-                            lo
-                        } else {
-                            lo_next
-                        };
-                        let offset = if same { 0 } else { own };
-                        if a >= b {
-                            continue;
-                        }
-                        let first = (a - base + offset) as u32;
-                        let shift = if !same && list.shift_next {
-                            lengths[0]
-                        } else {
-                            0.0
-                        };
-                        let xi = [xi[0] - shift, xi[1], xi[2]];
-                        let candidates = &cells.sorted[a..b];
-                        let out = &mut list.neighbours;
-                        if wraps {
-                            scan::<true>(xi, candidates, first, self.r2, self.box_, out);
-                        } else {
-                            scan::<false>(xi, candidates, first, self.r2, self.box_, out);
+                let xi = if same {
+                    xi
+                } else {
+                    [xi[0] - shift, xi[1], xi[2]]
+                };
+                for &cx in cells.adjacent[0][c[0]].as_slice() {
+                    let t = self.layer_slab[cx as usize];
+                    if (t == s) != same || (!same && next[s] != Some(t)) {
+                        continue;
+                    }
+                    for &cy in cells.adjacent[1][c[1]].as_slice() {
+                        // The z-adjacent cells in runs: each run is one range of atoms.
+                        for &(z0, z1) in cells.adjacent[2][c[2]].runs() {
+                            let row = (cx as usize * cells.n[1] + cy as usize) * cells.n[2];
+                            let (mut a, b) = (
+                                cells.first[row + z0 as usize],
+                                cells.first[row + z1 as usize + 1],
+                            );
+                            // Inside the slab the lower sorted index owns the pair.
+                            let base = if same {
+                                a = a.max(i + 1);
+                                lo
+                            } else {
+                                lo_next
+                            };
+                            if a >= b {
+                                continue;
+                            }
+                            let first = (a - base) as u32;
+                            let candidates = &xs[a..b];
+                            let out = &mut list.neighbours;
+                            if wraps {
+                                scan::<true>(xi, candidates, first, self.r2, self.box_, out);
+                            } else {
+                                scan::<false>(xi, candidates, first, self.r2, self.box_, out);
+                            }
                         }
                     }
                 }
+                if same {
+                    list.mid.push(list.neighbours.len() as u32);
+                }
             }
-            list.start.push(list.neighbours.len());
+            list.start.push(list.neighbours.len() as u32);
         }
     }
 }

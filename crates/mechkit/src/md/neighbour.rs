@@ -6,11 +6,12 @@
 //! than `range` is listed ONCE, by the slab of one partner, and its other partner lies in the
 //! same slab or in the NEXT one (x + 1, periodically): a pair inside a slab belongs to the
 //! partner with the lower sorted index, a pair across two slabs to the particle in the
-//! earlier one. Each slab's list indexes a local array `[own particles | next slab's
-//! particles]`, so a slab's forces accumulate into its own buffer and the slabs run in
-//! parallel; particle k's force is then its own slab's entry plus the previous slab's, in
-//! that order (see [`compute_forces`](super::compute_forces)). Same slabs and order on one
-//! thread or many: bit-identical results.
+//! earlier one. A particle's partners in its own slab come first, as indices into the slab,
+//! then those in the next slab, as indices into that one. So a slab's forces accumulate into
+//! its own range of the sorted forces and into a buffer for the next slab, the slabs run in
+//! parallel, and each slab's buffer is then added to the slab after it (see
+//! [`compute_forces`](super::compute_forces)). Same slabs and order on one thread or many:
+//! bit-identical results.
 //!
 //! The list stays valid until some particle has moved more than skin/2 since it was built
 //! (then no pair can have come from beyond `r_c + skin` to within `r_c`).
@@ -38,19 +39,34 @@ pub(crate) fn near_image(d: Real, l: Real, half: Real) -> Real {
     d + up - down
 }
 
-/// The half list of one slab: the partners of its particle `i` (local index) are
-/// `neighbours[start[i]..start[i + 1]]`, local indices into `[own | next slab]`.
+/// The half list of one slab: the partners of its particle `i` (index in the slab) are
+/// `neighbours[start[i]..mid[i]]`, indices into the slab, and `neighbours[mid[i]..start[i +
+/// 1]]`, indices into the next slab.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct SlabList {
-    pub(crate) start: Vec<usize>,
+    pub(crate) start: Vec<u32>,
+    pub(crate) mid: Vec<u32>,
     pub(crate) neighbours: Vec<u32>,
     /// Whether a particle may have partners across a periodic edge (its cell is within
-    /// REACH cells of one, the x edge excepted when the next slab is copied shifted by
+    /// REACH cells of one, the x edge excepted when the next slab is taken shifted by
     /// L_x): only those need the minimum-image test per pair.
     pub(crate) wraps: Vec<bool>,
-    /// Whether the next slab's positions are copied shifted by +L_x (the last slab's next
-    /// is the first, across the periodic x edge).
+    /// Whether the next slab lies one box length further on in x (the last slab's next is
+    /// the first, across the periodic x edge).
     pub(crate) shift_next: bool,
+}
+
+impl SlabList {
+    /// The partners of particle `i` in the slab and in the next slab.
+    #[inline]
+    pub(crate) fn partners(&self, i: usize) -> (&[u32], &[u32]) {
+        let (a, m, b) = (
+            self.start[i] as usize,
+            self.mid[i] as usize,
+            self.start[i + 1] as usize,
+        );
+        (&self.neighbours[a..m], &self.neighbours[m..b])
+    }
 }
 
 /// A half neighbour list over slabs of particles sorted by cell.
@@ -64,8 +80,6 @@ pub struct NeighbourList {
     pub(crate) next: Vec<Option<usize>>,
     /// The slab before each slab, if any.
     pub(crate) prev: Vec<Option<usize>>,
-    /// The slab of each sorted particle.
-    pub(crate) slab_of: Vec<u32>,
     pub(crate) slabs: Vec<SlabList>,
     /// Scratch: the slab of each x-layer of cells.
     layer_slab: Vec<usize>,
@@ -94,18 +108,46 @@ impl NeighbourList {
         range: Real,
         pool: Option<&rayon::ThreadPool>,
     ) {
+        self.sort(sim_box, x, range, pool);
+        let mut sorted = std::mem::take(&mut self.cells.sorted);
+        sorted.clear();
+        sorted.extend(self.cells.order.iter().map(|&i| x[i as usize]));
+        self.build_sorted(sim_box, &sorted, pool);
+        self.cells.sorted = sorted;
+    }
+
+    /// Bins the particles at `x` into cells: [`NeighbourList::order`] is then the sorted
+    /// order, and [`NeighbourList::build_sorted`] builds the lists from the positions in it.
+    pub(crate) fn sort(
+        &mut self,
+        sim_box: &SimBox,
+        x: &[[Real; 3]],
+        range: Real,
+        pool: Option<&rayon::ThreadPool>,
+    ) {
         self.range = range;
         self.cells.rebuild(sim_box, x, range, pool);
         self.split_slabs(sim_box.is_periodic()[0]);
+    }
+
+    /// The lists, from `xs`: the positions [`NeighbourList::sort`] was given, in the sorted
+    /// order.
+    pub(crate) fn build_sorted(
+        &mut self,
+        sim_box: &SimBox,
+        xs: &[[Real; 3]],
+        pool: Option<&rayon::ThreadPool>,
+    ) {
         let build = SlabBuild {
             cells: &self.cells,
+            x: xs,
             bounds: &self.bounds,
             next: &self.next,
             layer_slab: &self.layer_slab,
             periodic: sim_box.is_periodic(),
             single: self.slabs.len() == 1,
             box_: (sim_box.lengths(), half_lengths(sim_box)),
-            r2: range * range,
+            r2: self.range * self.range,
         };
         let build_slab = |(s, list): (usize, &mut SlabList)| build.slab(s, list);
         match pool {
@@ -156,11 +198,6 @@ impl NeighbourList {
             };
             self.prev.push(prev);
         }
-        self.slab_of.clear();
-        for s in 0..count {
-            let n = self.bounds[s + 1] - self.bounds[s];
-            self.slab_of.extend(std::iter::repeat_n(s as u32, n));
-        }
         self.slabs.resize_with(count, SlabList::default);
     }
 
@@ -174,20 +211,20 @@ impl NeighbourList {
 
     /// Every listed pair once, as original particle indices `(i, j)`.
     pub fn pairs(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.sorted_pairs()
+            .map(|(i, j)| (self.cells.order[i] as usize, self.cells.order[j] as usize))
+    }
+
+    /// Every listed pair once, as sorted indices `(i, j)`.
+    pub(crate) fn sorted_pairs(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
         self.slabs.iter().enumerate().flat_map(move |(s, list)| {
             let (lo, own) = (self.bounds[s], self.bounds[s + 1] - self.bounds[s]);
             let lo_next = self.next[s].map_or(0, |t| self.bounds[t]);
             (0..own).flat_map(move |i| {
-                list.neighbours[list.start[i]..list.start[i + 1]]
-                    .iter()
-                    .map(move |&w| {
-                        let w = w as usize;
-                        let j = if w < own { lo + w } else { lo_next + w - own };
-                        (
-                            self.cells.order[lo + i] as usize,
-                            self.cells.order[j] as usize,
-                        )
-                    })
+                let (same, next) = list.partners(i);
+                let same = same.iter().map(move |&j| (lo + i, lo + j as usize));
+                let next = next.iter().map(move |&j| (lo + i, lo_next + j as usize));
+                same.chain(next)
             })
         })
     }

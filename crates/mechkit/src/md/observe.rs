@@ -152,12 +152,18 @@ impl<P: PairPotential> Md<P> {
 
     /// Mean-square displacement ⟨|x(t) − x(0)|²⟩ of the unwrapped positions.
     pub fn mean_square_displacement(&self) -> Real {
+        let l = self.sim_box.lengths();
         let sum: Real = self
             .x
             .iter()
-            .zip(&self.shift)
-            .zip(&self.x0)
-            .map(|((x, s), x0)| (0..3).map(|a| (x[a] + s[a] - x0[a]).powi(2)).sum::<Real>())
+            .zip(&self.image)
+            .zip(&self.id)
+            .map(|((x, n), &i)| {
+                let x0 = self.x0[i as usize];
+                (0..3)
+                    .map(|a| (x[a] + Real::from(n[a]) * l[a] - x0[a]).powi(2))
+                    .sum::<Real>()
+            })
             .sum();
         sum / self.len().max(1) as Real
     }
@@ -171,7 +177,7 @@ impl<P: PairPotential> Md<P> {
         let width = r_max / bins as Real;
         let mut hist = vec![0usize; bins];
         // Each pair once: it counts for both partners.
-        for (i, j) in self.list.pairs() {
+        for (i, j) in self.list.sorted_pairs() {
             let d = self.sim_box.separation(&self.x[i], &self.x[j]);
             let r = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
             if r < r_max {

@@ -2,10 +2,13 @@
 //!
 //! One step (Swope et al. 1982): v ← v + (dt/2m) F; x ← x + dt v; F ← F(x); v ← v + (dt/2m) F.
 //! The neighbour list is rebuilt (positions wrapped into the periodic box first) whenever
-//! some particle has moved more than half the skin since the last build. The particles keep
-//! their original order here (the list sorts its own copies by cell), the per-particle
-//! loops run in fixed chunks on the thread pool when there is one, and buffers are reused:
-//! nothing is allocated per step or per rebuild once they have grown.
+//! some particle has moved more than half the skin since the last build. At each build the
+//! particles are stored again in the list's order (by cell), so the forces read and write
+//! them in place and neighbours lie close in memory; their original numbers go with them
+//! (`id`), and what the particles are read as from outside ([`Md::positions`], frames,
+//! exports) is in the original order. The per-particle loops run in fixed chunks on the
+//! thread pool when there is one, and buffers are reused: nothing is allocated per step or
+//! per rebuild once they have grown.
 
 use rayon::prelude::*;
 
@@ -62,20 +65,27 @@ pub struct Md<P: PairPotential> {
     pub(crate) sim_box: SimBox,
     pub(crate) potential: P,
     pub(crate) config: MdConfig,
+    /// Positions, velocities and forces, in the order of the last list build.
     pub(crate) x: Vec<[Real; 3]>,
     pub(crate) v: Vec<[Real; 3]>,
     pub(crate) f: Vec<[Real; 3]>,
-    /// Positions at the last list build, to measure displacements.
+    /// The original number of each stored particle.
+    pub(crate) id: Vec<u32>,
+    /// Positions at the last list build, to measure displacements (and the buffer the
+    /// particles are sorted through at a build).
     x_built: Vec<[Real; 3]>,
-    /// What wrapping has subtracted from each position: unwrapped = x + shift.
-    pub(crate) shift: Vec<[Real; 3]>,
-    /// Unwrapped positions at the start, for the mean-square displacement.
+    /// Box lengths that wrapping has subtracted from each position: unwrapped = x + image L.
+    pub(crate) image: Vec<[i32; 3]>,
+    /// Unwrapped positions at the start, in the original order, for the mean-square
+    /// displacement.
     pub(crate) x0: Vec<[Real; 3]>,
     pub(crate) list: NeighbourList,
     pub(crate) sums: PairSums,
     /// Whether `sums` are of the current positions (a step may skip them).
     sums_current: bool,
     scratch: ForceScratch,
+    /// Bits of the particles placed, while sorting at a build.
+    visited: Vec<u64>,
     pool: Option<rayon::ThreadPool>,
     pub(crate) steps: usize,
     rebuilds: usize,
@@ -168,12 +178,14 @@ impl<P: PairPotential> Md<P> {
             x,
             v,
             f: vec![[0.0; 3]; n],
+            id: (0..n as u32).collect(),
             x_built: Vec::new(),
-            shift: vec![[0.0; 3]; n],
+            image: vec![[0; 3]; n],
             list: NeighbourList::default(),
             sums: PairSums::default(),
             sums_current: false,
             scratch: ForceScratch::default(),
+            visited: Vec::new(),
             pool,
             steps: 0,
             rebuilds: 0,
@@ -193,36 +205,58 @@ impl<P: PairPotential> Md<P> {
         Ok(md)
     }
 
-    /// Wraps the positions into the box and rebuilds the neighbour list.
+    /// Wraps the positions into the box, sorts the particles by cell and rebuilds the
+    /// neighbour list.
     fn rebuild(&mut self) {
         let sim_box = self.sim_box;
-        let wrap = |(x, s): (&mut [Real; 3], &mut [Real; 3])| {
+        let lengths = sim_box.lengths();
+        let wrap = |(x, n): (&mut [Real; 3], &mut [i32; 3])| {
             let before = *x;
             sim_box.wrap(x);
             for a in 0..3 {
-                s[a] += before[a] - x[a];
+                if before[a] != x[a] {
+                    // (saturates in a run that has diverged, which stops at this step)
+                    n[a] = n[a].saturating_add(((before[a] - x[a]) / lengths[a]).round() as i32);
+                }
             }
         };
         match &self.pool {
             Some(pool) => pool.install(|| {
                 self.x
                     .par_iter_mut()
-                    .zip(&mut self.shift)
+                    .zip(&mut self.image)
                     .with_min_len(CHUNK)
                     .for_each(wrap);
             }),
-            None => self.x.iter_mut().zip(&mut self.shift).for_each(wrap),
+            None => self.x.iter_mut().zip(&mut self.image).for_each(wrap),
         }
         let range = self.potential.cutoff() + self.config.skin;
-        self.list
-            .rebuild(&self.sim_box, &self.x, range, self.pool.as_ref());
+        let pool = self.pool.as_ref();
+        self.list.sort(&self.sim_box, &self.x, range, pool);
+        let order = self.list.order();
+        gather(&mut self.x, &mut self.x_built, order, pool);
+        gather(&mut self.v, &mut self.x_built, order, pool);
+        permute(&mut self.id, order, &mut self.visited);
+        permute(&mut self.image, order, &mut self.visited);
+        // the list's order is now the original numbers, as its users read it
+        self.list.cells.order.copy_from_slice(&self.id);
         self.x_built.clone_from(&self.x);
+        self.list.build_sorted(&self.sim_box, &self.x, pool);
         self.rebuilds += 1;
         // a particle moved more than half the skin before this build: a pair may have come
         // within the cut-off unlisted
         self.dangerous += usize::from(self.moved_far);
         self.moved_far = false;
         self.since_build = 0;
+    }
+
+    /// `a` (in the stored order) in the original order.
+    pub(crate) fn unsorted<T: Copy + Default>(&self, a: &[T]) -> Vec<T> {
+        let mut out = vec![T::default(); a.len()];
+        for (&i, v) in self.id.iter().zip(a) {
+            out[i as usize] = *v;
+        }
+        out
     }
 
     /// Forces, energy and virial at the current positions.
@@ -371,19 +405,19 @@ impl<P: PairPotential> Md<P> {
         }
     }
 
-    /// Positions (wrapped into the box at the last list build).
-    pub fn positions(&self) -> &[[Real; 3]] {
-        &self.x
+    /// Positions (wrapped into the box at the last list build), in the original order.
+    pub fn positions(&self) -> Vec<[Real; 3]> {
+        self.unsorted(&self.x)
     }
 
-    /// Velocities.
-    pub fn velocities(&self) -> &[[Real; 3]] {
-        &self.v
+    /// Velocities, in the original order.
+    pub fn velocities(&self) -> Vec<[Real; 3]> {
+        self.unsorted(&self.v)
     }
 
-    /// Forces at the current positions.
-    pub fn forces(&self) -> &[[Real; 3]] {
-        &self.f
+    /// Forces at the current positions, in the original order.
+    pub fn forces(&self) -> Vec<[Real; 3]> {
+        self.unsorted(&self.f)
     }
 
     /// The box.
@@ -423,7 +457,8 @@ impl<P: PairPotential> Md<P> {
         self.dangerous
     }
 
-    /// The neighbour list in use.
+    /// The neighbour list in use; its [`order`](NeighbourList::order) and
+    /// [`pairs`](NeighbourList::pairs) are in the particles' original numbers.
     pub fn neighbour_list(&self) -> &NeighbourList {
         &self.list
     }
@@ -432,6 +467,52 @@ impl<P: PairPotential> Md<P> {
     pub fn pair_sums(&self) -> PairSums {
         debug_assert!(self.sums_current, "the sums of a step that skipped them");
         self.sums
+    }
+}
+
+/// `a` reordered by `order` (`a[k] ← a[order[k]]`) through `buffer`, which is left holding
+/// the old order.
+fn gather(
+    a: &mut Vec<[Real; 3]>,
+    buffer: &mut Vec<[Real; 3]>,
+    order: &[u32],
+    pool: Option<&rayon::ThreadPool>,
+) {
+    buffer.resize(a.len(), [0.0; 3]);
+    let from: &[[Real; 3]] = a;
+    let fill = |(c, out): (usize, &mut [[Real; 3]])| {
+        for (k, o) in out.iter_mut().enumerate() {
+            *o = from[order[c * CHUNK + k] as usize];
+        }
+    };
+    match pool {
+        Some(pool) => pool.install(|| buffer.par_chunks_mut(CHUNK).enumerate().for_each(fill)),
+        None => buffer.chunks_mut(CHUNK).enumerate().for_each(fill),
+    }
+    std::mem::swap(a, buffer);
+}
+
+/// `a` reordered by `order` (`a[k] ← a[order[k]]`) in place, cycle by cycle (`done`: a
+/// buffer of bits for the particles already placed).
+fn permute<T: Copy>(a: &mut [T], order: &[u32], done: &mut Vec<u64>) {
+    done.clear();
+    done.resize(a.len().div_ceil(64), 0);
+    for k in 0..a.len() {
+        if done[k / 64] >> (k % 64) & 1 == 1 {
+            continue;
+        }
+        let first = a[k];
+        let mut j = k;
+        loop {
+            done[j / 64] |= 1 << (j % 64);
+            let from = order[j] as usize;
+            if from == k {
+                a[j] = first;
+                break;
+            }
+            a[j] = a[from];
+            j = from;
+        }
     }
 }
 

@@ -27,7 +27,7 @@ impl<P: PairPotential> Md<P> {
             flag(1),
             flag(2)
         )?;
-        for (x, v) in self.x.iter().zip(&self.v) {
+        for (x, v) in self.positions().iter().zip(&self.velocities()) {
             writeln!(
                 out,
                 "{species} {:.8} {:.8} {:.8} {:.8} {:.8} {:.8}",

@@ -86,11 +86,11 @@ fn serial_and_parallel_runs_are_bit_identical() {
     }
     let bits = |md: &Md<LennardJones>| -> Vec<u64> {
         md.positions()
-            .iter()
+            .into_iter()
             .chain(md.velocities())
             .chain(md.forces())
             .flatten()
-            .map(|c| c.to_bits())
+            .map(f64::to_bits)
             .chain([
                 md.pair_sums().potential.to_bits(),
                 md.pair_sums().virial.to_bits(),

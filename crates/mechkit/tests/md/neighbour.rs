@@ -119,7 +119,7 @@ fn forces_during_a_run_equal_all_pairs() {
         md.rebuilds()
     );
     let mut g = vec![[0.0; 3]; md.len()];
-    let sums = all_pairs_forces(&lj, md.sim_box(), md.positions(), &mut g);
+    let sums = all_pairs_forces(&lj, md.sim_box(), &md.positions(), &mut g);
     let scale = g.iter().flatten().fold(1.0f64, |m, v| m.max(v.abs()));
     for (f, g) in md.forces().iter().zip(&g) {
         for k in 0..3 {
