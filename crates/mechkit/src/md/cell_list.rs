@@ -79,6 +79,18 @@ fn bound_cells(n: &mut [usize; 3], particles: usize) {
     }
 }
 
+/// The cell of a particle at `p` in a grid of `n` cells per axis from `origin`, each
+/// `width` wide (clamped to the grid).
+#[inline]
+fn cell_in((n, origin, width): ([usize; 3], [Real; 3], [Real; 3]), p: &[Real; 3]) -> u32 {
+    let mut c = 0;
+    for a in 0..3 {
+        let k = (((p[a] - origin[a]) / width[a]).floor() as i64).clamp(0, n[a] as i64 - 1);
+        c = c * n[a] + k as usize;
+    }
+    c as u32
+}
+
 /// Particles binned into cells and sorted by cell.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct CellList {
@@ -90,8 +102,6 @@ pub(crate) struct CellList {
     pub(crate) first: Vec<usize>,
     /// Sorted index → original index.
     pub(crate) order: Vec<u32>,
-    /// The cell of each sorted particle.
-    pub(crate) cell: Vec<u32>,
     /// Positions in sorted order, for lists built from positions in their original order
     /// ([`NeighbourList::rebuild`](super::NeighbourList::rebuild)); a run keeps its
     /// particles sorted and leaves this empty.
@@ -157,15 +167,8 @@ impl CellList {
             }
         }
         let cells = self.n[0] * self.n[1] * self.n[2];
-        let (n, origin, width) = (self.n, self.origin, self.width);
-        let cell_of = |p: &[Real; 3]| -> u32 {
-            let mut c = 0;
-            for a in 0..3 {
-                let k = (((p[a] - origin[a]) / width[a]).floor() as i64).clamp(0, n[a] as i64 - 1);
-                c = c * n[a] + k as usize;
-            }
-            c as u32
-        };
+        let grid = (self.n, self.origin, self.width);
+        let cell_of = |p: &[Real; 3]| cell_in(grid, p);
         if let Some(pool) = pool {
             pool.install(|| x.par_iter().map(cell_of).collect_into_vec(&mut self.which));
         } else {
@@ -182,19 +185,22 @@ impl CellList {
         }
         self.order.clear();
         self.order.resize(x.len(), 0);
-        self.cell.clear();
-        self.cell.resize(x.len(), 0);
         // Each cell's start serves as its fill pointer, then is shifted back.
         for (i, &c) in self.which.iter().enumerate() {
             let k = &mut self.first[c as usize];
             self.order[*k] = i as u32;
-            self.cell[*k] = c;
             *k += 1;
         }
         for c in (1..=cells).rev() {
             self.first[c] = self.first[c - 1];
         }
         self.first[0] = 0;
+    }
+
+    /// The cell of a particle at `p` (as the sort put it there).
+    #[inline]
+    pub(crate) fn cell_of(&self, p: &[Real; 3]) -> u32 {
+        cell_in((self.n, self.origin, self.width), p)
     }
 
     /// The cell coordinates of cell `c`.
@@ -259,10 +265,11 @@ mod tests {
             assert!(!seen[i as usize]);
             seen[i as usize] = true;
         }
-        assert!(cells.cell.windows(2).all(|w| w[0] <= w[1]));
+        let cell = |k: usize| cells.cell_of(&x[cells.order[k] as usize]);
+        assert!((1..x.len()).all(|k| cell(k - 1) <= cell(k)));
         for c in 0..cells.first.len() - 1 {
             for k in cells.first[c]..cells.first[c + 1] {
-                assert_eq!(cells.cell[k] as usize, c);
+                assert_eq!(cell(k) as usize, c);
                 let cc = cells.coords(c as u32);
                 for (a, &ca) in cc.iter().enumerate() {
                     let lo = ca as Real * cells.width[a];

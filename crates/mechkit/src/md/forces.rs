@@ -3,15 +3,18 @@
 //! Each listed pair is evaluated once and, by Newton's third law, adds (F/r)(r_ij) (xᵢ − xⱼ)
 //! to particle i and its opposite to j, its energy U(r_ij) and its virial (F/r) r_ij² to
 //! the sums. The particles are taken in the list's sorted order. The slabs of the list
-//! ([`NeighbourList`]) run independently: each adds into its own particles' forces and into
-//! a buffer of reactions on the next slab's; then each buffer is added to the slab after it.
-//! The slabs are split in halves, recursively, into a fixed tree whose halves run in
-//! parallel, and the energies are added up that tree. Neither the slabs nor any order
-//! depends on the number of threads: serial and parallel runs are bit-identical.
+//! ([`NeighbourList`]) first take their pairs inside them, all in parallel; then the even
+//! slabs their pairs with the next slab, in parallel, then the odd ones (each writes the
+//! forces of its particles and of the next slab's, which no other slab of its parity
+//! touches). The last slab's pairs with the first across the periodic x edge go with its own
+//! pairs, their reactions into a buffer added to the first slab at the end. In each pass the
+//! slabs are split in halves, recursively, into a fixed tree whose halves run in parallel,
+//! and the energies are added up that tree. Neither the slabs nor any order depends on the
+//! number of threads: serial and parallel runs are bit-identical.
 
 use crate::Real;
 
-use super::kernel::{SlabData, pair_kernel};
+use super::kernel::{Part, SlabData, pair_kernel};
 use super::neighbour::half_lengths;
 use super::{NeighbourList, PairPotential, SimBox};
 
@@ -24,12 +27,12 @@ pub struct PairSums {
     pub virial: Real,
 }
 
-/// Buffers of [`compute_forces_with`], kept between calls so a step allocates nothing: each
-/// slab's reactions on the next slab, and the positions and forces in sorted order when
-/// the particles are not stored sorted.
+/// Buffers of [`compute_forces_with`], kept between calls so a step allocates nothing: the
+/// reactions on the first slab of the pairs across the periodic x edge, and the positions
+/// and forces in sorted order when the particles are not stored sorted.
 #[derive(Debug, Clone, Default)]
 pub struct ForceScratch {
-    next: Vec<Vec<[Real; 3]>>,
+    wrap: Vec<[Real; 3]>,
     xs: Vec<[Real; 3]>,
     fs: Vec<[Real; 3]>,
 }
@@ -117,7 +120,10 @@ fn check_lengths(list: &NeighbourList, x: &[[Real; 3]], f: &[[Real; 3]]) {
     );
 }
 
-/// The two passes: every slab's pairs, then every slab's buffer into the slab after it.
+/// The passes: every slab's pairs inside it (and the last slab's with the first across the
+/// periodic x edge, its reactions into a buffer); then the pairs of the even slabs with the
+/// next, and of the odd ones (a slab and its next do not overlap those of another slab of
+/// the same parity); then the buffer into the first slab.
 #[allow(clippy::too_many_arguments)] // forces_summed's, resolved
 fn forces<P: PairPotential>(
     potential: &P,
@@ -134,13 +140,10 @@ fn forces<P: PairPotential>(
     let rc2 = potential.cutoff() * potential.cutoff();
     let bounds = &list.bounds;
     let range = |s: usize| bounds[s]..bounds[s + 1];
-    scratch.next.resize_with(list.slab_count(), Vec::new);
-    let pairs = |s: usize, f_own: &mut [[Real; 3]], f_next: &mut Vec<[Real; 3]>| {
+    let kernel = |s: usize, part: Part, f_own: &mut [[Real; 3]], f_next: &mut [[Real; 3]]| {
         let slab = &list.slabs[s];
-        f_own.fill([0.0; 3]);
-        f_next.clear();
-        f_next.resize(list.slab_sizes(s).1, [0.0; 3]);
         let data = SlabData {
+            part,
             x_own: &xs[range(s)],
             x_next: list.next[s].map_or(&xs[..0], |t| &xs[range(t)]),
             shift_next: if slab.shift_next { lengths[0] } else { 0.0 },
@@ -153,20 +156,44 @@ fn forces<P: PairPotential>(
             pair_kernel::<P, false>(potential, box_, rc2, slab, data)
         }
     };
-    let sums = slab_tree(fs, bounds, &mut scratch.next, 0, par, &pairs);
-    let next = &scratch.next;
-    let add_previous = |t: usize, f_own: &mut [[Real; 3]], (): &mut ()| {
-        if let Some(p) = list.prev[t] {
-            for (fk, gk) in f_own.iter_mut().zip(&next[p]) {
-                for a in 0..3 {
-                    fk[a] += gk[a];
-                }
-            }
+    // the slab whose next is the first, across the periodic x edge
+    let wrap = (0..list.slab_count()).find(|&s| list.next[s].is_some_and(|t| t < s));
+    let buffer = &mut scratch.wrap;
+    buffer.clear();
+    buffer.resize(wrap.map_or(0, |_| bounds[1]), [0.0; 3]);
+    let buffer = std::sync::Mutex::new(buffer);
+    let own = |s: usize, f_own: &mut [[Real; 3]], (): &mut ()| {
+        f_own.fill([0.0; 3]);
+        if Some(s) == wrap {
+            let mut g = buffer.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+            kernel(s, Part::Both, f_own, &mut g)
+        } else {
+            kernel(s, Part::Own, f_own, &mut [])
         }
-        (0.0, 0.0)
     };
     let mut units = vec![(); list.slab_count()];
-    slab_tree(fs, bounds, &mut units, 0, par, &add_previous);
+    let mut sums = slab_tree(fs, bounds, &mut units, 0, par, &own);
+    for (c, pair_bounds) in list.pair_bounds.iter().enumerate() {
+        if pair_bounds.len() < 2 {
+            continue;
+        }
+        let pairs = |k: usize, f: &mut [[Real; 3]], (): &mut ()| {
+            let s = c + 2 * k;
+            let (f_own, f_next) = f.split_at_mut(bounds[s + 1] - bounds[s]);
+            kernel(s, Part::Next, f_own, f_next)
+        };
+        let (lo, hi) = (pair_bounds[0], pair_bounds[pair_bounds.len() - 1]);
+        let (u, w) = slab_tree(&mut fs[lo..hi], pair_bounds, &mut units, 0, par, &pairs);
+        sums = (sums.0 + u, sums.1 + w);
+    }
+    if wrap.is_some() {
+        let g = buffer.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
+        for (fk, gk) in fs[range(0)].iter_mut().zip(g.iter()) {
+            for a in 0..3 {
+                fk[a] += gk[a];
+            }
+        }
+    }
     sums
 }
 

@@ -20,7 +20,7 @@
 use crate::Real;
 
 use super::PairPotential;
-use super::neighbour::{SlabList, near_image};
+use super::neighbour::{Offset, SlabList, near_image};
 
 /// Lanes per group of partners.
 const LANES: usize = 4;
@@ -28,8 +28,21 @@ const LANES: usize = 4;
 /// The box for the minimum image: lengths and half-lengths (∞ on open axes).
 pub(super) type BoxHalves = ([Real; 3], [Real; 3]);
 
+/// Which of a slab's pairs a pass takes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Part {
+    /// The pairs inside the slab.
+    Own,
+    /// The pairs with the next slab.
+    Next,
+    /// Both.
+    Both,
+}
+
 /// A slab's positions and forces: its own particles' (sorted), and the next slab's.
 pub(super) struct SlabData<'a> {
+    /// The pairs to take.
+    pub(super) part: Part,
     pub(super) x_own: &'a [[Real; 3]],
     pub(super) x_next: &'a [[Real; 3]],
     /// The next slab lies this far on in x (one box length across the periodic x edge).
@@ -80,7 +93,34 @@ fn pair_kernel_lanes<P: PairPotential, const ENERGY: bool>(
     slab: &SlabList,
     data: SlabData<'_>,
 ) -> (Real, Real) {
+    macro_rules! rows {
+        ($own:literal, $next:literal) => {
+            if slab.is_wide {
+                slab_rows::<P, ENERGY, u32, $own, $next>(potential, box_, rc2, slab, data)
+            } else {
+                slab_rows::<P, ENERGY, u16, $own, $next>(potential, box_, rc2, slab, data)
+            }
+        };
+    }
+    match data.part {
+        Part::Own => rows!(true, false),
+        Part::Next => rows!(false, true),
+        Part::Both => rows!(true, true),
+    }
+}
+
+/// The slab's rows, its partners' offsets of type `I`: those in the slab if `OWN`, those in
+/// the next slab if `NEXT`.
+#[inline(always)]
+fn slab_rows<P: PairPotential, const ENERGY: bool, I: Offset, const OWN: bool, const NEXT: bool>(
+    potential: &P,
+    box_: BoxHalves,
+    rc2: Real,
+    slab: &SlabList,
+    data: SlabData<'_>,
+) -> (Real, Real) {
     let SlabData {
+        part: _,
         x_own,
         x_next,
         shift_next,
@@ -89,17 +129,34 @@ fn pair_kernel_lanes<P: PairPotential, const ENERGY: bool>(
     } = data;
     let (mut u_sum, mut w_sum) = (0.0, 0.0);
     for (i, &xi) in x_own.iter().enumerate() {
-        let (same, next) = slab.partners(i);
+        let (same, next) = slab.partners::<I>(i);
         let xi_next = [xi[0] - shift_next, xi[1], xi[2]];
+        let none = ([0.0; 3], 0.0, 0.0);
         let ((a, u, w), (b, u2, w2)) = if slab.wraps[i] {
             (
-                row::<P, true, ENERGY>(potential, box_, rc2, xi, same, x_own, f_own),
-                row::<P, true, ENERGY>(potential, box_, rc2, xi_next, next, x_next, f_next),
+                if OWN {
+                    row::<P, true, ENERGY, I>(potential, box_, rc2, xi, same, i + 1, x_own, f_own)
+                } else {
+                    none
+                },
+                if NEXT {
+                    row::<P, true, ENERGY, I>(potential, box_, rc2, xi_next, next, 0, x_next, f_next)
+                } else {
+                    none
+                },
             )
         } else {
             (
-                row::<P, false, ENERGY>(potential, box_, rc2, xi, same, x_own, f_own),
-                row::<P, false, ENERGY>(potential, box_, rc2, xi_next, next, x_next, f_next),
+                if OWN {
+                    row::<P, false, ENERGY, I>(potential, box_, rc2, xi, same, i + 1, x_own, f_own)
+                } else {
+                    none
+                },
+                if NEXT {
+                    row::<P, false, ENERGY, I>(potential, box_, rc2, xi_next, next, 0, x_next, f_next)
+                } else {
+                    none
+                },
             )
         };
         if ENERGY {
@@ -122,30 +179,32 @@ struct Sums {
     w: [Real; LANES],
 }
 
-/// The pairs of one particle at `xi` with its listed partners `nb`: their reactions go into
-/// `fl`, the particle's own force, the energy and the virial are returned. `WRAP`: apply the
-/// minimum image, else the plain difference.
+/// The pairs of one particle at `xi` with its listed partners, at `base` plus the offsets
+/// `nb` in `xl`: their reactions go into `fl`, the particle's own force, the energy and the
+/// virial are returned. `WRAP`: apply the minimum image, else the plain difference.
 #[inline(always)]
-fn row<P: PairPotential, const WRAP: bool, const ENERGY: bool>(
+#[allow(clippy::too_many_arguments)] // the slab's state, passed to an inlined helper
+fn row<P: PairPotential, const WRAP: bool, const ENERGY: bool, I: Offset>(
     potential: &P,
     box_: BoxHalves,
     rc2: Real,
     xi: [Real; 3],
-    nb: &[u32],
+    nb: &[I],
+    base: usize,
     xl: &[[Real; 3]],
     fl: &mut [[Real; 3]],
 ) -> ([Real; 3], Real, Real) {
     let mut sums = Sums::default();
     let mut groups = nb.chunks_exact(LANES);
     for group in &mut groups {
-        let idx: [usize; LANES] = std::array::from_fn(|l| group[l] as usize);
+        let idx: [usize; LANES] = std::array::from_fn(|l| base + group[l].get());
         lanes::<P, WRAP, ENERGY>(potential, box_, rc2, xi, idx, LANES, xl, fl, &mut sums);
     }
     let rest = groups.remainder();
     if let Some(&first) = rest.first() {
         // the missing lanes repeat the first partner, masked out, their reactions not applied
         let idx: [usize; LANES] =
-            std::array::from_fn(|l| rest.get(l).copied().unwrap_or(first) as usize);
+            std::array::from_fn(|l| base + rest.get(l).copied().unwrap_or(first).get());
         lanes::<P, WRAP, ENERGY>(potential, box_, rc2, xi, idx, rest.len(), xl, fl, &mut sums);
     }
     let add = |s: [Real; LANES]| (s[0] + s[1]) + (s[2] + s[3]);
@@ -248,6 +307,7 @@ mod tests {
                 g.clear();
                 g.resize(next, [0.0; 3]);
                 let data = SlabData {
+                    part: Part::Both,
                     x_own: &xs[range(s)],
                     x_next,
                     shift_next,
@@ -268,7 +328,7 @@ mod tests {
             assert_eq!(run(&mut f2, &mut g2, false, false), (0.0, 0.0));
             assert_eq!((&f1, &g1), (&f2, &g2));
             for i in 0..own {
-                let (same, next) = slab.partners(i);
+                let (same, next) = slab.partners::<u16>(i);
                 lengths.insert(same.len() % LANES);
                 lengths.insert(next.len() % LANES);
             }

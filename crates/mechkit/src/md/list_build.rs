@@ -13,7 +13,7 @@
 use crate::Real;
 
 use super::cell_list::{CellList, REACH};
-use super::neighbour::{SlabList, near_image};
+use super::neighbour::{Offset, SlabList, near_image};
 
 /// What every slab's build reads.
 pub(super) struct SlabBuild<'a> {
@@ -29,6 +29,9 @@ pub(super) struct SlabBuild<'a> {
     pub(super) periodic: [bool; 3],
     /// Whether there is one slab (then it is its own neighbour across the x edge).
     pub(super) single: bool,
+    /// Build with 32-bit offsets only.
+    #[cfg(test)]
+    pub(super) wide_only: bool,
     /// Lengths and half-lengths of the box (∞ on open axes).
     pub(super) box_: ([Real; 3], [Real; 3]),
     /// The range squared.
@@ -54,23 +57,47 @@ impl SlabBuild<'_> {
         self.slab_any(s, list);
     }
 
-    /// The build for any host; inlined into the AVX2 version.
+    /// The build for any host; inlined into the AVX2 version: 16-bit offsets, or 32-bit
+    /// ones when some offset does not fit 16 bits.
     #[inline(always)]
     fn slab_any(&self, s: usize, list: &mut SlabList) {
+        #[cfg(test)]
+        if self.wide_only {
+            list.narrow = Vec::new();
+            list.is_wide = self.fill::<u32>(s, list);
+            return;
+        }
+        list.is_wide = !self.fill::<u16>(s, list);
+        if list.is_wide {
+            list.narrow = Vec::new();
+            let filled = self.fill::<u32>(s, list);
+            debug_assert!(filled, "a slab of more than 2^32 particles");
+        } else {
+            // (a build before may have needed them)
+            list.wide = Vec::new();
+        }
+    }
+
+    /// Fills slab `s`'s list with offsets of type `I`; false, with the list empty, if some
+    /// offset does not fit.
+    #[inline(always)]
+    fn fill<I: Offset>(&self, s: usize, list: &mut SlabList) -> bool {
         let (cells, next, lengths, xs) = (self.cells, self.next, self.box_.0, self.x);
         let (lo, hi) = (self.bounds[s], self.bounds[s + 1]);
         let lo_next = next[s].map_or(0, |t| self.bounds[t]);
+        let mut out = std::mem::take(I::of_mut(list));
+        out.clear();
         list.start.clear();
         list.mid.clear();
-        list.neighbours.clear();
         list.wraps.clear();
         list.shift_next = next[s].is_some_and(|t| t < s);
         // Across the periodic x edge the next slab lies one box length further on.
         let shift = if list.shift_next { lengths[0] } else { 0.0 };
         list.start.push(0);
-        for i in lo..hi {
+        let mut fits = true;
+        'particles: for i in lo..hi {
             let xi = xs[i];
-            let c = cells.coords(cells.cell[i]);
+            let c = cells.coords(cells.cell_of(&xi));
             let edge = |a: usize| self.periodic[a] && (c[a] < REACH || c[a] + REACH >= cells.n[a]);
             let wraps = (self.single && edge(0)) || edge(1) || edge(2);
             list.wraps.push(wraps);
@@ -79,11 +106,7 @@ impl SlabBuild<'_> {
                 if !same && next[s].is_none() {
                     break;
                 }
-                let xi = if same {
-                    xi
-                } else {
-                    [xi[0] - shift, xi[1], xi[2]]
-                };
+                let xi = if same { xi } else { [xi[0] - shift, xi[1], xi[2]] };
                 for &cx in cells.adjacent[0][c[0]].as_slice() {
                     let t = self.layer_slab[cx as usize];
                     if (t == s) != same || (!same && next[s] != Some(t)) {
@@ -97,33 +120,42 @@ impl SlabBuild<'_> {
                                 cells.first[row + z0 as usize],
                                 cells.first[row + z1 as usize + 1],
                             );
-                            // Inside the slab the lower sorted index owns the pair.
+                            // Inside the slab the lower sorted index owns the pair; its
+                            // partners are counted from the particle after it.
                             let base = if same {
                                 a = a.max(i + 1);
-                                lo
+                                i + 1
                             } else {
                                 lo_next
                             };
                             if a >= b {
                                 continue;
                             }
+                            if b - 1 - base > I::MAX {
+                                fits = false;
+                                break 'particles;
+                            }
                             let first = (a - base) as u32;
                             let candidates = &xs[a..b];
-                            let out = &mut list.neighbours;
                             if wraps {
-                                scan::<true>(xi, candidates, first, self.r2, self.box_, out);
+                                scan::<I, true>(xi, candidates, first, self.r2, self.box_, &mut out);
                             } else {
-                                scan::<false>(xi, candidates, first, self.r2, self.box_, out);
+                                scan::<I, false>(xi, candidates, first, self.r2, self.box_, &mut out);
                             }
                         }
                     }
                 }
                 if same {
-                    list.mid.push(list.neighbours.len() as u32);
+                    list.mid.push(out.len() as u32);
                 }
             }
-            list.start.push(list.neighbours.len() as u32);
+            list.start.push(out.len() as u32);
         }
+        if !fits {
+            out.clear();
+        }
+        *I::of_mut(list) = out;
+        fits
     }
 }
 
@@ -154,13 +186,13 @@ const COMPACT: [([u32; 4], usize); 16] = {
 /// then all four indices written at once in the order a table gives for the mask of those
 /// in range, and the count advanced by how many were (no branch to mispredict).
 #[inline(always)]
-fn scan<const WRAP: bool>(
+fn scan<I: Offset, const WRAP: bool>(
     xi: [Real; 3],
     candidates: &[[Real; 3]],
     first: u32,
     r2: Real,
     (lengths, half): ([Real; 3], [Real; 3]),
-    out: &mut Vec<u32>,
+    out: &mut Vec<I>,
 ) {
     let mut k = out.len();
     let needed = k + candidates.len() + 4;
@@ -168,7 +200,7 @@ fn scan<const WRAP: bool>(
         // grown by an eighth, not doubled: the list is most of a run's memory
         out.reserve_exact((needed - k).max(out.capacity() / 8));
     }
-    out.resize(needed, 0);
+    out.resize(needed, I::new(0));
     let within = |xj: &[Real; 3]| -> bool {
         let (mut dx, mut dy, mut dz) = (xi[0] - xj[0], xi[1] - xj[1], xi[2] - xj[2]);
         if WRAP {
@@ -188,13 +220,13 @@ fn scan<const WRAP: bool>(
         let (lanes, n) = COMPACT[mask];
         let slot = &mut out[k..k + 4];
         for l in 0..4 {
-            slot[l] = j + lanes[l];
+            slot[l] = I::new(j + lanes[l]);
         }
         k += n;
         j += 4;
     }
     for xj in groups.remainder() {
-        out[k] = j;
+        out[k] = I::new(j);
         k += usize::from(within(xj));
         j += 1;
     }

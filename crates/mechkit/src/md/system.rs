@@ -21,7 +21,7 @@ use super::{ForceScratch, MdError, MdInput, NeighbourList, PairPotential, PairSu
 /// last list build.
 type DriftItem<'a> = (
     (&'a mut [Real; 3], &'a mut [Real; 3]),
-    (&'a [Real; 3], &'a [Real; 3]),
+    (&'a [Real; 3], &'a [f32; 3]),
 );
 
 /// Run settings of [`Md`].
@@ -71,9 +71,10 @@ pub struct Md<P: PairPotential> {
     pub(crate) f: Vec<[Real; 3]>,
     /// The original number of each stored particle.
     pub(crate) id: Vec<u32>,
-    /// Positions at the last list build, to measure displacements (and the buffer the
-    /// particles are sorted through at a build).
-    x_built: Vec<[Real; 3]>,
+    /// Positions at the last list build, to 32 bits, to measure displacements.
+    x_built: Vec<[f32; 3]>,
+    /// How far a displacement measured from `x_built` may be short of the true one.
+    built_error: Real,
     /// Box lengths that wrapping has subtracted from each position: unwrapped = x + image L.
     pub(crate) image: Vec<[i32; 3]>,
     /// Unwrapped positions at the start, in the original order, for the mean-square
@@ -180,6 +181,7 @@ impl<P: PairPotential> Md<P> {
             f: vec![[0.0; 3]; n],
             id: (0..n as u32).collect(),
             x_built: Vec::new(),
+            built_error: 0.0,
             image: vec![[0; 3]; n],
             list: NeighbourList::default(),
             sums: PairSums::default(),
@@ -234,13 +236,19 @@ impl<P: PairPotential> Md<P> {
         let pool = self.pool.as_ref();
         self.list.sort(&self.sim_box, &self.x, range, pool);
         let order = self.list.order();
-        gather(&mut self.x, &mut self.x_built, order, pool);
-        gather(&mut self.v, &mut self.x_built, order, pool);
+        // (through the forces' buffer: they are computed again after a build)
+        gather(&mut self.x, &mut self.f, order, pool);
+        gather(&mut self.v, &mut self.f, order, pool);
         permute(&mut self.id, order, &mut self.visited);
         permute(&mut self.image, order, &mut self.visited);
         // the list's order is now the original numbers, as its users read it
         self.list.cells.order.copy_from_slice(&self.id);
-        self.x_built.clone_from(&self.x);
+        self.x_built.clear();
+        self.x_built
+            .extend(self.x.iter().map(|p| p.map(|c| c as f32)));
+        // each coordinate rounded to 24 bits: off by at most 2^-24 of the largest
+        let largest = self.x.iter().flatten().fold(0.0, |m: Real, c| m.max(c.abs()));
+        self.built_error = 3.0_f64.sqrt() * largest * (-23.0_f64).exp2();
         self.list.build_sorted(&self.sim_box, &self.x, pool);
         self.rebuilds += 1;
         // a particle moved more than half the skin before this build: a pair may have come
@@ -301,14 +309,16 @@ impl<P: PairPotential> Md<P> {
     fn advance(&mut self, energy: bool) -> bool {
         let h = 0.5 * self.config.dt / self.config.mass;
         let dt = self.config.dt;
-        let limit = 0.25 * self.config.skin * self.config.skin;
+        // half the skin, less what the 32-bit positions of the build may hide
+        let reach = (0.5 * self.config.skin - self.built_error).max(0.0);
+        let limit = reach * reach;
         // Half kick and drift; reports whether the particle left its skin/2 sphere.
         let drift = |((x, v), (f, x_b)): DriftItem<'_>| -> bool {
             let mut d2 = 0.0;
             for a in 0..3 {
                 v[a] += h * f[a];
                 x[a] += dt * v[a];
-                let d = x[a] - x_b[a];
+                let d = x[a] - Real::from(x_b[a]);
                 d2 += d * d;
             }
             d2 > limit
