@@ -2,19 +2,18 @@
 //!
 //! Each listed pair is evaluated once and, by Newton's third law, adds (F/r)(r_ij) (xᵢ − xⱼ)
 //! to particle i and its opposite to j, its energy U(r_ij) and its virial (F/r) r_ij² to
-//! the sums. The particles are taken in the list's sorted order. The slabs of the list
-//! ([`NeighbourList`]) first take their pairs inside them, all in parallel; then the even
-//! slabs their pairs with the next slab, in parallel, then the odd ones (each writes the
+//! the sums. The particles are taken in the list's sorted order. The even slabs of the list
+//! ([`NeighbourList`]) take their pairs in parallel, then the odd ones: a slab writes the
 //! forces of its particles and of the next slab's, which no other slab of its parity
-//! touches). The last slab's pairs with the first across the periodic x edge go with its own
-//! pairs, their reactions into a buffer added to the first slab at the end. In each pass the
+//! touches. The last slab's reactions on the first, across the periodic x edge, go into a
+//! buffer added to the first slab at the end. In each pass the
 //! slabs are split in halves, recursively, into a fixed tree whose halves run in parallel,
 //! and the energies are added up that tree. Neither the slabs nor any order depends on the
 //! number of threads: serial and parallel runs are bit-identical.
 
 use crate::Real;
 
-use super::kernel::{Part, SlabData, pair_kernel};
+use super::kernel::{SlabData, pair_kernel};
 use super::neighbour::half_lengths;
 use super::{NeighbourList, PairPotential, SimBox};
 
@@ -120,10 +119,10 @@ fn check_lengths(list: &NeighbourList, x: &[[Real; 3]], f: &[[Real; 3]]) {
     );
 }
 
-/// The passes: every slab's pairs inside it (and the last slab's with the first across the
-/// periodic x edge, its reactions into a buffer); then the pairs of the even slabs with the
-/// next, and of the odd ones (a slab and its next do not overlap those of another slab of
-/// the same parity); then the buffer into the first slab.
+/// The two passes: the even slabs, then the odd ones, each slab with all its pairs (a
+/// slab and the slab after it do not overlap those of another slab of the same parity); the
+/// last slab's reactions across the periodic x edge into a buffer added to the first slab
+/// at the end.
 #[allow(clippy::too_many_arguments)] // forces_summed's, resolved
 fn forces<P: PairPotential>(
     potential: &P,
@@ -140,10 +139,9 @@ fn forces<P: PairPotential>(
     let rc2 = potential.cutoff() * potential.cutoff();
     let bounds = &list.bounds;
     let range = |s: usize| bounds[s]..bounds[s + 1];
-    let kernel = |s: usize, part: Part, f_own: &mut [[Real; 3]], f_next: &mut [[Real; 3]]| {
+    let kernel = |s: usize, f_own: &mut [[Real; 3]], f_next: &mut [[Real; 3]]| {
         let slab = &list.slabs[s];
         let data = SlabData {
-            part,
             x_own: &xs[range(s)],
             x_next: list.next[s].map_or(&xs[..0], |t| &xs[range(t)]),
             shift_next: if slab.shift_next { lengths[0] } else { 0.0 },
@@ -162,32 +160,36 @@ fn forces<P: PairPotential>(
     buffer.clear();
     buffer.resize(wrap.map_or(0, |_| bounds[1]), [0.0; 3]);
     let buffer = std::sync::Mutex::new(buffer);
-    let own = |s: usize, f_own: &mut [[Real; 3]], (): &mut ()| {
-        f_own.fill([0.0; 3]);
-        if Some(s) == wrap {
-            let mut g = buffer.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-            kernel(s, Part::Both, f_own, &mut g)
-        } else {
-            kernel(s, Part::Own, f_own, &mut [])
-        }
-    };
+    let mut sums = (0.0, 0.0);
     let mut units = vec![(); list.slab_count()];
-    let mut sums = slab_tree(fs, bounds, &mut units, 0, par, &own);
     for (c, pair_bounds) in list.pair_bounds.iter().enumerate() {
         if pair_bounds.len() < 2 {
             continue;
         }
         let pairs = |k: usize, f: &mut [[Real; 3]], (): &mut ()| {
             let s = c + 2 * k;
+            if c == 0 {
+                // the even slabs come first: theirs and the odd slabs' forces start at zero
+                f.fill([0.0; 3]);
+            }
             let (f_own, f_next) = f.split_at_mut(bounds[s + 1] - bounds[s]);
-            kernel(s, Part::Next, f_own, f_next)
+            if Some(s) == wrap {
+                let mut g = buffer
+                    .lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner);
+                kernel(s, f_own, &mut g)
+            } else {
+                kernel(s, f_own, f_next)
+            }
         };
         let (lo, hi) = (pair_bounds[0], pair_bounds[pair_bounds.len() - 1]);
         let (u, w) = slab_tree(&mut fs[lo..hi], pair_bounds, &mut units, 0, par, &pairs);
         sums = (sums.0 + u, sums.1 + w);
     }
     if wrap.is_some() {
-        let g = buffer.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
+        let g = buffer
+            .into_inner()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
         for (fk, gk) in fs[range(0)].iter_mut().zip(g.iter()) {
             for a in 0..3 {
                 fk[a] += gk[a];

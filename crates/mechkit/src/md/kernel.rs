@@ -28,21 +28,8 @@ const LANES: usize = 4;
 /// The box for the minimum image: lengths and half-lengths (∞ on open axes).
 pub(super) type BoxHalves = ([Real; 3], [Real; 3]);
 
-/// Which of a slab's pairs a pass takes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Part {
-    /// The pairs inside the slab.
-    Own,
-    /// The pairs with the next slab.
-    Next,
-    /// Both.
-    Both,
-}
-
 /// A slab's positions and forces: its own particles' (sorted), and the next slab's.
 pub(super) struct SlabData<'a> {
-    /// The pairs to take.
-    pub(super) part: Part,
     pub(super) x_own: &'a [[Real; 3]],
     pub(super) x_next: &'a [[Real; 3]],
     /// The next slab lies this far on in x (one box length across the periodic x edge).
@@ -93,26 +80,16 @@ fn pair_kernel_lanes<P: PairPotential, const ENERGY: bool>(
     slab: &SlabList,
     data: SlabData<'_>,
 ) -> (Real, Real) {
-    macro_rules! rows {
-        ($own:literal, $next:literal) => {
-            if slab.is_wide {
-                slab_rows::<P, ENERGY, u32, $own, $next>(potential, box_, rc2, slab, data)
-            } else {
-                slab_rows::<P, ENERGY, u16, $own, $next>(potential, box_, rc2, slab, data)
-            }
-        };
-    }
-    match data.part {
-        Part::Own => rows!(true, false),
-        Part::Next => rows!(false, true),
-        Part::Both => rows!(true, true),
+    if slab.is_wide {
+        slab_rows::<P, ENERGY, u32>(potential, box_, rc2, slab, data)
+    } else {
+        slab_rows::<P, ENERGY, u16>(potential, box_, rc2, slab, data)
     }
 }
 
-/// The slab's rows, its partners' offsets of type `I`: those in the slab if `OWN`, those in
-/// the next slab if `NEXT`.
+/// The slab's rows, its partners' offsets of type `I`.
 #[inline(always)]
-fn slab_rows<P: PairPotential, const ENERGY: bool, I: Offset, const OWN: bool, const NEXT: bool>(
+fn slab_rows<P: PairPotential, const ENERGY: bool, I: Offset>(
     potential: &P,
     box_: BoxHalves,
     rc2: Real,
@@ -120,7 +97,6 @@ fn slab_rows<P: PairPotential, const ENERGY: bool, I: Offset, const OWN: bool, c
     data: SlabData<'_>,
 ) -> (Real, Real) {
     let SlabData {
-        part: _,
         x_own,
         x_next,
         shift_next,
@@ -131,32 +107,15 @@ fn slab_rows<P: PairPotential, const ENERGY: bool, I: Offset, const OWN: bool, c
     for (i, &xi) in x_own.iter().enumerate() {
         let (same, next) = slab.partners::<I>(i);
         let xi_next = [xi[0] - shift_next, xi[1], xi[2]];
-        let none = ([0.0; 3], 0.0, 0.0);
         let ((a, u, w), (b, u2, w2)) = if slab.wraps[i] {
             (
-                if OWN {
-                    row::<P, true, ENERGY, I>(potential, box_, rc2, xi, same, i + 1, x_own, f_own)
-                } else {
-                    none
-                },
-                if NEXT {
-                    row::<P, true, ENERGY, I>(potential, box_, rc2, xi_next, next, 0, x_next, f_next)
-                } else {
-                    none
-                },
+                row::<P, true, ENERGY, I>(potential, box_, rc2, xi, same, i + 1, x_own, f_own),
+                row::<P, true, ENERGY, I>(potential, box_, rc2, xi_next, next, 0, x_next, f_next),
             )
         } else {
             (
-                if OWN {
-                    row::<P, false, ENERGY, I>(potential, box_, rc2, xi, same, i + 1, x_own, f_own)
-                } else {
-                    none
-                },
-                if NEXT {
-                    row::<P, false, ENERGY, I>(potential, box_, rc2, xi_next, next, 0, x_next, f_next)
-                } else {
-                    none
-                },
+                row::<P, false, ENERGY, I>(potential, box_, rc2, xi, same, i + 1, x_own, f_own),
+                row::<P, false, ENERGY, I>(potential, box_, rc2, xi_next, next, 0, x_next, f_next),
             )
         };
         if ENERGY {
@@ -307,7 +266,6 @@ mod tests {
                 g.clear();
                 g.resize(next, [0.0; 3]);
                 let data = SlabData {
-                    part: Part::Both,
                     x_own: &xs[range(s)],
                     x_next,
                     shift_next,

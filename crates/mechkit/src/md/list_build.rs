@@ -106,7 +106,11 @@ impl SlabBuild<'_> {
                 if !same && next[s].is_none() {
                     break;
                 }
-                let xi = if same { xi } else { [xi[0] - shift, xi[1], xi[2]] };
+                let xi = if same {
+                    xi
+                } else {
+                    [xi[0] - shift, xi[1], xi[2]]
+                };
                 for &cx in cells.adjacent[0][c[0]].as_slice() {
                     let t = self.layer_slab[cx as usize];
                     if (t == s) != same || (!same && next[s] != Some(t)) {
@@ -138,9 +142,13 @@ impl SlabBuild<'_> {
                             let first = (a - base) as u32;
                             let candidates = &xs[a..b];
                             if wraps {
-                                scan::<I, true>(xi, candidates, first, self.r2, self.box_, &mut out);
+                                scan::<I, true>(
+                                    xi, candidates, first, self.r2, self.box_, &mut out,
+                                );
                             } else {
-                                scan::<I, false>(xi, candidates, first, self.r2, self.box_, &mut out);
+                                scan::<I, false>(
+                                    xi, candidates, first, self.r2, self.box_, &mut out,
+                                );
                             }
                         }
                     }

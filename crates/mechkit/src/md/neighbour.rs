@@ -162,8 +162,9 @@ pub struct NeighbourList {
     pub(crate) next: Vec<Option<usize>>,
     /// The slab before each slab, if any.
     pub(crate) prev: Vec<Option<usize>>,
-    /// For even (0) and odd (1) slabs s whose next slab is s + 1: the bounds of the ranges
-    /// `bounds[s]..bounds[s + 2]` of each with its next (which do not overlap).
+    /// For the even (0) and the odd (1) slabs s: the bounds of the ranges of each with the
+    /// slab after it, `bounds[s]..bounds[s + 2]` (the last slab's alone), which do not
+    /// overlap.
     pub(crate) pair_bounds: [Vec<usize>; 2],
     pub(crate) slabs: Vec<SlabList>,
     /// Scratch: the slab of each x-layer of cells.
@@ -291,9 +292,12 @@ impl NeighbourList {
         self.slabs.resize_with(count, SlabList::default);
         for (c, pb) in self.pair_bounds.iter_mut().enumerate() {
             pb.clear();
-            // bounds[c], bounds[c + 2], ...: between two of them a slab and its next (the
-            // last slab, with no next or the first as its next, is in none)
-            pb.extend((c..=count).step_by(2).map(|i| self.bounds[i]));
+            // bounds[c], bounds[c + 2], ..., bounds[count]: between two of them a slab and
+            // the slab after it, or the last slab alone
+            pb.extend((c..count).step_by(2).map(|i| self.bounds[i]));
+            if c < count {
+                pb.push(self.bounds[count]);
+            }
         }
     }
 
@@ -317,9 +321,8 @@ impl NeighbourList {
             let (lo, own) = (self.bounds[s], self.bounds[s + 1] - self.bounds[s]);
             let lo_next = self.next[s].map_or(0, |t| self.bounds[t]);
             (0..own).flat_map(move |i| {
-                list.partner_indices(i).map(move |(same, j)| {
-                    (lo + i, if same { lo + j } else { lo_next + j })
-                })
+                list.partner_indices(i)
+                    .map(move |(same, j)| (lo + i, if same { lo + j } else { lo_next + j }))
             })
         })
     }

@@ -247,7 +247,11 @@ impl<P: PairPotential> Md<P> {
         self.x_built
             .extend(self.x.iter().map(|p| p.map(|c| c as f32)));
         // each coordinate rounded to 24 bits: off by at most 2^-24 of the largest
-        let largest = self.x.iter().flatten().fold(0.0, |m: Real, c| m.max(c.abs()));
+        let largest = self
+            .x
+            .iter()
+            .flatten()
+            .fold(0.0, |m: Real, c| m.max(c.abs()));
         self.built_error = 3.0_f64.sqrt() * largest * (-23.0_f64).exp2();
         self.list.build_sorted(&self.sim_box, &self.x, pool);
         self.rebuilds += 1;
