@@ -21,6 +21,8 @@
 //! step, with a guarantee where `g` has an enclosure, in time order.
 
 mod adaptive;
+mod band_plan;
+mod banded;
 mod bdf;
 mod blocks;
 mod control;
@@ -34,6 +36,8 @@ mod fixed;
 mod hermite;
 mod linalg;
 mod method;
+mod newton_lu;
+mod pattern;
 mod polynomial;
 mod proof;
 mod radau5;
@@ -66,6 +70,7 @@ pub use events::{
 pub use explicit_rk::ExplicitRk;
 pub use hermite::{hermite, hermite_derivative};
 pub use method::{Method, MethodInfo, MethodKind};
+pub use pattern::JacobianPattern;
 pub use polynomial::{MAX_COEFFICIENTS, StepPolynomial};
 pub use proof::{MAX_BOUNDS, Piece, ProofOutcome, StepProof};
 pub use radau5::{ImplicitStats, NEWTON_MAX_ITER, Radau5};

@@ -1,5 +1,6 @@
 //! The equations a stepper solves.
 
+use super::pattern::JacobianPattern;
 use crate::Real;
 
 /// A first-order system `y' = f(t, y)`.
@@ -15,6 +16,15 @@ pub trait OdeSystem {
     /// does not know it: the implicit methods then take it by finite differences.
     fn jacobian_into(&self, _t: Real, _y: &[Real], _jac: &mut [Real]) -> bool {
         false
+    }
+
+    /// The entries of `∂f/∂y` that may be non-zero, for every `t` and `y` (the others are
+    /// structurally zero); `None`, the default, when unknown: the implicit methods then factor
+    /// their Newton matrices dense. With a pattern they factor them as band matrices in a
+    /// reordering of the unknowns when that is cheaper (a chain of springs). A wrong pattern
+    /// makes the Newton iterations converge slowly or not at all, never the solution wrong.
+    fn jacobian_pattern(&self) -> Option<JacobianPattern> {
+        None
     }
 }
 
@@ -43,6 +53,13 @@ pub trait SecondOrderSystem {
         _da_dv: &mut [Real],
     ) -> bool {
         false
+    }
+
+    /// Which coordinates each acceleration depends on: `(i, j)` marked when `aᵢ` may depend
+    /// on `qⱼ` or `vⱼ` (size `dof`); `None`, the default, when unknown. It gives the first-order
+    /// form its [`OdeSystem::jacobian_pattern`] ([`JacobianPattern::second_order`]).
+    fn accel_pattern(&self) -> Option<JacobianPattern> {
+        None
     }
 }
 
@@ -78,5 +95,10 @@ impl<T: SecondOrderSystem + ?Sized> OdeSystem for T {
             jac[row + n..row + m].copy_from_slice(&da_dv[i * n..(i + 1) * n]);
         }
         true
+    }
+
+    /// [`JacobianPattern::second_order`] of [`SecondOrderSystem::accel_pattern`].
+    fn jacobian_pattern(&self) -> Option<JacobianPattern> {
+        self.accel_pattern().map(|p| p.second_order(0))
     }
 }

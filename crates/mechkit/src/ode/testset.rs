@@ -263,4 +263,15 @@ impl SecondOrderSystem for SpringChain {
         }
         true
     }
+    /// Each mass pulled by its two neighbours: a tridiagonal coupling.
+    fn accel_pattern(&self) -> Option<super::JacobianPattern> {
+        let n = self.n;
+        let mut p = super::JacobianPattern::new(n);
+        for i in 0..n {
+            for j in i.saturating_sub(1)..(i + 2).min(n) {
+                p.insert(i, j);
+            }
+        }
+        Some(p)
+    }
 }

@@ -1,4 +1,5 @@
 mod adaptive;
+mod banded;
 mod convergence;
 mod energy_behaviour;
 mod fsal;

@@ -25,7 +25,7 @@
 #![allow(clippy::needless_range_loop)] // component loops over several parallel arrays
 
 use super::control::{AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Tolerance};
-use super::linalg::Lu;
+use super::newton_lu::NewtonLu;
 use super::radau5::ImplicitStats;
 use super::state::State;
 use super::system::OdeSystem;
@@ -75,7 +75,7 @@ pub struct Bdf {
     jac_ready: bool,
     jac_current: bool,
     /// The factorisation of `I − c J` and its `c`.
-    lu: Lu<Real>,
+    lu: NewtonLu<Real>,
     lu_c: Option<Real>,
     /// Work buffers.
     f: Vec<Real>,
@@ -138,7 +138,7 @@ impl Bdf {
             jac: Vec::new(),
             jac_ready: false,
             jac_current: false,
-            lu: Lu::default(),
+            lu: NewtonLu::default(),
             lu_c: None,
             f: Vec::new(),
             f0: Vec::new(),
@@ -186,6 +186,14 @@ impl Bdf {
         self.order
     }
 
+    /// `(kl, ku)`, the sub- and super-diagonals of the Newton matrix when it is factored as a
+    /// band matrix (in a reordering of the unknowns, from the system's
+    /// [`OdeSystem::jacobian_pattern`]); `None` when it is factored dense or before the first
+    /// step.
+    pub fn band(&self) -> Option<(usize, usize)> {
+        self.lu.band()
+    }
+
     /// The step size the next step will try.
     pub fn next_step(&self) -> Option<Real> {
         self.t.map(|_| self.h)
@@ -228,6 +236,7 @@ impl Bdf {
         self.d.resize(ROWS * n, 0.0);
         self.jac.resize(n * n, 0.0);
         self.jac_ready = false;
+        self.lu.forget_plan();
         self.t = None;
     }
 

@@ -6,6 +6,7 @@
 use super::{Bdf, NEWTON_MAX_ITER};
 use crate::Real;
 use crate::ode::OdeSystem;
+use crate::ode::band_plan::BandPlan;
 use crate::ode::weights::{controlled, first_step, set_weights, trial_step, weighted_rms};
 
 impl Bdf {
@@ -16,6 +17,9 @@ impl Bdf {
         self.jac_ready = true;
         self.jac_current = true;
         self.lu_c = None;
+        if !self.lu.is_planned() {
+            self.lu.set_plan(BandPlan::for_system(sys, n));
+        }
         if sys.jacobian_into(t, y, &mut self.jac) {
             return;
         }

@@ -26,7 +26,7 @@
 use nalgebra::Complex;
 
 use super::control::{AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Tolerance};
-use super::linalg::Lu;
+use super::newton_lu::NewtonLu;
 use super::polynomial::StepPolynomial;
 use super::radau_tableau::RadauTableau;
 use super::state::State;
@@ -83,8 +83,8 @@ pub struct Radau5 {
     jac_ready: bool,
     jac_current: bool,
     /// The factorisations and the step they were made for.
-    lu_real: Lu<Real>,
-    lu_complex: Lu<Complex<Real>>,
+    lu_real: NewtonLu<Real>,
+    lu_complex: NewtonLu<Complex<Real>>,
     lu_h: Option<Real>,
     /// `η` of the last Newton iteration (Hairer's `FACCON`).
     eta: Real,
@@ -133,8 +133,8 @@ impl Radau5 {
             jac: Vec::new(),
             jac_ready: false,
             jac_current: false,
-            lu_real: Lu::default(),
-            lu_complex: Lu::default(),
+            lu_real: NewtonLu::default(),
+            lu_complex: NewtonLu::default(),
             lu_h: None,
             eta: 1.0,
             z: Default::default(),
@@ -167,6 +167,14 @@ impl Radau5 {
     /// The implicit method's own counters.
     pub fn implicit_stats(&self) -> ImplicitStats {
         self.implicit
+    }
+
+    /// `(kl, ku)`, the sub- and super-diagonals of the Newton matrices when they are factored
+    /// as band matrices (in a reordering of the unknowns, from the system's
+    /// [`OdeSystem::jacobian_pattern`]); `None` when they are factored dense or before the
+    /// first step.
+    pub fn band(&self) -> Option<(usize, usize)> {
+        self.lu_real.band()
     }
 
     /// The step size the next step will try.
@@ -222,6 +230,8 @@ impl Radau5 {
         self.cont.resize(3 * n, 0.0);
         self.cbuf.resize(n, Complex::new(0.0, 0.0));
         self.jac_ready = false;
+        self.lu_real.forget_plan();
+        self.lu_complex.forget_plan();
         self.cont_valid = false;
         self.f0_at = None;
     }

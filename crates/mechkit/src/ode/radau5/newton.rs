@@ -8,6 +8,7 @@ use nalgebra::Complex;
 use super::{NEWTON_MAX_ITER, Radau5};
 use crate::Real;
 use crate::ode::OdeSystem;
+use crate::ode::band_plan::BandPlan;
 use crate::ode::radau_tableau::RadauTableau;
 
 /// `sⁱ`-weighted value of the collocation polynomial `Σₖ qₖ sᵏ` (without `y₀`).
@@ -23,6 +24,11 @@ impl Radau5 {
         self.jac_ready = true;
         self.jac_current = true;
         self.lu_h = None;
+        if !self.lu_real.is_planned() {
+            let plan = BandPlan::for_system(sys, n);
+            self.lu_real.set_plan(plan.clone());
+            self.lu_complex.set_plan(plan);
+        }
         if sys.jacobian_into(t, y, &mut self.jac) {
             return;
         }
