@@ -147,4 +147,12 @@ impl SecondOrderSystem for ParticleSystem {
             .as_ref()
             .is_some_and(|j| j.eval_into(t, q, v, da_dq, da_dv))
     }
+
+    /// The structural zeros of the compiled Jacobian, when the system has one.
+    fn accel_pattern(&self) -> Option<crate::ode::JacobianPattern> {
+        self.jacobian
+            .get_or_init(|| super::CompiledJacobian::build(self))
+            .as_ref()
+            .map(|j| j.pattern().clone())
+    }
 }

@@ -15,6 +15,7 @@ use mechkit_expr::{Kernel, KernelBuilder, Val};
 use super::ParticleSystem;
 use crate::Real;
 use crate::forces::ForceEmitter;
+use crate::ode::JacobianPattern;
 use crate::particles::Coordinates;
 
 /// The largest number of coordinates given a compiled Jacobian (its `2 n²` entries are a
@@ -27,6 +28,8 @@ pub const MAX_DOF: usize = 96;
 pub struct CompiledJacobian {
     kernel: Kernel,
     n: usize,
+    /// `(i, j)` where `∂aᵢ/∂qⱼ` or `∂aᵢ/∂vⱼ` is not structurally zero.
+    pattern: JacobianPattern,
 }
 
 impl CompiledJacobian {
@@ -72,10 +75,14 @@ impl CompiledJacobian {
             })
             .collect();
         let zero = b.constant(0.0);
+        let mut pattern = JacobianPattern::new(n);
         for (block, wrt) in [(0, &x), (1, &v)] {
             for (j, &xj) in wrt.iter().enumerate() {
                 let column = b.derivatives(&accel, xj)?;
                 for (i, d) in column.into_iter().enumerate() {
+                    if d.is_some() {
+                        pattern.insert(i, j);
+                    }
                     b.set(1 + 2 * n + block * n * n + i * n + j, d.unwrap_or(zero));
                 }
             }
@@ -83,7 +90,16 @@ impl CompiledJacobian {
         Some(CompiledJacobian {
             kernel: b.finish().native(),
             n,
+            pattern,
         })
+    }
+
+    /// Which coordinates each acceleration depends on: `(i, j)` where `∂aᵢ/∂qⱼ` or
+    /// `∂aᵢ/∂vⱼ` is not structurally zero (the kernel's derivative of `aᵢ` is not the
+    /// constant zero), as [`SecondOrderSystem::accel_pattern`](crate::ode::SecondOrderSystem)
+    /// reports it.
+    pub fn pattern(&self) -> &JacobianPattern {
+        &self.pattern
     }
 
     /// Writes `∂a/∂q` and `∂a/∂v` at `(t, q, v)` (row-major, `n × n`); `false` when an entry
