@@ -116,6 +116,8 @@ def problems():
     yield "pleiades", f, j, y0, 3.0, 1.0, 14, [1e-4, 1e-6, 1e-8]
     f, j, n = chain()
     yield "chain", f, j, np.zeros(2 * n), 0.1, 1e-3, 20, [1e-4, 1e-6, 1e-8]
+    f, j, n = chain(n=200)
+    yield "chain200", f, j, np.zeros(2 * n), 1.0, 1e-3, 20, [1e-4, 1e-6, 1e-8]
 
 
 def main():

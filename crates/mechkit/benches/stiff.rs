@@ -4,8 +4,10 @@
 //! BDF and LSODA on the same problems and tolerances and joins the two.
 //!
 //! Run with `cargo bench -p mechkit --bench stiff` (add `-- --quick` for one tolerance per
-//! problem). References: published ones (Robertson, HIRES, Pleiades), else DOP853 at
-//! rtol = 1e-13, an independent method; written to `$STIFF_REFERENCES` (default
+//! problem). The chains also run with their Jacobian pattern hidden (`radau5-dense`,
+//! `bdf-dense`): the dense LU they were solved with before the banded one. References:
+//! published ones (Robertson, HIRES, Pleiades), else DOP853 at rtol = 1e-13, an independent
+//! method; written to `$STIFF_REFERENCES` (default
 //! `stiff_references.json` in the working directory) for the SciPy side.
 
 use std::time::Instant;
@@ -85,7 +87,58 @@ fn problems() -> Vec<Problem> {
             reference: None,
             tolerances: &[1e-4, 1e-6, 1e-8],
         },
+        Problem {
+            name: "chain200",
+            sys: Box::new(SpringChain {
+                n: 200,
+                k: 1e6,
+                c: 2e4,
+                pull: 1e3,
+            }),
+            y0: vec![0.0; 400],
+            t_end: 1.0,
+            atol_factor: 1e-3,
+            compared: 20,
+            reference: None,
+            tolerances: &[1e-4, 1e-6, 1e-8],
+        },
     ]
+}
+
+/// A system without its Jacobian pattern: the implicit methods factor it dense, as they all
+/// did before the banded solver (the chains' "before").
+struct Dense<'a>(&'a dyn OdeSystem);
+
+impl OdeSystem for Dense<'_> {
+    fn dim(&self) -> usize {
+        self.0.dim()
+    }
+    fn rhs_into(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
+        self.0.rhs_into(t, y, dydt);
+    }
+    fn jacobian_into(&self, t: f64, y: &[f64], jac: &mut [f64]) -> bool {
+        self.0.jacobian_into(t, y, jac)
+    }
+}
+
+fn radau5_dense(
+    sys: &dyn OdeSystem,
+    y0: &[f64],
+    t_end: f64,
+    rtol: f64,
+    atol: f64,
+) -> (Vec<f64>, AdaptiveStats, u64) {
+    radau5(&Dense(sys), y0, t_end, rtol, atol)
+}
+
+fn bdf_dense(
+    sys: &dyn OdeSystem,
+    y0: &[f64],
+    t_end: f64,
+    rtol: f64,
+    atol: f64,
+) -> (Vec<f64>, AdaptiveStats, u64) {
+    bdf(&Dense(sys), y0, t_end, rtol, atol)
 }
 
 fn config(rtol: f64, atol: f64) -> AdaptiveConfig {
@@ -153,7 +206,13 @@ fn error(y: &[f64], reference: &[f64]) -> f64 {
 
 fn main() {
     let quick = std::env::args().any(|a| a == "--quick");
-    let methods: &[(&str, Solve)] = &[("radau5", radau5), ("bdf", bdf), ("dop853", dop853)];
+    let methods: &[(&str, Solve)] = &[
+        ("radau5", radau5),
+        ("bdf", bdf),
+        ("dop853", dop853),
+        ("radau5-dense", radau5_dense),
+        ("bdf-dense", bdf_dense),
+    ];
     let mut references = Vec::new();
     println!("problem\tsolver\ttol\terror\tsteps\tevaluations\tjacobians\twall_s");
     for p in problems() {
@@ -171,6 +230,13 @@ fn main() {
             for (name, solve) in methods {
                 // DOP853 on the stiff problems only where it finishes in reasonable time
                 if *name == "dop853" && p.name == "vdp" && tol < 1e-6 {
+                    continue;
+                }
+                // the dense factorisations only where the banded one is used: the chains
+                // (and not at 1e-8 on the long chain, where a dense solve takes seconds)
+                if name.ends_with("-dense")
+                    && (!p.name.starts_with("chain") || (p.name == "chain200" && tol < 1e-6))
+                {
                     continue;
                 }
                 let atol = tol * p.atol_factor;
