@@ -5,6 +5,27 @@
 
 /// The entries of an `n × n` matrix that may be non-zero (the others are structurally zero:
 /// zero for every state and time).
+///
+/// # Example
+/// A chain of three masses, each pulled by its neighbours, as a second-order system
+/// `y = [q, v]`:
+/// ```
+/// use mechkit::ode::JacobianPattern;
+///
+/// let mut a = JacobianPattern::new(3);
+/// for i in 0..3_usize {
+///     for j in i.saturating_sub(1)..(i + 2).min(3) {
+///         a.insert(i, j);
+///     }
+/// }
+/// assert_eq!(a.len(), 7);
+/// let p = a.second_order(0);
+/// assert_eq!(p.dim(), 6);
+/// assert!(p.contains(0, 3)); // q₀' = v₀
+/// assert!(p.contains(3, 1) && p.contains(3, 4)); // a₀ depends on q₁ and v₁
+/// assert!(!p.contains(3, 2)); // but not on q₂
+/// assert_eq!(p.len(), 3 + 2 * 7);
+/// ```
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct JacobianPattern {
     n: usize,
