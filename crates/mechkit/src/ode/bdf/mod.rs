@@ -11,7 +11,9 @@
 //!   kept while `h` and `k` hold; at most [`NEWTON_MAX_ITER`] iterations, converged when
 //!   `θ/(1 − θ) ‖Δy‖ < κ_N`, `κ_N = max(10 ε / rtol, min(0.03, √rtol))`. A failing iteration
 //!   gets a fresh Jacobian (the system's own, [`OdeSystem::jacobian_into`], or by
-//!   differences), then half the step;
+//!   differences), then half the step. The factorisation is dense, or banded in a reordering
+//!   of the unknowns when the system's [`OdeSystem::jacobian_pattern`] makes that cheaper
+//!   ([`Bdf::band`]);
 //! - estimates its local error from the next difference, `(κ γₖ + 1/(k + 1)) ‖y − y⁽⁰⁾‖`;
 //! - after `k + 1` steps of one size, compares the estimates of orders `k − 1`, `k`, `k + 1`
 //!   (from `Dᵏ` and `Dᵏ⁺²`) and goes on with the order that allows the longest step, the step

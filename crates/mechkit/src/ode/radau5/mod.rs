@@ -7,7 +7,9 @@
 //! ([`OdeSystem::jacobian_into`]: exact, e.g. from the symbolic engine) or one by finite
 //! differences (one evaluation per component); it is kept from step to step while the Newton
 //! iterations converge fast, and the factorisations while the step size stays within 20 %
-//! of the one they were made for.
+//! of the one they were made for. The factorisations are dense, or banded in a reordering of
+//! the unknowns when the system's [`OdeSystem::jacobian_pattern`] makes that cheaper (a chain
+//! of springs: [`Radau5::band`]).
 //!
 //! - Newton: at most [`NEWTON_MAX_ITER`] iterations from the previous step's collocation
 //!   polynomial extrapolated; converged when `η ‖ΔW‖ ≤ κ`, `η = θ/(1 − θ)` with `θ` the
