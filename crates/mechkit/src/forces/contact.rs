@@ -44,7 +44,9 @@
 
 use super::contact_builder::{ContactForceBuilder, ContactPair, ContactWall};
 use super::contact_damper::ContactDamper;
+use super::contact_emit::emit_law_force;
 use super::contact_law::{ContactDamping, ContactLaw};
+use super::emit::ForceEmitter;
 use super::force::Force;
 use crate::Real;
 use crate::particles::Kinematics;
@@ -297,6 +299,10 @@ impl Force for ContactForce {
     /// The elastic force `F_e(δ) n̂` of every overlapping contact.
     fn add_forces(&self, k: &Kinematics<'_>, out: &mut [Real]) {
         self.for_each_touch(k, |t| t.apply(self.law.force(t.delta), self.dim, out));
+    }
+
+    fn emit(&self, e: &mut ForceEmitter<'_>) -> bool {
+        self.emit_touches(e, |e, t| emit_law_force(e, self.law, t.delta))
     }
 
     /// The elastic energy `Σ U(δ)` stored in the overlapping contacts (zero when none

@@ -2,6 +2,8 @@
 //! work as non-conservative (see [`super::ContactForce`]).
 
 use super::contact::ContactForce;
+use super::contact_emit::emit_damping;
+use super::emit::ForceEmitter;
 use super::force::Force;
 use crate::Real;
 use crate::particles::Kinematics;
@@ -41,6 +43,11 @@ impl Force for ContactDamper {
             let f = c.normal_force(t.delta, t.rate) - law.force(t.delta);
             t.apply(f, dim, out);
         });
+    }
+
+    fn emit(&self, e: &mut ForceEmitter<'_>) -> bool {
+        let c = &self.contact;
+        c.emit_touches(e, |e, t| emit_damping(e, c, t))
     }
 
     fn velocity_dependent(&self) -> bool {

@@ -21,6 +21,7 @@ mod constant;
 mod contact;
 mod contact_builder;
 mod contact_damper;
+mod contact_emit;
 mod contact_law;
 mod drag;
 mod emit;

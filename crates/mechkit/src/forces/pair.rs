@@ -15,6 +15,7 @@
 use mechkit_expr::{Expr, MapScope, Program, Sym};
 use thiserror::Error;
 
+use super::emit::ForceEmitter;
 use super::force::Force;
 use crate::Real;
 use crate::particles::Kinematics;
@@ -265,6 +266,10 @@ impl Force for PairForce {
         )
     }
 
+    fn emit(&self, e: &mut ForceEmitter<'_>) -> bool {
+        self.emit_pairs(e)
+    }
+
     fn internal(&self) -> bool {
         true
     }
@@ -276,6 +281,9 @@ impl Force for PairForce {
         out
     }
 }
+
+#[path = "pair_emit.rs"]
+mod emit;
 
 #[cfg(test)]
 mod tests {

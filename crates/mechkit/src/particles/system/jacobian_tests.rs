@@ -1,7 +1,7 @@
 use super::*;
 use crate::forces::{
-    ContactForceBuilder, NewtonianGravity, QuadraticDrag, Spring, SpringEnds, Target,
-    UniformGravity,
+    ContactDamping, ContactForceBuilder, ContactLaw, NewtonianGravity, PairForce, QuadraticDrag,
+    RadialPotential, Spring, SpringEnds, Target, UniformGravity,
 };
 use crate::ode::SecondOrderSystem;
 
@@ -32,24 +32,22 @@ fn system() -> ParticleSystem {
         .unwrap()
 }
 
-#[test]
-fn the_compiled_jacobian_matches_central_differences() {
-    let sys = system();
-    let jac = CompiledJacobian::build(&sys).expect("every force emits");
-    let n = 6;
-    let q = [0.3, 0.9, -0.2, 0.4, 1.1, -0.7];
-    let v = [0.5, -1.2, 0.8, 0.1, -0.3, 2.0];
+/// `∂a/∂q` and `∂a/∂v` of `sys` at `(q, v)`, compiled, against central differences of
+/// its accelerations with step `h`: within `tol` of the largest entry of each row.
+fn matches_differences(sys: &ParticleSystem, q: &[f64], v: &[f64], h: f64, tol: f64) {
+    let n = q.len();
+    let jac = CompiledJacobian::build(sys).expect("every force emits");
     let (mut dq, mut dv) = (vec![0.0; n * n], vec![0.0; n * n]);
-    assert!(jac.eval_into(0.4, &q, &v, &mut dq, &mut dv));
+    assert!(jac.eval_into(0.4, q, v, &mut dq, &mut dv));
     let accel = |q: &[f64], v: &[f64]| {
         let mut a = vec![0.0; n];
         sys.accel_into(0.4, q, v, &mut a);
         a
     };
-    let h = 1e-6;
-    for j in 0..n {
-        for (block, exact) in [(0, &dq), (1, &dv)] {
-            let (mut qp, mut qm, mut vp, mut vm) = (q, q, v, v);
+    for (block, exact) in [(0, &dq), (1, &dv)] {
+        let mut fd = vec![0.0; n * n];
+        for j in 0..n {
+            let (mut qp, mut qm, mut vp, mut vm) = (q.to_vec(), q.to_vec(), v.to_vec(), v.to_vec());
             if block == 0 {
                 qp[j] += h;
                 qm[j] -= h;
@@ -59,32 +57,175 @@ fn the_compiled_jacobian_matches_central_differences() {
             }
             let (ap, am) = (accel(&qp, &vp), accel(&qm, &vm));
             for i in 0..n {
-                let fd = (ap[i] - am[i]) / (2.0 * h);
+                fd[i * n + j] = (ap[i] - am[i]) / (2.0 * h);
+            }
+        }
+        for i in 0..n {
+            let row = &fd[i * n..(i + 1) * n];
+            let scale = row.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+            for j in 0..n {
                 let e = exact[i * n + j];
                 assert!(
-                    (e - fd).abs() < 1e-6 * (1.0 + fd.abs()),
-                    "block {block}, ∂a{i}/∂{j}: {e} vs {fd}"
+                    (e - row[j]).abs() < tol * scale,
+                    "block {block}, ∂a{i}/∂{j} at q = {q:?}, v = {v:?}: {e} vs {}",
+                    row[j]
                 );
             }
         }
     }
     // the system hands it to the implicit methods
     let (mut dq2, mut dv2) = (vec![0.0; n * n], vec![0.0; n * n]);
-    assert!(sys.accel_jacobian_into(0.4, &q, &v, &mut dq2, &mut dv2));
+    assert!(sys.accel_jacobian_into(0.4, q, v, &mut dq2, &mut dv2));
     assert_eq!((dq, dv), (dq2, dv2));
 }
 
 #[test]
-fn a_force_that_cannot_be_compiled_leaves_the_differences() {
+fn the_compiled_jacobian_matches_central_differences() {
+    let q = [0.3, 0.9, -0.2, 0.4, 1.1, -0.7];
+    let v = [0.5, -1.2, 0.8, 0.1, -0.3, 2.0];
+    matches_differences(&system(), &q, &v, 1e-6, 1e-6);
+}
+
+/// Three balls in a plane on a floor: Hertz contacts (pairs and the floor) with
+/// Hunt-Crossley damping, a Lennard-Jones pair potential with a cut-off, gravity.
+fn contact_system(law: ContactLaw, damping: ContactDamping) -> ParticleSystem {
     let contact = ContactForceBuilder::new(2)
-        .name("floor")
-        .law(crate::forces::ContactLaw::Hertz { k: 1e10 })
-        .wall(&[0.0, 0.0], &[0.0, 1.0], &[(0, 0.1)])
+        .law(law)
+        .damping(damping)
+        .spheres(&[(0, 0.25), (1, 0.375), (2, 0.25)])
+        .wall(
+            &[0.0, -1.0],
+            &[0.2, 1.0],
+            &[(0, 0.25), (1, 0.375), (2, 0.25)],
+        )
         .build()
         .unwrap();
+    let lj = RadialPotential::new(
+        &mechkit_expr::parse("4*e*((s/r)^12 - (s/r)^6)")
+            .unwrap()
+            .expr,
+        "r",
+        &[("e".into(), 0.01), ("s".into(), 0.5)],
+    )
+    .unwrap()
+    .with_cutoff(1.0)
+    .unwrap();
+    let mut b = ParticleSystem::builder(2)
+        .body("a", 2.0)
+        .body("b", 0.5)
+        .body("c", 1.5)
+        .force(UniformGravity::new("g", vec![0, 1, 2], 9.81))
+        .force(PairForce::new("lj", PairForce::all_pairs(&[0, 1, 2]), lj));
+    for f in contact.clone().into_forces() {
+        b = b.boxed_force(f);
+    }
+    b.build().unwrap()
+}
+
+#[test]
+fn contact_laws_and_pair_potentials_get_their_exact_jacobian() {
+    let mut seed = 0x2545_F491_4F6C_DD1D_u64;
+    let mut uniform = |lo: f64, hi: f64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        lo + (hi - lo) * ((seed >> 11) as f64 / (1u64 << 53) as f64)
+    };
+    for (law, damping) in [
+        (
+            ContactLaw::hertz(1e5),
+            ContactDamping::HuntCrossley { alpha: 0.3 },
+        ),
+        (ContactLaw::linear(1e4), ContactDamping::Linear { c: 20.0 }),
+    ] {
+        let sys = contact_system(law, damping);
+        let contact = ContactForceBuilder::new(2)
+            .law(law)
+            .spheres(&[(0, 0.25), (1, 0.375), (2, 0.25)])
+            .wall(
+                &[0.0, -1.0],
+                &[0.2, 1.0],
+                &[(0, 0.25), (1, 0.375), (2, 0.25)],
+            )
+            .build()
+            .unwrap();
+        let mut touching = 0;
+        let mut tried = 0;
+        while touching < 40 {
+            tried += 1;
+            let q: Vec<f64> = (0..6)
+                .map(|i| uniform(-0.6, 0.6) - 0.2 * f64::from(i % 2))
+                .collect();
+            let v: Vec<f64> = (0..6).map(|_| uniform(-1.0, 1.0)).collect();
+            let overlaps = contact.overlaps(&q);
+            // differences need every contact clearly in or clearly apart, the clamp of the
+            // damped total clearly on one side, and no pair at the cut-off
+            if overlaps.iter().any(|d| d.abs() < 2e-3) {
+                continue;
+            }
+            let far = (0..3).all(|a| {
+                (a + 1..3).all(|b| {
+                    let r = ((q[2 * a] - q[2 * b]).powi(2) + (q[2 * a + 1] - q[2 * b + 1]).powi(2))
+                        .sqrt();
+                    (r - 1.0).abs() > 1e-3 && r > 0.3
+                })
+            });
+            let clamps = contact_clamps(&sys, &q, &v);
+            if !far || clamps {
+                continue;
+            }
+            touching += usize::from(overlaps.iter().any(|d| *d > 0.0));
+            matches_differences(&sys, &q, &v, 1e-7, 1e-5);
+        }
+        assert!(tried < 5000);
+    }
+}
+
+/// Whether the damped total of some touching contact is within a few percent of zero (the
+/// kink of the clamp, where differences straddle it).
+fn contact_clamps(sys: &ParticleSystem, q: &[f64], v: &[f64]) -> bool {
+    let k = crate::particles::Kinematics {
+        t: 0.0,
+        dim: 2,
+        x: q,
+        v,
+        mass: &[2.0, 0.5, 1.5],
+    };
+    let mut elastic = vec![0.0; 6];
+    let mut damper = vec![0.0; 6];
+    let forces: Vec<_> = sys.forces().iter().collect();
+    forces[2].add_forces(&k, &mut elastic);
+    forces[3].add_forces(&k, &mut damper);
+    elastic
+        .iter()
+        .zip(&damper)
+        .any(|(e, d)| e.abs() > 0.0 && (e + d).abs() < 0.05 * e.abs())
+}
+
+/// A force that cannot write itself into a kernel.
+#[derive(Debug)]
+struct Opaque;
+
+impl crate::forces::Force for Opaque {
+    fn name(&self) -> &str {
+        "opaque"
+    }
+
+    fn add_forces(&self, k: &crate::particles::Kinematics<'_>, out: &mut [f64]) {
+        out[k.dim - 1] -= k.x[k.dim - 1];
+    }
+
+    fn bodies(&self) -> Vec<usize> {
+        vec![0]
+    }
+}
+
+#[test]
+fn a_force_that_cannot_be_compiled_leaves_the_differences() {
     let sys = ParticleSystem::builder(2)
         .body("a", 1.0)
-        .force(contact)
+        .force(UniformGravity::new("g", vec![0], 9.81))
+        .force(Opaque)
         .build()
         .unwrap();
     assert!(CompiledJacobian::build(&sys).is_none());
