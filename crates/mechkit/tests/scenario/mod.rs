@@ -6,5 +6,6 @@ mod run;
 mod spatial;
 mod spatial_joints;
 mod stiff;
+mod stiff_contact;
 mod sweep;
 mod sweep_parts;
