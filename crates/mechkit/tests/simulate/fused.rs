@@ -275,7 +275,12 @@ stiffness = {stiffness}
 damping = {damping}
 "#
         ));
-        let forces: Vec<&str> = sc.system.forces().iter().map(|f| f.name()).collect();
+        let forces: Vec<&str> = sc
+            .system
+            .forces()
+            .iter()
+            .map(mechkit::forces::Force::name)
+            .collect();
         assert_eq!(forces, ["gravity", "glue", "contact", "contact_damping"]);
         let r = same_both_ways(&sc, Method::EulerCromer, 1e-5, 1.0);
         // the balls bounced: the contact did work and the damper took energy

@@ -207,7 +207,7 @@ fn contact_clamps(sys: &ParticleSystem, q: &[f64], v: &[f64]) -> bool {
 struct Opaque;
 
 impl crate::forces::Force for Opaque {
-    fn name(&self) -> &str {
+    fn name(&self) -> &'static str {
         "opaque"
     }
 
