@@ -14,7 +14,11 @@
 //! - Newton: at most [`NEWTON_MAX_ITER`] iterations from the previous step's collocation
 //!   polynomial extrapolated; converged when `η ‖ΔW‖ ≤ κ`, `η = θ/(1 − θ)` with `θ` the
 //!   contraction rate (Hairer's test, so a fast contraction remembered from the last step
-//!   can end the iteration after one pass), `κ = max(10 ε / rtol, min(0.03, √rtol))`.
+//!   can end the iteration after one pass, but only when that pass moved the stages by less
+//!   than the error tolerance), `κ = max(10 ε / rtol, min(0.03, √rtol))`. Hairer's RADAU5
+//!   ends after one pass whatever its size: at the start of a stiff contact (a ball landing
+//!   on a Hertz floor) the remembered rate of free flight accepted stages `f` was never
+//!   evaluated at, deep in the floor, and the ball bounced higher than it fell (issue 28).
 //!   A diverging or too slow iteration gets a fresh Jacobian, then half the step.
 //! - Error: `(γ/h − J)⁻¹ (f₀ + Σ dᵢ Zᵢ / h)`, filtered once more through `f` after a
 //!   rejection or on the first step (Hairer's stiff-aware estimate); the norm is the RMS of

@@ -167,7 +167,12 @@ impl Radau5 {
                     self.z[s][i] = z[s];
                 }
             }
-            if norm == 0.0 || eta * norm <= self.newton_tol {
+            // One pass converges on the contraction rate remembered from the last step only
+            // when its correction is within the error tolerance: that rate says nothing of a
+            // right-hand side whose Jacobian jumped inside the step (a stiff contact starting),
+            // and a larger correction has to be checked by `f` at the stages it leads to.
+            let trusted = norm_old.is_some() || norm <= 1.0;
+            if norm == 0.0 || trusted && eta * norm <= self.newton_tol {
                 self.eta = eta;
                 return Some((k + 1, if norm_old.is_some() { rate } else { 0.0 }));
             }
