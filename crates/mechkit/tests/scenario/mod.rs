@@ -1,3 +1,4 @@
+mod bounce;
 mod errors;
 mod examples;
 mod planar;
