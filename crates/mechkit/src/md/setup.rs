@@ -445,7 +445,7 @@ impl Setup {
             }
         };
         let sim_box = SimBox::new(dim, lengths, [periodic; 3])?;
-        if let Some((i, j)) = super::system::coincident_pair(&atoms.vectors) {
+        if let Some((i, j)) = super::start::coincident_pair(&atoms.vectors) {
             return Err(coincident(path.as_deref(), (i, j), atoms.vectors[i]));
         }
         let n = atoms.vectors.len();

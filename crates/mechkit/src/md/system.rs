@@ -15,6 +15,8 @@ use rayon::prelude::*;
 use crate::Real;
 
 use super::forces::{CHUNK, forces_summed};
+use super::reorder::{gather, permute};
+use super::start::check_start;
 use super::{ForceScratch, MdError, MdInput, NeighbourList, PairPotential, PairSums, SimBox};
 
 /// One particle's position and velocity (updated) with its force and its position at the
@@ -482,99 +484,4 @@ impl<P: PairPotential> Md<P> {
         debug_assert!(self.sums_current, "the sums of a step that skipped them");
         self.sums
     }
-}
-
-/// `a` reordered by `order` (`a[k] ← a[order[k]]`) through `buffer`, which is left holding
-/// the old order.
-fn gather(
-    a: &mut Vec<[Real; 3]>,
-    buffer: &mut Vec<[Real; 3]>,
-    order: &[u32],
-    pool: Option<&rayon::ThreadPool>,
-) {
-    buffer.resize(a.len(), [0.0; 3]);
-    let from: &[[Real; 3]] = a;
-    let fill = |(c, out): (usize, &mut [[Real; 3]])| {
-        for (k, o) in out.iter_mut().enumerate() {
-            *o = from[order[c * CHUNK + k] as usize];
-        }
-    };
-    match pool {
-        Some(pool) => pool.install(|| buffer.par_chunks_mut(CHUNK).enumerate().for_each(fill)),
-        None => buffer.chunks_mut(CHUNK).enumerate().for_each(fill),
-    }
-    std::mem::swap(a, buffer);
-}
-
-/// `a` reordered by `order` (`a[k] ← a[order[k]]`) in place, cycle by cycle (`done`: a
-/// buffer of bits for the particles already placed).
-fn permute<T: Copy>(a: &mut [T], order: &[u32], done: &mut Vec<u64>) {
-    done.clear();
-    done.resize(a.len().div_ceil(64), 0);
-    for k in 0..a.len() {
-        if done[k / 64] >> (k % 64) & 1 == 1 {
-            continue;
-        }
-        let first = a[k];
-        let mut j = k;
-        loop {
-            done[j / 64] |= 1 << (j % 64);
-            let from = order[j] as usize;
-            if from == k {
-                a[j] = first;
-                break;
-            }
-            a[j] = a[from];
-            j = from;
-        }
-    }
-}
-
-/// Two particles at exactly the same place (0-based, the first in order first), if any:
-/// found by sorting, O(N log N).
-pub(crate) fn coincident_pair(x: &[[Real; 3]]) -> Option<(usize, usize)> {
-    let mut order: Vec<usize> = (0..x.len()).collect();
-    let key = |i: usize| x[i].map(|c| (c + 0.0).to_bits());
-    order.sort_unstable_by_key(|&i| (key(i), i));
-    order
-        .windows(2)
-        .filter(|w| key(w[0]) == key(w[1]))
-        .map(|w| (w[0].min(w[1]), w[0].max(w[1])))
-        .min()
-}
-
-/// The start of a run that cannot work, refused before it: two particles at the same place
-/// (an infinite force), or a particle crossing more than the whole box (its shortest edge
-/// `edge`) in one step: the velocities of a temperature far too high, or a time step far too
-/// long, for which a step is no motion through the box (a merely too large step that the
-/// box holds is a run that diverges, found as it goes).
-fn check_start(x: &[[Real; 3]], v: &[[Real; 3]], dt: Real, edge: Real) -> Result<(), MdError> {
-    if let Some((first, second)) = coincident_pair(x) {
-        return Err(MdError::Coincident {
-            first: first + 1,
-            second: second + 1,
-            at: x[first],
-        });
-    }
-    let speed = v
-        .iter()
-        .map(|u| {
-            let big = u.iter().fold(0.0, |m: Real, c| m.max(c.abs()));
-            if big == 0.0 || !big.is_finite() {
-                return big;
-            }
-            big * u.iter().map(|c| (c / big).powi(2)).sum::<Real>().sqrt()
-        })
-        .fold(0.0, Real::max);
-    let distance = speed * dt;
-    // (NaN or infinite distances are refused too)
-    if distance.is_nan() || distance > edge {
-        return Err(MdError::StepTooLong {
-            dt,
-            speed,
-            distance,
-            edge,
-        });
-    }
-    Ok(())
 }
