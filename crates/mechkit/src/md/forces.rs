@@ -109,6 +109,8 @@ pub(crate) fn forces_summed<P: PairPotential>(
     }
 }
 
+/// Panics unless there is a position and a force for each particle of the list (a caller's
+/// bug, not an input's).
 fn check_lengths(list: &NeighbourList, x: &[[Real; 3]], f: &[[Real; 3]]) {
     assert!(
         x.len() == list.len() && f.len() == list.len(),
