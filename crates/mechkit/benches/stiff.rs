@@ -72,37 +72,28 @@ fn problems() -> Vec<Problem> {
             reference: Some(Pleiades::REFERENCE.to_vec()),
             tolerances: &[1e-4, 1e-6, 1e-8],
         },
-        Problem {
-            name: "chain",
-            sys: Box::new(SpringChain {
-                n: 20,
-                k: 1e6,
-                c: 2e4,
-                pull: 1e3,
-            }),
-            y0: vec![0.0; 40],
-            t_end: 0.1,
-            atol_factor: 1e-3,
-            compared: 20,
-            reference: None,
-            tolerances: &[1e-4, 1e-6, 1e-8],
-        },
-        Problem {
-            name: "chain200",
-            sys: Box::new(SpringChain {
-                n: 200,
-                k: 1e6,
-                c: 2e4,
-                pull: 1e3,
-            }),
-            y0: vec![0.0; 400],
-            t_end: 1.0,
-            atol_factor: 1e-3,
-            compared: 20,
-            reference: None,
-            tolerances: &[1e-4, 1e-6, 1e-8],
-        },
+        chain("chain", 20, 0.1),
+        chain("chain200", 200, 1.0),
     ]
+}
+
+/// A chain of `n` stiff damped springs pulled at its end, from rest to `t_end`.
+fn chain(name: &'static str, n: usize, t_end: f64) -> Problem {
+    Problem {
+        name,
+        sys: Box::new(SpringChain {
+            n,
+            k: 1e6,
+            c: 2e4,
+            pull: 1e3,
+        }),
+        y0: vec![0.0; 2 * n],
+        t_end,
+        atol_factor: 1e-3,
+        compared: 20,
+        reference: None,
+        tolerances: &[1e-4, 1e-6, 1e-8],
+    }
 }
 
 /// A system without its Jacobian pattern: the implicit methods factor it dense, as they all
