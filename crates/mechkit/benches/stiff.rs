@@ -4,7 +4,7 @@
 //! BDF and LSODA on the same problems and tolerances and joins the two.
 //!
 //! Run with `cargo bench -p mechkit --bench stiff` (add `-- --quick` for one tolerance per
-//! problem). The chains also run with their Jacobian pattern hidden (`radau5-dense`,
+//! problem, `-- --only chain --solver radau5` for one problem and method). The chains also run with their Jacobian pattern hidden (`radau5-dense`,
 //! `bdf-dense`): the dense LU they were solved with before the banded one. References:
 //! published ones (Robertson, HIRES, Pleiades), else DOP853 at rtol = 1e-13, an independent
 //! method; written to `$STIFF_REFERENCES` (default
@@ -196,7 +196,18 @@ fn error(y: &[f64], reference: &[f64]) -> f64 {
 }
 
 fn main() {
-    let quick = std::env::args().any(|a| a == "--quick");
+    let args: Vec<String> = std::env::args().collect();
+    let quick = args.iter().any(|a| a == "--quick");
+    // `--only NAME`: one problem (for profiling)
+    let only = args
+        .iter()
+        .position(|a| a == "--only")
+        .and_then(|i| args.get(i + 1).cloned());
+    // `--solver NAME`: one method (for profiling)
+    let solver = args
+        .iter()
+        .position(|a| a == "--solver")
+        .and_then(|i| args.get(i + 1).cloned());
     let methods: &[(&str, Solve)] = &[
         ("radau5", radau5),
         ("bdf", bdf),
@@ -207,6 +218,9 @@ fn main() {
     let mut references = Vec::new();
     println!("problem\tsolver\ttol\terror\tsteps\tevaluations\tjacobians\twall_s");
     for p in problems() {
+        if only.as_ref().is_some_and(|o| o != p.name) {
+            continue;
+        }
         let reference = p.reference.clone().unwrap_or_else(|| {
             let (y, _, _) = dop853(&*p.sys, &p.y0, p.t_end, 1e-13, 1e-13 * p.atol_factor);
             y[..p.compared].to_vec()
@@ -219,6 +233,9 @@ fn main() {
         };
         for &tol in tolerances {
             for (name, solve) in methods {
+                if solver.as_ref().is_some_and(|o| o != name) {
+                    continue;
+                }
                 // DOP853 on the stiff problems only where it finishes in reasonable time
                 if *name == "dop853" && p.name == "vdp" && tol < 1e-6 {
                     continue;

@@ -68,6 +68,10 @@ impl Force for ConstantForce {
         )
     }
 
+    fn local(&self) -> bool {
+        true
+    }
+
     fn bodies(&self) -> Vec<usize> {
         self.per_body.iter().map(|(b, _)| *b).collect()
     }

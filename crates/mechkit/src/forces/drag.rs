@@ -121,6 +121,10 @@ macro_rules! drag_law {
                 true
             }
 
+            fn local(&self) -> bool {
+                true
+            }
+
             fn bodies(&self) -> Vec<usize> {
                 self.0.bodies()
             }

@@ -64,6 +64,10 @@ impl Force for ExpressionForce {
         self.velocity_dependent
     }
 
+    fn local(&self) -> bool {
+        true
+    }
+
     fn bodies(&self) -> Vec<usize> {
         self.bodies.clone()
     }

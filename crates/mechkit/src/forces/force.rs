@@ -36,6 +36,14 @@ pub trait Force: Debug + Send + Sync {
     /// Indices of the bodies it acts on (for diagnostics).
     fn bodies(&self) -> Vec<usize>;
 
+    /// Whether [`Force::add_forces`] writes only the coordinates of [`Force::bodies`]
+    /// (`b·dim .. (b + 1)·dim` for each `b`): the energy ledger then reads and clears only
+    /// those, so its cost grows with the force's bodies, not the system's. `false`, the
+    /// default, makes no such promise.
+    fn local(&self) -> bool {
+        false
+    }
+
     /// What it looks like in an animation: a spring's coil, a joint's rod or string, a
     /// pulley. Nothing, the default, for a force that is not a thing (gravity, drag).
     fn sketch(&self) -> Vec<crate::animation::SceneItem> {

@@ -61,6 +61,10 @@ impl Force for UniformGravity {
         )
     }
 
+    fn local(&self) -> bool {
+        true
+    }
+
     fn bodies(&self) -> Vec<usize> {
         self.bodies.clone()
     }
@@ -226,6 +230,10 @@ impl Force for NewtonianGravity {
 
     fn internal(&self) -> bool {
         matches!(self.attractor, Attractor::Mutual { .. })
+    }
+
+    fn local(&self) -> bool {
+        true
     }
 
     fn bodies(&self) -> Vec<usize> {

@@ -274,6 +274,10 @@ impl Force for PairForce {
         true
     }
 
+    fn local(&self) -> bool {
+        true
+    }
+
     fn bodies(&self) -> Vec<usize> {
         let mut out: Vec<usize> = self.pairs.iter().flat_map(|&(a, b)| [a, b]).collect();
         out.sort_unstable();

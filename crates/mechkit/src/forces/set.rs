@@ -10,6 +10,9 @@ use crate::rigid::mechanism::REPORT_LEN as LEN;
 #[derive(Debug, Default)]
 pub struct ForceSet {
     forces: Vec<Box<dyn Force>>,
+    /// For each force that is [`Force::local`], its bodies, sorted and without repeats: the
+    /// energy ledger visits only their coordinates.
+    reach: Vec<Option<Vec<usize>>>,
 }
 
 impl ForceSet {
@@ -20,6 +23,12 @@ impl ForceSet {
 
     /// Adds a force.
     pub fn push(&mut self, force: Box<dyn Force>) {
+        self.reach.push(force.local().then(|| {
+            let mut bodies = force.bodies();
+            bodies.sort_unstable();
+            bodies.dedup();
+            bodies
+        }));
         self.forces.push(force);
     }
 
@@ -104,11 +113,27 @@ impl ForceSet {
         let d = k.dim;
         let n_pos = d * k.n_bodies();
         let mut applied: Option<Vec<Real>> = None;
+        // `scratch` is all zero at the start of a local force (which clears what it wrote)
+        let mut dirty = true;
         for pass in [false, true] {
             for (i, (f, p)) in self.forces.iter().zip(power.iter_mut()).enumerate() {
                 if f.constraint() != pass {
                     continue;
                 }
+                let n = &mut net[i * d..(i + 1) * d];
+                if let (false, Some(bodies)) = (pass, &self.reach[i]) {
+                    if dirty {
+                        scratch.fill(0.0);
+                        dirty = false;
+                    }
+                    if let Some(r) = report.as_deref_mut() {
+                        r[i * LEN..(i + 1) * LEN].fill(Real::NAN);
+                    }
+                    f.add_forces(k, scratch);
+                    *p = local_ledger(bodies, d, scratch, k.v, out, n) + f.extra_power(k);
+                    continue;
+                }
+                dirty = true;
                 scratch.fill(0.0);
                 if pass {
                     let applied = applied.get_or_insert_with(|| out.to_vec());
@@ -126,7 +151,6 @@ impl ForceSet {
                 for (o, s) in out.iter_mut().zip(scratch.iter()) {
                     *o += s;
                 }
-                let n = &mut net[i * d..(i + 1) * d];
                 n.fill(0.0);
                 for body in scratch[..n_pos].chunks_exact(d) {
                     for (nk, fk) in n.iter_mut().zip(body) {
@@ -173,3 +197,34 @@ impl ForceSet {
         self.forces.iter().any(|f| f.velocity_dependent())
     }
 }
+
+/// The ledger of one [`Force::local`] force whose forces are in `scratch` at the
+/// coordinates of `bodies` (sorted, without repeats) and zero elsewhere: adds them to `out`,
+/// sets `net` to their sum over the bodies, clears them from `scratch`, and returns their
+/// power `F·v`. The same sums in the same order as over every coordinate, without the zeros.
+fn local_ledger(
+    bodies: &[usize],
+    d: usize,
+    scratch: &mut [Real],
+    v: &[Real],
+    out: &mut [Real],
+    net: &mut [Real],
+) -> Real {
+    let mut power = -0.0;
+    net.fill(0.0);
+    for &b in bodies {
+        for (c, nk) in (b * d..(b + 1) * d).zip(net.iter_mut()) {
+            let f = std::mem::take(&mut scratch[c]);
+            if let Some(vc) = v.get(c) {
+                power += f * vc;
+            }
+            out[c] += f;
+            *nk += f;
+        }
+    }
+    power
+}
+
+#[cfg(test)]
+#[path = "set_tests.rs"]
+mod tests;

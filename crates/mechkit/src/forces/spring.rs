@@ -180,6 +180,10 @@ impl Force for Spring {
         matches!(self.ends, SpringEnds::Pair(..))
     }
 
+    fn local(&self) -> bool {
+        true
+    }
+
     fn bodies(&self) -> Vec<usize> {
         match &self.ends {
             SpringEnds::Anchor { bodies, .. } => bodies.clone(),
