@@ -50,6 +50,17 @@ impl KernelBuilder {
         Val(self.dag.push(Inst::Const(c)))
     }
 
+    /// Number of instructions built so far (the slots' loads included): a measure of the
+    /// work a pass over the body costs.
+    pub fn len(&self) -> usize {
+        self.dag.insts.len()
+    }
+
+    /// Whether nothing has been built (a body over no slots).
+    pub fn is_empty(&self) -> bool {
+        self.dag.insts.is_empty()
+    }
+
     /// The value, when it is a constant.
     pub fn as_constant(&self, v: Val) -> Option<f64> {
         self.dag.constant(v.0)
