@@ -9,7 +9,7 @@ use crate::forces::{
 struct Everywhere;
 
 impl Force for Everywhere {
-    fn name(&self) -> &str {
+    fn name(&self) -> &'static str {
         "everywhere"
     }
     fn add_forces(&self, k: &Kinematics<'_>, out: &mut [Real]) {
