@@ -13,6 +13,9 @@
 //! the kernel, so a chain of a few hundred bodies costs what its few thousand entries cost,
 //! and their positions are the pattern the banded solver is planned from.
 
+use std::sync::OnceLock;
+use std::sync::atomic::{AtomicU64, Ordering};
+
 use mechkit_expr::{Kernel, KernelBuilder, Val};
 
 use super::ParticleSystem;
@@ -30,15 +33,32 @@ pub const MAX_DOF: usize = 2048;
 pub const MAX_ENTRIES: usize = 2 * 96 * 96;
 
 /// The largest amount of differentiation work, `2 n ×` the accelerations' instructions,
-/// spent to find the entries (a few tenths of a second).
-const MAX_WORK: usize = 50_000_000;
+/// spent to find the entries (about a second at most).
+const MAX_WORK: usize = 200_000_000;
+
+/// Kernels up to this many instructions are compiled to native code at once. Native
+/// compilation of a larger one costs seconds (register allocation over thousands of live
+/// entries), far more than interpreting it for the few Jacobians most runs take; it is
+/// compiled once it has been interpreted for [`NATIVE_AFTER`] instructions in all.
+const NATIVE_AT_ONCE: usize = 4096;
+
+/// Instructions interpreted (evaluations × the kernel's length) after which a large kernel
+/// is compiled to native code (about a third of a second of interpretation).
+const NATIVE_AFTER: u64 = 100_000_000;
 
 /// `∂a/∂q` and `∂a/∂v` of a system as one compiled kernel over the slots
 /// `[t, q (n), v (n), entries]`: the entries that are not structurally zero, in the order
 /// of `at`.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct CompiledJacobian {
+    /// Native when it is small ([`NATIVE_AT_ONCE`]), else interpreted.
     kernel: Kernel,
+    /// The large kernel compiled, once it has been used enough ([`NATIVE_AFTER`]).
+    native: OnceLock<Kernel>,
+    /// Instructions interpreted so far.
+    interpreted: AtomicU64,
+    /// [`NATIVE_AFTER`] (smaller in tests).
+    native_after: u64,
     n: usize,
     /// `(i, j)` where `∂aᵢ/∂qⱼ` or `∂aᵢ/∂vⱼ` is not structurally zero.
     pattern: JacobianPattern,
@@ -103,6 +123,20 @@ fn entries(
     Some(out)
 }
 
+impl Clone for CompiledJacobian {
+    fn clone(&self) -> Self {
+        Self {
+            kernel: self.kernel.clone(),
+            native: self.native.clone(),
+            interpreted: AtomicU64::new(self.interpreted.load(Ordering::Relaxed)),
+            native_after: self.native_after,
+            n: self.n,
+            pattern: self.pattern.clone(),
+            at: self.at.clone(),
+        }
+    }
+}
+
 impl CompiledJacobian {
     /// The Jacobian of `sys`'s accelerations, or `None` when it cannot be compiled (see the
     /// module's documentation).
@@ -135,12 +169,37 @@ impl CompiledJacobian {
             at.push((block, i * n + j));
             b.set(1 + 2 * n + k, d);
         }
+        let kernel = b.finish();
+        let kernel = if kernel.len() <= NATIVE_AT_ONCE {
+            kernel.native()
+        } else {
+            kernel
+        };
         Some(CompiledJacobian {
-            kernel: b.finish().native(),
+            kernel,
+            native: OnceLock::new(),
+            interpreted: AtomicU64::new(0),
+            native_after: NATIVE_AFTER,
             n,
             pattern,
             at,
         })
+    }
+
+    /// The kernel to run: the native one once there is one, compiling a large kernel when
+    /// it has been interpreted long enough.
+    fn kernel(&self) -> &Kernel {
+        if self.kernel.is_native() {
+            return &self.kernel;
+        }
+        if let Some(k) = self.native.get() {
+            return k;
+        }
+        let len = self.kernel.len() as u64;
+        if self.interpreted.fetch_add(len, Ordering::Relaxed) + len >= self.native_after {
+            return self.native.get_or_init(|| self.kernel.clone().native());
+        }
+        &self.kernel
     }
 
     /// Which coordinates each acceleration depends on: `(i, j)` where `∂aᵢ/∂qⱼ` or
@@ -166,7 +225,7 @@ impl CompiledJacobian {
         slots[0] = t;
         slots[1..=n].copy_from_slice(q);
         slots[(1 + n)..=(2 * n)].copy_from_slice(v);
-        self.kernel.run(&mut slots, 1);
+        self.kernel().run(&mut slots, 1);
         da_dq.fill(0.0);
         da_dv.fill(0.0);
         for (&(block, k), &d) in self.at.iter().zip(&slots[1 + 2 * n..]) {

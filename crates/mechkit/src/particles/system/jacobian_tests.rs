@@ -305,4 +305,16 @@ fn a_long_chain_gets_a_sparse_compiled_jacobian() {
         .collect();
     let v: Vec<f64> = (0..n).map(|i| 0.1 * (i as f64).cos()).collect();
     matches_differences(&sys, &q, &v, 1e-6, 1e-6);
+    // too large to compile at once: interpreted, then native after use, the same bits
+    let mut jac = jac;
+    assert!(jac.kernel.len() > NATIVE_AT_ONCE && !jac.kernel.is_native());
+    jac.native_after = 3 * jac.kernel.len() as u64;
+    let mut seen = Vec::new();
+    for _ in 0..4 {
+        let (mut dq, mut dv) = (vec![0.0; n * n], vec![0.0; n * n]);
+        assert!(jac.eval_into(0.4, &q, &v, &mut dq, &mut dv));
+        seen.push((dq, dv));
+    }
+    assert!(jac.native.get().is_some());
+    assert!(seen.windows(2).all(|w| w[0] == w[1]));
 }
