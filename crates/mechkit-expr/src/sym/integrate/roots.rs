@@ -1,17 +1,19 @@
-//! `x^k (a + b x²)^(n/2)`: what the trigonometric (`x = sqrt(a/-b) sin t`) and hyperbolic
+//! `x^k (a + b x²)^(n/2)`, and `x^k (a + b x²)^-n` with symbolic `a`, `b` (a force or field
+//! `1/(x² + a²)^2`): what the trigonometric (`x = sqrt(a/-b) sin t`) and hyperbolic
 //! (`x = sqrt(a/b) sinh t`) substitutions give, by reduction formulas down to
 //! `∫ dx/sqrt(a + b x²)` (`asin` for `b < 0`, a logarithm, the inverse hyperbolic sine or
 //! cosine, for `b > 0`). A quadratic with a linear term is first completed to a square
 //! (`x = t - c1/(2 c2)`). Odd `k` goes by `w = x²` (see `substitution`).
 
 use super::substitution::split_power_of_x;
-use super::{Ctx, Sym, ln_abs, var};
+use super::{Ctx, Sym, integrate, ln_abs, var};
 use crate::ast::Func;
 use crate::number::Number;
 use crate::sym::identities::is_negated;
 use crate::sym::poly::coefficients;
 
-/// Integrands `x^k (a + b x²)^p` with `p` a half-integer, `k` an even integer.
+/// Integrands `x^k (a + b x²)^p` with `p` a half-integer (or a negative integer with
+/// symbolic coefficients), `k` an even integer.
 pub(super) fn quadratic_roots(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     let x = ctx.x.clone();
     let x = x.as_str();
@@ -20,12 +22,18 @@ pub(super) fn quadratic_roots(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         return None;
     };
     let p = e.as_num()?;
-    let (_, q) = p.as_rational()?;
-    if q != 2 || k % 2 != 0 || k.abs() > 12 {
+    let (n, q) = p.as_rational()?;
+    // integer powers: only the negative ones with symbolic coefficients (numeric ones are
+    // partial fractions)
+    let integer_power = q == 1 && n <= -2;
+    if !(q == 2 || integer_power) || k % 2 != 0 || k.abs() > 12 || n.abs() > 24 {
         return None;
     }
     let c = coefficients(base, x)?;
-    if c.len() != 3 || c.iter().any(|s| !s.free_of(x)) {
+    if c.len() != 3
+        || c.iter().any(|s| !s.free_of(x))
+        || (integer_power && c.iter().all(|s| s.as_num().is_some()))
+    {
         return None;
     }
     if !c[1].is_zero() {
@@ -93,6 +101,10 @@ fn reduce(k: i64, p: Number, a: &Sym, b: &Sym, base: &Sym, ctx: &mut Ctx) -> Opt
             ),
             Sym::int(1 - m),
         ));
+    }
+    if p == Number::MINUS_ONE {
+        // ∫ dx/(a + b x²): atan or logarithms (integer powers)
+        return integrate(&Sym::pow(base.clone(), Sym::int(-1)), ctx);
     }
     let half = Number::rational(1, 2);
     if p == half.negated() {
