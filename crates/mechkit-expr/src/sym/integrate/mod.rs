@@ -9,7 +9,11 @@
 //!   substitution (an odd power) and reduction formulas, products of two different
 //!   arguments by the product-to-sum formulas;
 //! - [`roots`]: `x^k (a + b x²)^(n/2)` (what trigonometric and hyperbolic substitution give),
-//!   by reduction to `sqrt`, `asin` and logarithms;
+//!   by reduction to `sqrt`, `asin` and logarithms, and `x^k (a + b x²)^-n` with symbols;
+//! - [`exp_trig`]: products of powers of `sin`/`cos` of different linear arguments, or times
+//!   `exp(a x + b)`, by the product-to-sum formulas;
+//! - [`weierstrass`]: rational functions of `sin x`, `cos x`, `tan x` with a trigonometric
+//!   denominator by `t = tan(x/2)` (or `u = tan x`);
 //! - [`rational`]: rational functions by partial fractions (rational roots with multiplicity,
 //!   powers of irreducible quadratics), `c/(a + b x²)` with symbols;
 //! - [`by_parts`]: integration by parts (a polynomial times an integrable transcendental
@@ -21,12 +25,14 @@
 //! closed form.
 
 mod by_parts;
+mod exp_trig;
 mod partial_fractions;
 mod rational;
 mod roots;
 mod substitution;
 mod table;
 mod trig;
+mod weierstrass;
 
 use super::Sym;
 use crate::ast::Func;
@@ -222,6 +228,9 @@ fn rules(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     if let Some(r) = by_parts::cyclic(f, ctx) {
         return Some(r);
     }
+    if let Some(r) = exp_trig::trig_products(f, ctx) {
+        return Some(r);
+    }
     if let Some(r) = substitution::odd_power_of_x(f, ctx) {
         return Some(r);
     }
@@ -232,6 +241,9 @@ fn rules(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         return Some(r);
     }
     if let Some(r) = substitution::exponential(f, ctx) {
+        return Some(r);
+    }
+    if let Some(r) = weierstrass::weierstrass(f, ctx) {
         return Some(r);
     }
     by_parts::by_parts(f, ctx)

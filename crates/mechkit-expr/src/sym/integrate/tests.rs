@@ -157,3 +157,48 @@ fn non_elementary_integrals_give_up() {
         assert!(FUEL - ctx.fuel < FUEL, "{f} exhausted the budget");
     }
 }
+
+#[test]
+fn weierstrass_and_tangent_substitutions() {
+    assert_eq!(
+        int("1/(2 + cos(x))").unwrap(),
+        "2*atan(tan(x/2)/sqrt(3))/sqrt(3)"
+    );
+    assert_eq!(int("1/(1 + sin(x))").unwrap(), "-2/(tan(x/2) + 1)");
+    let anti = Sym::parse("1/(a + b*cos(x))")
+        .unwrap()
+        .integrate("x")
+        .unwrap();
+    assert_eq!(anti.assumptions, vec!["a + b > 0", "a - b > 0"]);
+    for f in ["1/(5 + 3*sin(x))", "cos(x)/(2 - cos(x))", "1/(3 + tan(x))"] {
+        assert!(int(f).is_some(), "{f}");
+    }
+    // no trigonometric denominator: the substitution is not tried (and not needed)
+    assert!(int("sin(x)^3").is_some());
+}
+
+#[test]
+fn trigonometric_products_are_linearised() {
+    assert_eq!(
+        int("exp(-2*b*x)*cos(w*x)^2").unwrap(),
+        "exp(-2*b*x)*(w*sin(2*w*x)/4 - b*cos(2*w*x)/4)/(b^2 + w^2) - exp(-2*b*x)/(4*b)"
+    );
+    for f in [
+        "sin(x)^2*cos(2*x)",
+        "exp(-g*x)*sin(w*x)^3",
+        "sin(w*x)*cos(w*x)*exp(-b*x)",
+        "x*exp(-x)*cos(x)^2",
+    ] {
+        assert!(int(f).is_some(), "{f}");
+    }
+}
+
+#[test]
+fn symbolic_powers_of_a_quadratic() {
+    assert_eq!(
+        int("1/(x^2 + a^2)^2").unwrap(),
+        "(atan(x/a)/(2*a) + x/(2*(a^2 + x^2)))/a^2"
+    );
+    assert!(int("x^2/(x^2 + a^2)^2").is_some());
+    assert!(int("1/(k - x^2)^3").is_some());
+}
