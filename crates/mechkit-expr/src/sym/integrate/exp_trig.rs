@@ -49,7 +49,7 @@ pub(super) fn trig_products(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     if exp.is_none() && trig.iter().all(|(_, a)| *a == trig[0].1) {
         return None; // one argument: powers and reduction formulas (`trig`)
     }
-    if trig.len() < 2 || !ctx.spend(trig.len()) {
+    if trig.len() < 2 || !ctx.spend(1 << (trig.len() - 1)) {
         return None;
     }
     let sum = Sym::product(vec![exp.unwrap_or_else(Sym::one), linearise(&trig)]).expand();
