@@ -160,9 +160,10 @@ fn non_elementary_integrals_give_up() {
 
 #[test]
 fn weierstrass_and_tangent_substitutions() {
+    // continuous across x = ±π: (x - 2 atan(tan(x/2))) counts the poles of tan(x/2) passed
     assert_eq!(
         int("1/(2 + cos(x))").unwrap(),
-        "2*atan(tan(x/2)/sqrt(3))/sqrt(3)"
+        "2*atan(tan(x/2)/sqrt(3))/sqrt(3) + (x - 2*atan(tan(x/2)))/sqrt(3)"
     );
     assert_eq!(int("1/(1 + sin(x))").unwrap(), "-2/(tan(x/2) + 1)");
     let anti = Sym::parse("1/(a + b*cos(x))")
@@ -172,6 +173,18 @@ fn weierstrass_and_tangent_substitutions() {
     assert_eq!(anti.assumptions, vec!["a + b > 0", "a - b > 0"]);
     for f in ["1/(5 + 3*sin(x))", "cos(x)/(2 - cos(x))", "1/(3 + tan(x))"] {
         assert!(int(f).is_some(), "{f}");
+    }
+    // the antiderivatives are continuous across the poles of tan(x/2) (x = π) and of tan x
+    // (x = π/2, where 1/(3 + tan x) is continuous)
+    for (f, pole) in [
+        ("1/(2 + cos(x))", std::f64::consts::PI),
+        ("1/(5 + 4*sin(x))", std::f64::consts::PI),
+        ("1/(3 + tan(x))", std::f64::consts::FRAC_PI_2),
+    ] {
+        let big_f = Sym::parse(f).unwrap().integrate("x").unwrap().result;
+        let at = |v: f64| big_f.eval(&|n| (n == "x").then_some(v)).unwrap();
+        let (left, right) = (at(pole - 1e-7), at(pole + 1e-7));
+        assert!((left - right).abs() < 1e-6, "{f}: {left} against {right}");
     }
     // no trigonometric denominator: the substitution is not tried (and not needed)
     assert!(int("sin(x)^3").is_some());

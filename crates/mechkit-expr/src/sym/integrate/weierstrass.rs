@@ -14,6 +14,9 @@ use crate::sym::poly::coefficients;
 /// The largest degree in `t` of the denominator given to partial fractions.
 const MAX_DEGREE: usize = 8;
 
+/// The largest power of a sum brought over one denominator.
+const MAX_POWER: i128 = 8;
+
 /// The Weierstrass substitution, for integrands where `x` occurs only in `sin x`, `cos x`,
 /// `tan x` and one of them is in a denominator.
 pub(super) fn weierstrass(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
@@ -33,7 +36,7 @@ pub(super) fn weierstrass(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         let one_plus = Sym::sum(vec![Sym::one(), Sym::pow(tv.clone(), Sym::int(2))]);
         let g = Sym::quotient(g, one_plus);
         let big_g = rational_in(&g, &t, ctx)?;
-        return Some(big_g.substitute(&t, &Sym::call(Func::Tan, vec![var(x)])));
+        return Some(continuous(&big_g, &t, &var(x), ctx));
     }
     let one_plus = Sym::sum(vec![Sym::one(), Sym::pow(tv.clone(), Sym::int(2))]);
     let one_minus = Sym::difference(Sym::one(), Sym::pow(tv.clone(), Sym::int(2)));
@@ -46,7 +49,92 @@ pub(super) fn weierstrass(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     let g = Sym::product(vec![g, Sym::int(2), Sym::pow(one_plus, Sym::int(-1))]);
     let big_g = rational_in(&g, &t, ctx)?;
     let half_x = Sym::product(vec![Sym::rational(1, 2), var(x)]);
-    Some(big_g.substitute(&t, &Sym::call(Func::Tan, vec![half_x])))
+    Some(continuous(&big_g, &t, &half_x, ctx))
+}
+
+/// `G(tan(y))` made continuous across the poles of `tan(y)` (`y = x` or `x/2`): each
+/// `c atan(α t + β)` of `G` jumps by `−c π sign(α)` where `t = tan(y)` passes from `+∞` to
+/// `−∞` (logarithms and rational terms have equal limits at both ends), so
+/// `G(tan y) + J round(y/π)` with `J = Σ c π sign(α)` is continuous (the standard
+/// `∫ dx/(2 + cos x)` over a period). Without a linear `atan` argument, `G(tan y)`.
+fn continuous(big_g: &Sym, t: &str, y: &Sym, ctx: &Ctx) -> Sym {
+    let back = big_g.substitute(t, &Sym::call(Func::Tan, vec![y.clone()]));
+    let Some(jump) = jump(big_g, t, ctx) else {
+        return back;
+    };
+    if jump.is_zero() {
+        return back;
+    }
+    // the number of poles passed, round(y/π), written (y − atan(tan y))/π so that in floating
+    // point it turns exactly where `tan y` changes sign (at an end x = π as well)
+    let turns = Sym::quotient(
+        Sym::difference(
+            y.clone(),
+            Sym::call(Func::Atan, vec![Sym::call(Func::Tan, vec![y.clone()])]),
+        ),
+        Sym::var("pi"),
+    );
+    Sym::sum(vec![back, Sym::product(vec![jump, turns])])
+}
+
+/// `lim G(+∞) − lim G(−∞)` from the `atan` terms of `G` with arguments linear in `t`; `None`
+/// when an `atan` of another argument occurs.
+fn jump(s: &Sym, t: &str, ctx: &Ctx) -> Option<Sym> {
+    if s.free_of(t) {
+        return Some(Sym::zero());
+    }
+    match s {
+        Sym::Add(terms) => Some(Sym::sum(
+            terms
+                .iter()
+                .map(|c| jump(c, t, ctx))
+                .collect::<Option<_>>()?,
+        )),
+        Sym::Mul(fs) => {
+            let (constant, rest): (Vec<Sym>, Vec<Sym>) =
+                fs.iter().cloned().partition(|f| f.free_of(t));
+            match rest.as_slice() {
+                [one] => Some(Sym::product(vec![
+                    Sym::product(constant),
+                    jump(one, t, ctx)?,
+                ])),
+                _ => (!has_atan(s)).then(Sym::zero),
+            }
+        }
+        Sym::Call(Func::Atan, args) => {
+            let c = coefficients(&args[0], t).filter(|c| c.len() == 2 && c[1].free_of(t))?;
+            Some(Sym::product(vec![Sym::var("pi"), sign(&c[1], ctx)]))
+        }
+        _ => (!has_atan(s)).then(Sym::zero),
+    }
+}
+
+/// The sign of `a`: a number, or a product of numbers, square roots and symbols assumed
+/// positive; else `sign(a)`.
+fn sign(a: &Sym, ctx: &Ctx) -> Sym {
+    let mut negative = false;
+    for f in super::factors(a) {
+        match &f {
+            Sym::Num(n) => negative ^= n.is_negative(),
+            Sym::Pow(b, e)
+                if e.as_num()
+                    .and_then(Number::as_rational)
+                    .is_some_and(|(_, q)| q == 2)
+                    || ctx.positive.contains(b) => {}
+            other if ctx.positive.contains(other) => {}
+            _ => return Sym::call(Func::Sign, vec![a.clone()]),
+        }
+    }
+    Sym::int(if negative { -1 } else { 1 })
+}
+
+fn has_atan(s: &Sym) -> bool {
+    match s {
+        Sym::Call(Func::Atan, _) => true,
+        Sym::Call(_, xs) | Sym::Add(xs) | Sym::Mul(xs) => xs.iter().any(has_atan),
+        Sym::Pow(a, b) => has_atan(a) || has_atan(b),
+        _ => false,
+    }
 }
 
 /// `∫ g dt` for a rational function `g` of `t`, brought over one denominator first.
@@ -130,6 +218,9 @@ fn together(s: &Sym, t: &str) -> Option<(Vec<Sym>, Vec<Sym>)> {
                 ])
                 .expand();
                 den.extend(for_sum);
+                if den.len() > MAX_DEGREE {
+                    return None; // a denominator too large for partial fractions
+                }
             }
             Some(cancel(&[num], &den))
         }
@@ -144,7 +235,7 @@ fn together(s: &Sym, t: &str) -> Option<(Vec<Sym>, Vec<Sym>)> {
         }
         Sym::Pow(b, e) => {
             let k = e.as_num()?.as_integer()?;
-            if k.abs() > 16 {
+            if k.abs() > MAX_POWER {
                 return None;
             }
             let (n, d) = together(b, t)?;
