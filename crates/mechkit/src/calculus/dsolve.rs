@@ -119,18 +119,21 @@ pub fn dsolve(
         .iter()
         .map(|(k, v)| (k.clone(), Sym::Num(Number::from_f64(*v))))
         .collect();
-    let ode = ode.with_values(&values);
-    let mut conditions = match ic {
+    let given = match ic {
         Some(t) => Condition::parse_list(t, func).map_err(|e| engine_error(e, text))?,
         None => Vec::new(),
     };
+    let s = ode
+        .solve_with_values(&values, &given)
+        .map_err(|e| engine_error(e, text))?;
+    let ode = ode.with_values(&values);
+    let mut conditions = given;
     for c in &mut conditions {
         for (k, v) in &values {
             c.at = c.at.substitute(k, v);
             c.value = c.value.substitute(k, v);
         }
     }
-    let s = ode.solve(&conditions).map_err(|e| engine_error(e, text))?;
     Ok(OdeSolved {
         equation: ode.display(),
         func: func.to_string(),

@@ -99,8 +99,9 @@ impl Condition {
                 at: read(&inner[..close], "point")?,
                 value: read(value, "value")?,
             };
-            if out.iter().any(|o| o.order == c.order) {
-                return Err(bad("that derivative is given twice"));
+            // the same derivative at two points is a boundary condition (`x(0)=0, x(1)=1`)
+            if out.iter().any(|o| o.order == c.order && o.at == c.at) {
+                return Err(bad("that derivative is given twice at the same point"));
             }
             out.push(c);
         }

@@ -79,16 +79,7 @@ fn exp_of(s: &Sym) -> Sym {
 
 /// `x' = g(t) h(x)`: `∫ dx/h = ∫ g dt + C`, inverted.
 fn separable(f: &Sym, x: &str, t: &str, k: &str) -> Option<General> {
-    let (g, h) = match f {
-        Sym::Mul(fs) => {
-            let (g, h): (Vec<Sym>, Vec<Sym>) = fs.iter().cloned().partition(|s| s.free_of(x));
-            (Sym::product(g), Sym::product(h))
-        }
-        other => (Sym::one(), other.clone()),
-    };
-    if !h.free_of(t) || h.free_of(x) {
-        return None;
-    }
+    let (g, h) = factor_separable(f, x, t)?;
     let big_h = Sym::quotient(Sym::one(), h).integrate(x)?;
     let big_g = g.integrate(t)?;
     let rhs = Sym::sum(vec![big_g.result, Sym::var(k)]);
@@ -104,6 +95,51 @@ fn separable(f: &Sym, x: &str, t: &str, k: &str) -> Option<General> {
         assumptions,
         positive: Vec::new(),
     })
+}
+
+/// `f(t, x) = g(t) h(x)`: the factors of a product sorted, or else the terms of the expanded
+/// sum grouped by their factor in `x` (`t + t x² = t (1 + x²)`), each group's factor in `t`
+/// a multiple of the first group's.
+fn factor_separable(f: &Sym, x: &str, t: &str) -> Option<(Sym, Sym)> {
+    let split = |s: &Sym| -> (Sym, Sym) {
+        match s {
+            Sym::Mul(fs) => {
+                let (g, h): (Vec<Sym>, Vec<Sym>) = fs.iter().cloned().partition(|s| s.free_of(x));
+                (Sym::product(g), Sym::product(h))
+            }
+            other if other.free_of(x) => (other.clone(), Sym::one()),
+            other => (Sym::one(), other.clone()),
+        }
+    };
+    let (g, h) = split(f);
+    if h.free_of(t) {
+        return (!h.free_of(x)).then_some((g, h));
+    }
+    let Sym::Add(terms) = f.expand() else {
+        return None;
+    };
+    let mut groups: Vec<(Sym, Vec<Sym>)> = Vec::new();
+    for term in &terms {
+        let (g, h) = split(term);
+        if !h.free_of(t) {
+            return None;
+        }
+        match groups.iter_mut().find(|(k, _)| *k == h) {
+            Some((_, gs)) => gs.push(g),
+            None => groups.push((h, vec![g])),
+        }
+    }
+    let g = Sym::sum(groups[0].1.clone());
+    let mut h = Vec::new();
+    for (hk, gk) in groups {
+        let ratio = Sym::quotient(Sym::sum(gk), g.clone());
+        if !ratio.free_of(t) {
+            return None;
+        }
+        h.push(Sym::product(vec![ratio, hk]));
+    }
+    let h = Sym::sum(h);
+    (!h.free_of(x)).then_some((g, h))
 }
 
 /// The power of `x` in a term and its coefficient.

@@ -1,9 +1,11 @@
 //! Solving `lhs(x) = rhs` for `x` when `x` occurs once in `lhs`, by peeling off one operation
 //! at a time: sums, products, powers (both roots of an even power), `ln`, `exp` and the
-//! trigonometric functions (principal branches).
+//! trigonometric functions (principal branches); and a quotient of two linear functions,
+//! `(a + b x)/(c + d x) = R`, as `x = (R c - a)/(b - R d)`.
 
 use crate::ast::Func;
 use crate::sym::Sym;
+use crate::sym::poly::coefficients;
 
 /// Peeling depth limit.
 const MAX_DEPTH: usize = 32;
@@ -34,8 +36,10 @@ fn peel(lhs: &Sym, x: &str, rhs: Sym, constant: Option<&str>, depth: usize) -> V
             let (with, without): (Vec<Sym>, Vec<Sym>) =
                 factors.iter().cloned().partition(|t| !t.free_of(x));
             match with.as_slice() {
-                [one] => next(one, Sym::quotient(rhs, Sym::product(without))),
-                _ => Vec::new(),
+                [one] => next(one, divided(&rhs, Sym::product(without), constant)),
+                _ => linear_fraction(&with, x, &Sym::quotient(rhs, Sym::product(without)))
+                    .into_iter()
+                    .collect(),
             }
         }
         Sym::Pow(b, e) if e.free_of(x) => {
@@ -98,4 +102,39 @@ fn peel(lhs: &Sym, x: &str, rhs: Sym, constant: Option<&str>, depth: usize) -> V
         }
         _ => Vec::new(),
     }
+}
+
+/// `(R + C)/p`, written `R/p + C` when `C` is the arbitrary constant (`C/p` is one as well),
+/// so that a logarithm peeled next still sees `+ C`.
+fn divided(rhs: &Sym, p: Sym, constant: Option<&str>) -> Sym {
+    match constant {
+        Some(c) if rhs.diff(c).is_one() && p.free_of(c) => Sym::sum(vec![
+            Sym::quotient(rhs.substitute(c, &Sym::zero()), p),
+            Sym::var(c),
+        ]),
+        _ => Sym::quotient(rhs.clone(), p),
+    }
+}
+
+/// `x` with `Π factors = rhs` when the factors are `(a + b x)` and `(c + d x)^-1` (a Möbius
+/// transformation, what `ln|(a + b x)/(c + d x)|` leaves once the logarithm is peeled).
+fn linear_fraction(factors: &[Sym], x: &str, rhs: &Sym) -> Option<Sym> {
+    let (mut num, mut den) = (Vec::new(), Vec::new());
+    for f in factors {
+        match f {
+            Sym::Pow(b, e) if e.as_num().is_some_and(|n| n == crate::number::Number::int(-1)) => {
+                den.push((**b).clone());
+            }
+            other => num.push(other.clone()),
+        }
+    }
+    let linear = |s: Vec<Sym>| {
+        let c = coefficients(&Sym::product(s), x)?;
+        (c.len() <= 2 && c.iter().all(|k| k.free_of(x)))
+            .then(|| (c[0].clone(), c.get(1).cloned().unwrap_or_else(Sym::zero)))
+    };
+    let ((a, b), (c, d)) = (linear(num)?, linear(den)?);
+    let top = Sym::difference(Sym::product(vec![rhs.clone(), c]), a);
+    let bottom = Sym::difference(b, Sym::product(vec![rhs.clone(), d]));
+    (!bottom.is_zero()).then(|| Sym::quotient(top, bottom))
 }

@@ -29,6 +29,7 @@ mod forcing;
 mod invert;
 mod parse;
 mod solve;
+mod values;
 mod verify;
 
 pub use conditions::Condition;

@@ -160,3 +160,23 @@ fn show() {
         }
     }
 }
+
+#[test]
+fn boundary_values_and_sums_that_factor() {
+    agrees(&solve("x'' + x = 0", "x(0)=0, x(pi/2)=1").solution, "sin(t)", &[]);
+    assert!(
+        Condition::parse_list("x(0)=0, x(0)=1", "x").is_err(),
+        "the same point twice"
+    );
+    agrees(
+        &solve("x' = t*(1 + x^2)", "x(0)=1").solution,
+        "tan(t^2/2 + pi/4)",
+        &[],
+    );
+    // ∫ dv/(g - k v²) is a logarithm of a quotient: inverted as a Möbius transformation
+    agrees(
+        &solve("x' = g - k*x^2", "x(0)=0").solution,
+        "sqrt(g/k)*tanh(sqrt(g*k)*t)",
+        &[("g", 9.81), ("k", 0.3)],
+    );
+}
