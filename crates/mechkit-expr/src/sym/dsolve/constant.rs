@@ -2,6 +2,7 @@
 //! homogeneous solution from the roots of the characteristic polynomial, a particular one by
 //! undetermined coefficients or variation of parameters.
 
+use super::characteristic::higher_basis;
 use super::forcing::undetermined;
 use super::parse::{Ode, derivative_name};
 use super::solve::General;
@@ -11,24 +12,22 @@ use crate::sym::Sym;
 use crate::sym::identities::is_negated;
 
 /// The homogeneous solutions and what they assumed.
-struct Basis {
-    functions: Vec<Sym>,
-    case: String,
-    assumptions: Vec<String>,
-    positive: Vec<Sym>,
+pub(super) struct Basis {
+    pub functions: Vec<Sym>,
+    pub case: String,
+    pub assumptions: Vec<String>,
+    pub positive: Vec<Sym>,
 }
 
-/// The general solution when the equation is linear with coefficients free of `t`; `None`
-/// otherwise (or, at order 1, when the forcing is not of the undetermined-coefficients kind:
-/// the integrating factor takes it then).
-pub(super) fn solve(ode: &Ode, constants: &[&str]) -> Option<General> {
-    let t = ode.var.as_str();
+/// The coefficients `a_k` of a linear equation `Σ a_k x^(k) = g` (any functions of `t`),
+/// and `g`; `None` when it is not linear or has no highest derivative.
+pub(super) fn linear_parts(ode: &Ode) -> Option<(Vec<Sym>, Sym)> {
     let names: Vec<String> = (0..=ode.order)
         .map(|k| derivative_name(&ode.func, k))
         .collect();
     let a: Vec<Sym> = names.iter().map(|n| ode.residual.diff(n)).collect();
     if a.iter()
-        .any(|ak| !ak.free_of(t) || names.iter().any(|n| !ak.free_of(n)))
+        .any(|ak| names.iter().any(|n| !ak.free_of(n)))
         || a[ode.order].is_zero()
     {
         return None;
@@ -42,10 +41,28 @@ pub(super) fn solve(ode: &Ode, constants: &[&str]) -> Option<General> {
     for (ak, n) in a.iter().zip(&names) {
         check.push(Sym::negate(Sym::product(vec![ak.clone(), Sym::var(n)])));
     }
-    if !Sym::sum(check).expand().is_zero() {
+    Sym::sum(check).expand().is_zero().then_some((a, g))
+}
+
+/// The general solution when the equation is linear with coefficients free of `t`; `None`
+/// otherwise (or, at order 1, when the forcing is not of the undetermined-coefficients kind:
+/// the integrating factor takes it then).
+pub(super) fn solve(ode: &Ode, constants: &[&str]) -> Option<General> {
+    let t = ode.var.as_str();
+    let (a, g) = linear_parts(ode)?;
+    if a.iter().any(|ak| !ak.free_of(t)) {
         return None;
     }
-    let basis = basis(&a, t);
+    let basis = if a.len() > 3 {
+        Basis {
+            functions: higher_basis(&a, t)?,
+            case: ", characteristic roots".into(),
+            assumptions: Vec::new(),
+            positive: Vec::new(),
+        }
+    } else {
+        basis(&a, t)
+    };
     let mut method = format!("constant coefficients{}", basis.case);
     let particular = if g.is_zero() {
         Sym::zero()
@@ -92,7 +109,7 @@ fn oscillating(alpha: &Sym, beta: &Sym, t: &str) -> Vec<Sym> {
 
 /// The homogeneous solutions: the case is decided by the discriminant when it is a number,
 /// else assumed (and recorded).
-fn basis(a: &[Sym], t: &str) -> Basis {
+pub(super) fn basis(a: &[Sym], t: &str) -> Basis {
     let plain = |functions: Vec<Sym>, case: &str| Basis {
         functions,
         case: case.into(),
@@ -218,7 +235,7 @@ fn basis(a: &[Sym], t: &str) -> Basis {
 }
 
 /// `y_p = -y1 ∫ y2 g/(a2 W) + y2 ∫ y1 g/(a2 W)`, `W = y1 y2' - y2 y1'`.
-fn variation(a2: &Sym, y: &[Sym], g: &Sym, t: &str) -> Option<Sym> {
+pub(super) fn variation(a2: &Sym, y: &[Sym], g: &Sym, t: &str) -> Option<Sym> {
     let (y1, y2) = (&y[0], &y[1]);
     let w = Sym::difference(
         Sym::product(vec![y1.clone(), y2.diff(t)]),

@@ -54,7 +54,7 @@ pub(super) fn integrating_factor(p: &Sym, q: &Sym, t: &str, k: &str) -> Option<(
 
 /// `e^s` with the logarithms in `s` taken out: `e^{2 ln|t| + t} = t^2 e^t` (an integrating
 /// factor's sign does not matter, so `|t|` is `t`).
-fn exp_of(s: &Sym) -> Sym {
+pub(super) fn exp_of(s: &Sym) -> Sym {
     let terms = match s {
         Sym::Add(ts) => ts.clone(),
         other => vec![other.clone()],

@@ -240,38 +240,42 @@ fn parts(term: &Sym, t: &str) -> Option<Parts> {
     Some((Sym::product(coef), k, Sym::sum(a), b, trig))
 }
 
-/// How often `a + ib` is a root of `Σ a_k r^k`.
+/// How often `a + ib` is a root of `Σ c_k r^k`: how many of the polynomial and its
+/// derivatives vanish there, real and imaginary parts (`(a + ib)^j` expanded by repeated
+/// multiplication), each simplified to 0.
 fn multiplicity(c: &[Sym], a: &Sym, b: &Sym) -> usize {
-    let zero = |s: Sym| s.expand().is_zero();
-    let sq = |s: &Sym| Sym::pow(s.clone(), Sym::int(2));
-    if c.len() == 2 {
-        return usize::from(
-            b.is_zero()
-                && zero(Sym::sum(vec![
-                    c[0].clone(),
-                    Sym::product(vec![c[1].clone(), a.clone()]),
-                ])),
-        );
+    let zero = |s: Vec<Sym>| Sym::sum(s).expand().is_zero();
+    // powers[j] = (Re, Im) of (a + ib)^j
+    let mut powers = vec![(Sym::one(), Sym::zero())];
+    for _ in 1..c.len() {
+        let (re, im) = powers.last().expect("one power").clone();
+        powers.push((
+            Sym::difference(
+                Sym::product(vec![re.clone(), a.clone()]),
+                Sym::product(vec![im.clone(), b.clone()]),
+            ),
+            Sym::sum(vec![
+                Sym::product(vec![re, b.clone()]),
+                Sym::product(vec![im, a.clone()]),
+            ]),
+        ));
     }
-    let d1 = Sym::sum(vec![
-        Sym::product(vec![Sym::int(2), c[2].clone(), a.clone()]),
-        c[1].clone(),
-    ]);
-    let re = Sym::sum(vec![
-        Sym::product(vec![c[2].clone(), Sym::difference(sq(a), sq(b))]),
-        Sym::product(vec![c[1].clone(), a.clone()]),
-        c[0].clone(),
-    ]);
-    // a real root is double when the derivative vanishes too; a complex one needs the
-    // imaginary part, b (2 a2 a + a1), to vanish to be a root at all
-    let (root, d1_zero) = (zero(re), zero(d1));
-    if !root || (!b.is_zero() && !d1_zero) {
-        0
-    } else if b.is_zero() && d1_zero {
-        2
-    } else {
-        1
+    let mut s = 0;
+    while s + 1 < c.len() {
+        // the s-th derivative: Σ_k c_k k!/(k-s)! r^(k-s)
+        let (mut re, mut im) = (Vec::new(), Vec::new());
+        for (k, ck) in c.iter().enumerate().skip(s) {
+            let falling: i64 = ((k - s + 1)..=k).map(|i| i as i64).product();
+            let coef = Sym::product(vec![Sym::int(falling), ck.clone()]);
+            re.push(Sym::product(vec![coef.clone(), powers[k - s].0.clone()]));
+            im.push(Sym::product(vec![coef, powers[k - s].1.clone()]));
+        }
+        if !(zero(re) && zero(im)) {
+            break;
+        }
+        s += 1;
     }
+    s
 }
 
 /// The particular solution for one group: the trial, its coefficients matched.

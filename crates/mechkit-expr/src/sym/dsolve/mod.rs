@@ -22,8 +22,10 @@
 //! or else vanish numerically at many points (relative 1e-8); the initial conditions are
 //! checked the same way. A solution that fails is never returned.
 
+mod characteristic;
 mod conditions;
 mod constant;
+mod euler;
 mod first_order;
 mod forcing;
 mod invert;

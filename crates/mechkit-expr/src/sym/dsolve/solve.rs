@@ -6,7 +6,7 @@ use thiserror::Error;
 use super::conditions::Condition;
 use super::parse::Ode;
 use super::verify::verify;
-use super::{constant, first_order, invert};
+use super::{constant, euler, first_order, invert};
 use crate::ExprError;
 use crate::sym::{Sym, solve_linear};
 
@@ -128,13 +128,8 @@ impl Ode {
             equation: self.display(),
             reason,
         };
-        if self.order > 2 {
-            return Err(no_method(format!(
-                "it is of order {}; the methods here are for orders 1 and 2",
-                self.order
-            )));
-        }
         let general = constant::solve(self, &names)
+            .or_else(|| euler::solve(self, &names))
             .or_else(|| {
                 (self.order == 1)
                     .then(|| first_order::solve(self, &names))
@@ -144,8 +139,17 @@ impl Ode {
                 no_method(if self.order == 1 {
                     "it is neither linear, separable (with an invertible integral) nor Bernoulli"
                         .into()
+                } else if self.order == 2 {
+                    "only linear equations with constant coefficients (or of Euler–Cauchy form, \
+                     t^2 x'' + a t x' + b x) are solved at order 2"
+                        .into()
                 } else {
-                    "only linear equations with constant coefficients are solved at order 2".into()
+                    format!(
+                        "at order {} only linear equations with constant numeric coefficients \
+                         are solved, when the characteristic polynomial's roots have a closed \
+                         form here",
+                        self.order
+                    )
                 })
             })?;
         for candidate in &general.candidates {

@@ -180,3 +180,52 @@ fn boundary_values_and_sums_that_factor() {
         &[("g", 9.81), ("k", 0.3)],
     );
 }
+
+#[test]
+fn higher_order_and_euler_cauchy() {
+    // roots 0, ±i
+    agrees(
+        &solve("x''' + x' = 0", "x(0)=1, x'(0)=0, x''(0)=1").solution,
+        "2 - cos(t)",
+        &[],
+    );
+    // 1 and -1/2 ± i sqrt(3)/2
+    agrees(
+        &solve("x''' - x = 0", "x(0)=1, x'(0)=0, x''(0)=0").solution,
+        "exp(t)/3 + 2*exp(-t/2)*cos(sqrt(3)*t/2)/3",
+        &[],
+    );
+    // ±1, ±i; then ±1 ± i (a biquadratic with complex r²); then (r² + 1)²
+    agrees(
+        &solve("x'''' - x = 0", "x(0)=1, x'(0)=0, x''(0)=0, x'''(0)=0").solution,
+        "(cos(t) + cosh(t))/2",
+        &[],
+    );
+    agrees(
+        &solve("x'''' + 4*x = 0", "x(0)=1, x'(0)=0, x''(0)=0, x'''(0)=0").solution,
+        "cos(t)*cosh(t)",
+        &[],
+    );
+    let s = solve("x'''' + 2*x'' + x = 0", "x(0)=0, x'(0)=0, x''(0)=0, x'''(0)=2");
+    agrees(&s.solution, "sin(t) - t*cos(t)", &[]);
+    // resonance at order 3: r = 0 is a root, the constant forcing needs t
+    agrees(
+        &solve("x''' + x' = 1", "x(0)=0, x'(0)=0, x''(0)=0").solution,
+        "t - sin(t)",
+        &[],
+    );
+    let s = solve("t^2*x'' + t*x' - x = 0", "x(1)=1, x'(1)=0");
+    assert!(s.method.starts_with("Euler–Cauchy"), "{}", s.method);
+    agrees(&s.solution, "(t + 1/t)/2", &[]);
+    // complex roots 0 ± i: cos(ln t), sin(ln t), checked at t > 0
+    let s = solve("t^2*x'' + t*x' + x = 0", "x(1)=1, x'(1)=0").solution;
+    let v = s.eval(&|n| (n == "t").then_some(2.0)).unwrap();
+    assert!((v - 2f64.ln().cos()).abs() < 1e-12, "{s}");
+    // a forcing, by variation of parameters
+    let s = solve("t^2*x'' - 2*x = t^2", "x(1)=0, x'(1)=0").solution;
+    let exact = |t: f64| t * t * t.ln() / 3.0 - t * t / 9.0 + 1.0 / (9.0 * t);
+    for tv in [1.5, 2.0, 3.0] {
+        let v = s.eval(&|n| (n == "t").then_some(tv)).unwrap();
+        assert!((v - exact(tv)).abs() < 1e-10, "{s} at {tv}");
+    }
+}
