@@ -154,7 +154,9 @@ impl Ode {
             })?;
         for candidate in &general.candidates {
             for (solution, determined) in apply(self, candidate, &names, conditions) {
-                if let Some(verification) = verify(self, &solution, conditions, &general.positive) {
+                if let Some((verification, note)) =
+                    verify(self, &solution, conditions, &general.positive)
+                {
                     let constants = names
                         .iter()
                         .filter(|c| !solution.free_of(c))
@@ -165,7 +167,7 @@ impl Ode {
                         method: general.method.clone(),
                         constants,
                         determined,
-                        assumptions: general.assumptions.clone(),
+                        assumptions: general.assumptions.iter().cloned().chain(note).collect(),
                         verification,
                     });
                 }

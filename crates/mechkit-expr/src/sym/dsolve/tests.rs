@@ -229,3 +229,22 @@ fn higher_order_and_euler_cauchy() {
         assert!((v - exact(tv)).abs() < 1e-10, "{s} at {tv}");
     }
 }
+
+#[test]
+fn a_solution_on_an_interval_is_checked_around_its_point() {
+    // x' = 2 sqrt(x), x(0) = 1: (t + 1)^2 holds for t ≥ -1 only
+    let s = solve("x' = 2*sqrt(x)", "x(0)=1");
+    agrees(&s.solution, "(t + 1)^2", &[]);
+    assert!(
+        s.assumptions.iter().any(|a| a.contains("near t = 0")),
+        "{:?}",
+        s.assumptions
+    );
+    // the other branch, (t - 1)^2, meets x(0) = 1 but solves the equation only for t ≥ 1
+    let ode = Ode::parse("x' = 2*sqrt(x)", "x", "t").unwrap();
+    let c = Condition::parse_list("x(0)=1", "x").unwrap();
+    let wrong = Sym::parse("(t - 1)^2").unwrap();
+    assert!(super::verify::verify(&ode, &wrong, &c, &[]).is_none());
+    // without a condition there is no point to check around
+    assert!(super::verify::verify(&ode, &wrong, &[], &[]).is_none());
+}

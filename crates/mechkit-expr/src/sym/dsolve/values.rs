@@ -53,7 +53,8 @@ impl Ode {
             return first;
         };
         let solution = put_in(&symbolic.solution, values);
-        let Some(verification) = verify(&valued, &solution, &valued_conditions, &[]) else {
+        let Some((verification, note)) = verify(&valued, &solution, &valued_conditions, &[])
+        else {
             return first;
         };
         let given: Vec<&str> = values.iter().map(|(k, _)| k.as_str()).collect();
@@ -70,7 +71,7 @@ impl Ode {
                 .into_iter()
                 .map(|(c, v)| (c, put_in(&v, values)))
                 .collect(),
-            assumptions: symbolic.assumptions,
+            assumptions: symbolic.assumptions.into_iter().chain(note).collect(),
             verification,
         })
     }

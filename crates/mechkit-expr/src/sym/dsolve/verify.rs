@@ -1,5 +1,6 @@
 //! Substituting a solution back: the residual must simplify to 0, or vanish numerically at
-//! many points where the assumptions hold.
+//! many points where the assumptions hold; a solution that holds only on an interval (a
+//! square root's branch) is checked on the stretch around the conditions' point instead.
 
 use super::conditions::Condition;
 use super::parse::Ode;
@@ -11,14 +12,20 @@ const TRIALS: u32 = 60;
 const NEEDED: usize = 8;
 /// Relative tolerance of the numerical check.
 const RTOL: f64 = 1e-8;
+/// The local check: steps from the conditions' point, their number each side, and the draws
+/// of the other names.
+const LOCAL_STEP: f64 = 0.05;
+const LOCAL_STEPS: u32 = 40;
+const LOCAL_DRAWS: u32 = 4;
 
-/// How `solution` was verified to solve `ode` with `conditions`; `None` if it does not.
+/// How `solution` was verified to solve `ode` with `conditions`, and where, when it holds
+/// only near the conditions' point (`t from -0.95 to 2`); `None` if it does not.
 pub(super) fn verify(
     ode: &Ode,
     solution: &Sym,
     conditions: &[Condition],
     positive: &[Sym],
-) -> Option<Verification> {
+) -> Option<(Verification, Option<String>)> {
     let residual = ode.residual_of(solution);
     let at = |c: &Condition| {
         let mut d = solution.clone();
@@ -36,7 +43,7 @@ pub(super) fn verify(
             .iter()
             .all(|(a, v)| Sym::difference(a.clone(), v.clone()).expand().is_zero())
     {
-        return Some(Verification::Symbolic);
+        return Some((Verification::Symbolic, None));
     }
     // the scale of the residual: its terms before they cancel
     let terms: Vec<Sym> = match &ode.residual {
@@ -95,25 +102,112 @@ pub(super) fn verify(
             continue;
         }
         if r.abs() > RTOL * scale.max(1e-300) && r != 0.0 {
-            return None;
+            return local(ode, &residual, &terms, &conds, conditions, &names, positive);
         }
-        for (a, v) in &conds {
-            // the scale of the condition: the terms of the solution's value there
-            let scale = match a {
-                Sym::Add(ts) => ts
-                    .iter()
-                    .map(|t| t.eval(&base).map_or(f64::NAN, f64::abs))
-                    .sum(),
-                other => other.eval(&base).map_or(f64::NAN, f64::abs),
-            };
-            let (a, v) = (a.eval(&base).ok()?, v.eval(&base).ok()?);
-            if !(a - v).is_finite() || (a - v).abs() > RTOL * scale.max(v.abs()).max(1e-300) {
-                return None;
-            }
+        if !conditions_hold(&conds, &base) {
+            return None;
         }
         agree += 1;
     }
-    (agree >= NEEDED).then_some(Verification::Numeric { points: agree })
+    (agree >= NEEDED).then_some((Verification::Numeric { points: agree }, None))
+}
+
+/// Whether each condition's value matches (relative 1e-8 of the terms of the solution there).
+fn conditions_hold(conds: &[(Sym, Sym)], base: &dyn Fn(&str) -> Option<f64>) -> bool {
+    conds.iter().all(|(a, v)| {
+        let scale = match a {
+            Sym::Add(ts) => ts
+                .iter()
+                .map(|t| t.eval(base).map_or(f64::NAN, f64::abs))
+                .sum(),
+            other => other.eval(base).map_or(f64::NAN, f64::abs),
+        };
+        match (a.eval(base), v.eval(base)) {
+            (Ok(a), Ok(v)) => {
+                (a - v).is_finite() && (a - v).abs() <= RTOL * scale.max(v.abs()).max(1e-300)
+            }
+            _ => false,
+        }
+    })
+}
+
+/// The check near the conditions' point `t0`, for a solution that holds only on an interval
+/// (`(t + 1)^2` solves `x' = 2 sqrt(x)` for `t ≥ -1`): from `t0` outwards in steps of
+/// `LOCAL_STEP`, each side up to the first point where the residual does not vanish; `t0`
+/// itself and every condition's point must be inside, with at least `NEEDED` points, for each
+/// of a few draws of the other names.
+fn local(
+    ode: &Ode,
+    residual: &Sym,
+    terms: &[Sym],
+    conds: &[(Sym, Sym)],
+    conditions: &[Condition],
+    names: &[String],
+    positive: &[Sym],
+) -> Option<(Verification, Option<String>)> {
+    let mut points = 0;
+    let mut span = (f64::INFINITY, f64::NEG_INFINITY);
+    for draw in 0..LOCAL_DRAWS {
+        let vals: Vec<(&str, f64)> = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| {
+                let v = 0.6 + 1.3 * frac(0.37 * f64::from(draw) + 0.61 * i as f64 + 0.13);
+                (n.as_str(), v)
+            })
+            .collect();
+        let base = |n: &str| vals.iter().find(|(m, _)| *m == n).map(|(_, v)| *v);
+        if positive
+            .iter()
+            .any(|p| p.eval(&base).is_ok_and(|v| v.is_nan() || v <= 0.0))
+            || !conditions_hold(conds, &base)
+        {
+            return None;
+        }
+        let at: Vec<f64> = conditions
+            .iter()
+            .map(|c| c.at.eval(&base).ok().filter(|v| v.is_finite()))
+            .collect::<Option<_>>()?;
+        let t0 = *at.first()?;
+        let holds = |tv: f64| {
+            let env = |n: &str| if n == ode.var { Some(tv) } else { base(n) };
+            let scale: f64 = terms
+                .iter()
+                .map(|t| t.eval(&env).map_or(f64::NAN, f64::abs))
+                .sum();
+            residual
+                .eval(&env)
+                .is_ok_and(|r| r.is_finite() && scale.is_finite() && r.abs() <= RTOL * scale.max(1e-300))
+        };
+        if !holds(t0) {
+            return None;
+        }
+        let mut ends = [t0, t0];
+        let mut count = 1;
+        for (side, dir) in [(0, -1.0), (1, 1.0)] {
+            for j in 1..=LOCAL_STEPS {
+                let tv = t0 + dir * LOCAL_STEP * f64::from(j);
+                if !holds(tv) {
+                    break;
+                }
+                ends[side] = tv;
+                count += 1;
+            }
+        }
+        if count < NEEDED || at.iter().any(|&a| a < ends[0] || a > ends[1]) {
+            return None;
+        }
+        points += count;
+        span = (span.0.min(ends[0]), span.1.max(ends[1]));
+    }
+    let note = format!(
+        "it holds near {} = {}, on [{}, {}] where checked",
+        ode.var,
+        conditions[0].at,
+        (span.0 * 100.0).round() / 100.0,
+        (span.1 * 100.0).round() / 100.0
+    );
+    Some((Verification::Numeric { points }, Some(note)))
 }
 
 fn frac(v: f64) -> f64 {
