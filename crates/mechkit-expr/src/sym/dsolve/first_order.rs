@@ -97,19 +97,32 @@ fn separable(f: &Sym, x: &str, t: &str, k: &str) -> Option<General> {
     })
 }
 
-/// `f(t, x) = g(t) h(x)`: the factors of a product sorted, or else the terms of the expanded
+/// `f(t, x) = g(t) h(x)`: the factors of a product sorted (an exponential of a sum split,
+/// `e^{t - x} = e^t e^{-x}`), or else the terms of the expanded
 /// sum grouped by their factor in `x` (`t + t x² = t (1 + x²)`), each group's factor in `t`
 /// a multiple of the first group's.
 fn factor_separable(f: &Sym, x: &str, t: &str) -> Option<(Sym, Sym)> {
     let split = |s: &Sym| -> (Sym, Sym) {
-        match s {
-            Sym::Mul(fs) => {
-                let (g, h): (Vec<Sym>, Vec<Sym>) = fs.iter().cloned().partition(|s| s.free_of(x));
-                (Sym::product(g), Sym::product(h))
+        let factors = match s {
+            Sym::Mul(fs) => fs.clone(),
+            other => vec![other.clone()],
+        };
+        let (mut g, mut h) = (Vec::new(), Vec::new());
+        for f in factors {
+            match &f {
+                _ if f.free_of(x) => g.push(f),
+                // e^{a(t) + b(x)} = e^{a(t)} e^{b(x)}
+                Sym::Call(Func::Exp, u) if matches!(&u[0], Sym::Add(_)) => {
+                    let Sym::Add(ts) = &u[0] else { unreachable!() };
+                    let (a, b): (Vec<Sym>, Vec<Sym>) =
+                        ts.iter().cloned().partition(|s| s.free_of(x));
+                    g.push(Sym::call(Func::Exp, vec![Sym::sum(a)]));
+                    h.push(Sym::call(Func::Exp, vec![Sym::sum(b)]));
+                }
+                _ => h.push(f),
             }
-            other if other.free_of(x) => (other.clone(), Sym::one()),
-            other => (Sym::one(), other.clone()),
         }
+        (Sym::product(g), Sym::product(h))
     };
     let (g, h) = split(f);
     if h.free_of(t) {

@@ -1,10 +1,12 @@
 //! Solving `lhs(x) = rhs` for `x` when `x` occurs once in `lhs`, by peeling off one operation
 //! at a time: sums, products, powers (both roots of an even power), `ln`, `exp` and the
-//! trigonometric functions (principal branches); and a quotient of two linear functions,
+//! trigonometric functions (principal branches); logarithms of the same size combined into
+//! one; and a quotient of two linear functions,
 //! `(a + b x)/(c + d x) = R`, as `x = (R c - a)/(b - R d)`.
 
 use crate::ast::Func;
 use crate::sym::Sym;
+use crate::sym::build::split_coefficient;
 use crate::sym::poly::coefficients;
 
 /// Peeling depth limit.
@@ -27,9 +29,14 @@ fn peel(lhs: &Sym, x: &str, rhs: Sym, constant: Option<&str>, depth: usize) -> V
         Sym::Add(terms) => {
             let (with, without): (Vec<Sym>, Vec<Sym>) =
                 terms.iter().cloned().partition(|t| !t.free_of(x));
+            let rhs = Sym::difference(rhs, Sym::sum(without));
             match with.as_slice() {
-                [one] => next(one, Sym::difference(rhs, Sym::sum(without))),
-                _ => Vec::new(),
+                [one] => next(one, rhs),
+                _ => match one_logarithm(&with) {
+                    // c ln|P| = R + C: P = C e^{R/c}
+                    Some((c, p)) => ln_abs(&p, divided(&rhs, c, constant), x, constant, depth),
+                    None => Vec::new(),
+                },
             }
         }
         Sym::Mul(factors) => {
@@ -67,20 +74,7 @@ fn peel(lhs: &Sym, x: &str, rhs: Sym, constant: Option<&str>, depth: usize) -> V
             match f {
                 Func::Ln => {
                     if let Sym::Call(Func::Abs, inner) = u {
-                        let with_constant = constant
-                            .filter(|c| rhs.diff(c).is_one() && !rhs.free_of(c))
-                            .map(|c| {
-                                Sym::product(vec![
-                                    Sym::var(c),
-                                    Sym::call(Func::Exp, vec![rhs.substitute(c, &Sym::zero())]),
-                                ])
-                            });
-                        if let Some(v) = with_constant {
-                            return next(&inner[0], v);
-                        }
-                        let mut out = next(&inner[0], call(Func::Exp));
-                        out.extend(next(&inner[0], Sym::negate(call(Func::Exp))));
-                        return out;
+                        return ln_abs(&inner[0], rhs, x, constant, depth);
                     }
                     next(u, call(Func::Exp))
                 }
@@ -102,6 +96,51 @@ fn peel(lhs: &Sym, x: &str, rhs: Sym, constant: Option<&str>, depth: usize) -> V
         }
         _ => Vec::new(),
     }
+}
+
+/// `ln|u| = rhs`: `u = C e^R` when `rhs = R + C` (the sign and the size of `e^C` are one
+/// arbitrary constant), else `u = ±e^rhs`.
+fn ln_abs(u: &Sym, rhs: Sym, x: &str, constant: Option<&str>, depth: usize) -> Vec<Sym> {
+    let next = |r: Sym| peel(u, x, r, constant, depth + 1);
+    let with_constant = constant
+        .filter(|c| rhs.diff(c).is_one() && !rhs.free_of(c))
+        .map(|c| {
+            Sym::product(vec![
+                Sym::var(c),
+                Sym::call(Func::Exp, vec![rhs.substitute(c, &Sym::zero())]),
+            ])
+        });
+    if let Some(v) = with_constant {
+        return next(v);
+    }
+    let e = Sym::call(Func::Exp, vec![rhs]);
+    let mut out = next(e.clone());
+    out.extend(next(Sym::negate(e)));
+    out
+}
+
+/// `c ln|u1| - c ln|u2| + …` as `(c, u1/u2 …)`, one logarithm `c ln|u1/u2 …|` (what partial
+/// fractions leave: `∫ dx/(x² - 1) = ln|x - 1|/2 - ln|x + 1|/2`); `None` unless every term
+/// is a logarithm with a coefficient of the same size.
+fn one_logarithm(terms: &[Sym]) -> Option<(Sym, Sym)> {
+    let mut size = None;
+    let mut factors = Vec::new();
+    for term in terms {
+        let (n, Some(Sym::Call(Func::Ln, u))) = split_coefficient(term) else {
+            return None;
+        };
+        let inner = match &u[0] {
+            Sym::Call(Func::Abs, v) => v[0].clone(),
+            other => other.clone(),
+        };
+        let c = if n.is_negative() { n.negated() } else { n };
+        if size.is_some_and(|s| s != c) {
+            return None;
+        }
+        size = Some(c);
+        factors.push(Sym::pow(inner, Sym::int(if n.is_negative() { -1 } else { 1 })));
+    }
+    Some((Sym::Num(size?), Sym::product(factors)))
 }
 
 /// `(R + C)/p`, written `R/p + C` when `C` is the arbitrary constant (`C/p` is one as well),

@@ -248,3 +248,16 @@ fn a_solution_on_an_interval_is_checked_around_its_point() {
     // without a condition there is no point to check around
     assert!(super::verify::verify(&ode, &wrong, &[], &[]).is_none());
 }
+
+#[test]
+fn logarithms_combined_and_exponentials_split() {
+    // ∫ dx/(x² - 1) = ln|x - 1|/2 - ln|x + 1|/2, one logarithm of a Möbius quotient
+    agrees(&solve("x' = x^2 - 1", "x(0)=0").solution, "-tanh(t)", &[]);
+    // e^{t - x} = e^t e^{-x}
+    agrees(&solve("x' = exp(t - x)", "x(0)=0").solution, "t", &[]);
+    agrees(
+        &solve("x' = exp(-t - x)", "x(0)=1").solution,
+        "ln(exp(1) + 1 - exp(-t))",
+        &[],
+    );
+}
