@@ -233,6 +233,9 @@ fn apply(
         (s, vals.to_vec())
     };
     for subset in &subsets {
+        if nearly_singular(&eqs, subset) {
+            continue;
+        }
         if let Ok(values) = solve_linear(&eqs, subset) {
             let vals: Vec<(String, Sym)> = subset
                 .iter()
@@ -252,4 +255,62 @@ fn apply(
         }
     }
     out
+}
+
+/// Whether the conditions, linear in `constants`, leave them undetermined in floating point:
+/// the matrix `∂eq_i/∂C_j`, evaluated with the other names at fixed values, has a determinant
+/// within 1e-10 of the product of its rows' sizes (`x(0)=0, x(pi)=1` for `x'' + x = 0`:
+/// `sin(pi)` is not simplified to 0, and Cramer's rule would divide by it).
+fn nearly_singular(eqs: &[Sym], constants: &[&str]) -> bool {
+    let n = constants.len();
+    if eqs.len() != n {
+        return false;
+    }
+    let value = |s: &Sym| {
+        let names = s.names();
+        s.eval(&|name: &str| {
+            names
+                .iter()
+                .position(|m| m == name)
+                .map(|i| 0.7 + 0.37 * i as f64)
+        })
+        .ok()
+        .filter(|v| v.is_finite())
+    };
+    let mut m = Vec::with_capacity(n);
+    for e in eqs {
+        let row: Option<Vec<f64>> = constants.iter().map(|c| value(&e.diff(c))).collect();
+        let Some(row) = row else { return false };
+        m.push(row);
+    }
+    let scale: f64 = m
+        .iter()
+        .map(|r| r.iter().map(|v| v * v).sum::<f64>().sqrt())
+        .product();
+    if scale == 0.0 {
+        return true;
+    }
+    // Gaussian elimination with partial pivoting
+    let mut det = 1.0;
+    for k in 0..n {
+        let p = (k..n)
+            .max_by(|&i, &j| m[i][k].abs().total_cmp(&m[j][k].abs()))
+            .expect("rows left");
+        if p != k {
+            m.swap(p, k);
+            det = -det;
+        }
+        let pivot = m[k][k];
+        det *= pivot;
+        if pivot == 0.0 {
+            return true;
+        }
+        for i in k + 1..n {
+            let f = m[i][k] / pivot;
+            for j in k..n {
+                m[i][j] -= f * m[k][j];
+            }
+        }
+    }
+    det.abs() <= 1e-10 * scale
 }

@@ -261,3 +261,17 @@ fn logarithms_combined_and_exponentials_split() {
         &[],
     );
 }
+
+#[test]
+fn boundary_values_that_cannot_be_met_are_refused() {
+    // sin(pi) is not simplified to 0: Cramer's rule would divide by it
+    let ode = Ode::parse("x'' + x = 0", "x", "t").unwrap();
+    let c = Condition::parse_list("x(0)=0, x(pi)=1", "x").unwrap();
+    assert!(ode.solve(&c).is_err());
+    let c = Condition::parse_list("x(0)=0, x(pi/2)=1", "x").unwrap();
+    agrees(&ode.solve(&c).unwrap().solution, "sin(t)", &[]);
+    // the irreducible cubic r^3 + r + 1 has no closed form here
+    let ode = Ode::parse("x''' + x' + x = 0", "x", "t").unwrap();
+    let e = ode.solve(&[]).unwrap_err().to_string();
+    assert!(e.contains("at order 3"), "{e}");
+}
