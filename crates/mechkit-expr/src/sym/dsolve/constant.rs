@@ -26,10 +26,7 @@ pub(super) fn linear_parts(ode: &Ode) -> Option<(Vec<Sym>, Sym)> {
         .map(|k| derivative_name(&ode.func, k))
         .collect();
     let a: Vec<Sym> = names.iter().map(|n| ode.residual.diff(n)).collect();
-    if a.iter()
-        .any(|ak| names.iter().any(|n| !ak.free_of(n)))
-        || a[ode.order].is_zero()
-    {
+    if a.iter().any(|ak| names.iter().any(|n| !ak.free_of(n))) || a[ode.order].is_zero() {
         return None;
     }
     let mut g = ode.residual.clone();

@@ -53,10 +53,9 @@ pub(super) fn solve(ode: &Ode, constants: &[&str]) -> Option<General> {
         .map(|f| powers(&f.substitute(S, &ln_t)))
         .collect();
     // the damping words of the constant-coefficient case do not fit: keep the roots
-    let roots = b
-        .case
-        .split_once('(')
-        .map_or(String::new(), |(_, r)| format!(", {}", r.trim_end_matches(')')));
+    let roots = b.case.split_once('(').map_or(String::new(), |(_, r)| {
+        format!(", {}", r.trim_end_matches(')'))
+    });
     let mut method = format!("Euler–Cauchy (t = e^s){roots}");
     let particular = if g.is_zero() {
         Sym::zero()
@@ -74,6 +73,10 @@ pub(super) fn solve(ode: &Ode, constants: &[&str]) -> Option<General> {
         candidates: vec![Sym::sum(terms)],
         method,
         assumptions: [vec![format!("{t} > 0")], b.assumptions].concat(),
-        positive: b.positive.into_iter().map(|p| p.substitute(S, &ln_t)).collect(),
+        positive: b
+            .positive
+            .into_iter()
+            .map(|p| p.substitute(S, &ln_t))
+            .collect(),
     })
 }

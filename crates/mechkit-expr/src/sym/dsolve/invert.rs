@@ -138,7 +138,10 @@ fn one_logarithm(terms: &[Sym]) -> Option<(Sym, Sym)> {
             return None;
         }
         size = Some(c);
-        factors.push(Sym::pow(inner, Sym::int(if n.is_negative() { -1 } else { 1 })));
+        factors.push(Sym::pow(
+            inner,
+            Sym::int(if n.is_negative() { -1 } else { 1 }),
+        ));
     }
     Some((Sym::Num(size?), Sym::product(factors)))
 }
@@ -161,7 +164,10 @@ fn linear_fraction(factors: &[Sym], x: &str, rhs: &Sym) -> Option<Sym> {
     let (mut num, mut den) = (Vec::new(), Vec::new());
     for f in factors {
         match f {
-            Sym::Pow(b, e) if e.as_num().is_some_and(|n| n == crate::number::Number::int(-1)) => {
+            Sym::Pow(b, e)
+                if e.as_num()
+                    .is_some_and(|n| n == crate::number::Number::int(-1)) =>
+            {
                 den.push((**b).clone());
             }
             other => num.push(other.clone()),

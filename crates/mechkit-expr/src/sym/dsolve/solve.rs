@@ -305,10 +305,11 @@ fn nearly_singular(eqs: &[Sym], constants: &[&str]) -> bool {
         if pivot == 0.0 {
             return true;
         }
-        for i in k + 1..n {
-            let f = m[i][k] / pivot;
-            for j in k..n {
-                m[i][j] -= f * m[k][j];
+        let (top, bottom) = m.split_at_mut(k + 1);
+        for row in bottom {
+            let f = row[k] / pivot;
+            for (v, p) in row[k..].iter_mut().zip(&top[k][k..]) {
+                *v -= f * p;
             }
         }
     }

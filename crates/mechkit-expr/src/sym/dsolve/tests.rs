@@ -163,7 +163,11 @@ fn show() {
 
 #[test]
 fn boundary_values_and_sums_that_factor() {
-    agrees(&solve("x'' + x = 0", "x(0)=0, x(pi/2)=1").solution, "sin(t)", &[]);
+    agrees(
+        &solve("x'' + x = 0", "x(0)=0, x(pi/2)=1").solution,
+        "sin(t)",
+        &[],
+    );
     assert!(
         Condition::parse_list("x(0)=0, x(0)=1", "x").is_err(),
         "the same point twice"
@@ -206,7 +210,10 @@ fn higher_order_and_euler_cauchy() {
         "cos(t)*cosh(t)",
         &[],
     );
-    let s = solve("x'''' + 2*x'' + x = 0", "x(0)=0, x'(0)=0, x''(0)=0, x'''(0)=2");
+    let s = solve(
+        "x'''' + 2*x'' + x = 0",
+        "x(0)=0, x'(0)=0, x''(0)=0, x'''(0)=2",
+    );
     agrees(&s.solution, "sin(t) - t*cos(t)", &[]);
     // resonance at order 3: r = 0 is a root, the constant forcing needs t
     agrees(

@@ -53,8 +53,7 @@ impl Ode {
             return first;
         };
         let solution = put_in(&symbolic.solution, values);
-        let Some((verification, note)) = verify(&valued, &solution, &valued_conditions, &[])
-        else {
+        let Some((verification, note)) = verify(&valued, &solution, &valued_conditions, &[]) else {
             return first;
         };
         let given: Vec<&str> = values.iter().map(|(k, _)| k.as_str()).collect();

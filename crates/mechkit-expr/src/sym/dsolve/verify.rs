@@ -175,9 +175,9 @@ fn local(
                 .iter()
                 .map(|t| t.eval(&env).map_or(f64::NAN, f64::abs))
                 .sum();
-            residual
-                .eval(&env)
-                .is_ok_and(|r| r.is_finite() && scale.is_finite() && r.abs() <= RTOL * scale.max(1e-300))
+            residual.eval(&env).is_ok_and(|r| {
+                r.is_finite() && scale.is_finite() && r.abs() <= RTOL * scale.max(1e-300)
+            })
         };
         if !holds(t0) {
             return None;
