@@ -74,14 +74,7 @@ pub(super) fn verify(
     names.retain(|n| *n != ode.var);
     let mut agree = 0;
     for trial in 0..TRIALS {
-        let vals: Vec<(&str, f64)> = names
-            .iter()
-            .enumerate()
-            .map(|(i, n)| {
-                let v = 0.6 + 1.3 * frac(0.37 * f64::from(trial) + 0.61 * i as f64 + 0.13);
-                (n.as_str(), v)
-            })
-            .collect();
+        let vals = draw_values(&names, trial);
         let base = |n: &str| vals.iter().find(|(m, _)| *m == n).map(|(_, v)| *v);
         if positive
             .iter()
@@ -148,14 +141,7 @@ fn local(
     let mut points = 0;
     let mut span = (f64::INFINITY, f64::NEG_INFINITY);
     for draw in 0..LOCAL_DRAWS {
-        let vals: Vec<(&str, f64)> = names
-            .iter()
-            .enumerate()
-            .map(|(i, n)| {
-                let v = 0.6 + 1.3 * frac(0.37 * f64::from(draw) + 0.61 * i as f64 + 0.13);
-                (n.as_str(), v)
-            })
-            .collect();
+        let vals = draw_values(names, draw);
         let base = |n: &str| vals.iter().find(|(m, _)| *m == n).map(|(_, v)| *v);
         if positive
             .iter()
@@ -212,4 +198,17 @@ fn local(
 
 fn frac(v: f64) -> f64 {
     v - v.floor()
+}
+
+/// Values in [0.6, 1.9] for the free names, the `draw`-th of a fixed low-discrepancy
+/// sequence (the same draws for every check).
+fn draw_values(names: &[String], draw: u32) -> Vec<(&str, f64)> {
+    names
+        .iter()
+        .enumerate()
+        .map(|(i, n)| {
+            let v = 0.6 + 1.3 * frac(0.37 * f64::from(draw) + 0.61 * i as f64 + 0.13);
+            (n.as_str(), v)
+        })
+        .collect()
 }
