@@ -76,19 +76,24 @@ pub(super) fn solve(ode: &Ode, constants: &[&str]) -> Option<General> {
     } else {
         return None;
     };
-    let mut terms: Vec<Sym> = basis
-        .functions
+    Some(General {
+        candidates: vec![general(&basis.functions, constants, particular)],
+        method,
+        assumptions: basis.assumptions,
+        positive: basis.positive,
+    })
+}
+
+/// `c₁ y₁ + … + cₙ yₙ + particular`: the general solution of a linear equation from a basis
+/// of its homogeneous solutions and one particular solution.
+pub(super) fn general(functions: &[Sym], constants: &[&str], particular: Sym) -> Sym {
+    let mut terms: Vec<Sym> = functions
         .iter()
         .zip(constants)
         .map(|(y, c)| Sym::product(vec![Sym::var(c), y.clone()]))
         .collect();
     terms.push(particular);
-    Some(General {
-        candidates: vec![Sym::sum(terms)],
-        method,
-        assumptions: basis.assumptions,
-        positive: basis.positive,
-    })
+    Sym::sum(terms)
 }
 
 fn exp_rt(r: &Sym, t: &str) -> Sym {

@@ -3,7 +3,7 @@
 //! `c2 r(r - 1) + c1 r + c0`, so the basis `e^{rs}` of that case becomes `t^r`, `t^r ln t`,
 //! `t^α cos(β ln t)`, `t^α sin(β ln t)` (for `t > 0`); a forcing by variation of parameters.
 
-use super::constant::{basis, linear_parts, variation};
+use super::constant::{basis, general, linear_parts, variation};
 use super::first_order::exp_of;
 use super::parse::Ode;
 use super::solve::General;
@@ -63,14 +63,8 @@ pub(super) fn solve(ode: &Ode, constants: &[&str]) -> Option<General> {
         method.push_str(", variation of parameters");
         variation(&a[2], &functions, &g, t)?
     };
-    let mut terms: Vec<Sym> = functions
-        .iter()
-        .zip(constants)
-        .map(|(y, k)| Sym::product(vec![Sym::var(k), y.clone()]))
-        .collect();
-    terms.push(particular);
     Some(General {
-        candidates: vec![Sym::sum(terms)],
+        candidates: vec![general(&functions, constants, particular)],
         method,
         assumptions: [vec![format!("{t} > 0")], b.assumptions].concat(),
         positive: b

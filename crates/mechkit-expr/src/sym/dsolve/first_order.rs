@@ -103,10 +103,7 @@ fn separable(f: &Sym, x: &str, t: &str, k: &str) -> Option<General> {
 /// a multiple of the first group's.
 fn factor_separable(f: &Sym, x: &str, t: &str) -> Option<(Sym, Sym)> {
     let split = |s: &Sym| -> (Sym, Sym) {
-        let factors = match s {
-            Sym::Mul(fs) => fs.clone(),
-            other => vec![other.clone()],
-        };
+        let factors = crate::sym::integrate::factors(s);
         let (mut g, mut h) = (Vec::new(), Vec::new());
         for f in factors {
             match &f {
@@ -157,10 +154,7 @@ fn factor_separable(f: &Sym, x: &str, t: &str) -> Option<(Sym, Sym)> {
 
 /// The power of `x` in a term and its coefficient.
 fn power_of(term: &Sym, x: &str) -> Option<(Number, Sym)> {
-    let factors = match term {
-        Sym::Mul(fs) => fs.clone(),
-        other => vec![other.clone()],
-    };
+    let factors = crate::sym::integrate::factors(term);
     let mut n = Number::ZERO;
     let mut rest = Vec::new();
     for f in factors {

@@ -148,10 +148,7 @@ fn linear_terms(g: &Sym, t: &str) -> Option<Vec<Sym>> {
 
 /// One product-to-sum step when the term holds two sines/cosines (or a power of one).
 fn product_to_sum(term: &Sym, t: &str) -> Option<Sym> {
-    let factors = match term {
-        Sym::Mul(fs) => fs.clone(),
-        other => vec![other.clone()],
-    };
+    let factors = crate::sym::integrate::factors(term);
     let is_trig = |f: &Sym| matches!(f, Sym::Call(Func::Sin | Func::Cos, a) if !a[0].free_of(t));
     let mut trig = Vec::new();
     let mut rest = Vec::new();
@@ -199,10 +196,7 @@ type Parts = (Sym, usize, Sym, Sym, Option<Func>);
 
 /// `coef t^k e^{a t} trig(b t)` of one term.
 fn parts(term: &Sym, t: &str) -> Option<Parts> {
-    let factors = match term {
-        Sym::Mul(fs) => fs.clone(),
-        other => vec![other.clone()],
-    };
+    let factors = crate::sym::integrate::factors(term);
     let (mut coef, mut k, mut a) = (Vec::new(), 0usize, Vec::new());
     let (mut b, mut trig) = (Sym::zero(), None);
     for f in factors {

@@ -163,7 +163,7 @@ pub(super) fn ln_abs(u: Sym) -> Sym {
 }
 
 /// The factors of a product (the expression itself when it is not one).
-pub(super) fn factors(f: &Sym) -> Vec<Sym> {
+pub(in crate::sym) fn factors(f: &Sym) -> Vec<Sym> {
     match f {
         Sym::Mul(xs) => xs.clone(),
         other => vec![other.clone()],

@@ -12,10 +12,7 @@ use crate::sym::poly::{NumPoly, coefficients};
 /// Numerator and denominator polynomials of a product of polynomial factors and negative
 /// integer powers of polynomials.
 fn as_fraction(f: &Sym, x: &str) -> Option<(Sym, Sym)> {
-    let factors = match f {
-        Sym::Mul(xs) => xs.clone(),
-        other => vec![other.clone()],
-    };
+    let factors = super::factors(f);
     let (mut num, mut den) = (Vec::new(), Vec::new());
     for fac in factors {
         match &fac {
