@@ -78,11 +78,33 @@ def pleiades():
         np.fill_diagonal(w, 0.0)
         return np.concatenate([vx, vy, (w * dx).sum(1), (w * dy).sum(1)])
 
+    def jac(t, y):
+        # d a_i / d r_j = m_j (I - 3 d d^T / r^2) / r^3, and d a_i / d r_i minus their sum
+        x, yy = y[:7], y[7:14]
+        dx = x[None, :] - x[:, None]
+        dy = yy[None, :] - yy[:, None]
+        r2 = dx**2 + dy**2
+        np.fill_diagonal(r2, 1.0)
+        w = m[None, :] / (r2 * np.sqrt(r2))
+        np.fill_diagonal(w, 0.0)
+        kxx = w * (1 - 3 * dx**2 / r2)
+        kxy = -3 * w * dx * dy / r2
+        kyy = w * (1 - 3 * dy**2 / r2)
+        a = np.block([[kxx, kxy], [kxy, kyy]])
+        a -= np.diag(np.concatenate([kxx.sum(1), kyy.sum(1)]))
+        j = np.zeros((28, 28))
+        j[:14, 14:] = np.eye(14)
+        j[14:, :14] = a
+        # the x rows' own y column and the y rows' own x column
+        j[14 + np.arange(7), 7 + np.arange(7)] -= kxy.sum(1)
+        j[21 + np.arange(7), np.arange(7)] -= kxy.sum(1)
+        return j
+
     x0 = [3, 3, -1, -3, 2, -2, 2]
     y0 = [3, -3, 2, 0, 0, -4, 4]
     vx0 = [0, 0, 0, 0, 0, 1.75, -1.5]
     vy0 = [0, 0, 0, -1.25, 1, 0, 0]
-    return f, None, np.array(x0 + y0 + vx0 + vy0, dtype=float)
+    return f, jac, np.array(x0 + y0 + vx0 + vy0, dtype=float)
 
 
 def chain(n=20, k=1e6, c=2e4, pull=1e3):

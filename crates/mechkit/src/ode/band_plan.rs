@@ -13,7 +13,6 @@
 use std::collections::VecDeque;
 
 use super::pattern::JacobianPattern;
-use super::system::OdeSystem;
 
 /// A banded factorisation's plan: the order of the unknowns and the band in that order.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -41,14 +40,6 @@ impl BandPlan {
             .min_by_key(BandPlan::cost)?;
         let dense = (n * n * n) as f64 / 3.0;
         ((best.cost() as f64) < dense).then_some(best)
-    }
-
-    /// The plan for `sys`'s Newton matrices of size `n`, from its
-    /// [`OdeSystem::jacobian_pattern`]; `None` (dense) without one or when dense is cheaper.
-    pub fn for_system<S: OdeSystem + ?Sized>(sys: &S, n: usize) -> Option<BandPlan> {
-        sys.jacobian_pattern()
-            .filter(|p| p.dim() == n)
-            .and_then(|p| BandPlan::choose(&p))
     }
 
     /// Multiply-adds of one factorisation, about.

@@ -26,6 +26,8 @@ pub(crate) struct BandedLu<T> {
     ku: usize,
     a: Vec<T>,
     pivot: Vec<usize>,
+    /// `1 / U_kk`: the solves multiply rather than divide.
+    inv_diag: Vec<T>,
 }
 
 impl<T: Scalar + Default> BandedLu<T> {
@@ -61,6 +63,7 @@ impl<T: Scalar + Default> BandedLu<T> {
         }
         self.pivot.clear();
         self.pivot.resize(n, 0);
+        self.inv_diag.clear();
         for k in 0..n {
             let last = (k + kl).min(n - 1);
             let (mut p, mut best) = (k, self.a[self.at(k, k)].size());
@@ -81,16 +84,20 @@ impl<T: Scalar + Default> BandedLu<T> {
                     self.a.swap(i, j);
                 }
             }
-            let inv = self.a[self.at(k, k)];
+            let inv = self.a[self.at(k, k)].recip();
+            self.inv_diag.push(inv);
+            let len = right - k;
             for r in k + 1..=last {
                 let i = self.at(r, k);
-                let m = self.a[i] / inv;
+                let m = self.a[i] * inv;
                 self.a[i] = m;
                 if m.size() != 0.0 {
+                    // row k's entries right of the diagonal lie before row r's (r > k)
                     let (row_k, row_r) = (self.at(k, k + 1), self.at(r, k + 1));
-                    for d in 0..right - k {
-                        let v = self.a[row_k + d];
-                        self.a[row_r + d] = self.a[row_r + d] - m * v;
+                    let (above, below) = self.a.split_at_mut(row_r);
+                    let source = &above[row_k..row_k + len];
+                    for (x, &v) in below[..len].iter_mut().zip(source) {
+                        *x = *x - m * v;
                     }
                 }
             }
@@ -101,20 +108,28 @@ impl<T: Scalar + Default> BandedLu<T> {
     /// Solves `A x = b` in place.
     pub fn solve(&self, b: &mut [T]) {
         let (n, kl, ku) = (self.n, self.kl, self.ku);
+        if n == 0 {
+            return;
+        }
+        // row r's band, columns r − kl ..= r + kl + ku, is `a[r w .. (r + 1) w]`
+        let (w, a, b) = (self.width(), &self.a[..], &mut b[..n]);
         for k in 0..n {
             b.swap(k, self.pivot[k]);
             let bk = b[k];
-            for r in k + 1..=(k + kl).min(n.saturating_sub(1)) {
-                b[r] = b[r] - self.a[self.at(r, k)] * bk;
+            let last = (k + kl).min(n - 1);
+            // entry (r, k) lies at r w + k − r + kl
+            for (j, r) in (k + 1..=last).enumerate() {
+                b[r] = b[r] - a[r * w + kl - 1 - j] * bk;
             }
         }
         for r in (0..n).rev() {
+            let row = &a[r * w + kl..(r + 1) * w];
+            let m = (kl + ku).min(n - 1 - r);
             let mut s = b[r];
-            let row = self.at(r, r);
-            for c in r + 1..=(r + kl + ku).min(n - 1) {
-                s = s - self.a[row + c - r] * b[c];
+            for (&x, &y) in row[1..=m].iter().zip(&b[r + 1..=r + m]) {
+                s = s - x * y;
             }
-            b[r] = s / self.a[row];
+            b[r] = s * self.inv_diag[r];
         }
     }
 }

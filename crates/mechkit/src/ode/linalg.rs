@@ -21,17 +21,33 @@ pub(crate) trait Scalar:
 {
     /// The size used to choose a pivot (`|x|`, or `|re| + |im|`).
     fn size(self) -> Real;
+    /// `1 / self`.
+    fn recip(self) -> Self;
+    /// `x` as this kind of number.
+    fn from_real(x: Real) -> Self;
 }
 
 impl Scalar for Real {
     fn size(self) -> Real {
         self.abs()
     }
+    fn recip(self) -> Self {
+        1.0 / self
+    }
+    fn from_real(x: Real) -> Self {
+        x
+    }
 }
 
 impl Scalar for Complex<Real> {
     fn size(self) -> Real {
         self.re.abs() + self.im.abs()
+    }
+    fn recip(self) -> Self {
+        self.inv()
+    }
+    fn from_real(x: Real) -> Self {
+        Complex::new(x, 0.0)
     }
 }
 
@@ -47,6 +63,8 @@ pub(crate) struct Lu<T> {
     n: usize,
     a: Vec<T>,
     pivot: Vec<usize>,
+    /// `1 / U_kk`: the solves multiply rather than divide.
+    inv_diag: Vec<T>,
 }
 
 impl<T: Scalar> Lu<T> {
@@ -54,9 +72,12 @@ impl<T: Scalar> Lu<T> {
     pub fn factor(&mut self, n: usize, fill: impl Fn(usize, usize) -> T) -> Result<(), Singular> {
         self.n = n;
         self.a.clear();
-        self.a.extend((0..n * n).map(|k| fill(k / n, k % n)));
+        for r in 0..n {
+            self.a.extend((0..n).map(|c| fill(r, c)));
+        }
         self.pivot.clear();
         self.pivot.resize(n, 0);
+        self.inv_diag.clear();
         let a = &mut self.a;
         for k in 0..n {
             let (mut p, mut best) = (k, a[k * n + k].size());
@@ -75,14 +96,17 @@ impl<T: Scalar> Lu<T> {
                     a.swap(k * n + c, p * n + c);
                 }
             }
-            let inv = a[k * n + k];
-            for r in k + 1..n {
-                let m = a[r * n + k] / inv;
-                a[r * n + k] = m;
+            let inv = a[k * n + k].recip();
+            self.inv_diag.push(inv);
+            // rows below k, each less m times row k right of the diagonal
+            let (above, below) = a.split_at_mut((k + 1) * n);
+            let pivot_row = &above[k * n + k + 1..];
+            for row in below.chunks_exact_mut(n) {
+                let m = row[k] * inv;
+                row[k] = m;
                 if m.size() != 0.0 {
-                    for c in k + 1..n {
-                        let v = a[k * n + c];
-                        a[r * n + c] = a[r * n + c] - m * v;
+                    for (x, &v) in row[k + 1..].iter_mut().zip(pivot_row) {
+                        *x = *x - m * v;
                     }
                 }
             }
@@ -97,18 +121,20 @@ impl<T: Scalar> Lu<T> {
             b.swap(k, self.pivot[k]);
         }
         for r in 1..n {
+            let row = &a[r * n..r * n + r];
             let mut s = b[r];
-            for c in 0..r {
-                s = s - a[r * n + c] * b[c];
+            for (&x, &y) in row.iter().zip(&b[..r]) {
+                s = s - x * y;
             }
             b[r] = s;
         }
         for r in (0..n).rev() {
+            let row = &a[r * n + r..(r + 1) * n];
             let mut s = b[r];
-            for c in r + 1..n {
-                s = s - a[r * n + c] * b[c];
+            for (&x, &y) in row[1..].iter().zip(&b[r + 1..n]) {
+                s = s - x * y;
             }
-            b[r] = s / a[r * n + r];
+            b[r] = s * self.inv_diag[r];
         }
     }
 }

@@ -42,6 +42,7 @@ mod polynomial;
 mod proof;
 mod radau5;
 mod radau_tableau;
+mod reduction;
 pub mod reference;
 mod rk4;
 mod stages;

@@ -78,6 +78,11 @@ impl JacobianPattern {
             .flat_map(|(r, cols)| cols.iter().map(move |&c| (r, c)))
     }
 
+    /// The columns of row `row`'s possibly non-zero entries, sorted.
+    pub(crate) fn row(&self, row: usize) -> &[usize] {
+        &self.rows[row]
+    }
+
     /// The number of possibly non-zero entries.
     pub fn len(&self) -> usize {
         self.rows.iter().map(Vec::len).sum()

@@ -9,7 +9,7 @@
 //! (Hairer & Wanner, *Solving ODEs II*, Sec. IV.8). `T` is built here from the eigenvectors of
 //! `A⁻¹` and checked against its definition in the tests.
 
-use nalgebra::{Complex, Matrix3, Vector3};
+use nalgebra::{Complex, Matrix3};
 
 use crate::Real;
 
@@ -108,9 +108,10 @@ impl RadauTableau {
     }
 
     /// `m · x` for a row-major 3 × 3 matrix.
+    #[inline]
     pub fn apply(m: &[[Real; 3]; 3], x: [Real; 3]) -> [Real; 3] {
-        let x = Vector3::from(x);
-        std::array::from_fn(|r| m[r][0] * x[0] + m[r][1] * x[1] + m[r][2] * x[2])
+        let row = |r: &[Real; 3]| r[0] * x[0] + r[1] * x[1] + r[2] * x[2];
+        [row(&m[0]), row(&m[1]), row(&m[2])]
     }
 }
 

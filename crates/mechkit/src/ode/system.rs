@@ -26,6 +26,16 @@ pub trait OdeSystem {
     fn jacobian_pattern(&self) -> Option<JacobianPattern> {
         None
     }
+
+    /// `Some(dof)` when the state is `[q, v, e]` with `dof` coordinates `q`, their velocities
+    /// `v`, `q' = v` exactly, and no derivative depending on the components `e` after them
+    /// (quantities carried along, like the works of forces); `None`, the default, when it is
+    /// not so structured. The implicit methods then solve their Newton systems in `q` alone
+    /// (`dof` unknowns instead of `2 dof + e`). A wrong answer makes the Newton iterations
+    /// converge slowly or not at all, never the solution wrong.
+    fn second_order_dof(&self) -> Option<usize> {
+        None
+    }
 }
 
 /// A second-order system `q'' = a(t, q, v)` with `v = q'`: what Newton's second law gives.
@@ -100,5 +110,9 @@ impl<T: SecondOrderSystem + ?Sized> OdeSystem for T {
     /// [`JacobianPattern::second_order`] of [`SecondOrderSystem::accel_pattern`].
     fn jacobian_pattern(&self) -> Option<JacobianPattern> {
         self.accel_pattern().map(|p| p.second_order(0))
+    }
+
+    fn second_order_dof(&self) -> Option<usize> {
+        Some(self.dof())
     }
 }

@@ -199,6 +199,42 @@ impl SecondOrderSystem for Pleiades {
     fn velocity_dependent(&self) -> bool {
         false
     }
+    /// `∂aᵢ/∂rⱼ = mⱼ (I − 3 d̂ d̂ᵀ) / r³` for `d = rⱼ − rᵢ`, and `∂aᵢ/∂rᵢ` minus their sum.
+    fn accel_jacobian_into(
+        &self,
+        _t: Real,
+        q: &[Real],
+        _v: &[Real],
+        da_dq: &mut [Real],
+        da_dv: &mut [Real],
+    ) -> bool {
+        da_dq.fill(0.0);
+        da_dv.fill(0.0);
+        let n = 14;
+        for i in 0..7 {
+            for j in (0..7).filter(|&j| j != i) {
+                let (dx, dy) = (q[j] - q[i], q[7 + j] - q[7 + i]);
+                let r2 = dx * dx + dy * dy;
+                let w = (j + 1) as Real / (r2 * r2.sqrt());
+                let (kxx, kxy, kyy) = (
+                    w * (1.0 - 3.0 * dx * dx / r2),
+                    -3.0 * w * dx * dy / r2,
+                    w * (1.0 - 3.0 * dy * dy / r2),
+                );
+                for (row, col, k) in [
+                    (i, j, kxx),
+                    (i, 7 + j, kxy),
+                    (7 + i, j, kxy),
+                    (7 + i, 7 + j, kyy),
+                ] {
+                    da_dq[row * n + col] += k;
+                    // the same pull on rᵢ's own coordinates, the other way
+                    da_dq[row * n + col - j + i] -= k;
+                }
+            }
+        }
+        true
+    }
 }
 
 /// A chain of `n` unit masses joined by stiff damped springs (k, c), the first tied to a wall,

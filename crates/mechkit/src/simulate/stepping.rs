@@ -149,6 +149,11 @@ impl OdeSystem for WorkSystem<'_> {
     fn jacobian_pattern(&self) -> Option<crate::ode::JacobianPattern> {
         crate::ode::SecondOrderSystem::accel_pattern(self.sys).map(|p| p.second_order(self.nf))
     }
+
+    /// `[q, v]` and the works, which no derivative depends on.
+    fn second_order_dof(&self) -> Option<usize> {
+        Some(self.n)
+    }
 }
 
 /// What advances the state: a fixed-step stepper, or the adaptive integrator with its

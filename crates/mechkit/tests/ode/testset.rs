@@ -150,3 +150,67 @@ fn a_chain_of_stiff_springs() {
     let equilibrium: Vec<Real> = (1..=20).map(|i| Real::from(i) * 1e3 / 1e6).collect();
     assert_close(&y[..20], &equilibrium, 1e-8, 1e-12, "chain at rest");
 }
+
+/// `J`'s column `j` by central differences of `f`.
+fn difference_column(sys: &dyn OdeSystem, y: &[Real], j: usize) -> Vec<Real> {
+    let n = y.len();
+    let h = 1e-6 * y[j].abs().max(1e-3);
+    let (mut up, mut down) = (y.to_vec(), y.to_vec());
+    up[j] += h;
+    down[j] -= h;
+    let (mut fu, mut fd) = (vec![0.0; n], vec![0.0; n]);
+    sys.rhs_into(0.0, &up, &mut fu);
+    sys.rhs_into(0.0, &down, &mut fd);
+    fu.iter()
+        .zip(&fd)
+        .map(|(a, b)| (a - b) / (2.0 * h))
+        .collect()
+}
+
+/// Every problem's exact Jacobian against central differences, at its start and at a state
+/// nearby (the comparison the work-precision benchmark relies on: both sides get it).
+#[test]
+fn the_exact_jacobians_match_central_differences() {
+    let chain = SpringChain {
+        n: 4,
+        k: 1e6,
+        c: 2e4,
+        pull: 1e3,
+    };
+    let robertson = [1.0, 3e-5, 0.2];
+    let hires = [1.0, 0.1, 0.2, 0.3, 0.4, 0.1, 0.2, 0.3];
+    let problems: [(&dyn OdeSystem, Vec<Real>); 5] = [
+        (&VanDerPol { mu: 1000.0 }, vec![2.0, -0.5]),
+        (&Robertson, robertson.to_vec()),
+        (&Hires, hires.to_vec()),
+        (&Pleiades, Pleiades::initial()),
+        (&chain, (0..8).map(|i| 1e-3 * Real::from(i)).collect()),
+    ];
+    for (k, (sys, y0)) in problems.iter().enumerate() {
+        let n = y0.len();
+        for shift in [0.0, 0.01] {
+            let y: Vec<Real> = y0
+                .iter()
+                .enumerate()
+                .map(|(i, v)| v + shift * (i as Real).sin())
+                .collect();
+            let mut jac = vec![0.0; n * n];
+            assert!(
+                sys.jacobian_into(0.0, &y, &mut jac),
+                "problem {k}: no Jacobian"
+            );
+            let scale = jac.iter().fold(1.0, |m: Real, v| m.max(v.abs()));
+            for j in 0..n {
+                let column = difference_column(*sys, &y, j);
+                for i in 0..n {
+                    assert!(
+                        (jac[i * n + j] - column[i]).abs() < 1e-6 * scale,
+                        "problem {k}, entry ({i}, {j}): {} vs {}",
+                        jac[i * n + j],
+                        column[i]
+                    );
+                }
+            }
+        }
+    }
+}

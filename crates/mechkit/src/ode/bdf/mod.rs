@@ -196,6 +196,15 @@ impl Bdf {
         self.lu.band()
     }
 
+    /// The number of unknowns of the Newton systems actually factored when the system is a
+    /// second-order one ([`OdeSystem::second_order_dof`]: its coordinates alone, the
+    /// velocities and the quantities carried along following from them; [`Self::band`] is
+    /// then that reduced matrix's band); `None` when the whole Newton matrix is factored or
+    /// before the first step.
+    pub fn reduced_to(&self) -> Option<usize> {
+        self.lu.reduced_to()
+    }
+
     /// The step size the next step will try.
     pub fn next_step(&self) -> Option<Real> {
         self.t.map(|_| self.h)

@@ -6,7 +6,6 @@
 use super::{Bdf, NEWTON_MAX_ITER};
 use crate::Real;
 use crate::ode::OdeSystem;
-use crate::ode::band_plan::BandPlan;
 use crate::ode::weights::{controlled, first_step, set_weights, trial_step, weighted_rms};
 
 impl Bdf {
@@ -18,7 +17,7 @@ impl Bdf {
         self.jac_current = true;
         self.lu_c = None;
         if !self.lu.is_planned() {
-            self.lu.set_plan(BandPlan::for_system(sys, n));
+            self.lu.plan(sys, n);
         }
         if sys.jacobian_into(t, y, &mut self.jac) {
             return;
@@ -44,14 +43,7 @@ impl Bdf {
     /// Factors `I − c J`; `false` when it is singular.
     pub(super) fn factor(&mut self, n: usize, c: Real) -> bool {
         self.implicit.decompositions += 1;
-        let jac = &self.jac;
-        let ok = self
-            .lu
-            .factor(n, |r, col| {
-                let v = -c * jac[r * n + col];
-                if r == col { 1.0 + v } else { v }
-            })
-            .is_ok();
+        let ok = self.lu.factor(n, 1.0, c, &self.jac).is_ok();
         self.lu_c = ok.then_some(c);
         ok
     }

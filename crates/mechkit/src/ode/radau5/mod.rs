@@ -183,6 +183,15 @@ impl Radau5 {
         self.lu_real.band()
     }
 
+    /// The number of unknowns of the Newton systems actually factored when the system is a
+    /// second-order one ([`OdeSystem::second_order_dof`]: its coordinates alone, the
+    /// velocities and the quantities carried along following from them; [`Self::band`] is
+    /// then that reduced matrix's band); `None` when the whole Newton matrices is factored or
+    /// before the first step.
+    pub fn reduced_to(&self) -> Option<usize> {
+        self.lu_real.reduced_to()
+    }
+
     /// The step size the next step will try.
     pub fn next_step(&self) -> Option<Real> {
         self.h

@@ -8,7 +8,6 @@ use nalgebra::Complex;
 use super::{NEWTON_MAX_ITER, Radau5};
 use crate::Real;
 use crate::ode::OdeSystem;
-use crate::ode::band_plan::BandPlan;
 use crate::ode::radau_tableau::RadauTableau;
 
 /// `sⁱ`-weighted value of the collocation polynomial `Σₖ qₖ sᵏ` (without `y₀`).
@@ -25,9 +24,8 @@ impl Radau5 {
         self.jac_current = true;
         self.lu_h = None;
         if !self.lu_real.is_planned() {
-            let plan = BandPlan::for_system(sys, n);
-            self.lu_real.set_plan(plan.clone());
-            self.lu_complex.set_plan(plan);
+            self.lu_real.plan(sys, n);
+            self.lu_complex.plan(sys, n);
         }
         if sys.jacobian_into(t, y, &mut self.jac) {
             return;
@@ -52,21 +50,10 @@ impl Radau5 {
     pub(super) fn factor(&mut self, n: usize, h: Real) -> bool {
         self.implicit.decompositions += 1;
         let (g, a, b) = (self.rt.gamma / h, self.rt.alpha / h, self.rt.beta / h);
-        let jac = &self.jac;
-        let real = self.lu_real.factor(n, |r, c| {
-            if r == c {
-                g - jac[r * n + c]
-            } else {
-                -jac[r * n + c]
-            }
-        });
-        let complex = self.lu_complex.factor(n, |r, c| {
-            if r == c {
-                Complex::new(a - jac[r * n + c], b)
-            } else {
-                Complex::new(-jac[r * n + c], 0.0)
-            }
-        });
+        let real = self.lu_real.factor(n, g, 1.0, &self.jac);
+        let complex = self
+            .lu_complex
+            .factor(n, Complex::new(a, b), 1.0, &self.jac);
         let ok = real.is_ok() && complex.is_ok();
         self.lu_h = ok.then_some(h);
         ok
