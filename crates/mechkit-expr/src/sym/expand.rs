@@ -5,6 +5,18 @@ use super::Sym;
 /// Expansions that would produce more terms than this are left alone.
 const MAX_TERMS: usize = 2000;
 
+/// Nor more nodes than this in all (a few terms can each be huge: products of towers of
+/// symbolic coefficients took seconds to multiply out).
+const MAX_NODES: usize = 20_000;
+
+/// Whether multiplying out `acc` by `terms` stays within the bounds: `|acc| |terms|` terms
+/// of `Σ size(acc) |terms| + Σ size(terms) |acc|` nodes.
+fn within_bounds(acc: &[Sym], terms: &[Sym]) -> bool {
+    let total = |xs: &[Sym]| xs.iter().map(super::integrate::size).sum::<usize>();
+    acc.len() * terms.len() <= MAX_TERMS
+        && total(acc) * terms.len() + total(terms) * acc.len() <= MAX_NODES
+}
+
 impl Sym {
     /// Multiplies out products and positive integer powers (up to 12) of sums; function
     /// arguments are left as they are.
@@ -24,7 +36,7 @@ impl Sym {
                         Sym::Add(ts) => ts,
                         other => vec![other],
                     };
-                    if acc.len() * terms.len() > MAX_TERMS {
+                    if !within_bounds(&acc, &terms) {
                         return self.clone();
                     }
                     acc = acc
@@ -65,7 +77,7 @@ fn expand_product(p: &Sym) -> Option<Sym> {
             Sym::Add(ts) => ts.clone(),
             other => vec![other.clone()],
         };
-        if acc.len() * terms.len() > MAX_TERMS {
+        if !within_bounds(&acc, &terms) {
             return None;
         }
         acc = acc
@@ -82,4 +94,26 @@ fn expand_product(p: &Sym) -> Option<Sym> {
         };
     }
     Some(Sym::sum(acc))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A few terms can each be huge: the product of two sums of towers is left alone when
+    /// multiplying it out would build more than `MAX_NODES` nodes, however few the terms.
+    #[test]
+    fn large_terms_are_not_multiplied_out() {
+        let tower = |v: &str| (0..40).map(|_| v).collect::<Vec<_>>().join("^");
+        let big = format!("({} + {})", tower("a"), tower("b"));
+        let product = Sym::parse(&format!("{big}*{big}*{big}*(x + 1)")).unwrap();
+        let expanded = product.expand();
+        assert!(
+            super::super::integrate::size(&expanded) < MAX_NODES,
+            "{}",
+            super::super::integrate::size(&expanded)
+        );
+        let small = Sym::parse("(a + b)*(x + 1)").unwrap().expand();
+        assert_eq!(small.to_string(), "a*x + a + b*x + b");
+    }
 }

@@ -63,6 +63,8 @@ pub(super) struct Ctx {
     depth: usize,
     fresh: usize,
     fuel: usize,
+    /// Whether the integrand is one a completed square gave (`roots`: not completed again).
+    pub completing: bool,
 }
 
 impl Ctx {
@@ -74,6 +76,7 @@ impl Ctx {
             depth: 0,
             fresh: 0,
             fuel: FUEL,
+            completing: false,
         }
     }
 

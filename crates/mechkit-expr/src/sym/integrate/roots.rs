@@ -49,7 +49,16 @@ fn complete_square(f: &Sym, c: &[Sym], ctx: &mut Ctx) -> Option<Sym> {
     let shift = Sym::quotient(c[1].clone(), Sym::product(vec![Sym::int(2), c[2].clone()]));
     let t = ctx.fresh();
     let g = substitute_expanding(f, &x, &Sym::difference(var(&t), shift.clone()));
-    let big_g = ctx.integrate_in(&g, &t)?;
+    // The shift removes the linear term unless the expansion was too large to carry out
+    // (`Sym::expand`'s bounds) or the coefficients do not cancel in the canonical form; a
+    // second completion of the result would repeat the same expansions, so there is none.
+    if ctx.completing || !ctx.spend(super::size(&g)) {
+        return None;
+    }
+    ctx.completing = true;
+    let big_g = ctx.integrate_in(&g, &t);
+    ctx.completing = false;
+    let big_g = big_g?;
     Some(big_g.substitute(&t, &Sym::sum(vec![var(&x), shift])))
 }
 

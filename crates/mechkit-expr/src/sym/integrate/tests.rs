@@ -96,6 +96,33 @@ fn fuzz_a_power_tower_exhausts_the_budget_not_the_machine() {
     }
 }
 
+/// Found by the `calculus` target (after 246 k inputs, 2026-12-05): a square root of a quadratic
+/// whose coefficients are products of towers of powers took 7 s: completing the square
+/// expanded products of those towers, and when the expansion was too large to carry out,
+/// the linear term stayed and the square was completed again, down to the depth limit.
+#[test]
+fn fuzz_a_quadratic_with_towering_coefficients_is_not_completed_again_and_again() {
+    let src = include_str!(
+        "../../../../../fuzz/regressions/calculus/quadratic-with-towering-coefficients"
+    );
+    let f = Sym::parse(src).unwrap();
+    let mut ctx = Ctx::new("x");
+    assert!(integrate(&f, &mut ctx).is_none());
+    // one completion tried, not one per level of the search until the budget ran out
+    // (which it did: 10 substitutions and all 20,000 units, in 7 s)
+    assert!(
+        ctx.fuel > 0 && !ctx.completing,
+        "{} substitutions, {} fuel",
+        ctx.fresh,
+        FUEL - ctx.fuel
+    );
+    // the completion still removes the linear term of an ordinary quadratic
+    for f in ["1/sqrt(x^2 + 2*x + 5)", "sqrt(a*x^2 + b*x + c)"] {
+        let f = Sym::parse(f).unwrap();
+        assert!(f.integrate("x").is_some(), "{f}");
+    }
+}
+
 /// Issue 27: the integrals the issue named, and the assumptions symbolic coefficients need.
 #[test]
 fn issue_27_list_and_assumptions() {
