@@ -6,29 +6,35 @@ use super::build::split_coefficient;
 use crate::ast::Func;
 use crate::number::Number;
 
-/// The numeric content of a sum and its primitive part: `2*x + 4 = 2*(x + 2)`,
-/// `-x/2 - y/2 = -1/2*(x + y)` (the first term of the primitive part has a positive
-/// coefficient). Sums with float coefficients keep their numbers.
-pub(crate) fn content(terms: &[Sym]) -> (Number, Sym) {
+/// The numeric content of a sum alone (what [`content`] divides out; one when there is none),
+/// without building the primitive part.
+pub(crate) fn content_number(terms: &[Sym]) -> Number {
     let coeffs: Vec<Number> = terms.iter().map(|t| split_coefficient(t).0).collect();
     let mut num_gcd: i128 = 0;
     let mut den_lcm: i128 = 1;
     for c in &coeffs {
         let Some((n, d)) = c.as_rational() else {
-            return (Number::ONE, Sym::Add(terms.to_vec()));
+            return Number::ONE;
         };
         num_gcd = gcd(num_gcd, n);
         let g = gcd(den_lcm, d).max(1);
         den_lcm = match (den_lcm / g).checked_mul(d) {
             Some(l) if l < 1 << 40 => l,
-            _ => return (Number::ONE, Sym::Add(terms.to_vec())),
+            _ => return Number::ONE,
         };
     }
     if num_gcd == 0 {
-        return (Number::ONE, Sym::Add(terms.to_vec()));
+        return Number::ONE;
     }
     let sign = if coeffs[0].is_negative() { -1 } else { 1 };
-    let c = Number::rational(sign * num_gcd, den_lcm);
+    Number::rational(sign * num_gcd, den_lcm)
+}
+
+/// The numeric content of a sum and its primitive part: `2*x + 4 = 2*(x + 2)`,
+/// `-x/2 - y/2 = -1/2*(x + y)` (the first term of the primitive part has a positive
+/// coefficient). Sums with float coefficients keep their numbers.
+pub(crate) fn content(terms: &[Sym]) -> (Number, Sym) {
+    let c = content_number(terms);
     if c.is_one() {
         return (c, Sym::Add(terms.to_vec()));
     }

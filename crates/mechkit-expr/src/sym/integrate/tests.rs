@@ -123,6 +123,29 @@ fn fuzz_a_quadratic_with_towering_coefficients_is_not_completed_again_and_again(
     }
 }
 
+/// Found by the `calculus` target (2026-12-05): `1/(2*z^44 + x^2)^22` took 11 s (the
+/// reduction's nested result rebuilt `2ⁿ` times by `Sym::product`, see
+/// `build::tests::fuzz_a_deeply_nested_sum_is_rebuilt_once_per_level`); high powers of a
+/// symbolic quadratic now reduce to a verified closed form.
+#[test]
+fn fuzz_a_high_power_of_a_symbolic_quadratic() {
+    let src =
+        include_str!("../../../../../fuzz/regressions/calculus/symbolic-quadratic-to-the-22nd");
+    let f = Sym::parse(src).unwrap();
+    let mut ctx = Ctx::new("x");
+    let _ = integrate(&f, &mut ctx);
+    assert!(ctx.fuel > 0, "the budget ran out");
+    let r = Sym::parse("1/(a + x^2)^22")
+        .unwrap()
+        .integrate("x")
+        .unwrap();
+    assert!(
+        r.result.to_string().contains("atan(x/sqrt(a))"),
+        "{}",
+        r.result
+    );
+}
+
 /// Issue 27: the integrals the issue named, and the assumptions symbolic coefficients need.
 #[test]
 fn issue_27_list_and_assumptions() {
