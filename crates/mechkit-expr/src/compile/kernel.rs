@@ -45,6 +45,20 @@ impl KernelBuilder {
         self.stores[slot] = v.0;
     }
 
+    /// Adds `count` slots after the others, each starting as its value at the start of the
+    /// iteration; returns the first one's index (for outputs whose number is known only
+    /// once the body computing them is built).
+    pub fn add_slots(&mut self, count: usize) -> usize {
+        let first = self.stores.len();
+        for s in first..first + count {
+            let load = self
+                .dag
+                .push(Inst::Load(u32::try_from(s).expect("slot index fits u32")));
+            self.stores.push(load);
+        }
+        first
+    }
+
     /// A constant.
     pub fn constant(&mut self, c: f64) -> Val {
         Val(self.dag.push(Inst::Const(c)))
@@ -159,10 +173,18 @@ impl KernelBuilder {
         let slots = self.stores.len();
         let insts = self.dag.insts;
         let n = insts.len();
+        // the loads come first, one per slot in slot order (those of slots added later were
+        // built later; a load has no operands, so moving it ahead keeps every value after
+        // what it uses)
+        let mut loads = vec![0usize; slots];
+        for (i, inst) in insts.iter().enumerate() {
+            if let Inst::Load(s) = inst {
+                loads[*s as usize] = i;
+            }
+        }
         let mut live = vec![false; n];
-        for (s, r) in self.stores.iter().enumerate() {
+        for r in &self.stores {
             live[*r as usize] = true;
-            live[s] = true; // the loads stay first, one per slot
         }
         for i in (0..n).rev() {
             if live[i] {
@@ -173,8 +195,12 @@ impl KernelBuilder {
         }
         let mut new_index = vec![0u32; n];
         let mut kept = Vec::new();
+        for &i in &loads {
+            new_index[i] = u32::try_from(kept.len()).expect("fits");
+            kept.push(insts[i]);
+        }
         for i in 0..n {
-            if live[i] {
+            if live[i] && !matches!(insts[i], Inst::Load(_)) {
                 new_index[i] = u32::try_from(kept.len()).expect("fits");
                 kept.push(super::ir::remap(insts[i], &new_index));
             }
@@ -303,6 +329,29 @@ impl Kernel {
 mod tests {
     use super::*;
     use crate::{Formula, MapScope};
+
+    /// Slots added after the body was built: their loads come first with the others, and
+    /// the interpreted and native kernels agree.
+    #[test]
+    fn slots_added_late_are_loaded_and_stored_like_the_first() {
+        let mut b = KernelBuilder::new(2);
+        let (x, y) = (b.get(0), b.get(1));
+        let s = b.add(x, y);
+        let p = b.mul(x, y);
+        let first = b.add_slots(2);
+        assert_eq!(first, 2);
+        let carried = b.get(3);
+        let q = b.mul(p, carried);
+        b.set(first, s);
+        b.set(first + 1, q);
+        let k = b.finish();
+        let mut interpreted = [2.0, 3.0, 0.0, 10.0];
+        k.run_interpreted(&mut interpreted, 1);
+        assert_eq!(interpreted, [2.0, 3.0, 5.0, 60.0]);
+        let mut native = [2.0, 3.0, 0.0, 10.0];
+        k.native().run(&mut native, 1);
+        assert_eq!(native, interpreted);
+    }
 
     /// A damped oscillator with a formula force, Euler-Cromer: slots [t, x, v, work].
     fn oscillator() -> Kernel {

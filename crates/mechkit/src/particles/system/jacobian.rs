@@ -152,22 +152,20 @@ impl CompiledJacobian {
         {
             return None;
         }
-        // first the entries' positions, then a kernel with one slot for each
-        let mut probe = KernelBuilder::new(1 + 2 * n);
-        let (accel, wrt) = accelerations(sys, &mut probe)?;
-        if 2 * n * probe.len() > MAX_WORK {
+        // the entries that are not zero by structure, then one output slot for each
+        let mut b = KernelBuilder::new(1 + 2 * n);
+        let (accel, wrt) = accelerations(sys, &mut b)?;
+        if 2 * n * b.len() > MAX_WORK {
             return None;
         }
-        let count = entries(&mut probe, &accel, &wrt)?.len();
-        let mut b = KernelBuilder::new(1 + 2 * n + count);
-        let (accel, wrt) = accelerations(sys, &mut b)?;
         let found = entries(&mut b, &accel, &wrt)?;
+        let first = b.add_slots(found.len());
         let mut pattern = JacobianPattern::new(n);
         let mut at = Vec::with_capacity(found.len());
         for (k, (block, i, j, d)) in found.into_iter().enumerate() {
             pattern.insert(i, j);
             at.push((block, i * n + j));
-            b.set(1 + 2 * n + k, d);
+            b.set(first + k, d);
         }
         let kernel = b.finish();
         let kernel = if kernel.len() <= NATIVE_AT_ONCE {
