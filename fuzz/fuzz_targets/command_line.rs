@@ -1,4 +1,4 @@
 //! libFuzzer entry for [`mechkit_fuzz::command_line`].
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| mechkit_fuzz::command_line(data));
+libfuzzer_sys::fuzz_target!(init: mechkit_fuzz_targets::catch_stack_overflows(), |data: &[u8]| mechkit_fuzz::command_line(data));
