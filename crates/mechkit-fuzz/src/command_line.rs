@@ -105,6 +105,11 @@ const MAX_PANELS: f64 = 10_000.0;
 /// The most runs of a fuzzed `sweep`.
 const MAX_SWEEP_RUNS: usize = 8;
 
+/// The largest angle `|ω| t_max` (rad) a fuzzed `spin` turns through: its steps grow with it
+/// (about 100 a radian at the default `rtol`), and `--t-max`'s clamp alone let a top at
+/// 5,020 rad/s take 24 million steps (15 s).
+const MAX_SPIN_ANGLE: f64 = 1000.0;
+
 /// A command line of `mechkit`, built from the fuzzer's bytes; `None` when the bytes do not
 /// make one the target runs (not UTF-8, a path outside the working directory, too much work).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -223,13 +228,18 @@ fn clamp(args: &mut [String]) {
     }
 }
 
+/// The SI value of a bare number or a quantity; `None` when it is neither.
+fn si(value: &str) -> Option<f64> {
+    match value.trim().parse::<f64>() {
+        Ok(x) => Some(x),
+        Err(_) => Some(Quantity::parse(value).ok()?.value),
+    }
+}
+
 /// `value` clamped to `[lo, hi]` (its SI value) if it lies outside; `None` if it is inside or
 /// is not a quantity (the command reports that).
 fn clamped(value: &str, lo: f64, hi: f64) -> Option<String> {
-    let si = match value.trim().parse::<f64>() {
-        Ok(x) => x,
-        Err(_) => Quantity::parse(value).ok()?.value,
-    };
+    let si = si(value)?;
     if si > hi {
         Some(hi.to_string())
     } else if si < lo {
@@ -249,6 +259,12 @@ fn bounded(args: &[String]) -> bool {
         // a case runs its script by starting this program again (the fuzzer itself), and
         // `--all` runs every case: only the listing
         "gallery" => args.iter().any(|a| a == "--list"),
+        "spin" => {
+            let rate = option(args, "--omega").and_then(spin_rate);
+            let t_max = option(args, "--t-max").and_then(si);
+            rate.zip(t_max)
+                .is_none_or(|(w, t)| !(w * t > MAX_SPIN_ANGLE))
+        }
         "sweep" => {
             let mut sets = Vec::new();
             for (i, a) in args.iter().enumerate() {
@@ -273,6 +289,41 @@ fn bounded(args: &[String]) -> bool {
         }
         _ => true,
     }
+}
+
+/// The value of `--flag VALUE` or `--flag=VALUE` (the first given).
+fn option<'a>(args: &'a [String], flag: &str) -> Option<&'a str> {
+    args.iter().enumerate().find_map(|(i, a)| {
+        if a == flag {
+            args.get(i + 1).map(String::as_str)
+        } else {
+            a.strip_prefix(flag)?.strip_prefix('=')
+        }
+    })
+}
+
+/// `|ω|` in rad/s of `spin --omega "x, y, z [unit]"` (the unit after the last component
+/// applies to the bare ones), an upper bound as the sum of the magnitudes; `None` when it
+/// does not read (the command reports that).
+fn spin_rate(value: &str) -> Option<f64> {
+    let parts: Vec<&str> = value.split(',').map(str::trim).collect();
+    let last = parts.last()?;
+    let unit = last
+        .trim_start_matches(|c: char| c.is_ascii_digit() || "+-.eE".contains(c))
+        .trim();
+    let factor = if unit.is_empty() {
+        1.0
+    } else {
+        Quantity::parse(&format!("1 {unit}")).ok()?.value
+    };
+    let mut sum = 0.0;
+    for p in parts {
+        sum += match p.parse::<f64>() {
+            Ok(x) => (x * factor).abs(),
+            Err(_) => Quantity::parse(p).ok()?.value.abs(),
+        };
+    }
+    Some(sum)
 }
 
 /// `file` with every `mp4` replaced by `gif` (`[output] animation` formats).

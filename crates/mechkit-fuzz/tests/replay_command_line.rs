@@ -40,3 +40,25 @@ fn command_line_seeds_and_regressions() {
         paths.len()
     );
 }
+
+/// Found by the target (2026-12-05, after 541 k inputs): a heavy top at 5,020 rad/s for 51 s
+/// took 24 million steps (15 s), inside the product's bounds but past the target's 10 s: the
+/// target now skips a `spin` that turns through more than 1,000 rad, and still runs a slower
+/// one.
+#[test]
+fn a_spin_of_many_turns_is_skipped_and_a_slow_one_runs() {
+    use mechkit_fuzz::command_line::CommandLine;
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let fast =
+        fs::read(repo.join("fuzz/regressions/command_line/spin-top-5020-rad-per-s")).unwrap();
+    assert!(CommandLine::from_bytes(&fast).is_none());
+    let text = String::from_utf8(fast).unwrap();
+    for (omega, runs) in [
+        ("0, 0, 5", true),
+        ("0, 0, 50 rpm", true),
+        ("0, 0, 3 kHz", false),
+    ] {
+        let bytes = text.replace("0, 0, 5020", omega).into_bytes();
+        assert_eq!(CommandLine::from_bytes(&bytes).is_some(), runs, "{omega}");
+    }
+}
