@@ -263,7 +263,7 @@ fn bounded(args: &[String]) -> bool {
             let rate = option(args, "--omega").and_then(spin_rate);
             let t_max = option(args, "--t-max").and_then(si);
             rate.zip(t_max)
-                .is_none_or(|(w, t)| !(w * t > MAX_SPIN_ANGLE))
+                .is_none_or(|(w, t)| w * t <= MAX_SPIN_ANGLE || (w * t).is_nan())
         }
         "sweep" => {
             let mut sets = Vec::new();
