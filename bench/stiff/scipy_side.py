@@ -68,18 +68,8 @@ def hires():
 def pleiades():
     m = np.arange(1, 8, dtype=float)
 
-    def f(t, y):
-        x, yy, vx, vy = y[:7], y[7:14], y[14:21], y[21:]
-        dx = x[None, :] - x[:, None]
-        dy = yy[None, :] - yy[:, None]
-        r2 = dx**2 + dy**2
-        np.fill_diagonal(r2, 1.0)
-        w = m[None, :] / (r2 * np.sqrt(r2))
-        np.fill_diagonal(w, 0.0)
-        return np.concatenate([vx, vy, (w * dx).sum(1), (w * dy).sum(1)])
-
-    def jac(t, y):
-        # d a_i / d r_j = m_j (I - 3 d d^T / r^2) / r^3, and d a_i / d r_i minus their sum
+    def pairs(y):
+        # d = r_j - r_i, r^2, and m_j / r^3 (zero on the diagonal)
         x, yy = y[:7], y[7:14]
         dx = x[None, :] - x[:, None]
         dy = yy[None, :] - yy[:, None]
@@ -87,6 +77,15 @@ def pleiades():
         np.fill_diagonal(r2, 1.0)
         w = m[None, :] / (r2 * np.sqrt(r2))
         np.fill_diagonal(w, 0.0)
+        return dx, dy, r2, w
+
+    def f(t, y):
+        dx, dy, _, w = pairs(y)
+        return np.concatenate([y[14:21], y[21:], (w * dx).sum(1), (w * dy).sum(1)])
+
+    def jac(t, y):
+        # d a_i / d r_j = m_j (I - 3 d d^T / r^2) / r^3, and d a_i / d r_i minus their sum
+        dx, dy, r2, w = pairs(y)
         kxx = w * (1 - 3 * dx**2 / r2)
         kxy = -3 * w * dx * dy / r2
         kyy = w * (1 - 3 * dy**2 / r2)

@@ -330,8 +330,7 @@ mod tests {
     use super::*;
     use crate::{Formula, MapScope};
 
-    /// Slots added after the body was built: their loads come first with the others, and
-    /// the interpreted and native kernels agree.
+    /// Slots added after the body is built: interpreted and native, as the first ones.
     #[test]
     fn slots_added_late_are_loaded_and_stored_like_the_first() {
         let mut b = KernelBuilder::new(2);
