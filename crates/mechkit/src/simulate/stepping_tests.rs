@@ -4,7 +4,7 @@ use super::*;
 use crate::forces::{Spring, SpringEnds};
 
 /// The works' rows and columns are empty: a chain of springs with its works is still
-/// factored banded.
+/// factored banded, reduced to its coordinates.
 #[test]
 fn the_works_keep_a_chain_banded() {
     let mut b = ParticleSystem::builder(1);
@@ -29,4 +29,7 @@ fn the_works_keep_a_chain_banded() {
     let mut radau = crate::ode::Radau5::new(crate::ode::AdaptiveConfig::default());
     radau.step(&work, &mut state, 1e-3).unwrap();
     assert!(radau.band().is_some(), "dense");
+    // and its Newton systems are solved in the 8 coordinates: a tridiagonal band
+    assert_eq!(radau.reduced_to(), Some(8));
+    assert_eq!(radau.band(), Some((1, 1)));
 }

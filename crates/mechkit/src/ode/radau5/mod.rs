@@ -186,7 +186,7 @@ impl Radau5 {
     /// The number of unknowns of the Newton systems actually factored when the system is a
     /// second-order one ([`OdeSystem::second_order_dof`]: its coordinates alone, the
     /// velocities and the quantities carried along following from them; [`Self::band`] is
-    /// then that reduced matrix's band); `None` when the whole Newton matrices is factored or
+    /// then that reduced matrix's band); `None` when the whole Newton matrices are factored or
     /// before the first step.
     pub fn reduced_to(&self) -> Option<usize> {
         self.lu_real.reduced_to()
