@@ -9,7 +9,7 @@
 //! found as roots of `F'` where `F` is zero to rounding. Two roots closer than the grid step can
 //! be missed: raise the number of samples to look closer.
 
-use super::potential::Potential;
+use super::potential::{Origin, Potential};
 use crate::Real;
 use crate::roots::{brent_with_values, find_all};
 
@@ -108,9 +108,21 @@ impl Grid<'_> {
     fn potential(&self, x: Real) -> Real {
         let k = self.x.partition_point(|&g| g <= x).saturating_sub(1);
         if self.u[k].is_finite() {
-            self.p.potential_between(self.x[k], x, self.u[k])
-        } else {
-            self.p.potential(x)
+            return self.p.potential_between(self.x[k], x, self.u[k]);
+        }
+        if let Some(&u1) = self.u.get(k + 1).filter(|u| u.is_finite()) {
+            return self.p.potential_between(self.x[k + 1], x, u1);
+        }
+        match self.p.origin() {
+            // neither neighbour was reachable by quadrature from the reference
+            // (`potential_on` tried): nor is `x`, unless the reference lies between them
+            Origin::Numeric { reference }
+                if !(self.x[k] < reference
+                    && self.x.get(k + 1).is_some_and(|&b| reference < b)) =>
+            {
+                Real::NAN
+            }
+            _ => self.p.potential(x),
         }
     }
 }

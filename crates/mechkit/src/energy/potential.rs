@@ -142,7 +142,11 @@ impl Potential {
         };
         match integrate(|x| self.force(x), a, b, tol) {
             Ok(r) => u_a - r.value,
-            Err(_) => Real::NAN,
+            Err(_) => {
+                #[cfg(test)]
+                tests::FAILED.with(|n| n.set(n.get() + 1));
+                Real::NAN
+            }
         }
     }
 
@@ -157,15 +161,32 @@ impl Potential {
         let Some(&first) = xs.first() else {
             return out;
         };
+        let reference = match self.origin {
+            Origin::Numeric { reference } => reference,
+            _ => Real::NAN,
+        };
+        // the last point the quadrature from the reference could not reach: a point not
+        // integrable lies between the two, and between the reference and every point beyond
+        let mut unreachable_from: Option<Real> = None;
         let mut u = self.potential(first);
+        if !u.is_finite() {
+            unreachable_from = Some(first);
+        }
         out.push(u);
         for w in xs.windows(2) {
             if u.is_finite() {
                 u = self.potential_between(w[0], w[1], u);
+            } else if unreachable_from.is_some_and(|x| reference <= x) {
+                // past a point the reference cannot reach, on its far side: so is this one
+                // (a failing quadrature costs its whole subdivision budget)
+                u = Real::NAN;
             } else {
                 // restart past a singular point: the reference is lost, so the curve is
-                // continued from the integral of F from the range start where possible
+                // continued from the integral of F from the reference where possible
                 u = self.potential(w[1]);
+                if !u.is_finite() {
+                    unreachable_from = Some(w[1]);
+                }
             }
             out.push(u);
         }
@@ -175,7 +196,35 @@ impl Potential {
 
 #[cfg(test)]
 mod tests {
+    use std::cell::Cell;
+
     use super::*;
+
+    thread_local! {
+        /// Quadratures of `F` that failed on this thread (each spends its whole budget).
+        pub static FAILED: Cell<u32> = const { Cell::new(0) };
+    }
+
+    /// Found by the `command_line` target (2026-12-05): `mechkit potential --force
+    /// "-sin(2*pi/x)" --range=-1:2 …` took 25 s. Past x = 0, where the quadrature of `F`
+    /// cannot converge, every grid point and every equilibrium (hundreds, where `F` oscillates)
+    /// retried the quadrature from the reference across 0, each to its subdivision limit. A
+    /// point the reference cannot reach now marks the far side unreachable (0.08 s).
+    #[test]
+    fn fuzz_a_point_the_reference_cannot_reach_is_tried_once() {
+        let p = Potential::from_force("-sin(2*pi/x)", "x", &[], -1.0).unwrap();
+        FAILED.with(|n| n.set(0));
+        let d = p.diagram(-1.0, 2.0, None, 2000);
+        let failed = FAILED.with(Cell::get);
+        assert!(failed <= 3, "{failed} failed quadratures");
+        // left of 0 the potential is known, right of it not
+        assert!(d.potential[..600].iter().all(|u| u.is_finite()));
+        assert!(
+            d.potential[d.potential.len() - 100..]
+                .iter()
+                .all(|u| u.is_nan())
+        );
+    }
 
     #[test]
     fn force_from_potential_and_back() {
