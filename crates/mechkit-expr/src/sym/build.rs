@@ -506,7 +506,13 @@ mod tests {
     fn fuzz_a_deeply_nested_sum_is_rebuilt_once_per_level() {
         // `a` a symbol, and a sum (a second sum in each product: the fuzz input
         // `1/(2*z^666…6 - 6666644 + x^2)^22` took 13 s that way, comparing the two sums)
-        for (n, sum) in [(20, true), (40, true), (10, false), (20, false), (40, false)] {
+        for (n, sum) in [
+            (20, true),
+            (40, true),
+            (10, false),
+            (20, false),
+            (40, false),
+        ] {
             let src = nested(n, if sum { "(a - 1)" } else { "a" });
             PRODUCTS.with(|c| c.set(0));
             let _ = Sym::parse(&src).unwrap();

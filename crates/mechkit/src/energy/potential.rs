@@ -140,13 +140,12 @@ impl Potential {
             abs: 1e-13,
             rel: 1e-12,
         };
-        match integrate(|x| self.force(x), a, b, tol) {
-            Ok(r) => u_a - r.value,
-            Err(_) => {
-                #[cfg(test)]
-                tests::FAILED.with(|n| n.set(n.get() + 1));
-                Real::NAN
-            }
+        if let Ok(r) = integrate(|x| self.force(x), a, b, tol) {
+            u_a - r.value
+        } else {
+            #[cfg(test)]
+            tests::FAILED.with(|n| n.set(n.get() + 1));
+            Real::NAN
         }
     }
 
