@@ -47,17 +47,19 @@ pub(super) fn clip_to_band(points: &[(f64, f64)], (y0, y1): (f64, f64)) -> Vec<V
             flush(&mut current, &mut pieces);
             continue;
         }
+        // a point on the segment, in the band (from −2.7e169 to −2.4e151 against a band of
+        // 1e49 the crossing parameter rounds to exactly 1, and the far end is not in the band)
         let at = |t: f64| {
-            if t == 1.0 {
+            if t == 1.0 && inside(p.1) {
                 p
             } else {
-                (a.0 + t * (p.0 - a.0), a.1 + t * dy)
+                (a.0 + t * (p.0 - a.0), (a.1 + t * dy).clamp(y0, y1))
             }
         };
         if t0 > 0.0 || current.is_empty() {
             // entering the band: a new piece
             flush(&mut current, &mut pieces);
-            current.push(if t0 == 0.0 { a } else { at(t0) });
+            current.push(if t0 == 0.0 && inside(a.1) { a } else { at(t0) });
         }
         current.push(at(t1));
         if t1 < 1.0 {
@@ -149,6 +151,27 @@ mod tests {
 
     /// The paper style's type in its plotting area.
     const PAPER: (f64, (f64, f64)) = (1.0, (790.0, 490.0));
+
+    /// Found by the `command_line` target (2026-12-05): `mechkit potential
+    /// "U0-((a/r)^60-(b/r)^6)"` has U = −2.7e169 at r = 0.0015 and −2.4e151 at 0.003, against
+    /// a band of 1e49: the segment's crossing parameter rounds to exactly 1, and its end, far
+    /// outside, was kept; plotters overflowed mapping it to a pixel (a panic with overflow
+    /// checks). Every point of every piece lies in the band.
+    #[test]
+    fn fuzz_a_crossing_that_rounds_to_the_far_end_stays_in_the_band() {
+        let band = (-1.721_630_191_351_698_3e49, 7.485_348_658_050_863e47);
+        let curve = [
+            (0.0015, -2.719_721_638_936_43e169),
+            (0.003, -2.358_982_487_592_571_2e151),
+            (0.0045, -1.0e49),
+            (0.006, -1.0e40),
+        ];
+        let pieces = clip_to_band(&curve, band);
+        assert!(!pieces.is_empty());
+        for p in pieces.iter().flatten() {
+            assert!((band.0..=band.1).contains(&p.1), "{p:?}");
+        }
+    }
 
     #[test]
     fn the_legend_goes_where_it_covers_no_data() {
