@@ -212,6 +212,26 @@ impl Func {
         Func::ALL.iter().copied().find(|f| f.name() == name)
     }
 
+    /// The reciprocal functions a formula may call, read as `1/f(u)`: `sec(x)` is
+    /// `1/cos(x)`.
+    pub const RECIPROCALS: &'static [(&'static str, Func)] = &[
+        ("sec", Func::Cos),
+        ("csc", Func::Sin),
+        ("cot", Func::Tan),
+        ("sech", Func::Cosh),
+        ("csch", Func::Sinh),
+        ("coth", Func::Tanh),
+    ];
+
+    /// The function whose reciprocal `name` is (`sec` → `cos`), if it is one of
+    /// [`Func::RECIPROCALS`].
+    pub fn reciprocal_of(name: &str) -> Option<Func> {
+        Func::RECIPROCALS
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(_, f)| f)
+    }
+
     /// Applies a one-argument function.
     pub fn apply1(self, x: f64) -> f64 {
         match self {

@@ -86,7 +86,7 @@ impl Formula {
             if scope.lookup(name).is_some() || builtin_constant(name).is_some() {
                 continue;
             }
-            let kind = if Func::from_name(name).is_some() {
+            let kind = if Func::from_name(name).is_some() || Func::reciprocal_of(name).is_some() {
                 ExprErrorKind::FunctionAsValue(name.clone())
             } else {
                 let candidates = scope.candidates();

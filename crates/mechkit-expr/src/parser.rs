@@ -318,7 +318,8 @@ impl Parser<'_> {
     }
 
     fn call(&mut self, name: &str, name_span: Span) -> Parse<Node> {
-        let Some(func) = Func::from_name(name) else {
+        let reciprocal = Func::reciprocal_of(name);
+        let Some(func) = Func::from_name(name).or(reciprocal) else {
             return Err(self.unknown_function(name, name_span));
         };
         let open = self.next().expect("caller saw `(`").span;
@@ -351,16 +352,23 @@ impl Parser<'_> {
         if !func.arity().accepts(args.len()) {
             return Err(self.arity(func, name_span, args.len()));
         }
+        let depth = self.level_over(deepest, name_span)?;
+        let call = Expr::Call(func, args);
+        if reciprocal.is_none() {
+            return Ok(Node { depth, expr: call });
+        }
+        // `sec(u)` is read as `1/cos(u)`: one more level, as written out
         Ok(Node {
-            depth: self.level_over(deepest, name_span)?,
-            expr: Expr::Call(func, args),
+            depth: self.level_over(depth, name_span)?,
+            expr: Expr::Binary(BinOp::Div, Box::new(Expr::Num(1.0)), Box::new(call)),
         })
     }
 
     #[cold]
     #[inline(never)]
     fn unknown_function(&self, name: &str, span: Span) -> Box<ExprError> {
-        let suggestions = nearest(name, Func::ALL.iter().map(|f| f.name()));
+        let names = Func::ALL.iter().map(|f| f.name());
+        let suggestions = nearest(name, names.chain(Func::RECIPROCALS.iter().map(|r| r.0)));
         self.err(
             ExprErrorKind::UnknownFunction {
                 name: name.to_string(),
@@ -407,6 +415,27 @@ mod tests {
         assert_eq!(eval("10 - 3 - 2"), 5.0);
         assert_eq!(eval("2**3"), 8.0);
         assert_eq!(eval("-3*-2"), 6.0);
+    }
+
+    #[test]
+    fn reciprocal_functions_read_as_one_over_their_function() {
+        let x: f64 = 0.7;
+        for (src, want) in [
+            ("sec(0.7)", 1.0 / x.cos()),
+            ("csc(0.7)", 1.0 / x.sin()),
+            ("cot(0.7)", 1.0 / x.tan()),
+            ("sech(0.7)", 1.0 / x.cosh()),
+            ("csch(0.7)", 1.0 / x.sinh()),
+            ("coth(0.7)", 1.0 / x.tanh()),
+            ("sec(0.7)^2", (1.0 / x.cos()).powi(2)),
+        ] {
+            assert_eq!(eval(src), want, "{src}");
+        }
+        assert_eq!(p("sec(x)"), p("1/cos(x)"));
+        let e = parse("sec(1, 2)").unwrap_err();
+        assert!(e.to_string().contains("argument"), "{e}");
+        let e = parse("secc(1)").unwrap_err();
+        assert!(e.to_string().contains("sec"), "{e}");
     }
 
     #[test]

@@ -16,6 +16,8 @@
 //!   denominator by `t = tan(x/2)` (or `u = tan x`);
 //! - [`rational`]: rational functions by partial fractions (rational roots with multiplicity,
 //!   powers of irreducible quadratics), `c/(a + b x²)` with symbols;
+//! - [`exponentials`]: a power with a constant base `b^x` as `exp(x ln b)`, functions of
+//!   `ln x` by `x = exp(u)` (`sin(ln x)`);
 //! - [`by_parts`]: integration by parts (a polynomial times an integrable transcendental
 //!   factor, a logarithm or inverse function times an integrable factor), and the cyclic
 //!   `exp·sin`, `exp·cos` in closed form.
@@ -26,6 +28,7 @@
 
 mod by_parts;
 mod exp_trig;
+mod exponentials;
 mod partial_fractions;
 mod rational;
 mod roots;
@@ -149,11 +152,22 @@ impl Sym {
     /// ```
     pub fn integrate(&self, x: &str) -> Option<Antiderivative> {
         let mut ctx = Ctx::new(x);
-        let result = integrate(self, &mut ctx)?;
+        let result = drop_constants(integrate(self, &mut ctx)?, x);
         verify(self, &result, x, &ctx.positive).then_some(Antiderivative {
             result,
             assumptions: ctx.assumptions,
         })
+    }
+}
+
+/// `F` without the terms of its sum that are free of `x` (constants of integration a
+/// substitution left: `x - a*ln|a + x| + a`).
+fn drop_constants(big_f: Sym, x: &str) -> Sym {
+    match big_f {
+        Sym::Add(terms) if terms.iter().any(|t| !t.free_of(x)) => {
+            Sym::sum(terms.into_iter().filter(|t| !t.free_of(x)).collect())
+        }
+        other => other,
     }
 }
 
@@ -206,6 +220,9 @@ fn rules(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
             ]));
         }
     }
+    if let Some(g) = exponentials::powers_as_exponentials(f, ctx) {
+        return integrate(&g, ctx).map(|r| exponentials::exp_of_logs_as_powers(&r));
+    }
     if let Some(r) = table::table(f, x) {
         return Some(r);
     }
@@ -249,7 +266,7 @@ fn rules(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     if let Some(r) = weierstrass::weierstrass(f, ctx) {
         return Some(r);
     }
-    by_parts::by_parts(f, ctx)
+    by_parts::by_parts(f, ctx).or_else(|| exponentials::log_substitution(f, ctx))
 }
 
 /// The number of nodes of an expression.

@@ -47,14 +47,208 @@ pub(super) fn rational(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     if let (Some(n), Some(d)) = (NumPoly::from_syms(&nc), NumPoly::from_syms(&dc)) {
         return partial_fractions(&n, &d, x);
     }
-    // c/(a + b x^2) with symbolic a, b
-    if nc.len() == 1 && dc.len() == 3 && dc[1].is_zero() {
-        return Some(Sym::product(vec![
-            nc[0].clone(),
-            inverse_quadratic(&dc[0], &dc[2], x, ctx)?,
+    if dc.len() == 3 && dc[1].is_zero() && !dc[2].is_zero() && nc.len() <= 2 * MAX_LINEAR_FACTORS {
+        return over_quadratic(&nc, &dc, &den, ctx);
+    }
+    linear_factors(f, ctx)
+}
+
+/// `∫ N(x)/(a + b x²) dx` with symbols: `N = Q (a + b x²)/b + r₀ + r₁ x` by long division, then
+/// `∫ Q/b + r₁ ln|a + b x²|/(2 b) + r₀ ∫ dx/(a + b x²)` (`v^2/(v^2 - a)`, `x^3/(c^2 + x^2)`).
+fn over_quadratic(nc: &[Sym], dc: &[Sym], den: &Sym, ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let x = x.as_str();
+    let b = &dc[2];
+    let (q, r) = if nc.len() >= 3 {
+        let monic: Vec<Sym> = dc
+            .iter()
+            .map(|c| smaller(Sym::quotient(c.clone(), b.clone())))
+            .collect();
+        divide_monic(nc, &monic)
+    } else {
+        (Vec::new(), nc.to_vec())
+    };
+    let mut out = Vec::new();
+    if !q.is_empty() {
+        out.push(ctx.integrate_in(&smaller(Sym::quotient(poly(&q, x), b.clone())), x)?);
+    }
+    if let Some(r1) = r.get(1).filter(|r1| !r1.is_zero()) {
+        out.push(smaller(Sym::quotient(
+            Sym::product(vec![r1.clone(), ln_abs(den.clone())]),
+            Sym::product(vec![Sym::int(2), b.clone()]),
+        )));
+    }
+    if !r[0].is_zero() {
+        out.push(Sym::product(vec![
+            r[0].clone(),
+            inverse_quadratic(&dc[0], b, x, ctx)?,
         ]));
     }
-    None
+    Some(Sym::sum(out))
+}
+
+/// The most linear factors (counted with their powers) taken apart with symbols.
+const MAX_LINEAR_FACTORS: usize = 8;
+
+/// `∫ N(x)/Π (pᵢ + qᵢ x)^mᵢ dx` with symbols in `N`, `pᵢ`, `qᵢ`, the denominator written as
+/// a product of powers of distinct linear factors (`1/(x*(a + b*x))`, `1/((x - a)*(x - b))`,
+/// `1/(x^2*(a + b*x))`): the polynomial part by long division, the partial fractions by the
+/// cover-up rule, `Aᵢⱼ = g⁽ˢ⁾(rᵢ)/s!` with `g = N/Π_{k≠i}(x − r_k)^m_k` at each root `rᵢ`.
+fn linear_factors(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let x = x.as_str();
+    let xv = var(x);
+    // (p, q, m) for each factor (p + q x)^-m
+    let mut linear: Vec<(Sym, Sym, usize)> = Vec::new();
+    let mut numerator = Vec::new();
+    for fac in super::factors(f) {
+        let (base, power) = match &fac {
+            Sym::Pow(b, e) => match e.as_num().and_then(Number::as_integer) {
+                Some(n) if n < 0 => ((**b).clone(), usize::try_from(-n).ok()?),
+                _ => (fac.clone(), 0),
+            },
+            _ => (fac.clone(), 0),
+        };
+        let c = coefficients(&base, x)?;
+        if power == 0 || c.len() != 2 {
+            if power != 0 {
+                return None;
+            }
+            numerator.push(fac);
+            continue;
+        }
+        if c.iter().any(|k| !k.free_of(x)) || c[1].is_zero() {
+            return None;
+        }
+        linear.push((c[0].clone(), c[1].clone(), power));
+    }
+    let total: usize = linear.iter().map(|l| l.2).sum();
+    if linear.len() < 2 || total > MAX_LINEAR_FACTORS {
+        return None;
+    }
+    let roots: Vec<Sym> = linear
+        .iter()
+        .map(|(p, q, _)| Sym::negate(Sym::quotient(p.clone(), q.clone())))
+        .collect();
+    for (i, a) in roots.iter().enumerate() {
+        if roots[..i]
+            .iter()
+            .any(|b| Sym::difference(a.clone(), b.clone()).expand().is_zero())
+        {
+            return None;
+        }
+    }
+    let lead = Sym::product(
+        linear
+            .iter()
+            .map(|(_, q, m)| Sym::pow(q.clone(), Sym::int(*m as i64)))
+            .collect(),
+    );
+    let monic = |r: &Sym| Sym::difference(xv.clone(), r.clone());
+    let num = Sym::product(numerator);
+    let nc = coefficients(&num, x)?;
+    if nc.iter().any(|k| !k.free_of(x)) || nc.len() > 2 * MAX_LINEAR_FACTORS {
+        return None;
+    }
+    let mut out = Vec::new();
+    // the polynomial part: N = Q D + R with D = Π (x − rᵢ)^mᵢ, monic
+    let dc = coefficients(
+        &Sym::product(
+            roots
+                .iter()
+                .zip(&linear)
+                .map(|(r, l)| Sym::pow(monic(r), Sym::int(l.2 as i64)))
+                .collect(),
+        ),
+        x,
+    )?;
+    let mut rest = num.clone();
+    if nc.len() > total {
+        let (q, r) = divide_monic(&nc, &dc);
+        let q = poly(&q, x);
+        out.push(ctx.integrate_in(&smaller(Sym::quotient(q, lead.clone())), x)?);
+        rest = poly(&r, x);
+    }
+    for (i, (r, (p, q, m))) in roots.iter().zip(&linear).enumerate() {
+        let others = Sym::product(
+            roots
+                .iter()
+                .zip(&linear)
+                .enumerate()
+                .filter(|(k, _)| *k != i)
+                .map(|(_, (rk, l))| Sym::pow(monic(rk), Sym::int(-(l.2 as i64))))
+                .collect(),
+        );
+        let mut g = Sym::product(vec![rest.clone(), others]);
+        let mut factorial = Number::ONE;
+        for s in 0..*m {
+            if s > 0 {
+                g = g.diff(x);
+                factorial = factorial.times(Number::int(s as i64));
+            }
+            if !ctx.spend(super::size(&g)) {
+                return None;
+            }
+            let coefficient = smaller(Sym::quotient(
+                g.substitute(x, r),
+                Sym::product(vec![Sym::Num(factorial), lead.clone()]),
+            ));
+            let j = m - s; // the term A/(x − r)^j
+            let linear_form = Sym::sum(vec![p.clone(), Sym::product(vec![q.clone(), xv.clone()])]);
+            out.push(if j == 1 {
+                Sym::product(vec![coefficient, ln_abs(linear_form)])
+            } else {
+                // ∫ (x − r)^-j = −(x − r)^(1−j)/(j − 1), (x − r) = (p + q x)/q
+                Sym::product(vec![
+                    coefficient,
+                    Sym::rational(-1, j as i64 - 1),
+                    Sym::pow(q.clone(), Sym::int(j as i64 - 1)),
+                    Sym::pow(linear_form, Sym::int(1 - j as i64)),
+                ])
+            });
+        }
+    }
+    Some(Sym::sum(out))
+}
+
+/// `s` or its expansion, whichever has fewer nodes.
+fn smaller(s: Sym) -> Sym {
+    let e = s.expand();
+    if super::size(&e) < super::size(&s) {
+        e
+    } else {
+        s
+    }
+}
+
+/// `n = q d + r` for a monic `d` (coefficients lowest degree first).
+fn divide_monic(n: &[Sym], d: &[Sym]) -> (Vec<Sym>, Vec<Sym>) {
+    let dd = d.len() - 1;
+    let mut r = n.to_vec();
+    let mut q = vec![Sym::zero(); n.len() - dd];
+    for k in (0..q.len()).rev() {
+        let top = r[k + dd].clone();
+        for (i, di) in d.iter().enumerate() {
+            r[k + i] = Sym::difference(
+                r[k + i].clone(),
+                Sym::product(vec![top.clone(), di.clone()]),
+            )
+            .expand();
+        }
+        q[k] = top;
+    }
+    r.truncate(dd);
+    (q, r)
+}
+
+/// `Σ cₖ xᵏ`.
+fn poly(c: &[Sym], x: &str) -> Sym {
+    Sym::sum(
+        c.iter()
+            .enumerate()
+            .map(|(k, ck)| Sym::product(vec![ck.clone(), Sym::pow(var(x), Sym::int(k as i64))]))
+            .collect(),
+    )
 }
 
 /// `∫ dx/(a + b x^2)`: `atan(x sqrt(b/a))/sqrt(a b)` for `a, b > 0` (assumed when not known),

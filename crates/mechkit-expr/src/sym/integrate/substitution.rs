@@ -57,8 +57,39 @@ pub(super) fn linear_substitution(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         if let Some(big_g) = substituted(f, &u, ctx) {
             return Some(Sym::quotient(big_g, c[1].clone()));
         }
+        if let Some(big_g) = polynomial_times(f, &u, &c, ctx) {
+            return Some(big_g);
+        }
     }
     None
+}
+
+/// `∫ P(x) g(u) dx` with `u = c₀ + c₁ x` and `P` a polynomial: `x = (t − c₀)/c₁` makes it
+/// `∫ P((t − c₀)/c₁) g(t) dt/c₁`, multiplied out (`x/(a + b*x)`, `x^2/(a + b*x)^2`,
+/// `x*(a + b*x)^n`).
+fn polynomial_times(f: &Sym, u: &Sym, c: &[Sym], ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let t = ctx.fresh();
+    let g = f.replace(u, &var(&t));
+    let (poly, rest): (Vec<Sym>, Vec<Sym>) = super::factors(&g)
+        .into_iter()
+        .partition(|fac| !fac.free_of(&x));
+    if poly.is_empty() || rest.iter().all(|r| r.free_of(&t)) {
+        return None;
+    }
+    let p = Sym::product(poly);
+    let pc = coefficients(&p, &x)?;
+    if pc.len() > 16 || pc.iter().any(|k| !k.free_of(&x) || !k.free_of(&t)) {
+        return None;
+    }
+    let x_of_t = Sym::quotient(Sym::difference(var(&t), c[0].clone()), c[1].clone());
+    let p_of_t = p.substitute(&x, &x_of_t);
+    if !ctx.spend(super::size(&p_of_t)) {
+        return None;
+    }
+    let integrand = Sym::product(vec![p_of_t, Sym::product(rest)]).expand();
+    let big_g = ctx.integrate_in(&integrand, &t)?;
+    Some(Sym::quotient(big_g.substitute(&t, u), c[1].clone()))
 }
 
 /// `G(u)` with `G' = g` when `f = g(u)` with no `x` left over after writing `u` as a fresh

@@ -265,3 +265,38 @@ fn symbolic_powers_of_a_quadratic() {
     assert!(int("x^2/(x^2 + a^2)^2").is_some());
     assert!(int("1/(k - x^2)^3").is_some());
 }
+
+/// A rational function with symbols over linear factors (the table's `1/(x (a + b x))`), a
+/// quotient over a symbolic quadratic, constant bases and functions of `ln x`: each answer
+/// in the form a table gives, with no constant of integration left in the sum.
+#[test]
+fn symbolic_partial_fractions_constant_bases_and_functions_of_the_logarithm() {
+    for (f, want) in [
+        ("x/(a + x)", "x - a*ln(abs(a + x))"),
+        ("1/(x*(a + b*x))", "ln(abs(x))/a - ln(abs(a + b*x))/a"),
+        (
+            "1/(x*(a + b*x)^2)",
+            "1/(a*(a + b*x)) + ln(abs(x))/a^2 - ln(abs(a + b*x))/a^2",
+        ),
+        (
+            "1/((x - a)*(x - b))",
+            "ln(abs(a - x))/(a - b) - ln(abs(b - x))/(a - b)",
+        ),
+        ("x/(2 + 3*x)", "x/3 - 2*ln(abs(3*x + 2))/9"),
+        ("x^3/(c^2 + x^2)", "x^2/2 - c^2*ln(abs(c^2 + x^2))/2"),
+        ("x/(a + b*x^2)", "ln(abs(a + b*x^2))/(2*b)"),
+        ("2^x", "2^x/ln(2)"),
+        ("e^x", "exp(x)"),
+        ("sin(ln(x))", "x*(sin(ln(x))/2 - cos(ln(x))/2)"),
+        ("sec(x)*tan(x)", "1/cos(x)"),
+    ] {
+        assert_eq!(int(f).as_deref(), Some(want), "{f}");
+    }
+    let a = Sym::parse("a^x").unwrap().integrate("x").unwrap();
+    assert_eq!(a.result.to_string(), "a^x/ln(a)");
+    assert_eq!(a.assumptions, vec!["a > 0"]);
+    // a factor written twice is one root of multiplicity two, not two roots
+    assert_eq!(int("1/((x - a)*(x - a))").as_deref(), Some("1/(a - x)"));
+    // a negative base has no real power: no answer
+    assert_eq!(int("(-2)^x"), None);
+}
