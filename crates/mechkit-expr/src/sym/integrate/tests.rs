@@ -123,6 +123,27 @@ fn fuzz_a_quadratic_with_towering_coefficients_is_not_completed_again_and_again(
     }
 }
 
+/// Found by the `calculus` target (2026-12-05, fourth session): a product of seven factors,
+/// one a power `(x - 2^m^…)^1.5` of towers, took 2.4 s in `mechkit integrate` (4 s in the fuzz
+/// build): the square-root substitution and the reduction built an antiderivative of 147,150
+/// nodes, and its verification differentiated it. A result is now charged its size at each
+/// level of the search, so one that large is no answer: 0.1 s.
+#[test]
+fn fuzz_an_antiderivative_of_a_hundred_thousand_nodes_is_not_built() {
+    let src = include_str!(
+        "../../../../../fuzz/regressions/calculus/product-of-towers-147k-node-antiderivative"
+    );
+    let f = Sym::parse(src).unwrap();
+    let mut ctx = Ctx::new("x");
+    if let Some(r) = integrate(&f, &mut ctx) {
+        panic!("an antiderivative of {} nodes", size(&r));
+    }
+    // what the same substitution gives on a small integrand still comes back
+    for f in ["x*sqrt(x + 1)", "x^2*sqrt(a + b*x)", "(x - 2)^(3/2)*x^2"] {
+        assert!(Sym::parse(f).unwrap().integrate("x").is_some(), "{f}");
+    }
+}
+
 /// Found by the `calculus` target (2026-12-05): `1/(2*z^44 + x^2)^22` took 11 s (the
 /// reduction's nested result rebuilt `2ⁿ` times by `Sym::product`, see
 /// `build::tests::fuzz_a_deeply_nested_sum_is_rebuilt_once_per_level`); high powers of a
