@@ -134,24 +134,12 @@ impl Ode {
                 (self.order == 1)
                     .then(|| first_order::solve(self, &names))
                     .flatten()
-            })
-            .ok_or_else(|| {
-                no_method(if self.order == 1 {
-                    "it is neither linear, separable (with an invertible integral) nor Bernoulli"
-                        .into()
-                } else if self.order == 2 {
-                    "only linear equations with constant coefficients (or of Euler–Cauchy form, \
-                     t^2 x'' + a t x' + b x) are solved at order 2"
-                        .into()
-                } else {
-                    format!(
-                        "at order {} only linear equations with constant numeric coefficients \
-                         are solved, when the characteristic polynomial's roots have a closed \
-                         form here",
-                        self.order
-                    )
-                })
-            })?;
+            });
+        let Some(general) = general else {
+            return self
+                .equilibrium(conditions)
+                .ok_or_else(|| self.no_method_applies(&no_method));
+        };
         for candidate in &general.candidates {
             for (solution, determined) in apply(self, candidate, &names, conditions) {
                 if let Some((verification, note)) =
@@ -173,15 +161,61 @@ impl Ode {
                 }
             }
         }
-        Err(no_method(format!(
-            "the {} solution did not verify by substitution{}",
-            general.method,
-            if conditions.is_empty() {
-                ""
-            } else {
-                " (or the conditions could not be met)"
-            }
-        )))
+        self.equilibrium(conditions).ok_or_else(|| {
+            no_method(format!(
+                "the {} solution did not verify by substitution{}",
+                general.method,
+                if conditions.is_empty() {
+                    ""
+                } else {
+                    " (or the conditions could not be met)"
+                }
+            ))
+        })
+    }
+
+    /// The constant solution `x(t) = x₀` when the conditions start at rest at `x₀`
+    /// (`x(t₀) = x₀` and every derivative given 0) and the equation holds there: a
+    /// separable equation at a root of its right-hand side (`m v' = -c v^2`, `v(0) = 0`),
+    /// which the general solution reaches only with an infinite constant.
+    fn equilibrium(&self, conditions: &[Condition]) -> Option<OdeSolution> {
+        if conditions.len() != self.order {
+            return None;
+        }
+        let x0 = conditions.iter().find(|c| c.order == 0)?.value.clone();
+        if conditions
+            .iter()
+            .any(|c| c.order > 0 && !c.value.expand().is_zero())
+        {
+            return None;
+        }
+        let (verification, note) = verify(self, &x0, conditions, &[])?;
+        Some(OdeSolution {
+            solution: x0,
+            method: "equilibrium: the equation holds at rest at the initial value".into(),
+            constants: Vec::new(),
+            determined: Vec::new(),
+            assumptions: note.into_iter().collect(),
+            verification,
+        })
+    }
+
+    /// Why no method of the table applies, by order.
+    fn no_method_applies(&self, no_method: &dyn Fn(String) -> DsolveError) -> DsolveError {
+        no_method(if self.order == 1 {
+            "it is neither linear, separable (with an invertible integral) nor Bernoulli".into()
+        } else if self.order == 2 {
+            "only linear equations with constant coefficients (or of Euler–Cauchy form, \
+             t^2 x'' + a t x' + b x) are solved at order 2"
+                .into()
+        } else {
+            format!(
+                "at order {} only linear equations with constant numeric coefficients \
+                 are solved, when the characteristic polynomial's roots have a closed \
+                 form here",
+                self.order
+            )
+        })
     }
 
     /// `C1`, `C2`, … not used in the equation or the conditions.
@@ -225,6 +259,22 @@ fn apply(
         (1, [a, b]) => vec![vec![*a], vec![*b]],
         _ => vec![constants[..conditions.len()].to_vec()],
     };
+    // a constant that is infinite (`0^(-1)`: the condition is met only in a limit), or a
+    // number that is undefined, fixes nothing (one with names may be undefined only at the
+    // values tried)
+    let finite = |v: &Sym| {
+        let names = v.names();
+        let value = v.eval(&|name: &str| {
+            names
+                .iter()
+                .position(|m| m == name)
+                .map(|i| 0.7 + 0.37 * i as f64)
+        });
+        match value {
+            Ok(x) => x.is_finite() || (x.is_nan() && !names.is_empty()),
+            Err(_) => !names.is_empty(),
+        }
+    };
     let fix = |vals: &[(String, Sym)]| {
         let mut s = solution.clone();
         for (c, v) in vals {
@@ -236,7 +286,9 @@ fn apply(
         if nearly_singular(&eqs, subset) {
             continue;
         }
-        if let Ok(values) = solve_linear(&eqs, subset) {
+        if let Ok(values) = solve_linear(&eqs, subset)
+            && values.iter().all(finite)
+        {
             let vals: Vec<(String, Sym)> = subset
                 .iter()
                 .map(|c| (*c).to_string())
@@ -250,6 +302,9 @@ fn apply(
         for k in constants {
             let value_at = at(c);
             for v in invert::solve_for(&value_at, k, &c.value, None) {
+                if !finite(&v) {
+                    continue;
+                }
                 out.push(fix(&[((*k).to_string(), v)]));
             }
         }

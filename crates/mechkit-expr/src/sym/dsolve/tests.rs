@@ -282,3 +282,29 @@ fn boundary_values_that_cannot_be_met_are_refused() {
     let e = ode.solve(&[]).unwrap_err().to_string();
     assert!(e.contains("at order 3"), "{e}");
 }
+/// A separable equation started at a root of its right-hand side: the general solution
+/// `v = 4/(4 C1 + t)` meets `v(0) = 0` only with `C1 = 0^(-1)` (printed as the answer
+/// before, and passed as "verified"); the answer is the equilibrium `v = 0`.
+#[test]
+fn a_start_at_rest_at_an_equilibrium_is_the_constant_solution() {
+    let ode = Ode::parse("2*v' = -v^2/2", "v", "t").unwrap();
+    let s = ode
+        .solve(&Condition::parse_list("v(0)=0", "v").unwrap())
+        .unwrap();
+    assert_eq!(s.solution.to_string(), "0");
+    assert!(s.method.starts_with("equilibrium"), "{}", s.method);
+    // from elsewhere the general solution, with a finite constant
+    let s = ode
+        .solve(&Condition::parse_list("v(0)=3", "v").unwrap())
+        .unwrap();
+    assert_eq!(s.solution.to_string(), "12/(3*t + 4)");
+    // a pendulum at rest at the bottom, where no method of the table applies
+    let ode = Ode::parse("x'' = -sin(x)", "x", "t").unwrap();
+    let rest = Condition::parse_list("x(0)=0, x'(0)=0", "x").unwrap();
+    assert_eq!(ode.solve(&rest).unwrap().solution.to_string(), "0");
+    let swinging = Condition::parse_list("x(0)=1, x'(0)=0", "x").unwrap();
+    assert!(ode.solve(&swinging).is_err());
+    // at rest but not at an equilibrium: no constant solution
+    let ode = Ode::parse("x'' = -sin(x) + 1", "x", "t").unwrap();
+    assert!(ode.solve(&rest).is_err());
+}
