@@ -174,6 +174,22 @@ impl Sym {
         }
     }
 
+    /// Whether this node or any node below it satisfies `pred` (depth first, stopping at the
+    /// first).
+    pub fn any(&self, pred: &mut dyn FnMut(&Sym) -> bool) -> bool {
+        if pred(self) {
+            return true;
+        }
+        match self {
+            Sym::Num(_) | Sym::Var(_) => false,
+            Sym::Add(xs) | Sym::Mul(xs) | Sym::Call(_, xs) => xs.iter().any(|c| c.any(pred)),
+            Sym::Pow(a, b) | Sym::Cmp(_, a, b) | Sym::And(a, b) | Sym::Or(a, b) => {
+                a.any(pred) || b.any(pred)
+            }
+            Sym::Not(a) => a.any(pred),
+        }
+    }
+
     /// Parses and canonicalises a formula.
     pub fn parse(text: &str) -> Result<Sym, crate::ExprError> {
         Ok(Sym::from_expr(&crate::parse(text)?.expr))

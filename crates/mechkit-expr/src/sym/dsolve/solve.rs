@@ -263,16 +263,10 @@ fn apply(
     // number that is undefined, fixes nothing (one with names may be undefined only at the
     // values tried)
     let finite = |v: &Sym| {
-        let names = v.names();
-        let value = v.eval(&|name: &str| {
-            names
-                .iter()
-                .position(|m| m == name)
-                .map(|i| 0.7 + 0.37 * i as f64)
-        });
-        match value {
-            Ok(x) => x.is_finite() || (x.is_nan() && !names.is_empty()),
-            Err(_) => !names.is_empty(),
+        let named = !v.names().is_empty();
+        match at_sample_values(v) {
+            Ok(x) => x.is_finite() || (x.is_nan() && named),
+            Err(_) => named,
         }
     };
     let fix = |vals: &[(String, Sym)]| {
@@ -312,6 +306,17 @@ fn apply(
     out
 }
 
+/// `s` with its names at fixed values (0.7, 1.07, 1.44, … in the order of their first use).
+fn at_sample_values(s: &Sym) -> Result<f64, String> {
+    let names = s.names();
+    s.eval(&|name: &str| {
+        names
+            .iter()
+            .position(|m| m == name)
+            .map(|i| 0.7 + 0.37 * i as f64)
+    })
+}
+
 /// Whether the conditions, linear in `constants`, leave them undetermined in floating point:
 /// the matrix `∂eq_i/∂C_j`, evaluated with the other names at fixed values, has a determinant
 /// within 1e-10 of the product of its rows' sizes (`x(0)=0, x(pi)=1` for `x'' + x = 0`:
@@ -321,17 +326,7 @@ fn nearly_singular(eqs: &[Sym], constants: &[&str]) -> bool {
     if eqs.len() != n {
         return false;
     }
-    let value = |s: &Sym| {
-        let names = s.names();
-        s.eval(&|name: &str| {
-            names
-                .iter()
-                .position(|m| m == name)
-                .map(|i| 0.7 + 0.37 * i as f64)
-        })
-        .ok()
-        .filter(|v| v.is_finite())
-    };
+    let value = |s: &Sym| at_sample_values(s).ok().filter(|v| v.is_finite());
     let mut m = Vec::with_capacity(n);
     for e in eqs {
         let row: Option<Vec<f64>> = constants.iter().map(|c| value(&e.diff(c))).collect();

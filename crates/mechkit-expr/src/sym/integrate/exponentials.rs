@@ -38,23 +38,14 @@ fn constant_base<'a>(s: &'a Sym, x: &str) -> Option<&'a Sym> {
 }
 
 fn constant_bases(s: &Sym, x: &str, out: &mut Vec<Sym>) {
-    if let Some(b) = constant_base(s, x)
-        && !out.contains(b)
-    {
-        out.push(b.clone());
-    }
-    match s {
-        Sym::Add(xs) | Sym::Mul(xs) | Sym::Call(_, xs) => {
-            for c in xs {
-                constant_bases(c, x, out);
-            }
+    s.any(&mut |node| {
+        if let Some(b) = constant_base(node, x)
+            && !out.contains(b)
+        {
+            out.push(b.clone());
         }
-        Sym::Pow(a, b) => {
-            constant_bases(a, x, out);
-            constant_bases(b, x, out);
-        }
-        _ => {}
-    }
+        false
+    });
 }
 
 fn rewrite(s: &Sym, x: &str) -> Sym {
@@ -117,10 +108,7 @@ pub(super) fn log_substitution(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
 
 /// Whether `s` holds `ln(x)` itself.
 fn holds_log_of(s: &Sym, x: &str) -> bool {
-    match s {
-        Sym::Call(Func::Ln, args) if matches!(&args[0], Sym::Var(v) if v == x) => true,
-        Sym::Add(xs) | Sym::Mul(xs) | Sym::Call(_, xs) => xs.iter().any(|c| holds_log_of(c, x)),
-        Sym::Pow(a, b) => holds_log_of(a, x) || holds_log_of(b, x),
-        _ => false,
-    }
+    s.any(&mut |node| {
+        matches!(node, Sym::Call(Func::Ln, args) if matches!(&args[0], Sym::Var(v) if v == x))
+    })
 }
