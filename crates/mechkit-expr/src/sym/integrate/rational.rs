@@ -50,7 +50,14 @@ pub(super) fn rational(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     if dc.len() == 3 && dc[1].is_zero() && !dc[2].is_zero() && nc.len() <= 2 * MAX_LINEAR_FACTORS {
         return over_quadratic(&nc, &dc, &den, ctx);
     }
-    linear_factors(f, ctx)
+    if let r @ Some(_) = linear_factors(f, ctx) {
+        return r;
+    }
+    // a x² + b x + c = a (x + b/(2a))² + c − b²/(4a): shifted, it has no linear term
+    if dc.len() == 3 && !dc[2].is_zero() && nc.len() <= 2 * MAX_LINEAR_FACTORS {
+        return super::roots::complete_square(f, &dc, ctx);
+    }
+    None
 }
 
 /// `∫ N(x)/(a + b x²) dx` with symbols: `N = Q (a + b x²)/b + r₀ + r₁ x` by long division, then

@@ -13,7 +13,8 @@ use crate::sym::identities::is_negated;
 use crate::sym::poly::coefficients;
 
 /// Integrands `x^k (a + b x²)^p` with `p` a half-integer (or a negative integer with
-/// symbolic coefficients), `k` an even integer.
+/// symbolic coefficients), `k` an even integer; any integer `k` when the quadratic has a
+/// linear term (completed to a square first).
 pub(super) fn quadratic_roots(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     let x = ctx.x.clone();
     let x = x.as_str();
@@ -26,7 +27,7 @@ pub(super) fn quadratic_roots(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     // integer powers: only the negative ones with symbolic coefficients (numeric ones are
     // partial fractions)
     let integer_power = q == 1 && n <= -2;
-    if !(q == 2 || integer_power) || k % 2 != 0 || k.abs() > 12 || n.abs() > 24 {
+    if !(q == 2 || integer_power) || k.abs() > 12 || n.abs() > 24 {
         return None;
     }
     let c = coefficients(base, x)?;
@@ -37,14 +38,18 @@ pub(super) fn quadratic_roots(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         return None;
     }
     if !c[1].is_zero() {
+        // any power of x: the shift makes it a polynomial in t (`x*sqrt(2*a*x - x^2)`)
         return complete_square(f, &c, ctx);
+    }
+    if k % 2 != 0 {
+        return None; // odd powers go by w = x² (`substitution::odd_power_of_x`)
     }
     let (a, b) = (c[0].clone(), c[2].clone());
     reduce(k, p, &a, &b, base, ctx)
 }
 
 /// `x = t - c1/(2 c2)` removes the linear term of the quadratic.
-fn complete_square(f: &Sym, c: &[Sym], ctx: &mut Ctx) -> Option<Sym> {
+pub(super) fn complete_square(f: &Sym, c: &[Sym], ctx: &mut Ctx) -> Option<Sym> {
     let x = ctx.x.clone();
     let shift = Sym::quotient(c[1].clone(), Sym::product(vec![Sym::int(2), c[2].clone()]));
     let t = ctx.fresh();
