@@ -37,16 +37,11 @@ fn has_call(s: &Sym, x: &str) -> bool {
 pub(super) fn by_parts(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     let x = ctx.x.clone();
     let x = x.as_str();
-    let fs = factors(f);
+    let mut fs = factors(f);
     // a logarithm or inverse function: differentiate it, integrate the rest
     if let Some(i) = fs.iter().position(|g| to_differentiate(g, x)) {
-        let g = fs[i].clone();
-        let rest: Vec<Sym> = fs
-            .iter()
-            .enumerate()
-            .filter(|&(k, _)| k != i)
-            .map(|(_, s)| s.clone())
-            .collect();
+        let g = fs.remove(i);
+        let rest = fs;
         let q = integrate(&Sym::product(rest), ctx)?;
         let rest = Sym::product(vec![q.clone(), g.diff(x)]);
         return Some(Sym::difference(

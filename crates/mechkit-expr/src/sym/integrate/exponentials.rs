@@ -69,19 +69,13 @@ fn rewrite(s: &Sym, x: &str) -> Sym {
 pub(super) fn exp_of_logs_as_powers(s: &Sym) -> Sym {
     let s = s.map_children(exp_of_logs_as_powers);
     if let Sym::Call(Func::Exp, args) = &s {
-        let factors = super::factors(&args[0]);
-        let logs: Vec<usize> = (0..factors.len())
-            .filter(|&i| matches!(&factors[i], Sym::Call(Func::Ln, _)))
+        let mut rest = super::factors(&args[0]);
+        let logs: Vec<usize> = (0..rest.len())
+            .filter(|&i| matches!(&rest[i], Sym::Call(Func::Ln, _)))
             .collect();
         if let [i] = logs[..]
-            && let Sym::Call(Func::Ln, inner) = &factors[i]
+            && let Sym::Call(Func::Ln, inner) = rest.remove(i)
         {
-            let rest: Vec<Sym> = factors
-                .iter()
-                .enumerate()
-                .filter(|&(k, _)| k != i)
-                .map(|(_, f)| f.clone())
-                .collect();
             return Sym::pow(inner[0].clone(), Sym::product(rest));
         }
     }
