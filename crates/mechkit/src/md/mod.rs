@@ -49,6 +49,7 @@ mod report;
 mod rng;
 mod run;
 mod setup;
+mod setup_error;
 mod sim_box;
 mod start;
 mod system;
@@ -74,10 +75,8 @@ pub use potential::{LennardJones, LinearSpring, PairPotential, SoftSphere};
 pub use report::MdReport;
 pub use rng::Xoshiro256;
 pub use run::{MdObserver, MdRun, MdStop, RunPlan};
-pub use setup::{
-    Atoms, LATTICE_TEMPERATURE, MdOption, MdOptions, Potential, RDF_BINS, Setup, SetupError,
-    WithPotential,
-};
+pub use setup::{Atoms, LATTICE_TEMPERATURE, MdOptions, Potential, RDF_BINS, Setup, WithPotential};
+pub use setup_error::{MdOption, SetupError};
 pub use sim_box::SimBox;
 pub use system::{Md, MdConfig};
 pub use velocities::maxwell_boltzmann;

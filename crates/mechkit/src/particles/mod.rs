@@ -4,6 +4,7 @@
 //! Positions and velocities are flat arrays, body after body: `q = [x₀, y₀, x₁, y₁, …]`, and
 //! the state vector of the system is `[q, v]` ([`crate::ode::State`]).
 
+mod body_refs;
 mod enclosure;
 mod kinematics;
 mod names;
@@ -13,6 +14,7 @@ mod state_expr;
 mod system;
 mod vars;
 
+pub use body_refs::{PointRef, SpinField, SpinRef};
 pub use enclosure::StateJets;
 pub use kinematics::{Kinematics, dot, norm};
 pub use names::{NO_PLANAR, NameContext, PlanarNames, RigidName};
@@ -21,4 +23,4 @@ pub use state_expr::StateExpr;
 pub use system::{
     Body, CompiledJacobian, Extra, ParticleSystem, ParticleSystemBuilder, SystemError,
 };
-pub use vars::{BodyRef, Coordinates, PointRef, SpinField, SpinRef, StateVar, VarLevel};
+pub use vars::{BodyRef, Coordinates, StateVar, VarLevel};

@@ -56,6 +56,7 @@ mod model;
 mod observe;
 mod output;
 mod plot;
+mod plot_recorder;
 mod provenance;
 mod rigid;
 mod rocket;

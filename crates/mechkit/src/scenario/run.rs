@@ -11,7 +11,7 @@ use super::output::{
     CsvWriter, Keep, ReservedFile, SUMMARY_RESERVE, Trajectory, TrajectoryTable, csv_columns_in,
     csv_header, write_atomic,
 };
-use super::plot::PlotRecorder;
+use super::plot_recorder::PlotRecorder;
 use super::provenance::Provenance;
 use super::summary::Summary;
 use super::{OutputTimes, Scenario};
