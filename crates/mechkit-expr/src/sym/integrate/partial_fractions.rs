@@ -127,13 +127,18 @@ fn divide_out(p: &mut NumPoly, factor: &NumPoly) -> usize {
 }
 
 /// Quadratic factors of a polynomial without rational roots: itself when of degree 2, the
-/// quadratics of its square-free decomposition, and `x² - y` for rational roots `y` of an even
-/// polynomial in `y = x²`.
+/// quadratics of its square-free decomposition, the two factors of an even quartic that splits
+/// over the rationals (`x⁴ + 4 = (x² + 2x + 2)(x² - 2x + 2)`), and `x² - y` for rational roots
+/// `y` of an even polynomial in `y = x²`.
 fn quadratic_candidates(p: &NumPoly) -> Vec<NumPoly> {
     let mut out: Vec<NumPoly> = Vec::new();
     let mut push = |q: NumPoly| {
+        let q = monic(&q);
+        let mut found = even_quartic_factors(&q);
         if q.degree() == Some(2) {
-            let q = monic(&q);
+            found.push(q);
+        }
+        for q in found {
             if !out.contains(&q) {
                 out.push(q);
             }
@@ -164,6 +169,32 @@ fn quadratic_candidates(p: &NumPoly) -> Vec<NumPoly> {
         }
     }
     out
+}
+
+/// `x⁴ + b x² + d = (x² + r x + q)(x² - r x + q)` with `q = ±√d` and `r = √(2q - b)`, when
+/// both are rational and `r > 0` (a monic `p`; nothing for any other).
+fn even_quartic_factors(p: &NumPoly) -> Vec<NumPoly> {
+    let c = &p.0;
+    if p.degree() != Some(4) || !c[1].is_zero() || !c[3].is_zero() || !c[4].is_one() {
+        return Vec::new();
+    }
+    let (b, d) = (c[2], c[0]);
+    let Some(root_d) = d.exact_root(2) else {
+        return Vec::new();
+    };
+    for q in [root_d, root_d.negated()] {
+        let r2 = q.times(Number::int(2)).plus(b.negated());
+        if r2.is_negative() || r2.is_zero() {
+            continue;
+        }
+        if let Some(r) = r2.exact_root(2) {
+            return vec![
+                NumPoly::new(vec![q, r, Number::ONE]),
+                NumPoly::new(vec![q, r.negated(), Number::ONE]),
+            ];
+        }
+    }
+    Vec::new()
 }
 
 fn monic(p: &NumPoly) -> NumPoly {
@@ -199,19 +230,22 @@ fn gcd(a: &NumPoly, b: &NumPoly) -> NumPoly {
     if a.is_zero() { a } else { monic(&a) }
 }
 
-/// `∫ (B x + C)/q^j dx` for an irreducible `q = c2 x² + c1 x + c0`:
-/// `B/(2 c2) ∫ q'/q^j + (C - B c1/(2 c2)) I_j`, with `I_1 = 2/√Δ atan((2 c2 x + c1)/√Δ)`,
-/// `I_j = (2 c2 x + c1)/((j-1) Δ q^(j-1)) + 2 (2j - 3) c2/((j-1) Δ) I_(j-1)`,
-/// `Δ = 4 c2 c0 - c1²`.
+/// `∫ (B x + C)/q^j dx` for a quadratic `q = c2 x² + c1 x + c0` without rational roots:
+/// `B/(2 c2) ∫ q'/q^j + (C - B c1/(2 c2)) I_j`, with `Δ = 4 c2 c0 - c1²`,
+/// `I_1 = 2/√Δ atan((2 c2 x + c1)/√Δ)` when `Δ > 0` (no real roots) and
+/// `I_1 = 1/√-Δ ln|(2 c2 x + c1 - √-Δ)/(2 c2 x + c1 + √-Δ)|` when `Δ < 0` (two irrational
+/// roots: `1/(x² - 2)`), and
+/// `I_j = (2 c2 x + c1)/((j-1) Δ q^(j-1)) + 2 (2j - 3) c2/((j-1) Δ) I_(j-1)` for either.
 fn quadratic_term(qd: &NumPoly, j: usize, b: Number, c: Number, x: &str) -> Option<Sym> {
     let (c0, c1, c2) = (qd.0[0], qd.0[1], qd.0[2]);
     let disc = Number::int(4)
         .times(c2)
         .times(c0)
         .plus(c1.times(c1).negated());
-    if disc.is_negative() || disc.is_zero() {
+    if disc.is_zero() {
         return None;
     }
+    let real_roots = disc.is_negative();
     let qsym = qd.to_sym(x);
     let xv = var(x);
     let half = Number::rational(1, 2);
@@ -219,7 +253,11 @@ fn quadratic_term(qd: &NumPoly, j: usize, b: Number, c: Number, x: &str) -> Opti
     let first = if j == 1 {
         Sym::product(vec![
             Sym::Num(log_coeff),
-            Sym::call(Func::Ln, vec![qsym.clone()]),
+            if real_roots {
+                ln_abs(qsym.clone())
+            } else {
+                Sym::call(Func::Ln, vec![qsym.clone()])
+            },
         ])
     } else {
         let k = Number::int(1 - j as i64);
@@ -233,12 +271,23 @@ fn quadratic_term(qd: &NumPoly, j: usize, b: Number, c: Number, x: &str) -> Opti
         Sym::product(vec![Sym::Num(c2.times(Number::int(2))), xv]),
         Sym::Num(c1),
     ]);
-    let s = Sym::sqrt(Sym::Num(disc));
-    let mut integral = Sym::product(vec![
-        Sym::int(2),
-        Sym::pow(s.clone(), Sym::int(-1)),
-        Sym::call(Func::Atan, vec![Sym::quotient(lin.clone(), s)]),
-    ]);
+    let mut integral = if real_roots {
+        let s = Sym::sqrt(Sym::Num(disc.negated()));
+        Sym::product(vec![
+            Sym::pow(s.clone(), Sym::int(-1)),
+            ln_abs(Sym::quotient(
+                Sym::difference(lin.clone(), s.clone()),
+                Sym::sum(vec![lin.clone(), s]),
+            )),
+        ])
+    } else {
+        let s = Sym::sqrt(Sym::Num(disc));
+        Sym::product(vec![
+            Sym::int(2),
+            Sym::pow(s.clone(), Sym::int(-1)),
+            Sym::call(Func::Atan, vec![Sym::quotient(lin.clone(), s)]),
+        ])
+    };
     for i in 2..=j {
         let i1 = Number::int(i as i64 - 1);
         let d = i1.times(disc);

@@ -261,3 +261,58 @@ pub(super) fn product_to_sum(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     };
     integrate(&g, ctx)
 }
+
+/// `sin 2u = 2 sin u cos u` and `cos 2u` in the functions of `u` beside it (`2 cos² u - 1`
+/// beside cosines only, `1 - 2 sin² u` beside sines only, else `cos² u - sin² u`), when the
+/// integrand holds a trigonometric function of `u` as well: `sin(2x)/(1 + cos(x)^2)` and
+/// `exp(sin x) sin 2x` in one argument, for the substitutions. `None` when there is no such
+/// pair.
+pub(super) fn double_angles(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let mut calls: Vec<(Func, Sym)> = Vec::new();
+    f.any(&mut |s| {
+        if let Sym::Call(func @ (Func::Sin | Func::Cos | Func::Tan), args) = s
+            && args.len() == 1
+            && !args[0].free_of(&x)
+            && !calls.contains(&(*func, args[0].clone()))
+        {
+            calls.push((*func, args[0].clone()));
+        }
+        false
+    });
+    let half = |w: &Sym| Sym::product(vec![Sym::rational(1, 2), w.clone()]);
+    let (_, w) = calls
+        .iter()
+        .find(|(func, w)| {
+            matches!(func, Func::Sin | Func::Cos) && calls.iter().any(|(_, u)| *u == half(w))
+        })?
+        .clone();
+    let u = half(&w);
+    let of_u: Vec<Func> = calls
+        .iter()
+        .filter(|(_, v)| *v == u)
+        .map(|(func, _)| *func)
+        .collect();
+    let (sin, cos) = (
+        Sym::call(Func::Sin, vec![u.clone()]),
+        Sym::call(Func::Cos, vec![u]),
+    );
+    let square = |s: &Sym| Sym::pow(s.clone(), Sym::int(2));
+    let double_cos = if of_u.iter().all(|g| *g == Func::Cos) {
+        Sym::sum(vec![
+            Sym::product(vec![Sym::int(2), square(&cos)]),
+            Sym::int(-1),
+        ])
+    } else if of_u.iter().all(|g| *g == Func::Sin) {
+        Sym::difference(Sym::one(), Sym::product(vec![Sym::int(2), square(&sin)]))
+    } else {
+        Sym::difference(square(&cos), square(&sin))
+    };
+    let g = f
+        .replace(
+            &Sym::call(Func::Sin, vec![w.clone()]),
+            &Sym::product(vec![Sym::int(2), sin, cos]),
+        )
+        .replace(&Sym::call(Func::Cos, vec![w]), &double_cos);
+    (g != *f).then(|| integrate(&g, ctx))?
+}

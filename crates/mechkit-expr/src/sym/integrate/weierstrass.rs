@@ -2,9 +2,11 @@
 //! (`1/(a + b cos x)`, `1/(1 + sin x)`) by the Weierstrass substitution `t = tan(x/2)`:
 //! `sin x = 2t/(1+t²)`, `cos x = (1−t²)/(1+t²)`, `tan x = 2t/(1−t²)`, `dx = 2 dt/(1+t²)`,
 //! which makes them rational functions of `t`; a rational function of `tan x` alone goes by
-//! `u = tan x`, `dx = du/(1+u²)` (`1/(3 + tan x)`). The antiderivative holds between the poles of
-//! `tan(x/2)` (on `(−π, π)` and its translates by `2π`); a definite integral across
-//! `x = ±π` is left to quadrature (the closed form is checked against it).
+//! `u = tan x`, `dx = du/(1+u²)` (`1/(3 + tan x)`), and so does one where `cos x` occurs
+//! only squared once `sin x` is written `tan x cos x` (`1/(1 + sin² x)`). The antiderivative
+//! holds between the poles of `tan(x/2)` (of `tan x` for `u`), and is made continuous across
+//! them where its `atan` terms tell the jump (`continuous`); else a definite integral across
+//! a pole is left to quadrature (the closed form is checked against it).
 
 use super::{Ctx, Sym, var};
 use crate::ast::Func;
@@ -38,6 +40,9 @@ pub(super) fn weierstrass(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         let big_g = rational_in(&g, &t, ctx)?;
         return Some(continuous(&big_g, &t, &var(x), ctx));
     }
+    if let Some(big_g) = even_in_tan(f, x, &t, ctx) {
+        return Some(continuous(&big_g, &t, &var(x), ctx));
+    }
     let one_plus = Sym::sum(vec![Sym::one(), Sym::pow(tv.clone(), Sym::int(2))]);
     let one_minus = Sym::difference(Sym::one(), Sym::pow(tv.clone(), Sym::int(2)));
     let two_t = Sym::product(vec![Sym::int(2), tv.clone()]);
@@ -50,6 +55,49 @@ pub(super) fn weierstrass(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     let big_g = rational_in(&g, &t, ctx)?;
     let half_x = Sym::product(vec![Sym::rational(1, 2), var(x)]);
     Some(continuous(&big_g, &t, &half_x, ctx))
+}
+
+/// `∫ f dx` by `u = tan x` for an integrand where `cos x` occurs only squared once `sin x` is
+/// written `tan x cos x` (unchanged by `x → x + π`: `1/(1 + sin² x)`, `1/(2 + sin x cos x)`):
+/// `cos² x = 1/(1 + u²)`, `dx = du/(1 + u²)`, a rational function of `u` of half the degree
+/// `t = tan(x/2)` gives. `None` for any other integrand.
+fn even_in_tan(f: &Sym, x: &str, u: &str, ctx: &mut Ctx) -> Option<Sym> {
+    let w = ctx.fresh();
+    let (uv, wv) = (var(u), var(&w));
+    let g = rewrite(f, x, &|func| match func {
+        Func::Sin => Sym::product(vec![uv.clone(), wv.clone()]),
+        Func::Cos => wv.clone(),
+        _ => uv.clone(),
+    });
+    let one_plus = Sym::sum(vec![Sym::one(), Sym::pow(uv.clone(), Sym::int(2))]);
+    let g = even_powers(&g, &w, &one_plus)?;
+    let g = Sym::quotient(g, one_plus);
+    rational_in(&g, u, ctx)
+}
+
+/// `s` with each even power `w^2k` replaced by `c^-k`; `None` when `w` occurs otherwise.
+fn even_powers(s: &Sym, w: &str, c: &Sym) -> Option<Sym> {
+    if s.free_of(w) {
+        return Some(s.clone());
+    }
+    match s {
+        Sym::Pow(b, e) if matches!(&**b, Sym::Var(v) if v == w) => {
+            let k = e.as_num()?.as_integer()?;
+            (k % 2 == 0).then(|| Sym::pow(c.clone(), Sym::Num(Number::int(-(k / 2) as i64))))
+        }
+        Sym::Add(xs) => Some(Sym::sum(
+            xs.iter()
+                .map(|t| even_powers(t, w, c))
+                .collect::<Option<_>>()?,
+        )),
+        Sym::Mul(xs) => Some(Sym::product(
+            xs.iter()
+                .map(|t| even_powers(t, w, c))
+                .collect::<Option<_>>()?,
+        )),
+        Sym::Pow(b, e) if e.free_of(w) => Some(Sym::pow(even_powers(b, w, c)?, (**e).clone())),
+        _ => None,
+    }
 }
 
 /// `G(tan(y))` made continuous across the poles of `tan(y)` (`y = x` or `x/2`): each
