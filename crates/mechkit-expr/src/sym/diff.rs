@@ -65,6 +65,10 @@ impl Sym {
 }
 
 fn call_derivative(f: Func, args: &[Sym], x: &str) -> Sym {
+    // ln|v|' = v'/v (sign(v)/|v| = 1/v wherever v ≠ 0)
+    if let (Func::Ln | Func::Log, Sym::Call(Func::Abs, inner)) = (f, &args[0]) {
+        return Sym::quotient(inner[0].diff(x), inner[0].clone());
+    }
     let u = args[0].clone();
     let du = u.diff(x);
     let inv = |s: Sym| Sym::pow(s, Sym::int(-1));

@@ -121,3 +121,32 @@ pub(super) fn cyclic(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     }
     Some(Sym::product(vec![e, combo, Sym::pow(norm, Sym::int(-1))]))
 }
+
+/// The product rule backwards: `∫ exp(c x + d) g dx = exp(c x + d) h` when `g = c h + h'`,
+/// for `h` one term of `g` over `c` (`exp(x) (1/x + ln x) → exp(x) ln x`, whose terms have no
+/// antiderivatives of their own); checked by differentiation.
+pub(super) fn product_rule_backwards(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let x = x.as_str();
+    let mut fs = factors(f);
+    let i = fs.iter().position(|g| {
+        matches!(g, Sym::Call(Func::Exp, a)
+            if coefficients(&a[0], x).is_some_and(|c| c.len() == 2 && c[1].free_of(x)))
+    })?;
+    let e = fs.remove(i);
+    let Sym::Call(_, a) = &e else { return None };
+    let c = coefficients(&a[0], x)?.pop()?;
+    let g = Sym::product(fs).expand();
+    let terms = match &g {
+        Sym::Add(ts) if ts.len() <= 8 => ts.clone(),
+        Sym::Add(_) => return None,
+        other => vec![other.clone()],
+    };
+    if !ctx.spend(super::size(f) * terms.len()) {
+        return None;
+    }
+    terms.iter().find_map(|t| {
+        let big_f = Sym::product(vec![e.clone(), Sym::quotient(t.clone(), c.clone())]);
+        super::verify(f, &big_f, x, &ctx.positive).then_some(big_f)
+    })
+}

@@ -19,9 +19,13 @@
 //!   powers of irreducible quadratics), `c/(a + b x²)` with symbols;
 //! - [`exponentials`]: a power with a constant base `b^x` as `exp(x ln b)`, functions of
 //!   `ln x` by `x = exp(u)` (`sin(ln x)`);
+//! - [`rewrites`]: `log10 u = ln u/ln 10`, `sqrt(1 + sinh² u) = cosh u`, `ln(p/q)` and
+//!   `sqrt(p/q)` split, `1/(√a + √b)` rationalized, hyperbolic functions beside trigonometric
+//!   ones as exponentials, `|a x + b|` by its sign on either side of the root;
 //! - [`by_parts`]: integration by parts (a polynomial times an integrable transcendental
-//!   factor, a logarithm or inverse function times an integrable factor), and the cyclic
-//!   `exp·sin`, `exp·cos` in closed form.
+//!   factor, a logarithm or inverse function times an integrable factor), the cyclic
+//!   `exp·sin`, `exp·cos` in closed form, and the product rule backwards
+//!   (`exp(x) (h + h')`).
 //!
 //! Every result is checked by differentiating it back and comparing with the integrand at
 //! several points; when no rule applies or the check fails, the answer is `None`, never a wrong
@@ -32,6 +36,7 @@ mod exp_trig;
 mod exponentials;
 mod partial_fractions;
 mod rational;
+mod rewrites;
 mod roots;
 mod substitution;
 mod table;
@@ -185,12 +190,58 @@ impl Sym {
     pub fn integrate(&self, x: &str) -> Option<Antiderivative> {
         let mut ctx = Ctx::new(x);
         let result = drop_constants(integrate(self, &mut ctx)?, x);
-        verify(self, &result, x, &ctx.positive).then_some(Antiderivative {
-            result,
-            assumptions: ctx.assumptions,
-            positive: ctx.positive,
-        })
+        (verify(self, &result, x, &ctx.positive) && continuous_at_jumps(self, &result, x))
+            .then_some(Antiderivative {
+                result,
+                assumptions: ctx.assumptions,
+                positive: ctx.positive,
+            })
     }
+}
+
+/// Whether `F` is continuous where the integrand jumps: at the root of the linear argument of
+/// each `heaviside` or `sign` of the integrand (`F' = f` checked at points says nothing
+/// there: `-exp(-t) heaviside(t - 1)` differentiates to `exp(-t) heaviside(t - 1)` on either
+/// side, and jumps at 1). An integrand with `floor`, `ceil`, `sign` or `heaviside` of anything
+/// else has no checked antiderivative.
+fn continuous_at_jumps(f: &Sym, big_f: &Sym, x: &str) -> bool {
+    let mut ok = true;
+    f.any(&mut |n| {
+        let Sym::Call(func, args) = n else {
+            return false;
+        };
+        if !matches!(
+            func,
+            Func::Heaviside | Func::Sign | Func::Floor | Func::Ceil
+        ) || args[0].free_of(x)
+        {
+            return false;
+        }
+        let root = match crate::sym::poly::coefficients(&args[0], x) {
+            Some(c) if c.len() == 2 && !matches!(func, Func::Floor | Func::Ceil) => {
+                Sym::negate(Sym::quotient(c[0].clone(), c[1].clone()))
+            }
+            _ => {
+                ok = false;
+                return true;
+            }
+        };
+        let names = |_: &str| Some(1.3);
+        let Ok(r) = root.eval(&names) else {
+            ok = false;
+            return true;
+        };
+        let h = 1e-7 * r.abs().max(1.0);
+        let at = |v: f64| big_f.eval(&|n| if n == x { Some(v) } else { Some(1.3) });
+        ok = match (at(r - h), at(r + h)) {
+            (Ok(a), Ok(b)) if a.is_finite() && b.is_finite() => {
+                (a - b).abs() <= 1e-4 * a.abs().max(b.abs()).max(1.0)
+            }
+            _ => false,
+        };
+        !ok
+    });
+    ok
 }
 
 /// `F` without the terms of its sum that are free of `x` (constants of integration a
@@ -256,6 +307,9 @@ fn rules(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
             ]));
         }
     }
+    if let Some(g) = rewrites::identities(f) {
+        return integrate(&g, ctx);
+    }
     if let Some(g) = exponentials::powers_as_exponentials(f, ctx) {
         return integrate(&g, ctx).map(|r| exponentials::exp_of_logs_as_powers(&r));
     }
@@ -272,6 +326,9 @@ fn rules(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         return Some(r);
     }
     if let Some(r) = substitution::derivative_divides(f, ctx) {
+        return Some(r);
+    }
+    if let Some(r) = by_parts::product_rule_backwards(f, ctx) {
         return Some(r);
     }
     let expanded = f.expand();
@@ -303,6 +360,21 @@ fn rules(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         return Some(r);
     }
     if let Some(r) = weierstrass::weierstrass(f, ctx) {
+        return Some(r);
+    }
+    if let Some(r) = rewrites::odd_trig_power(f, ctx) {
+        return Some(r);
+    }
+    if let Some(r) = rewrites::linear_abs(f, ctx) {
+        return Some(r);
+    }
+    if let Some(r) = rewrites::rationalize(f, ctx) {
+        return Some(r);
+    }
+    if let Some(r) = rewrites::hyperbolic_as_exponentials(f, ctx) {
+        return Some(r);
+    }
+    if let Some(r) = rewrites::quotients(f, ctx) {
         return Some(r);
     }
     by_parts::by_parts(f, ctx).or_else(|| exponentials::log_substitution(f, ctx))

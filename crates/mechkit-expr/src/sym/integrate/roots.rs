@@ -38,6 +38,9 @@ pub(super) fn quadratic_roots(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
         return None;
     }
     if !c[1].is_zero() {
+        if q == 2 && k < 0 && i128::from(-k) - n - 2 >= 0 && !c[0].is_zero() {
+            return reciprocal(-k, p, &c, ctx);
+        }
         // any power of x: the shift makes it a polynomial in t (`x*sqrt(2*a*x - x^2)`)
         return complete_square(f, &c, ctx);
     }
@@ -46,6 +49,34 @@ pub(super) fn quadratic_roots(f: &Sym, ctx: &mut Ctx) -> Option<Sym> {
     }
     let (a, b) = (c[0].clone(), c[2].clone());
     reduce(k, p, &a, &b, base, ctx)
+}
+
+/// `∫ q^p/x^k dx` for `q = c0 + c1 x + c2 x²` with `c0 ≠ 0`, a half-integer `p = n/2` and
+/// `k ≥ n + 2` (`1/(x sqrt(-x² + 4x - 3))`), by `t = 1/x`: `q = Q(t)/t²` with
+/// `Q = c0 t² + c1 t + c2`, and for `x > 0` the integrand becomes `-t^(k - n - 2) Q^p`, a
+/// power of `t` times a root of a quadratic; for `x < 0`, `|t|^n = -t^n` flips the sign:
+/// `F = sign(x) G(1/x)`.
+fn reciprocal(k: i64, p: Number, c: &[Sym], ctx: &mut Ctx) -> Option<Sym> {
+    let x = ctx.x.clone();
+    let (n, _) = p.as_rational()?;
+    let t = ctx.fresh();
+    let tv = var(&t);
+    let big_q = Sym::sum(vec![
+        Sym::product(vec![c[0].clone(), Sym::pow(tv.clone(), Sym::int(2))]),
+        Sym::product(vec![c[1].clone(), tv.clone()]),
+        c[2].clone(),
+    ]);
+    let power = i64::try_from(n).ok()?;
+    let g = Sym::negate(Sym::product(vec![
+        Sym::pow(tv, Sym::int(k - power - 2)),
+        Sym::pow(big_q, Sym::Num(p)),
+    ]));
+    let big_g = ctx.integrate_in(&g, &t)?;
+    let xv = var(&x);
+    Some(Sym::product(vec![
+        Sym::call(Func::Sign, vec![xv.clone()]),
+        big_g.substitute(&t, &Sym::pow(xv, Sym::int(-1))),
+    ]))
 }
 
 /// `x = t - c1/(2 c2)` removes the linear term of the quadratic.

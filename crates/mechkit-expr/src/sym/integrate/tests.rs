@@ -321,3 +321,75 @@ fn symbolic_partial_fractions_constant_bases_and_functions_of_the_logarithm() {
     // a negative base has no real power: no answer
     assert_eq!(int("(-2)^x"), None);
 }
+
+/// `F(b) - F(a)` of the antiderivative of `f`.
+fn definite(f: &str, a: f64, b: f64) -> f64 {
+    let big_f = Sym::parse(f).unwrap().integrate("x").unwrap().result;
+    let at = |v: f64| big_f.eval(&|n| (n == "x").then_some(v)).unwrap();
+    at(b) - at(a)
+}
+
+#[test]
+fn an_absolute_value_of_a_linear_argument_is_integrated_across_its_root() {
+    assert_eq!(int("x*abs(x)").unwrap(), "abs(x)^3/3");
+    assert_eq!(int("exp(-abs(x))").unwrap(), "sign(x)*(1 - exp(-abs(x)))");
+    for (f, a, b, exact) in [
+        ("x*abs(x)", -1.0, 2.0, 7.0 / 3.0),
+        (
+            "exp(-abs(x))",
+            -1.0,
+            2.0,
+            2.0 - (-1.0_f64).exp() - (-2.0_f64).exp(),
+        ),
+        (
+            "sqrt(abs(x))",
+            -1.0,
+            2.0,
+            2.0 / 3.0 * (1.0 + 2.0_f64.powf(1.5)),
+        ),
+        ("x*abs(2*x - 1)", 0.0, 1.0, 0.25),
+        ("ln(abs(x))", -2.0, -1.0, 2.0 * 2.0_f64.ln() - 1.0),
+    ] {
+        let v = definite(f, a, b);
+        assert!((v - exact).abs() < 1e-12, "{f}: {v} against {exact}");
+    }
+}
+
+#[test]
+fn a_jump_of_the_integrand_gives_no_antiderivative_that_jumps() {
+    // -exp(-x) heaviside(x - 1) differentiates to the integrand on either side of 1, and
+    // jumps there: no answer (the product rule backwards found it)
+    assert_eq!(int("heaviside(x - 1)*exp(-x)"), None);
+    assert_eq!(int("floor(x)"), None);
+    // continuous across the jump of its integrand
+    assert_eq!(int("sign(x)").unwrap(), "abs(x)");
+}
+
+#[test]
+fn rewrites_into_forms_the_rules_know() {
+    for (f, want) in [
+        ("log10(x)", "(x*ln(x) - x)/ln(10)"),
+        ("sqrt(1 + sinh(x)^2)", "sinh(x)"),
+        ("exp(2*x)*exp(3*x)", "exp(5*x)/5"),
+        ("exp(x)*(1 + x*ln(x))/x", "exp(x)*ln(x)"),
+        (
+            "1/(sqrt(x + 1) + sqrt(x))",
+            "2*(x + 1)^(3/2)/3 - 2*x^(3/2)/3",
+        ),
+        ("cos(x)^3/sqrt(sin(x))", "2*sqrt(sin(x)) - 2*sin(x)^(5/2)/5"),
+        ("atan(1/x)", "x*atan(1/x) + ln(abs(x^2 + 1))/2"),
+        (
+            "1/(x^2 - 2)",
+            "ln(abs((x - sqrt(2))/(sqrt(2) + x)))/(2*sqrt(2))",
+        ),
+    ] {
+        assert_eq!(int(f).as_deref(), Some(want), "{f}");
+    }
+    // `1/x` by `t = 1/x`, with the sign of x
+    assert!(int("1/(x*sqrt(x^2 + x + 1))").unwrap().contains("sign(x)"));
+    // the symbolic u = tan x
+    assert_eq!(
+        int("1/(a^2*sin(x)^2 + b^2*cos(x)^2)").unwrap(),
+        "atan(a*tan(x)/b)/(a*b) + (x - atan(tan(x)))/(a*b)"
+    );
+}
