@@ -45,8 +45,8 @@ fn peel(lhs: &Sym, x: &str, rhs: Sym, constant: Option<&str>, depth: usize) -> V
             match with.as_slice() {
                 [one] => next(one, divided(&rhs, Sym::product(without), constant)),
                 _ => linear_fraction(&with, x, &Sym::quotient(rhs, Sym::product(without)))
-                    .into_iter()
-                    .collect(),
+                    .map(|(g, v)| next(&g, v))
+                    .unwrap_or_default(),
             }
         }
         Sym::Pow(b, e) if e.free_of(x) => {
@@ -158,28 +158,44 @@ fn divided(rhs: &Sym, p: Sym, constant: Option<&str>) -> Sym {
     }
 }
 
-/// `x` with `Π factors = rhs` when the factors are `(a + b x)` and `(c + d x)^-1` (a Möbius
-/// transformation, what `ln|(a + b x)/(c + d x)|` leaves once the logarithm is peeled).
-fn linear_fraction(factors: &[Sym], x: &str, rhs: &Sym) -> Option<Sym> {
+/// `g` and its value with `Π factors = rhs` when the factors are `(a + b g)` and
+/// `(c + d g)^-1` for `g` = `x` or one function of `x` (a Möbius transformation, what
+/// `ln|(a + b x)/(c + d x)|` leaves once the logarithm is peeled, or
+/// `ln|(cos x - 1)/(cos x + 1)|` from `x' = sin x`): `g = (R c - a)/(b - R d)`.
+fn linear_fraction(factors: &[Sym], x: &str, rhs: &Sym) -> Option<(Sym, Sym)> {
+    let mut inner = Sym::var(x);
+    factors[0].any(&mut |n| {
+        let found = matches!(n, Sym::Call(_, a) if !a[0].free_of(x));
+        if found {
+            inner = n.clone();
+        }
+        found
+    });
+    let g = "__g";
     let (mut num, mut den) = (Vec::new(), Vec::new());
     for f in factors {
-        match f {
+        let (list, f) = match f {
             Sym::Pow(b, e)
                 if e.as_num()
                     .is_some_and(|n| n == crate::number::Number::int(-1)) =>
             {
-                den.push((**b).clone());
+                (&mut den, &**b)
             }
-            other => num.push(other.clone()),
+            other => (&mut num, other),
+        };
+        let f = f.replace(&inner, &Sym::var(g));
+        if !f.free_of(x) {
+            return None;
         }
+        list.push(f);
     }
     let linear = |s: Vec<Sym>| {
-        let c = coefficients(&Sym::product(s), x)?;
-        (c.len() <= 2 && c.iter().all(|k| k.free_of(x)))
+        let c = coefficients(&Sym::product(s), g)?;
+        (c.len() <= 2 && c.iter().all(|k| k.free_of(g)))
             .then(|| (c[0].clone(), c.get(1).cloned().unwrap_or_else(Sym::zero)))
     };
     let ((a, b), (c, d)) = (linear(num)?, linear(den)?);
     let top = Sym::difference(Sym::product(vec![rhs.clone(), c]), a);
     let bottom = Sym::difference(b, Sym::product(vec![rhs.clone(), d]));
-    (!bottom.is_zero()).then(|| Sym::quotient(top, bottom))
+    (!bottom.is_zero()).then(|| (inner, Sym::quotient(top, bottom)))
 }

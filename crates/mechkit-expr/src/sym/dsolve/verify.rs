@@ -38,13 +38,6 @@ pub(super) fn verify(
         .iter()
         .map(|c| (at(c), c.value.clone()))
         .collect();
-    if residual.expand().is_zero()
-        && conds
-            .iter()
-            .all(|(a, v)| Sym::difference(a.clone(), v.clone()).expand().is_zero())
-    {
-        return Some((Verification::Symbolic, None));
-    }
     // the scale of the residual: its terms before they cancel
     let terms: Vec<Sym> = match &ode.residual {
         Sym::Add(ts) => ts.clone(),
@@ -60,6 +53,22 @@ pub(super) fn verify(
             .residual_of(solution)
         })
         .collect();
+    // the extent of a solution with no free names, from the first condition's point
+    let extent_from_conditions = || {
+        let free = solution.names().iter().any(|n| *n != ode.var)
+            || conds.iter().any(|(_, v)| !v.names().is_empty());
+        let t0 = conditions.first()?.at.eval(&|_| None).ok()?;
+        (!free)
+            .then(|| extent(&ode.var, solution, &residual, &terms, t0))
+            .flatten()
+    };
+    if residual.expand().is_zero()
+        && conds
+            .iter()
+            .all(|(a, v)| Sym::difference(a.clone(), v.clone()).expand().is_zero())
+    {
+        return Some((Verification::Symbolic, extent_from_conditions()));
+    }
     let mut names = residual.names();
     names.extend(solution.names());
     names.extend(ode.residual.names());
@@ -95,14 +104,109 @@ pub(super) fn verify(
             continue;
         }
         if r.abs() > RTOL * scale.max(1e-300) && r != 0.0 {
-            return local(ode, &residual, &terms, &conds, conditions, &names, positive);
+            return local(ode, &residual, &terms, &conds, conditions, &names, positive)
+                .map(|(v, note)| (v, extent_from_conditions().or(note)));
         }
         if !conditions_hold(&conds, &base) {
             return None;
         }
         agree += 1;
     }
-    (agree >= NEEDED).then_some((Verification::Numeric { points: agree }, None))
+    if agree < NEEDED {
+        return None;
+    }
+    Some((
+        Verification::Numeric { points: agree },
+        extent_from_conditions(),
+    ))
+}
+
+/// How far from `t0` a solution with no free names holds, when not everywhere: up to the
+/// nearest root of a squared base past which the residual no longer vanishes (`(a - b t)^2`
+/// solves `h' = -k sqrt(h)` only while `a - b t ≥ 0`: a tank that empties), or up to the
+/// nearest pole or end of an even root's domain, not reached (`1/(1 - t)` from `x' = x^2`,
+/// `sqrt(2 t - 1)` from `x' = 1/x`). Roots are found by their sign changes, stepping
+/// out geometrically to `t0 ± 10⁶`, then bisected.
+fn extent(var: &str, solution: &Sym, residual: &Sym, terms: &[Sym], t0: f64) -> Option<String> {
+    let at = |s: &Sym, tv: f64| s.eval(&|n| (n == var).then_some(tv)).unwrap_or(f64::NAN);
+    let fails = |tv: f64| {
+        let scale: f64 = terms.iter().map(|t| at(t, tv).abs()).sum();
+        let r = at(residual, tv);
+        scale.is_finite() && r.is_finite() && r.abs() > 1e-6 * scale
+    };
+    let mut squared = Vec::new();
+    let mut poles = Vec::new();
+    solution.any(&mut |n| {
+        if let Sym::Pow(b, e) = n
+            && !b.free_of(var)
+            && let Some((p, q)) = e.as_num().and_then(crate::number::Number::as_rational)
+        {
+            if p < 0 || q % 2 == 0 {
+                // a pole, or the end of an even root's domain
+                poles.push((**b).clone());
+            } else if q == 1 && p % 2 == 0 {
+                squared.push((**b).clone());
+            }
+        }
+        false
+    });
+    // the nearest sign change of `s` from t0 in direction `dir`
+    let root = |s: &Sym, dir: f64| -> Option<f64> {
+        let s0 = at(s, t0);
+        if !s0.is_finite() || s0 == 0.0 {
+            return None;
+        }
+        let (mut good, mut step) = (t0, LOCAL_STEP);
+        while step < 1e6 {
+            let tv = t0 + dir * step;
+            let v = at(s, tv);
+            if v.is_finite() && v * s0 <= 0.0 {
+                let mut bad = tv;
+                for _ in 0..60 {
+                    let mid = 0.5 * (good + bad);
+                    if at(s, mid) * s0 > 0.0 {
+                        good = mid;
+                    } else {
+                        bad = mid;
+                    }
+                }
+                return Some(0.5 * (good + bad));
+            }
+            good = tv;
+            step *= 1.25;
+        }
+        None
+    };
+    // the nearest end each way, and whether it is a pole (not reached)
+    let end = |dir: f64| -> Option<(f64, bool)> {
+        let past = |r: f64| r + dir * LOCAL_STEP.min(0.1 * (r - t0).abs());
+        let ends = poles
+            .iter()
+            .filter_map(|p| Some((root(p, dir)?, true)))
+            .chain(
+                squared
+                    .iter()
+                    .filter_map(|b| root(b, dir))
+                    .filter(|&r| fails(past(r)))
+                    .map(|r| (r, false)),
+            );
+        ends.min_by(|a, b| (a.0 - t0).abs().total_cmp(&(b.0 - t0).abs()))
+    };
+    // six significant digits
+    let show = |v: f64| crate::short_number(format!("{v:.5e}").parse().unwrap_or(v));
+    let sign = |pole: bool| if pole { "<" } else { "≤" };
+    match (end(-1.0), end(1.0)) {
+        (None, None) => None,
+        (Some((a, p)), None) => Some(format!("it holds for {} {} {var}", show(a), sign(p))),
+        (None, Some((b, p))) => Some(format!("it holds for {var} {} {}", sign(p), show(b))),
+        (Some((a, p)), Some((b, q))) => Some(format!(
+            "it holds for {} {} {var} {} {}",
+            show(a),
+            sign(p),
+            sign(q),
+            show(b)
+        )),
+    }
 }
 
 /// Whether each condition's value matches (relative 1e-8 of the terms of the solution there).
