@@ -20,6 +20,7 @@ use thiserror::Error;
 use super::Input;
 use crate::Real;
 use crate::calculus::{CalculusError, Params};
+use crate::deriv::{Verdict, confirm};
 use crate::function::Function;
 use crate::mass::Vec3;
 use crate::quad::{Tolerance, integrate as quadrature};
@@ -53,6 +54,25 @@ pub enum KinematicsError {
         /// What it must be.
         must_be: &'static str,
     },
+    /// θ = θ₀ + ∫₀ᵗ ω dt at a time asked diverges: ω has a pole between 0 and that time.
+    #[error(
+        "θ(t) = θ₀ + ∫₀ᵗ ω dt diverges at t = {}: ω = `{omega}` is not integrable at t = {} \
+         in [0, {}]{growth}\n  = hint: ask for times before {} s, where θ is finite",
+        crate::calculus::show_point(*t),
+        crate::calculus::show_point(*pole),
+        crate::calculus::show_point(*t),
+        crate::calculus::show_point(*pole)
+    )]
+    Diverges {
+        /// The time asked (s).
+        t: Real,
+        /// The pole of ω (s).
+        pole: Real,
+        /// ω as written.
+        omega: String,
+        /// How ω grows there, in words (`; near it …`), or empty.
+        growth: String,
+    },
 }
 
 impl KinematicsError {
@@ -62,7 +82,7 @@ impl KinematicsError {
             KinematicsError::Value { input, .. } | KinematicsError::Missing { input, .. } => {
                 Some(*input)
             }
-            KinematicsError::Formula(_) => None,
+            KinematicsError::Formula(_) | KinematicsError::Diverges { .. } => None,
         }
     }
 }
@@ -159,6 +179,7 @@ impl AngularMotion {
     /// assert!(s.agree);
     /// ```
     pub fn from_angle(text: &str, params: &Params) -> Result<Self, KinematicsError> {
+        crate::calculus::check_not_given(params, &["t"])?;
         let theta = Function::parse(text, &["t"], params)?;
         let omega = theta.diff("t");
         let alpha = omega.diff("t");
@@ -180,6 +201,7 @@ impl AngularMotion {
         theta0: Real,
     ) -> Result<Self, KinematicsError> {
         let theta0 = finite((Input::InitialAngle, "θ₀"), theta0)?;
+        crate::calculus::check_not_given(params, &["t"])?;
         let omega = Function::parse(text, &["t"], params)?;
         let alpha = omega.diff("t");
         let theta = omega.sym().integrate("t").map(|anti| {
@@ -220,8 +242,26 @@ impl AngularMotion {
         self.alpha.sym()
     }
 
+    /// `Ok` when θ(t) is finite: always for θ given; for ω given, when ω has no pole on
+    /// `[0, t]` ([`crate::calculus::integrable`], the check `integrate` makes), where
+    /// neither the closed form's F(t) − F(0) nor a quadrature is the integral.
+    pub fn check_time(&self, t: Real) -> Result<(), KinematicsError> {
+        if self.given == Given::Angle {
+            return Ok(());
+        }
+        match crate::calculus::integrable(self.omega.sym(), "t", self.omega.params(), 0.0, t) {
+            Ok(_) => Ok(()),
+            Err(s) => Err(KinematicsError::Diverges {
+                t,
+                pole: s.at,
+                omega: self.omega.sym().to_string(),
+                growth: crate::calculus::pole_growth("t", s),
+            }),
+        }
+    }
+
     /// θ at `t`: the closed form, else θ₀ + ∫₀ᵗ ω by adaptive Gauss-Kronrod (NaN if that
-    /// fails).
+    /// fails). See [`AngularMotion::check_time`] for where θ is finite.
     pub fn theta(&self, t: Real) -> Real {
         if let Some(f) = &self.theta {
             return self.theta0 + f.at1(t);
@@ -235,15 +275,14 @@ impl AngularMotion {
         let h = 0.1 * t.abs().max(1.0);
         let omega = self.omega.at1(t);
         let alpha = self.alpha.at1(t);
-        let close = |sym: Real, est: crate::deriv::Estimate| {
-            (sym - est.value).abs() <= (10.0 * est.error).max(1e-9 * sym.abs().max(1e-12))
-        };
         let omega_est = self
             .theta
             .as_ref()
-            .map(|f| crate::deriv::derivative(|s| f.at1(s), t, h));
-        let alpha_est = crate::deriv::derivative(|s| self.omega.at1(s), t, h);
-        let agree = close(alpha, alpha_est) && omega_est.is_none_or(|e| close(omega, e));
+            .map(|f| confirm(|s| f.at1(s), t, h, omega));
+        let (alpha_est, alpha_verdict) = confirm(|s| self.omega.at1(s), t, h, alpha);
+        let agree =
+            alpha_verdict == Verdict::Agree && omega_est.is_none_or(|(_, v)| v == Verdict::Agree);
+        let omega_est = omega_est.map(|(e, _)| e);
         AngularState {
             t,
             theta: self.theta(t),
