@@ -60,8 +60,15 @@ pub fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
 /// names (`a ≠ 0`); a discriminant within rounding of zero gives one root. `None` when a value
 /// is not finite (overflow), where no root can be decided.
 pub(super) fn real_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Option<Vec<Sym>> {
-    if let Some(roots) = float_quadratic(a, b, c) {
-        return roots;
+    if let Some((a, b, c)) = float_coefficients(a, b, c) {
+        // float coefficients: float roots, without cancellation (`None` when one overflows)
+        let roots = quadratic_roots(a, b, c);
+        return roots.iter().all(|r| r.is_finite()).then(|| {
+            roots
+                .into_iter()
+                .map(|r| Sym::Num(Number::Float(r)))
+                .collect()
+        });
     }
     let b2 = Sym::pow(b.clone(), Sym::int(2));
     let four_ac = Sym::product(vec![Sym::int(4), a.clone(), c.clone()]);
@@ -99,21 +106,11 @@ pub(super) fn real_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Option<Vec<Sym>> {
     Some(roots)
 }
 
-/// The roots of `a x² + b x + c` by [`quadratic_roots`] when the coefficients are numbers
-/// and one of them is a float (an exact one keeps the radical form): `Some(None)` when a root
-/// overflows; `None` when the coefficients are not such numbers.
-pub(super) fn float_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Option<Option<Vec<Sym>>> {
+/// The values of `a`, `b`, `c` when they are numbers and one of them is a float (an exact
+/// quadratic keeps the radical form of its roots), for [`quadratic_roots`].
+pub(super) fn float_coefficients(a: &Sym, b: &Sym, c: &Sym) -> Option<(f64, f64, f64)> {
     let (a, b, c) = (a.as_num()?, b.as_num()?, c.as_num()?);
-    if a.is_exact() && b.is_exact() && c.is_exact() {
-        return None;
-    }
-    let roots = quadratic_roots(a.to_f64(), b.to_f64(), c.to_f64());
-    Some(roots.iter().all(|r| r.is_finite()).then(|| {
-        roots
-            .into_iter()
-            .map(|r| Sym::Num(Number::Float(r)))
-            .collect()
-    }))
+    (!(a.is_exact() && b.is_exact() && c.is_exact())).then(|| (a.to_f64(), b.to_f64(), c.to_f64()))
 }
 
 impl NumPoly {

@@ -82,14 +82,12 @@ pub(super) fn solve_coefficients(c: &[Sym]) -> Option<Solved> {
                 nonzero(&c[1], &mut assumptions);
                 Solutions::Roots(vec![Sym::negate(Sym::quotient(c[0].clone(), c[1].clone()))])
             }
-            3 if super::closed_form::float_quadratic(&c[2], &c[1], &c[0]).is_some() => {
+            3 if let Some((a, b, cc)) =
+                super::closed_form::float_coefficients(&c[2], &c[1], &c[0]) =>
+            {
                 // float coefficients: the roots are floats, computed without cancellation
                 // (a root that overflows is infinite, refused by whoever evaluates it)
-                let roots = super::closed_form::quadratic_roots(
-                    c[2].as_num()?.to_f64(),
-                    c[1].as_num()?.to_f64(),
-                    c[0].as_num()?.to_f64(),
-                );
+                let roots = super::closed_form::quadratic_roots(a, b, cc);
                 if roots.is_empty() {
                     Solutions::NoRealRoot
                 } else {

@@ -142,8 +142,12 @@ pub fn solve(
     let mut values_put_in = false;
     if let Some(Solutions::Roots(roots)) = &symbolic {
         numeric = match valued_low_degree(&eq, x, &env) {
-            // linear or quadratic with every coefficient valued: its roots with the values
-            // put in, computed without cancellation
+            // linear: the formula's value, as it reads (`m*v/dt`, not `-(-m*v)/dt`)
+            Some(Solutions::Roots(v)) if v.len() == 1 && roots.len() == 1 => {
+                vec![roots[0].eval(&env).unwrap_or(Real::NAN)]
+            }
+            // quadratic with every coefficient valued: its roots with the values put in,
+            // computed without cancellation
             Some(Solutions::Roots(v)) => v.iter().filter_map(|r| r.eval(&|_| None).ok()).collect(),
             // the values break an assumption: `a*x = 1` with a = 0 has no solution
             Some(other) => {
