@@ -17,7 +17,7 @@ use crate::Real;
 /// assert_eq!(value_of("2 ms", "--at", &[], Dimension::TIME).unwrap(), 0.002);
 /// assert_eq!(value_of("2*b", "--at", &[("b".into(), 1.5)], Dimension::TIME).unwrap(), 3.0);
 /// let e = value_of("3 kg", "--at", &[], Dimension::TIME).unwrap_err();
-/// assert!(e.message.contains("a time is needed"), "{e}");
+/// assert!(e.message.contains("but s (time) is needed"), "{e}");
 /// ```
 ///
 /// # Errors
