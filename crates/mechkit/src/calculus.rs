@@ -41,6 +41,7 @@ pub use dsolve::{OdeSolved, dsolve};
 pub use integral::{
     Definite, Integral, Integration, RuleEstimate, integral, integration, rule_estimates,
 };
+pub use singular::{Singularity, integrable, pole_growth, show_point};
 pub use solve::{Solution, Solved, SystemSolution, solve, solve_equations, solve_system};
 
 /// A formula, a unit or a value that could not be read.
@@ -63,6 +64,41 @@ pub enum CalculusError {
     /// where a numerical answer is).
     #[error("{0}")]
     NoClosedForm(String),
+    /// The answer is beyond the range of doubles (an overflow): `what` (the unknown, a
+    /// quantity) would be `value`, an infinity or NaN.
+    #[error("the result {what} is {value}, not a finite number: {why}")]
+    NotFinite {
+        /// The quantity, by name (`x`).
+        what: String,
+        /// Its value: an infinity or NaN.
+        value: Real,
+        /// Where it came from, and what would help.
+        why: String,
+    },
+}
+
+/// Refuses a value given (`--set`) to the variable of a question, or to the unknown function
+/// of an equation: `diff "x^2" --at 1 --set x=2` has no meaning, and ignoring either would
+/// answer another question than the one asked.
+///
+/// ```
+/// let p = [("x".to_string(), 2.0)];
+/// let e = mechkit::calculus::check_not_given(&p, &["x"]).unwrap_err();
+/// assert!(e.to_string().starts_with("`x` is the variable"));
+/// assert!(mechkit::calculus::check_not_given(&p, &["t"]).is_ok());
+/// ```
+pub fn check_not_given(params: &Params, variables: &[&str]) -> Result<(), CalculusError> {
+    match params.iter().find(|(n, _)| variables.contains(&n.as_str())) {
+        Some((name, _)) => Err(InputError::new(
+            Input::Params,
+            format!(
+                "`{name}` is the variable of the question (or the function of the equation): \
+                 it cannot be given a value; drop `{name}` from --set"
+            ),
+        )
+        .into()),
+        None => Ok(()),
+    }
 }
 
 /// Checks that `name`, given as the variable of a question (`--var`, `--for`), is a name of

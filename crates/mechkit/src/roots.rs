@@ -120,10 +120,11 @@ pub fn find_all(
         if f0 == 0.0 {
             roots.push(x0);
         } else if f0.is_finite() && f1.is_finite() && f0.signum() != f1.signum() && f1 != 0.0 {
-            // a sign change; a pole (huge values of both signs) is refused below
+            // a sign change; a pole (huge values of both signs) and a jump (a step across
+            // zero) are refused below
             if let Some(r) = brent_with_values(&mut f, x0, x1, Some((f0, f1)), tol) {
                 let fr = f(r);
-                if fr.abs() <= f0.abs().max(f1.abs()) {
+                if fr.abs() <= f0.abs().max(f1.abs()) && vanishes_at(&mut f, r, x1 - x0) {
                     roots.push(r);
                 }
             }
@@ -136,6 +137,19 @@ pub fn find_all(
     }
     roots.dedup_by(|p, q| (*p - *q).abs() <= 2.0 * tol);
     roots
+}
+
+/// Whether `f` goes to zero at `r`, found between two samples `width` apart: `|f|` on both
+/// sides must shrink with the distance to `r` (by at least half from `1e-3` to `1e-6` of the
+/// width; a root of any order `|x − r|^p` with `p` above 0.1 shrinks by more), else the sign
+/// change is a jump across zero (`floor(x) = 1.5` at 2, a step function), no root. A value
+/// already zero there counts as a root.
+fn vanishes_at(f: &mut impl FnMut(Real) -> Real, r: Real, width: Real) -> bool {
+    let mut size = |d: Real| f(r - d).abs().max(f(r + d).abs());
+    let far = size(1e-3 * width);
+    // no closer than a few units in the last place of `r`, where `r ± d` is still not `r`
+    let near = size((1e-6 * width).max(4.0 * Real::EPSILON * r.abs()));
+    far == 0.0 || near <= 0.5 * far
 }
 
 #[cfg(test)]
@@ -165,6 +179,21 @@ mod tests {
         );
         // a pole is not a root
         assert!(find_all(|x| 1.0 / x, -1.0, 1.0, 7, 1e-14).is_empty());
+        // roots of higher order are kept
+        let r = find_all(|x| (x - 1.0f64).powi(3), 0.0, 3.0, 100, 1e-14);
+        assert_eq!(r.len(), 1);
+        let r = find_all(|x| (x - 1.0f64).cbrt(), 0.0, 3.0, 100, 1e-14);
+        assert_eq!(r.len(), 1);
+    }
+
+    /// Review C-07: a sign change across a jump is no root: `floor(x) = 1.5` has none, nor
+    /// has a step from −1 to 1.
+    #[test]
+    fn a_sign_change_across_a_jump_is_not_a_root() {
+        assert!(find_all(|x| x.floor() - 1.5, 0.0, 3.0, 2000, 1e-14).is_empty());
+        let step = |x: Real| if x > 1.0 { 1.0 } else { -1.0 };
+        assert!(find_all(step, 0.0, 2.0, 2000, 1e-14).is_empty());
+        assert!(find_all(Real::signum, -1.0, 2.0, 7, 1e-14).is_empty());
     }
 
     #[test]

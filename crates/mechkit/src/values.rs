@@ -23,6 +23,10 @@ use mechkit_expr::units::{Dimension, Quantity};
 
 use crate::Real;
 
+mod dims;
+
+pub use dims::{check_formula_units, dimension, param_dimensions, value_of};
+
 /// Names and SI values (`--set`, `[constants]` overrides).
 pub type Params = [(String, Real)];
 

@@ -52,6 +52,14 @@ fn check<T>(r: Result<T, CalculusError>, what: &str) -> Result<T> {
     r.map_err(|e| match e {
         CalculusError::Formula(e) => anyhow!("in the {what}: {e}"),
         CalculusError::Input(e) => anyhow!("{}: {}", flag(e.input), e.message),
+        // an answer beyond double precision: exit 1 (the finiteness rule), not 2
+        CalculusError::NotFinite {
+            ref what, value, ..
+        } => anyhow::Error::new(mechkit::finite::NonFinite {
+            quantity: what.clone(),
+            value,
+        })
+        .context(e.to_string()),
         other => anyhow!("{other}"),
     })
 }
@@ -60,6 +68,21 @@ pub fn diff(args: &DiffArgs) -> Result<Outcome> {
     let p = params(args.set.as_deref())?;
     let at = match &args.at {
         Some(at) => {
+            // the point and the step are values of the variable: one dimension, which the
+            // formula must fit with the units of the `--set` values
+            if let Some(step) = &args.step {
+                mechkit::values::same_dimension(("--at", at), ("--step", step))?;
+            }
+            let var_dim = mechkit::values::dimension(at)
+                .or_else(|| args.step.as_deref().and_then(mechkit::values::dimension));
+            mechkit::values::check_formula_units(
+                &args.expr,
+                "the formula",
+                (&args.var, var_dim, Some("--at")),
+                &mechkit::values::param_dimensions(args.set.as_deref().unwrap_or_default()),
+                &p,
+                None,
+            )?;
             let h = args
                 .step
                 .as_deref()
@@ -83,7 +106,18 @@ pub fn diff(args: &DiffArgs) -> Result<Outcome> {
 fn diff_text(d: &Differentiation) -> String {
     let x = &d.var;
     let mut out = format!("d/d{x} {} = {}\n", d.input, d.derivative);
-    if let Some(c) = d.at {
+    if let Some(c) = d.at
+        && let Some([left, right]) = c.jump
+    {
+        wr!(
+            out,
+            "at {x} = {}: {} jumps (from {} to {}): it has no derivative there\n",
+            mechkit::expr::short_number(c.at),
+            d.input,
+            mechkit::expr::short_number(left),
+            mechkit::expr::short_number(right),
+        );
+    } else if let Some(c) = d.at {
         wr!(
             out,
             "at {x} = {}:\n  symbolic  {}\n  numeric   {} ± {:.1e} (central differences, Richardson extrapolation)\n  {}\n",
@@ -294,8 +328,24 @@ fn equation_text(s: &Solution) -> String {
                 wr!(out, "  (assuming {})\n", s.assumptions.join(" and "));
             }
         }
+        Some(Solutions::NoRealRoot) if s.values_put_in => {
+            wr!(
+                out,
+                "with {}, no {x} solves {} = 0\n",
+                show(&s.parameters),
+                s.equation
+            );
+        }
         Some(Solutions::NoRealRoot) => {
             wr!(out, "no real {x} solves {} = 0\n", s.equation);
+        }
+        Some(Solutions::Every) if s.values_put_in => {
+            wr!(
+                out,
+                "with {}, every {x} solves it ({} = 0)\n",
+                show(&s.parameters),
+                s.equation
+            );
         }
         Some(Solutions::Every) => {
             wr!(out, "every {x} solves it ({} = 0)\n", s.equation);

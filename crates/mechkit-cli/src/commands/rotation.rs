@@ -15,7 +15,7 @@ use mechkit::rigid::rotation::{
 };
 
 use super::body::point;
-use super::input::{params, quantity, show, split_top_level, value};
+use super::input::{params, quantity, show, split_top_level};
 use super::{Outcome, report};
 use crate::args::RotationArgs;
 
@@ -77,6 +77,21 @@ pub fn rotation(args: &RotationArgs) -> Result<Outcome> {
 
 fn formula(args: &RotationArgs) -> Result<FormulaReport> {
     let p = params(args.set.as_deref())?;
+    // θ is an angle and ω a rate, in the units the `--set` values were given in
+    let set = mechkit::values::param_dimensions(args.set.as_deref().unwrap_or_default());
+    let (text, what, want) = match (&args.theta, &args.omega) {
+        (Some(theta), _) => (theta, "θ(t)", Dimension::NONE),
+        (None, Some(omega)) => (omega, "ω(t)", Dimension::FREQUENCY),
+        (None, None) => unreachable!("checked by the caller"),
+    };
+    mechkit::values::check_formula_units(
+        text,
+        what,
+        ("t", Some(Dimension::TIME), None),
+        &set,
+        &p,
+        Some(want),
+    )?;
     let motion = match (&args.theta, &args.omega) {
         (Some(theta), _) => {
             AngularMotion::from_angle(theta, &p).map_err(|e| anyhow!("--theta: {e}"))?
@@ -97,7 +112,7 @@ fn formula(args: &RotationArgs) -> Result<FormulaReport> {
         Some(list) => split_top_level(list, ',')
             .into_iter()
             .map(|t| {
-                let v = value(t, "--at", &p)?;
+                let v = mechkit::values::value_of(t, "--at", &p, Dimension::TIME)?;
                 if v.is_finite() {
                     Ok(v)
                 } else {
@@ -107,7 +122,7 @@ fn formula(args: &RotationArgs) -> Result<FormulaReport> {
             .collect::<Result<Vec<f64>>>()?,
         None => Vec::new(),
     };
-    Ok(motion.report(&times))
+    motion.report(&times).map_err(|e| anyhow!("--at: {e}"))
 }
 
 fn formula_text(f: &FormulaReport) -> String {

@@ -19,10 +19,57 @@ pub(super) fn numeric_value(s: &Sym) -> Option<f64> {
     s.eval(&|_| None).ok().filter(|v| v.is_finite())
 }
 
+/// The distinct real roots of `a x² + b x + c` (`a ≠ 0`) in floating point, increasing,
+/// without the cancellation of the textbook formula: the coefficients are scaled by the
+/// power of two nearest the largest of them first (so `b²` and `4ac` cannot overflow: `1e300 x² + 1e300 x − 1e300`),
+/// then `q = −(b + sign(b) √Δ)/2` and the roots are `q/a` and `c/q` (so `1e-200 x² + x − 1`
+/// has the roots `−1e200` and `1`, not `0`). A discriminant within `1e-12` of the terms it is
+/// made of gives one root. A root beyond the range of doubles is infinite: the caller decides.
+///
+/// (Press et al., *Numerical Recipes*, 3rd ed., §5.6.)
+///
+/// ```
+/// use mechkit_expr::sym::quadratic_roots;
+/// assert_eq!(quadratic_roots(1e-200, 1.0, -1.0), vec![-1e200, 1.0]);
+/// let r = quadratic_roots(1e300, 1e300, -1e300);
+/// assert!((r[1] - (5f64.sqrt() - 1.0) / 2.0).abs() < 1e-15);
+/// assert!(quadratic_roots(1.0, 0.0, 1.0).is_empty());
+/// ```
+pub fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
+    let largest = a.abs().max(b.abs()).max(c.abs());
+    if !(largest.is_finite() && a != 0.0) {
+        return Vec::new();
+    }
+    // a power of two, so that scaling rounds nothing (x² − 5x + 6 keeps its roots 2 and 3)
+    let scale = 2f64.powi(largest.log2().floor() as i32);
+    let (a, b, c) = (a / scale, b / scale, c / scale);
+    let (b2, four_ac) = (b * b, 4.0 * a * c);
+    let d = b2 - four_ac;
+    if d.abs() <= 1e-12 * (b2 + four_ac.abs()) {
+        return vec![-b / (2.0 * a)];
+    }
+    if d < 0.0 {
+        return Vec::new();
+    }
+    let q = -0.5 * (b + d.sqrt().copysign(b));
+    let (r1, r2) = (q / a, c / q);
+    if r1 <= r2 { vec![r1, r2] } else { vec![r2, r1] }
+}
+
 /// The distinct real roots of `a u² + b u + c`, whose coefficients are expressions without
 /// names (`a ≠ 0`); a discriminant within rounding of zero gives one root. `None` when a value
 /// is not finite (overflow), where no root can be decided.
 pub(super) fn real_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Option<Vec<Sym>> {
+    if let Some((a, b, c)) = float_coefficients(a, b, c) {
+        // float coefficients: float roots, without cancellation (`None` when one overflows)
+        let roots = quadratic_roots(a, b, c);
+        return roots.iter().all(|r| r.is_finite()).then(|| {
+            roots
+                .into_iter()
+                .map(|r| Sym::Num(Number::Float(r)))
+                .collect()
+        });
+    }
     let b2 = Sym::pow(b.clone(), Sym::int(2));
     let four_ac = Sym::product(vec![Sym::int(4), a.clone(), c.clone()]);
     let disc = Sym::difference(b2.clone(), four_ac.clone());
@@ -57,6 +104,13 @@ pub(super) fn real_quadratic(a: &Sym, b: &Sym, c: &Sym) -> Option<Vec<Sym>> {
         })
         .collect();
     Some(roots)
+}
+
+/// The values of `a`, `b`, `c` when they are numbers and one of them is a float (an exact
+/// quadratic keeps the radical form of its roots), for [`quadratic_roots`].
+pub(super) fn float_coefficients(a: &Sym, b: &Sym, c: &Sym) -> Option<(f64, f64, f64)> {
+    let (a, b, c) = (a.as_num()?, b.as_num()?, c.as_num()?);
+    (!(a.is_exact() && b.is_exact() && c.is_exact())).then(|| (a.to_f64(), b.to_f64(), c.to_f64()))
 }
 
 impl NumPoly {

@@ -26,6 +26,7 @@ mod real_roots;
 mod solve;
 mod solve_higher;
 
+pub use closed_form::quadratic_roots;
 pub use integrate::Antiderivative;
 pub use real_roots::{MAX_NUMERIC_DEGREE, RealRoots, real_roots};
 pub use solve::{Solutions, Solved, solve_linear};

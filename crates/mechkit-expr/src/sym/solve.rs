@@ -82,6 +82,23 @@ pub(super) fn solve_coefficients(c: &[Sym]) -> Option<Solved> {
                 nonzero(&c[1], &mut assumptions);
                 Solutions::Roots(vec![Sym::negate(Sym::quotient(c[0].clone(), c[1].clone()))])
             }
+            3 if let Some((a, b, cc)) =
+                super::closed_form::float_coefficients(&c[2], &c[1], &c[0]) =>
+            {
+                // float coefficients: the roots are floats, computed without cancellation
+                // (a root that overflows is infinite, refused by whoever evaluates it)
+                let roots = super::closed_form::quadratic_roots(a, b, cc);
+                if roots.is_empty() {
+                    Solutions::NoRealRoot
+                } else {
+                    Solutions::Roots(
+                        roots
+                            .into_iter()
+                            .map(|r| Sym::Num(crate::number::Number::Float(r)))
+                            .collect(),
+                    )
+                }
+            }
             3 => {
                 nonzero(&c[2], &mut assumptions);
                 let (a, b, cc) = (c[2].clone(), c[1].clone(), c[0].clone());
@@ -117,6 +134,23 @@ pub(super) fn solve_coefficients(c: &[Sym]) -> Option<Solved> {
                             )
                         };
                         let mut roots = vec![root(-1), root(1)];
+                        // exact coefficients whose radical folded into a float (too many
+                        // digits): the float roots, computed without cancellation
+                        if roots
+                            .iter()
+                            .any(|r| r.as_num().is_some_and(|n| !n.is_exact()))
+                            && let (Some(a), Some(b), Some(c)) =
+                                (a.as_num(), b.as_num(), c[0].as_num())
+                        {
+                            roots = super::closed_form::quadratic_roots(
+                                a.to_f64(),
+                                b.to_f64(),
+                                c.to_f64(),
+                            )
+                            .into_iter()
+                            .map(|r| Sym::Num(crate::number::Number::Float(r)))
+                            .collect();
+                        }
                         if let (Some(p), Some(q)) = (numeric(&roots[0]), numeric(&roots[1]))
                             && p > q
                         {

@@ -262,3 +262,24 @@ fn real_roots_inside_the_bound() {
     assert!(real_roots(&[1.0; 102]).is_none());
     assert!(real_roots(&[1e300, 0.0, 0.0, 1e-300]).is_none());
 }
+
+/// Review C-06: float coefficients give float roots without the cancellation of the textbook
+/// formula, and without the overflow of `b²`; exact ones that fold into floats likewise.
+#[test]
+fn quadratic_roots_are_found_without_cancellation_or_overflow() {
+    let roots = |text: &str| match Sym::parse(text).unwrap().solve("x").unwrap().solutions {
+        Solutions::Roots(r) => r
+            .iter()
+            .map(|r| r.eval(&|_| None).unwrap())
+            .collect::<Vec<_>>(),
+        other => panic!("{text}: {other:?}"),
+    };
+    assert_eq!(roots("1e-200*x^2 + x - 1"), [-1e200, 1.0]);
+    let r = roots("1e300*x^2 + 1e300*x - 1e300");
+    let golden = (5f64.sqrt() - 1.0) / 2.0;
+    assert!(
+        (r[0] + 1.0 + golden).abs() < 1e-15 && (r[1] - golden).abs() < 1e-15,
+        "{r:?}"
+    );
+    assert_eq!(roots("x^2 + 10000000000*x - 1"), [-1e10, 1e-10]);
+}

@@ -5,6 +5,7 @@ use mechkit_expr::{Sym, parse};
 
 use super::{CalculusError, Params};
 use crate::Real;
+use crate::deriv::Verdict;
 use crate::function::Function;
 use crate::inputs::{Input, InputError};
 
@@ -39,8 +40,12 @@ pub struct DerivativeCheck {
     pub numeric: Real,
     /// Its error estimate.
     pub numeric_error: Real,
-    /// Whether they agree within the estimate (or 1e-9 relative).
+    /// Whether they agree within the estimate (or 1e-9 relative), and the estimate is sure
+    /// enough to say so ([`crate::deriv::confirm`]).
     pub agree: bool,
+    /// Where the formula jumps at the point (no derivative exists there): its values just
+    /// left and just right of it, `[left, right]` in JSON.
+    pub jump: Option<[Real; 2]>,
 }
 
 /// `d/dx text` at `at`, symbolically and numerically (initial step `h`, e.g. 0.1 or a tenth
@@ -49,6 +54,9 @@ pub struct DerivativeCheck {
 /// ```
 /// let c = mechkit::calculus::derivative_at("x^3*sin(x)", "x", 1.2, &[], 0.1).unwrap();
 /// assert!(c.agree && (c.symbolic - c.numeric).abs() < 1e-10);
+/// // floor jumps at 1: no derivative there, whatever the rules say (0)
+/// let c = mechkit::calculus::derivative_at("floor(x)", "x", 1.0, &[], 0.1).unwrap();
+/// assert!(!c.agree && c.jump == Some([0.0, 1.0]));
 /// ```
 pub fn derivative_at(
     text: &str,
@@ -59,14 +67,18 @@ pub fn derivative_at(
 ) -> Result<DerivativeCheck, CalculusError> {
     let f = Function::parse(text, &[x], params)?;
     let symbolic = f.diff(x).at1(at);
-    let est = crate::deriv::derivative(|v| f.at1(v), at, h);
-    let agree = (symbolic - est.value).abs() <= (10.0 * est.error).max(1e-9 * symbolic.abs());
+    let (est, verdict) = crate::deriv::confirm(|v| f.at1(v), at, h, symbolic);
+    let jump = match verdict {
+        Verdict::Jump { left, right } => Some([left, right]),
+        _ => None,
+    };
     Ok(DerivativeCheck {
         at,
         symbolic,
         numeric: est.value,
         numeric_error: est.error,
-        agree,
+        agree: verdict == Verdict::Agree,
+        jump,
     })
 }
 
@@ -111,6 +123,7 @@ pub fn differentiate(
     params: &Params,
 ) -> Result<Differentiation, CalculusError> {
     let d = derivative(text, x)?;
+    super::check_not_given(params, &[x])?;
     let at = match at {
         Some((point, h)) => {
             if h.is_nan() || h <= 0.0 {
@@ -133,4 +146,34 @@ pub fn differentiate(
         derivative: d.result,
         at,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Review C-08: at a jump there is no derivative, and the check never says the two agree.
+    #[test]
+    fn a_jump_has_no_derivative_and_never_agrees() {
+        let d = differentiate("floor(x)", "x", Some((1.0, 0.1)), &[]).unwrap();
+        let c = d.at.unwrap();
+        assert!(!d.agrees() && c.jump == Some([0.0, 1.0]), "{c:?}");
+        let d = differentiate("sign(x)", "x", Some((0.0, 0.1)), &[]).unwrap();
+        assert!(!d.agrees() && d.at.unwrap().jump == Some([-1.0, 1.0]));
+        let d = differentiate("x^3 - 3*x", "x", Some((1.0, 0.1)), &[]).unwrap();
+        assert!(d.agrees() && d.at.unwrap().jump.is_none());
+    }
+
+    /// Review C-17: the variable cannot be given a value (it would be ignored).
+    #[test]
+    fn a_value_for_the_variable_is_refused() {
+        let e = differentiate("x^2", "x", Some((1.0, 0.1)), &[("x".into(), 2.0)]).unwrap_err();
+        assert!(matches!(
+            e,
+            CalculusError::Input(InputError {
+                input: Input::Params,
+                ..
+            })
+        ));
+    }
 }

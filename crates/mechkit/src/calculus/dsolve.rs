@@ -107,13 +107,7 @@ pub fn dsolve(
 ) -> Result<OdeSolved, CalculusError> {
     super::check_variable(func, Input::Function)?;
     super::check_variable(var, Input::Variable)?;
-    if let Some((name, _)) = params.iter().find(|(n, _)| n == func || n == var) {
-        return Err(InputError::new(
-            Input::Params,
-            format!("`{name}` is the function or the variable of the equation: it cannot be given a value"),
-        )
-        .into());
-    }
+    super::check_not_given(params, &[func, var])?;
     let ode = Ode::parse(text, func, var).map_err(|e| engine_error(e, text))?;
     let values: Vec<(String, Sym)> = params
         .iter()

@@ -110,6 +110,7 @@ pub fn integral(
     params: &Params,
 ) -> Result<Integral, CalculusError> {
     super::check_variable(x, Input::Variable)?;
+    super::check_not_given(params, &[x])?;
     let (input, anti) = antiderivative_for(Sym::from_expr(&parse(text)?.expr), x, params);
     let (antiderivative, assumptions) = match anti {
         Some(a) => (Some(a.result), a.assumptions),
@@ -117,20 +118,11 @@ pub fn integral(
     };
     // a pole in [a, b] makes the integral diverge: refused, naming the point; an integrable
     // singularity inside is a breakpoint of the quadrature (the rule never samples it)
-    let mut breaks = Vec::new();
-    if let Some((from, to)) = limits {
-        for s in super::singular::singularities(&input, x, params, from, to) {
-            if !s.integrable() {
-                return Err(diverges(text.trim(), x, s, (from, to)).into());
-            }
-            if s.at != from && s.at != to {
-                breaks.push(s.at);
-            }
-        }
-        if from > to {
-            breaks.reverse();
-        }
-    }
+    let breaks = match limits {
+        Some((from, to)) => super::singular::integrable(&input, x, params, from, to)
+            .map_err(|s| diverges(text.trim(), x, s, (from, to)))?,
+        None => Vec::new(),
+    };
     let definite = limits.map(|(from, to)| {
         let env = lookup(params);
         let at = |f: &Sym, v: Real| f.eval(&|n| if n == x { Some(v) } else { env(n) });
@@ -248,19 +240,7 @@ fn antiderivative_for(input: Sym, x: &str, params: &Params) -> (Sym, Option<Anti
 /// The refusal of a definite integral across a pole: `1/x^2` is not integrable at x = 0.
 fn diverges(input: &str, x: &str, s: Singularity, (from, to): (Real, Real)) -> InputError {
     let at = show_point(s.at);
-    let growth = if s.order.is_finite() {
-        let distance = if s.at == 0.0 {
-            format!("|{x}|")
-        } else {
-            format!("|{x} - {at}|")
-        };
-        format!(
-            "; near it the integrand grows like 1/{distance}^{}",
-            show_point((s.order * 100.0).round() / 100.0)
-        )
-    } else {
-        String::new()
-    };
+    let growth = super::singular::pole_growth(x, s);
     InputError::new(
         Input::Limits,
         format!(

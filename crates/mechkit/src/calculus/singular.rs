@@ -132,6 +132,52 @@ pub fn singularities(
         .collect()
 }
 
+/// The definite integral of `f` over `[a, b]` (either order) checked for poles: the points
+/// inside where `f` has an integrable singularity (breakpoints for a quadrature, in the
+/// direction from `a` to `b`), or the first point where the integral diverges. Every caller
+/// that integrates a formula over an interval (`integrate`, θ = ∫ω dt of `rotation`) goes
+/// through it, so neither a closed form's `F(b) − F(a)` nor a quadrature is taken across a
+/// pole.
+pub fn integrable(
+    f: &Sym,
+    x: &str,
+    params: &[(String, Real)],
+    a: Real,
+    b: Real,
+) -> Result<Vec<Real>, Singularity> {
+    let mut breaks = Vec::new();
+    for s in singularities(f, x, params, a, b) {
+        if !s.integrable() {
+            return Err(s);
+        }
+        if s.at != a && s.at != b {
+            breaks.push(s.at);
+        }
+    }
+    if a > b {
+        breaks.reverse();
+    }
+    Ok(breaks)
+}
+
+/// The growth of `f` near a pole as a message says it: `; near it the integrand grows like
+/// 1/|x - 1|^2` (empty when the order is not finite).
+pub fn pole_growth(x: &str, s: Singularity) -> String {
+    if !s.order.is_finite() {
+        return String::new();
+    }
+    let at = show_point(s.at);
+    let distance = if s.at == 0.0 {
+        format!("|{x}|")
+    } else {
+        format!("|{x} - {at}|")
+    };
+    format!(
+        "; near it the integrand grows like 1/{distance}^{}",
+        show_point((s.order * 100.0).round() / 100.0)
+    )
+}
+
 /// Where `g` (≥ 0, largest at one point of `[l, h]` and smaller away from it, as `|f|` near
 /// a pole) is largest: ternary search down to the spacing of the numbers.
 fn peak(g: &dyn Fn(Real) -> Real, mut l: Real, mut h: Real) -> Real {

@@ -5,7 +5,7 @@
 use mechkit_expr::Number;
 use mechkit_expr::Sym;
 use mechkit_expr::sym::poly::{NumPoly, coefficients};
-use mechkit_expr::sym::{Solutions, real_roots, solve_linear};
+use mechkit_expr::sym::{Solutions, quadratic_roots, real_roots, solve_linear};
 
 use super::equation::{check_unknown, equation};
 use super::{CalculusError, Params, lookup};
@@ -16,7 +16,7 @@ use crate::roots::find_all;
 ///
 /// Serialized as `{equation: "lhs - rhs = 0", unknown, symbolic: [roots] | null,
 /// no_real_root, every_value, assumptions, numeric, interval: [a, b] | null,
-/// root_bound: B | null}`.
+/// root_bound: B | null, values_put_in}`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Solution {
     /// `lhs - rhs`, canonical.
@@ -38,6 +38,9 @@ pub struct Solution {
     pub root_bound: Option<Real>,
     /// The values given to the other names.
     pub parameters: Vec<(String, Real)>,
+    /// Whether `symbolic` is the answer with the values put in, because they break what the
+    /// symbolic solution assumed (`a*x = 1` with a = 0 has no solution, not `x = 1/a`).
+    pub values_put_in: bool,
 }
 
 impl Solution {
@@ -60,7 +63,7 @@ impl Solution {
 impl serde::Serialize for Solution {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeStruct;
-        let mut st = s.serialize_struct("Solution", 9)?;
+        let mut st = s.serialize_struct("Solution", 10)?;
         st.serialize_field("equation", &format!("{} = 0", self.equation))?;
         st.serialize_field("unknown", &self.unknown)?;
         st.serialize_field(
@@ -81,6 +84,7 @@ impl serde::Serialize for Solution {
         st.serialize_field("numeric", &self.numeric)?;
         st.serialize_field("interval", &self.interval.map(|(a, b)| [a, b]))?;
         st.serialize_field("root_bound", &self.root_bound)?;
+        st.serialize_field("values_put_in", &self.values_put_in)?;
         st.end()
     }
 }
@@ -99,8 +103,9 @@ pub fn solve(
 ) -> Result<Solution, CalculusError> {
     let (eq, names) = equation(text)?;
     check_unknown(x, text, &names)?;
+    super::check_not_given(params, &[x])?;
     let env = lookup(params);
-    let (mut symbolic, assumptions) = match eq.solve(x) {
+    let (mut symbolic, mut assumptions) = match eq.solve(x) {
         Some(s) => (Some(s.solutions), s.assumptions),
         None => (None, Vec::new()),
     };
@@ -134,12 +139,45 @@ pub fn solve(
             numeric.retain(within);
         }
     }
+    let mut values_put_in = false;
     if let Some(Solutions::Roots(roots)) = &symbolic {
-        numeric = roots
-            .iter()
-            .filter_map(|r| r.eval(&env).ok())
-            .filter(|v| v.is_finite())
-            .collect();
+        numeric = match valued_low_degree(&eq, x, &env) {
+            // linear: the formula's value, as it reads (`m*v/dt`, not `-(-m*v)/dt`)
+            Some(Solutions::Roots(v)) if v.len() == 1 && roots.len() == 1 => {
+                vec![roots[0].eval(&env).unwrap_or(Real::NAN)]
+            }
+            // quadratic with every coefficient valued: its roots with the values put in,
+            // computed without cancellation
+            Some(Solutions::Roots(v)) => v.iter().filter_map(|r| r.eval(&|_| None).ok()).collect(),
+            // the values break an assumption: `a*x = 1` with a = 0 has no solution
+            Some(other) => {
+                symbolic = Some(other);
+                assumptions.clear();
+                values_put_in = true;
+                Vec::new()
+            }
+            None => roots.iter().filter_map(|r| r.eval(&env).ok()).collect(),
+        };
+        if let Some(&bad) = numeric.iter().find(|v| !v.is_finite()) {
+            let why = if assumptions.is_empty() {
+                format!(
+                    "the root of `{}` overflows double precision; rescale the equation (other units)",
+                    text.trim()
+                )
+            } else {
+                format!(
+                    "the root of `{}` overflows double precision, or the values given break what \
+                     it assumes ({}); rescale the equation, or check the values",
+                    text.trim(),
+                    assumptions.join(" and ")
+                )
+            };
+            return Err(CalculusError::NotFinite {
+                what: x.to_string(),
+                value: bad,
+                why,
+            });
+        }
         numeric.retain(within);
     } else if searched {
         // every real root of the polynomial, found above
@@ -174,6 +212,42 @@ pub fn solve(
         interval: interval_used,
         root_bound,
         parameters: params.to_vec(),
+        values_put_in,
+    })
+}
+
+/// The solutions of `eq = 0` for `x` with the values of the other names put in, when it is a
+/// polynomial of degree two at most in `x` whose coefficients all have values: the roots as
+/// numbers (infinite where one overflows), by [`quadratic_roots`] for a quadratic;
+/// no root or every value when the values make the leading coefficients vanish.
+fn valued_low_degree(eq: &Sym, x: &str, env: &dyn Fn(&str) -> Option<Real>) -> Option<Solutions> {
+    let c = coefficients(eq, x)?;
+    if c.len() > 3 {
+        return None;
+    }
+    let mut v = c
+        .iter()
+        .map(|ci| ci.eval(env).ok())
+        .collect::<Option<Vec<Real>>>()?;
+    if v.iter().any(|c| !c.is_finite()) {
+        return None;
+    }
+    while v.last() == Some(&0.0) {
+        v.pop();
+    }
+    let float = |r: Real| Sym::Num(Number::Float(r));
+    Some(match v.len() {
+        0 => Solutions::Every,
+        1 => Solutions::NoRealRoot,
+        2 => Solutions::Roots(vec![float(-v[0] / v[1])]),
+        _ => {
+            let r = quadratic_roots(v[2], v[1], v[0]);
+            if r.is_empty() {
+                Solutions::NoRealRoot
+            } else {
+                Solutions::Roots(r.into_iter().map(float).collect())
+            }
+        }
     })
 }
 
@@ -354,6 +428,7 @@ pub fn solve_equations(
     params: &Params,
 ) -> Result<Solved, CalculusError> {
     if unknowns.len() > 1 || text.contains(';') {
+        super::check_not_given(params, unknowns)?;
         let solution = solve_system(text, unknowns)?;
         let env = lookup(params);
         let numeric = solution

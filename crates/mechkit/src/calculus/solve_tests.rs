@@ -88,7 +88,10 @@ fn cubics_quartics_and_higher_degrees_without_an_interval() {
 /// asks for an interval rather than a root list missing the large roots.
 #[test]
 fn overflowing_coefficients_are_not_a_partial_answer() {
-    assert!(solve("x^3 - 1e308*x = 0", "x", None, &[]).is_err());
+    // x (x² − 1e308): the quadratic is scaled before its discriminant is formed, so the
+    // roots ±1e154 come out whole (review C-06)
+    let s = solve("x^3 - 1e308*x = 0", "x", None, &[]).unwrap();
+    assert_eq!(s.numeric, [-1e154, 0.0, 1e154]);
     // with an interval, the roots in it
     let s = solve("x^3 - 1e308*x = 0", "x", Some((-1.0, 1.0)), &[]).unwrap();
     assert!(
@@ -96,4 +99,50 @@ fn overflowing_coefficients_are_not_a_partial_answer() {
         "{:?}",
         s.numeric
     );
+}
+
+/// Review C-06: the roots of a polynomial with float coefficients are computed without
+/// cancellation, and a root beyond double precision is an error, never `x = inf`.
+#[test]
+fn a_root_that_overflows_is_refused_and_small_roots_keep_their_digits() {
+    let s = solve("1e-200*x^2 + x - 1 = 0", "x", None, &[]).unwrap();
+    assert_eq!(s.numeric, [-1e200, 1.0]);
+    let e = solve("1e-300*x = 1e300", "x", None, &[]).unwrap_err();
+    assert!(matches!(e, CalculusError::NotFinite { .. }), "{e}");
+    assert!(e.to_string().contains("overflows double precision"), "{e}");
+    let p = [("a".to_string(), 1e10)];
+    let s = solve("x^2 + a*x - 1 = 0", "x", None, &p).unwrap();
+    assert_eq!(s.numeric, [-1e10, 1e-10]);
+}
+
+/// Review C-14: values that break what the symbolic solution assumes are put in: `a*x = 1`
+/// with a = 0 has no solution (not `x = 1/a`), `a*x^2 + x + 1 = 0` with a = 1 no real one.
+#[test]
+fn values_that_break_an_assumption_leave_no_solution() {
+    let s = solve("a*x = 1", "x", None, &[("a".to_string(), 0.0)]).unwrap();
+    assert_eq!(s.symbolic, Some(Solutions::NoRealRoot));
+    assert!(s.values_put_in && s.is_empty() && s.assumptions.is_empty());
+    let s = solve("a*x = 0", "x", None, &[("a".to_string(), 0.0)]).unwrap();
+    assert_eq!(s.symbolic, Some(Solutions::Every));
+    let s = solve("a*x^2 + x + 1 = 0", "x", None, &[("a".to_string(), 1.0)]).unwrap();
+    assert!(s.is_empty(), "{s:?}");
+    // values that keep the assumptions: the formula, and its value
+    let s = solve("a*x = 1", "x", None, &[("a".to_string(), 2.0)]).unwrap();
+    assert!(!s.values_put_in && s.numeric == [0.5]);
+}
+
+/// Review C-07: a sign change across a jump is no root.
+#[test]
+fn a_jump_across_zero_is_not_a_root() {
+    let s = solve("floor(x) = 1.5", "x", Some((0.0, 3.0)), &[]).unwrap();
+    assert!(s.is_empty(), "{s:?}");
+    let s = solve("if(x > 1, 1, -1) = 0", "x", Some((0.0, 2.0)), &[]).unwrap();
+    assert!(s.is_empty(), "{s:?}");
+}
+
+/// Review C-17: the unknown cannot be given a value.
+#[test]
+fn a_value_for_the_unknown_is_refused() {
+    let e = solve("a*x = 1", "x", None, &[("x".to_string(), 2.0)]).unwrap_err();
+    assert!(e.to_string().contains("`x` is the variable"), "{e}");
 }

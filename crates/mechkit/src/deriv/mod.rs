@@ -52,6 +52,7 @@
 //! `~4ε/h²` in `x''`. Measured data usually needs smoothing (a wider window) before a second
 //! derivative means anything.
 
+mod confirm;
 mod derived;
 mod difference;
 mod error;
@@ -60,6 +61,7 @@ mod polyfit;
 mod richardson;
 mod savitzky_golay;
 
+pub use confirm::{Verdict, confirm};
 pub use derived::{
     DeriveError, DeriveQuestion, DerivedColumn, DerivedMotion, DerivedUnits, derive_motion,
 };

@@ -15,83 +15,19 @@
 use std::f64::consts::TAU;
 
 use mechkit_expr::Sym;
-use thiserror::Error;
 
 use super::Input;
 use crate::Real;
-use crate::calculus::{CalculusError, Params};
+use crate::calculus::Params;
+use crate::deriv::{Verdict, confirm};
 use crate::function::Function;
 use crate::mass::Vec3;
 use crate::quad::{Tolerance, integrate as quadrature};
 
-/// What is wrong with an angular-kinematics question.
-#[derive(Debug, Clone, PartialEq, Error)]
-#[non_exhaustive]
-pub enum KinematicsError {
-    /// The formula does not parse, or names lack values.
-    #[error("{0}")]
-    Formula(#[from] CalculusError),
-    /// A value needed for the question was not given.
-    #[error("{what} is needed {why}")]
-    Missing {
-        /// Which input.
-        input: Input,
-        /// The value, in words.
-        what: &'static str,
-        /// What needs it.
-        why: &'static str,
-    },
-    /// A value that must be finite (and positive, where said) is not.
-    #[error("{what} must be {must_be}, not {}", crate::error::short(*value))]
-    Value {
-        /// Which input it is.
-        input: Input,
-        /// Which value, in words.
-        what: &'static str,
-        /// The value given.
-        value: Real,
-        /// What it must be.
-        must_be: &'static str,
-    },
-}
+mod error;
 
-impl KinematicsError {
-    /// The input the error is about (`None` for a formula's error: it names its own place).
-    pub fn input(&self) -> Option<Input> {
-        match self {
-            KinematicsError::Value { input, .. } | KinematicsError::Missing { input, .. } => {
-                Some(*input)
-            }
-            KinematicsError::Formula(_) => None,
-        }
-    }
-}
-
-pub(super) fn check(
-    (input, what): (Input, &'static str),
-    value: Real,
-    must_be: &'static str,
-    ok: bool,
-) -> Result<Real, KinematicsError> {
-    if ok && value.is_finite() {
-        Ok(value)
-    } else {
-        Err(KinematicsError::Value {
-            input,
-            what,
-            value,
-            must_be,
-        })
-    }
-}
-
-pub(super) fn positive(name: (Input, &'static str), value: Real) -> Result<Real, KinematicsError> {
-    check(name, value, "positive and finite", value > 0.0)
-}
-
-pub(super) fn finite(name: (Input, &'static str), value: Real) -> Result<Real, KinematicsError> {
-    check(name, value, "finite", true)
-}
+pub use error::KinematicsError;
+pub(super) use error::{check, finite, positive};
 
 /// Which function of time the motion was given by.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -159,6 +95,7 @@ impl AngularMotion {
     /// assert!(s.agree);
     /// ```
     pub fn from_angle(text: &str, params: &Params) -> Result<Self, KinematicsError> {
+        crate::calculus::check_not_given(params, &["t"])?;
         let theta = Function::parse(text, &["t"], params)?;
         let omega = theta.diff("t");
         let alpha = omega.diff("t");
@@ -180,6 +117,7 @@ impl AngularMotion {
         theta0: Real,
     ) -> Result<Self, KinematicsError> {
         let theta0 = finite((Input::InitialAngle, "θ₀"), theta0)?;
+        crate::calculus::check_not_given(params, &["t"])?;
         let omega = Function::parse(text, &["t"], params)?;
         let alpha = omega.diff("t");
         let theta = omega.sym().integrate("t").map(|anti| {
@@ -220,8 +158,26 @@ impl AngularMotion {
         self.alpha.sym()
     }
 
+    /// `Ok` when θ(t) is finite: always for θ given; for ω given, when ω has no pole on
+    /// `[0, t]` ([`crate::calculus::integrable`], the check `integrate` makes), where
+    /// neither the closed form's F(t) − F(0) nor a quadrature is the integral.
+    pub fn check_time(&self, t: Real) -> Result<(), KinematicsError> {
+        if self.given == Given::Angle {
+            return Ok(());
+        }
+        match crate::calculus::integrable(self.omega.sym(), "t", self.omega.params(), 0.0, t) {
+            Ok(_) => Ok(()),
+            Err(s) => Err(KinematicsError::Diverges {
+                t,
+                pole: s.at,
+                omega: self.omega.sym().to_string(),
+                growth: crate::calculus::pole_growth("t", s),
+            }),
+        }
+    }
+
     /// θ at `t`: the closed form, else θ₀ + ∫₀ᵗ ω by adaptive Gauss-Kronrod (NaN if that
-    /// fails).
+    /// fails). See [`AngularMotion::check_time`] for where θ is finite.
     pub fn theta(&self, t: Real) -> Real {
         if let Some(f) = &self.theta {
             return self.theta0 + f.at1(t);
@@ -235,15 +191,14 @@ impl AngularMotion {
         let h = 0.1 * t.abs().max(1.0);
         let omega = self.omega.at1(t);
         let alpha = self.alpha.at1(t);
-        let close = |sym: Real, est: crate::deriv::Estimate| {
-            (sym - est.value).abs() <= (10.0 * est.error).max(1e-9 * sym.abs().max(1e-12))
-        };
         let omega_est = self
             .theta
             .as_ref()
-            .map(|f| crate::deriv::derivative(|s| f.at1(s), t, h));
-        let alpha_est = crate::deriv::derivative(|s| self.omega.at1(s), t, h);
-        let agree = close(alpha, alpha_est) && omega_est.is_none_or(|e| close(omega, e));
+            .map(|f| confirm(|s| f.at1(s), t, h, omega));
+        let (alpha_est, alpha_verdict) = confirm(|s| self.omega.at1(s), t, h, alpha);
+        let agree =
+            alpha_verdict == Verdict::Agree && omega_est.is_none_or(|(_, v)| v == Verdict::Agree);
+        let omega_est = omega_est.map(|(e, _)| e);
         AngularState {
             t,
             theta: self.theta(t),

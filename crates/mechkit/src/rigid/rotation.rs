@@ -70,16 +70,23 @@ fn number(x: Real) -> String {
 }
 
 impl AngularMotion {
-    /// The formulas and their values at `times` (s).
+    /// The formulas and their values at `times` (s); an error at a time where θ = θ₀ + ∫₀ᵗ ω dt
+    /// diverges ([`AngularMotion::check_time`]).
     ///
     /// ```
     /// use mechkit::rigid::kinematics::AngularMotion;
     /// let m = AngularMotion::from_angular_velocity("2*t", &[], 1.0).unwrap();
-    /// let r = m.report(&[3.0]);
+    /// let r = m.report(&[3.0]).unwrap();
     /// assert_eq!(r.theta, "1 + t^2");
     /// assert_eq!(r.at[0].theta, 10.0);
+    /// // across the pole of tan at π/2 the integral diverges
+    /// let m = AngularMotion::from_angular_velocity("tan(t)", &[], 0.0).unwrap();
+    /// assert!(m.report(&[2.0]).is_err());
     /// ```
-    pub fn report(&self, times: &[Real]) -> FormulaReport {
+    pub fn report(&self, times: &[Real]) -> Result<FormulaReport, KinematicsError> {
+        for &t in times {
+            self.check_time(t)?;
+        }
         let theta = match self.theta_formula() {
             Some(f) if self.given() == Given::AngularVelocity && self.theta0() != 0.0 => {
                 format!("{} + {f}", number(self.theta0()))
@@ -90,14 +97,14 @@ impl AngularMotion {
                 number(self.theta0())
             ),
         };
-        FormulaReport {
+        Ok(FormulaReport {
             given: self.given().name(),
             theta,
             theta_closed_form: self.theta_formula().is_some(),
             omega: self.omega_formula().to_string(),
             alpha: self.alpha_formula().to_string(),
             at: times.iter().map(|&t| self.at(t)).collect(),
-        }
+        })
     }
 }
 

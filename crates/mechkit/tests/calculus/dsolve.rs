@@ -165,3 +165,18 @@ fn no_method_points_to_a_numerical_solution() {
         "{e}"
     );
 }
+
+/// Review C-25: initial conditions where the equation is singular are refused: `x' = 1/x`
+/// with `x(0) = 0` has no finite `x'` there, and both `√(2t)` and `−√(2t)` leave that point.
+#[test]
+fn conditions_where_the_equation_is_singular_are_refused() {
+    for (eq, ic) in [("x' = 1/x", "x(0)=0"), ("x'' = 1/x", "x(0)=0, x'(0)=1")] {
+        let e = dsolve(eq, "x", "t", Some(ic), &[]).unwrap_err();
+        assert!(
+            e.to_string().contains("is singular at the initial point"),
+            "{eq}: {e}"
+        );
+    }
+    // a regular point of the same equation is solved
+    assert!(dsolve("x' = 1/x", "x", "t", Some("x(0)=1"), &[]).is_ok());
+}

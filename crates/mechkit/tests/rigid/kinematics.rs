@@ -127,3 +127,21 @@ fn angular_velocity_vector_in_3d() {
     let with_alpha = point_acceleration(&alpha, &omega, &r);
     assert_eq!(with_alpha.tangential, alpha.cross(&r));
 }
+
+/// Review C-04: θ = ∫₀ᵗ ω dt across a pole of ω diverges: refused (neither the closed form's
+/// F(t) − F(0) nor a quadrature is its value), as `integrate` refuses it; before the pole it
+/// is the closed form.
+#[test]
+fn theta_across_a_pole_of_omega_is_refused() {
+    for (omega, pole) in [("1/(t-1)^2", 1.0), ("tan(t)", PI / 2.0)] {
+        let m = AngularMotion::from_angular_velocity(omega, &[], 0.0).unwrap();
+        let e = m.report(&[2.0]).unwrap_err();
+        assert!(
+            matches!(e, mechkit::rigid::kinematics::KinematicsError::Diverges { pole: p, .. } if (p - pole).abs() < 1e-9),
+            "{omega}: {e}"
+        );
+        assert!(m.report(&[0.5]).is_ok(), "{omega}");
+    }
+    // a value for t itself is refused
+    assert!(AngularMotion::from_angle("c*t", &set(&[("t", 1.0)])).is_err());
+}

@@ -1,5 +1,6 @@
 //! Initial conditions, `x(0)=1, x'(0)=v0`.
 
+use super::parse::{Ode, derivative_name};
 use super::solve::DsolveError;
 use crate::sym::Sym;
 
@@ -106,5 +107,69 @@ impl Condition {
             out.push(c);
         }
         Ok(out)
+    }
+}
+
+impl Ode {
+    /// Refuses initial conditions at a point where the equation is singular: with the function
+    /// and its derivatives below the highest all given there, the highest derivative the
+    /// equation asks for is not a finite number (`x' = 1/x` with `x(0) = 0`), or, in an
+    /// equation linear in it, its coefficient vanishes (`t x' = x` at `t = 0`). Through such a
+    /// point a solution need not exist, nor be unique (`x = √(2t)` and `x = −√(2t)` both leave
+    /// `x(0) = 0` for `x' = 1/x`), so no formula is "the" solution. Conditions whose point or
+    /// values are not numbers are not checked.
+    pub(super) fn check_regular(&self, conditions: &[Condition]) -> Result<(), DsolveError> {
+        let n = self.order;
+        let Some(first) = conditions.first() else {
+            return Ok(());
+        };
+        if n == 0 || conditions.len() != n || conditions.iter().any(|c| c.at != first.at) {
+            return Ok(());
+        }
+        let number = |s: &Sym| s.eval(&|_| None).ok().filter(|v| v.is_finite());
+        let Some(t0) = number(&first.at) else {
+            return Ok(());
+        };
+        let mut values = vec![0.0; n];
+        for c in conditions {
+            let Some(v) = number(&c.value) else {
+                return Ok(());
+            };
+            values[c.order] = v;
+        }
+        let top = derivative_name(&self.func, n);
+        let residual_with = |highest: f64| {
+            self.residual.eval(&|name| {
+                if name == self.var {
+                    return Some(t0);
+                }
+                if name == top {
+                    return Some(highest);
+                }
+                (0..n)
+                    .find(|&k| derivative_name(&self.func, k) == name)
+                    .map(|k| values[k])
+            })
+        };
+        let (Ok(r0), Ok(r1)) = (residual_with(0.0), residual_with(1.0)) else {
+            return Ok(());
+        };
+        let linear = self.residual.diff(&top).free_of(&top);
+        let singular = !(r0.is_finite() && r1.is_finite()) || (linear && r1 == r0);
+        if !singular {
+            return Ok(());
+        }
+        let given: Vec<String> = conditions
+            .iter()
+            .map(|c| format!("{}{c}", self.func))
+            .collect();
+        let highest = format!("{}{}", self.func, "'".repeat(n));
+        Err(DsolveError::Condition(format!(
+            "the equation {} is singular at the initial point: with {} it does not give \
+             {highest} as a finite number there, so a solution through that point need not \
+             exist, nor be unique; give the conditions at a point where the equation is regular",
+            self.display(),
+            given.join(", ")
+        )))
     }
 }

@@ -122,6 +122,7 @@ impl Ode {
                 )));
             }
         }
+        self.check_regular(conditions)?;
         let constants = self.fresh_constants(conditions);
         let names: Vec<&str> = constants.iter().map(String::as_str).collect();
         let no_method = |reason: String| DsolveError::NoMethod {
