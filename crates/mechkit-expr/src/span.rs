@@ -88,6 +88,7 @@ pub fn clip(text: &str) -> std::borrow::Cow<'_, str> {
 /// assert_eq!(printable("a\u{1b}[31mb\u{202e}c"), "a\\u{1b}[31mb\\u{202e}c");
 /// ```
 pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
+    use std::fmt::Write as _;
     let unsafe_char = |c: char| {
         (c.is_control() && c != '\t')
             || ('\u{202a}'..='\u{202e}').contains(&c)
@@ -99,7 +100,7 @@ pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
     let mut out = String::with_capacity(text.len() + 8);
     for c in text.chars() {
         if unsafe_char(c) {
-            out.push_str(&format!("\\u{{{:x}}}", c as u32));
+            let _ = write!(out, "\\u{{{:x}}}", c as u32);
         } else {
             out.push(c);
         }
