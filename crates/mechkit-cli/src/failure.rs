@@ -19,10 +19,38 @@ pub fn message(e: &anyhow::Error) -> String {
             first.push_str(&cause);
         }
     }
-    match rest {
+    let text = match rest {
         Some(rest) => format!("{first}\n{rest}"),
         None => first,
+    };
+    // each line terminal-safe: a value with ESC or a bidi override is echoed escaped
+    let lines: Vec<String> = clip_quoted(&text)
+        .split('\n')
+        .map(|line| mechkit::expr::span::printable(line).into_owned())
+        .collect();
+    lines.join("\n")
+}
+
+/// Every `` `value` `` a message echoes cut to `mechkit_expr::span::SHOWN_LINE` characters
+/// (`span::clip`), as source lines are: a 100,000-character flag or cell is not echoed whole.
+fn clip_quoted(text: &str) -> String {
+    let parts: Vec<&str> = text.split('`').collect();
+    if parts.len() < 3 {
+        return text.to_string();
     }
+    let mut out = String::with_capacity(text.len().min(4096));
+    for (i, part) in parts.iter().enumerate() {
+        if i > 0 {
+            out.push('`');
+        }
+        // the odd parts are quoted, when their closing backtick follows
+        if i % 2 == 1 && i + 1 < parts.len() {
+            out.push_str(&mechkit::expr::span::clip(part));
+        } else {
+            out.push_str(part);
+        }
+    }
+    out
 }
 
 /// Replaces Rust's panic message by [`internal_error`]. With `RUST_BACKTRACE` set, the

@@ -60,7 +60,7 @@ pub use interval::{Interval, Jet};
 pub use number::Number;
 pub use parser::{MAX_DEPTH, Parsed, parse};
 pub use scope::{BUILTIN_CONSTANTS, Binding, MapScope, Scope, builtin_constant};
-pub use short::short_number;
+pub use short::{short_fixed, short_number};
 pub use span::Span;
 pub use suggest::{did_you_mean, edit_distance, nearest};
 pub use sym::{Sym, simplify};

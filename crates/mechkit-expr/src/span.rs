@@ -55,6 +55,59 @@ fn floor_char_boundary(s: &str, mut i: usize) -> usize {
 /// it is cut.
 pub const SHOWN_LINE: usize = 120;
 
+/// A value an error echoes (a cell of a data file, a column name, a flag's text), cut to at
+/// most [`SHOWN_LINE`] characters: its beginning and its end with `…` between them, and its
+/// length. A 100,000-character cell made a 100 KB message.
+///
+/// ```
+/// use mechkit_expr::span::{SHOWN_LINE, clip};
+/// assert_eq!(clip("1.5x"), "1.5x");
+/// let shown = clip(&"1".repeat(100_000));
+/// assert!(shown.chars().count() <= SHOWN_LINE + 30, "{shown}");
+/// assert!(shown.contains('…') && shown.ends_with("(100000 characters)"));
+/// ```
+pub fn clip(text: &str) -> std::borrow::Cow<'_, str> {
+    let count = text.chars().count();
+    if count <= SHOWN_LINE {
+        return text.into();
+    }
+    let half = SHOWN_LINE / 2 - 1;
+    let head: String = text.chars().take(half).collect();
+    let tail: String = text.chars().skip(count - half).collect();
+    format!("{head}…{tail} ({count} characters)").into()
+}
+
+/// `text` as a terminal may show it: control characters (C0 but tab, DEL, C1) and the
+/// bidirectional overrides and isolates (U+202A–U+202E, U+2066–U+2069) written as `\u{1b}`,
+/// so that a title or a name from a file cannot move the cursor, recolour the terminal or
+/// reverse the text around it. Everything else, accented letters and emoji included, is kept.
+///
+/// ```
+/// use mechkit_expr::span::printable;
+/// assert_eq!(printable("Block é 🚀"), "Block é 🚀");
+/// assert_eq!(printable("a\u{1b}[31mb\u{202e}c"), "a\\u{1b}[31mb\\u{202e}c");
+/// ```
+pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
+    use std::fmt::Write as _;
+    let unsafe_char = |c: char| {
+        (c.is_control() && c != '\t')
+            || ('\u{202a}'..='\u{202e}').contains(&c)
+            || ('\u{2066}'..='\u{2069}').contains(&c)
+    };
+    if !text.chars().any(unsafe_char) {
+        return text.into();
+    }
+    let mut out = String::with_capacity(text.len() + 8);
+    for c in text.chars() {
+        if unsafe_char(c) {
+            let _ = write!(out, "\\u{{{:x}}}", c as u32);
+        } else {
+            out.push(c);
+        }
+    }
+    out.into()
+}
+
 /// The part of `line` an error shows around the `width` characters from character `start`
 /// (0-based): the line itself when it has at most [`SHOWN_LINE`] characters, else a window
 /// of that many that begins a little before `start`, with `…` at a cut end. Returns the

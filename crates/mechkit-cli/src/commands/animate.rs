@@ -6,7 +6,9 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, anyhow, bail};
-use mechkit::animation::{Animation, AnimationFormat, AnimationOptions, Columns, Scene};
+use mechkit::animation::{
+    Animation, AnimationError, AnimationFormat, AnimationOptions, Columns, Scene,
+};
 use mechkit::scenario::Scenario;
 
 use super::{Outcome, report};
@@ -37,10 +39,21 @@ pub fn animate(args: &AnimateArgs) -> Result<Outcome> {
         trails: !args.no_trails,
         energy_bars: !args.no_energy_bars,
     };
+    // the size every format draws at, refused at the flag before anything runs (an HTML
+    // player of 0 x 1 pixels was accepted, a GIF refused it only after the run)
     let canvas = Canvas {
         width: args.width,
         height: args.height,
     };
+    for (flag, side) in [("--width", args.width), ("--height", args.height)] {
+        if !Canvas::SIDES.contains(&side) {
+            bail!(
+                "{flag} {side}: an animation's sides are from {} to {} pixels",
+                Canvas::SIDES.start(),
+                Canvas::SIDES.end()
+            );
+        }
+    }
     let xyz = if args.input.is_dir() {
         Some(args.input.join("trajectory.xyz"))
             .filter(|p| p.is_file() && !args.input.join("trajectory.csv").exists())
@@ -52,7 +65,7 @@ pub fn animate(args: &AnimateArgs) -> Result<Outcome> {
         if args.set.is_some() {
             bail!("--set changes a scenario before it runs; an XYZ file holds a finished run");
         }
-        let animation = from_xyz(&path, &options)?;
+        let animation = from_xyz(&path, &options).map_err(flagged)?;
         let dir = path
             .parent()
             .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
@@ -61,7 +74,7 @@ pub fn animate(args: &AnimateArgs) -> Result<Outcome> {
         if args.set.is_some() {
             bail!("--set changes a scenario before it runs; a run directory has already run");
         }
-        let animation = from_run_dir(&args.input, &options)?;
+        let animation = from_run_dir(&args.input, &options).map_err(flagged)?;
         (
             animation,
             args.out.clone().unwrap_or_else(|| args.input.clone()),
@@ -83,7 +96,10 @@ pub fn animate(args: &AnimateArgs) -> Result<Outcome> {
                 run.report.stop_reason
             );
         }
-        (build(&scenario, &trajectory, &options)?, out)
+        (
+            build(&scenario, &trajectory, &options).map_err(flagged)?,
+            out,
+        )
     };
     let files = write(&animation, &formats, canvas, &out)?;
     let written = Written {
@@ -246,4 +262,12 @@ pub fn write_animations(scenario: &Scenario, dir: &Path) -> Result<Vec<PathBuf>>
         .with_context(|| format!("cannot read {}", path.display()))?;
     let animation = build(scenario, &table, &AnimationOptions::default())?;
     write(&animation, &scenario.animation, Canvas::default(), dir)
+}
+
+/// An animation's error named by its flag (`--speed`), others as they are.
+fn flagged(e: anyhow::Error) -> anyhow::Error {
+    match e.downcast_ref::<AnimationError>() {
+        Some(AnimationError::Speed { .. }) => anyhow!("--speed: {e}"),
+        _ => e,
+    }
 }

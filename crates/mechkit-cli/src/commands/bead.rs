@@ -88,7 +88,7 @@ pub fn bead(args: &BeadArgs) -> Result<Outcome> {
     let t_max = quantity(&args.t_max, "--t-max", Dimension::TIME)?;
     let mut result = match model.report(start, t_max, args.rtol) {
         Ok(r) => r,
-        Err(ConstrainedError::Integrate(e)) => {
+        Err(ConstrainedError::Integrate(e)) if !e.is_step_budget() => {
             eprintln!("error: the integration failed: {e}");
             return Ok(Outcome::ComputationFailed);
         }

@@ -204,7 +204,7 @@ fn integrate_text(i: &Integration) -> String {
             mechkit::expr::short_number(d.to)
         );
         if let Some(c) = d.closed_form {
-            wr!(out, "  closed form  {c}\n");
+            wr!(out, "  closed form  {}\n", mechkit::expr::short_number(c));
         }
         match &d.quadrature {
             Ok(q) => wr!(
@@ -225,7 +225,8 @@ fn integrate_text(i: &Integration) -> String {
     if let (Some(reference), Some(rows)) = (i.reference, &i.rules) {
         wr!(
             out,
-            "fixed rules against the exact value {reference} (error = estimate - exact):\n"
+            "fixed rules against the exact value {} (error = estimate - exact):\n",
+            mechkit::expr::short_number(reference)
         );
         for r in rows {
             wr!(
@@ -233,7 +234,7 @@ fn integrate_text(i: &Integration) -> String {
                 "  {:<18} n = {:<6} {:<22} error {:+.3e}",
                 r.rule.name(),
                 r.n,
-                r.value,
+                mechkit::expr::short_number(r.value),
                 r.error
             );
             if let Some(o) = r.observed_order {

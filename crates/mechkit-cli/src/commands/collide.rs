@@ -119,9 +119,9 @@ pub fn collide(args: &CollideArgs) -> Result<Exit> {
 fn text(o: &Collided) -> String {
     let mut out = format!(
         "collision with e = {}{}:\n",
-        o.restitution,
+        show(o.restitution),
         if o.friction > 0.0 {
-            format!(", friction μ = {}", o.friction)
+            format!(", friction μ = {}", show(o.friction))
         } else {
             String::new()
         }

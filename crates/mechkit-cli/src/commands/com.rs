@@ -56,7 +56,7 @@ fn body_file(args: &ComArgs, file: &std::path::Path) -> Result<Outcome> {
     report(args.report, &result, || {
         let mut out = format!(
             "{}\ntotal mass {} kg\n",
-            result.title,
+            mechkit::expr::span::printable(&result.title),
             show(result.total_mass)
         );
         let _ = writeln!(

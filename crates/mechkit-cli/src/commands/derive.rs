@@ -12,6 +12,7 @@ use mechkit::deriv::{
 };
 use mechkit::inputs::Input;
 
+use super::input::fixed;
 use super::outputs::{create_dir, write_plots, write_table};
 use super::{Outcome, note, report};
 use crate::args::DeriveArgs;
@@ -119,8 +120,13 @@ fn text(d: &DerivedMotion) -> String {
         };
         let _ = writeln!(
             out,
-            "  {}: v from {:.6} to {:.6}, a from {:.6} to {:.6} (median {:.6})",
-            c.name, v.min, v.max, a.min, a.max, a.median
+            "  {}: v from {} to {}, a from {} to {} (median {})",
+            c.name,
+            fixed(v.min, 6),
+            fixed(v.max, 6),
+            fixed(a.min, 6),
+            fixed(a.max, 6),
+            fixed(a.median, 6)
         );
     }
     out

@@ -56,9 +56,19 @@ pub(super) fn angle(text: Option<&str>, flag: &str) -> Result<f64> {
     let Some(text) = text else { return Ok(0.0) };
     let a = quantity(text, flag, Dimension::NONE)?;
     if !(a.is_finite() && a.abs() <= std::f64::consts::FRAC_PI_2) {
+        // the hint to write degrees only for a bare number: "100 deg" has its unit already
+        let bare = text.trim().parse::<f64>().is_ok();
         bail!(
-            "{flag} `{text}` is {}°; it must be between -90° and 90° (a bare number is in radians: write \"{text} deg\" for degrees)",
-            show(a.to_degrees())
+            "{flag} `{text}` is {}°; it must be between -90° and 90°{}",
+            show(a.to_degrees()),
+            if bare {
+                format!(
+                    " (a bare number is in radians: write \"{} deg\" for degrees)",
+                    text.trim()
+                )
+            } else {
+                String::new()
+            }
         );
     }
     Ok(a)
@@ -166,7 +176,11 @@ pub fn friction(args: &FrictionArgs) -> Result<Outcome> {
             );
         let mut run = match block.report(t_max, args.rtol) {
             Ok(run) => run,
-            Err(e @ (FrictionError::Integrate(_) | FrictionError::TooManyPhases { .. })) => {
+            Err(FrictionError::Integrate(e)) if !e.is_step_budget() => {
+                eprintln!("error: the simulation failed: {e}");
+                return Ok(Outcome::ComputationFailed);
+            }
+            Err(e @ FrictionError::TooManyPhases { .. }) => {
                 eprintln!("error: the simulation failed: {e}");
                 return Ok(Outcome::ComputationFailed);
             }

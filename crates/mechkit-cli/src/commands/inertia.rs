@@ -56,7 +56,7 @@ pub fn inertia(args: &InertiaArgs) -> Result<Outcome> {
 
 fn text(r: &InertiaReport) -> String {
     let unit = &r.unit;
-    let mut out = format!("{}\n", r.title);
+    let mut out = format!("{}\n", mechkit::expr::span::printable(&r.title));
     let _ = writeln!(out, "mass {} kg", show(r.mass));
     let _ = writeln!(out, "centre of mass {} m", vec_text(&r.centre_of_mass));
     let _ = writeln!(out, "inertia tensor about the centre of mass ({unit}):");

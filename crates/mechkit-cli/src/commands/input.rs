@@ -44,6 +44,10 @@ pub fn show(x: f64) -> String {
 
 pub use mechkit::values::split_top_level;
 
+/// A number with fixed decimals for aligned text (`{:.N}`), in exponent form from `1e16` up
+/// (`mechkit_expr::short_fixed`): never hundreds of digits.
+pub use mechkit::expr::short_fixed as fixed;
+
 /// `--in UNIT`: the unit's size in SI and its text, checked to have dimension `dim` (a unit
 /// alone, "pm", is one of it; with `plain_ok` a bare number is a multiple of SI). `text` is
 /// (default unit, what the unit must be, examples) for the default and the error.

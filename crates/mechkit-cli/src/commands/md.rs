@@ -17,6 +17,7 @@ use mechkit::scenario::{DEFAULT_MAX_OUTPUT, StreamFile, output_limit_message, pa
 use mechkit::simulate::Cancel;
 
 use super::Outcome;
+use super::input::fixed;
 use super::md_setup::{options, with_flag};
 use crate::args::MdArgs;
 
@@ -316,14 +317,23 @@ fn text(r: &MdReport) -> String {
     for t in &r.thermo {
         let _ = writeln!(
             out,
-            "{:>6} {:>12.7} {:>12.7} {:>12.7} {:>12.7}",
-            t.step, t.temperature, t.potential_per_atom, t.total_per_atom, t.pressure
+            "{:>6} {:>12} {:>12} {:>12} {:>12}",
+            t.step,
+            fixed(t.temperature, 7),
+            fixed(t.potential_per_atom, 7),
+            fixed(t.total_per_atom, 7),
+            fixed(t.pressure, 7)
         );
     }
     let _ = writeln!(
         out,
-        "{} steps on {} thread(s) in {:.3} s: {:.3e} atom-steps/s, {} list builds, msd {:.4}",
-        r.steps, r.threads, r.seconds, r.atom_steps_per_second, r.list_builds, r.msd
+        "{} steps on {} thread(s) in {:.3} s: {:.3e} atom-steps/s, {} list builds, msd {}",
+        r.steps,
+        r.threads,
+        r.seconds,
+        r.atom_steps_per_second,
+        r.list_builds,
+        fixed(r.msd, 4)
     );
     if let Some(dir) = &r.lammps_export {
         let _ = writeln!(

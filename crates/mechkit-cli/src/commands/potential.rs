@@ -15,7 +15,7 @@ use mechkit::energy::{
 use mechkit::expr::units::{Dimension, Quantity};
 use mechkit::inputs::Input;
 
-use super::input::{increasing_interval, params, quantity, show, split_top_level, value};
+use super::input::{fixed, increasing_interval, params, quantity, show, split_top_level, value};
 use super::outputs::{create_dir, write_plots, write_table};
 use super::{Outcome, note, report};
 use crate::args::PotentialArgs;
@@ -227,14 +227,14 @@ fn text(a: &PotentialAnalysis) -> String {
         for e in &a.equilibria {
             let _ = write!(
                 out,
-                "  {x} = {:<22} {:<9} U = {:<12.6} U'' = {:.6}",
+                "  {x} = {:<22} {:<9} U = {:<12} U'' = {}",
                 short(e.x),
                 e.stability.name(),
-                e.potential,
-                e.curvature
+                fixed(e.potential, 6),
+                fixed(e.curvature, 6)
             );
             if let Some(h) = e.barrier {
-                let _ = write!(out, "   barrier {h:.6}");
+                let _ = write!(out, "   barrier {}", fixed(h, 6));
             }
             out.push('\n');
         }
@@ -247,7 +247,7 @@ fn text(a: &PotentialAnalysis) -> String {
         );
     }
     if let Some(c) = &a.energy {
-        let _ = writeln!(out, "with E = {}:", c.energy);
+        let _ = writeln!(out, "with E = {}:", short(c.energy));
         if c.turning_points.is_empty() {
             let _ = writeln!(out, "  no turning point in [{lo}, {hi}]");
         } else {
@@ -258,8 +258,8 @@ fn text(a: &PotentialAnalysis) -> String {
             let _ = writeln!(
                 out,
                 "  [{}, {}] {}",
-                r.from,
-                r.to,
+                short(r.from),
+                short(r.to),
                 if r.allowed { "allowed" } else { "forbidden" }
             );
         }
@@ -292,21 +292,25 @@ fn motion_text(a: &PotentialAnalysis, m: &Motion) -> String {
     let x = &a.var;
     let mut out = format!(
         "released at {x} = {} with velocity {} (m = {}): E = {}\n",
-        m.x0, m.v0, m.mass, m.energy
+        show(m.x0),
+        show(m.v0),
+        show(m.mass),
+        show(m.energy)
     );
     let end = |b: Bound, side: &str| match b {
-        Bound::TurningPoint { x: t } => format!("turns at {x} = {t} ({side})"),
-        Bound::SingularPoint { x: s } => {
-            format!("reaches the singular point at {x} = {s} ({side}), where U or F is infinite")
-        }
-        _ => format!("leaves the range at {x} = {} moving {side}", b.x()),
+        Bound::TurningPoint { x: t } => format!("turns at {x} = {} ({side})", show(t)),
+        Bound::SingularPoint { x: s } => format!(
+            "reaches the singular point at {x} = {} ({side}), where U or F is infinite",
+            show(s)
+        ),
+        _ => format!("leaves the range at {x} = {} moving {side}", show(b.x())),
     };
     let turns = |b: Bound| matches!(b, Bound::TurningPoint { .. });
     let sentence = match (turns(m.left), turns(m.right)) {
         (true, true) => format!(
             "  turns at {x} = {} (left) and {x} = {} (right): it oscillates between them\n",
-            m.left.x(),
-            m.right.x()
+            show(m.left.x()),
+            show(m.right.x())
         ),
         (true, false) => format!(
             "  {}, then {}\n",
@@ -342,6 +346,6 @@ fn motion_text(a: &PotentialAnalysis, m: &Motion) -> String {
 
 /// Coordinates for the terminal: `1, 2.5` (not the `Debug` form `[1.0, 2.5]`).
 fn join(v: &[f64]) -> String {
-    let parts: Vec<String> = v.iter().map(ToString::to_string).collect();
+    let parts: Vec<String> = v.iter().map(|x| show(*x)).collect();
     parts.join(", ")
 }

@@ -10,7 +10,7 @@ use mechkit::energy::{PowerAnswer, PowerMotion, average_power, constant_power_mo
 use mechkit::expr::units::Dimension;
 use mechkit::inputs::{Input, InputError};
 
-use super::input::{quantity, split_top_level};
+use super::input::{quantity, show, split_top_level};
 use super::outputs::{create_dir, write_plots, write_table};
 use super::{Outcome, note, report};
 use crate::args::PowerArgs;
@@ -64,13 +64,17 @@ pub fn power(args: &PowerArgs) -> Result<Outcome> {
         .map_err(flagged)?;
         PowerAnswer::Motion(motion)
     };
+    // the finiteness rule before any file is written, not only before the answer is printed
+    mechkit::finite::check_finite(&answer)?;
     if let (Some(dir), PowerAnswer::Motion(m)) = (&args.out, &mut answer) {
         write_files(args, dir, m)?;
     }
     report(args.report, &answer, || match &answer {
         PowerAnswer::Average(p) => format!(
             "average power P = W/t = {} J / {} s = {} W\n",
-            p.work, p.time, p.average_power
+            show(p.work),
+            show(p.time),
+            show(p.average_power)
         ),
         PowerAnswer::Motion(m) => text(m),
         _ => String::new(),
@@ -91,7 +95,11 @@ fn write_files(args: &PowerArgs, dir: &Path, m: &mut PowerMotion) -> Result<()> 
     let csv = write_table(dir, "power", &m.table(400))?;
     note(args.report, &format!("wrote {csv}"));
     if !args.no_plots {
-        let title = format!("constant power P = {} W, m = {} kg", m.power, m.mass);
+        let title = format!(
+            "constant power P = {} W, m = {} kg",
+            show(m.power),
+            show(m.mass)
+        );
         for path in write_plots(dir, &m.plots(), &title, args.plots)? {
             note(args.report, &format!("wrote {path}"));
         }
@@ -103,17 +111,29 @@ fn write_files(args: &PowerArgs, dir: &Path, m: &mut PowerMotion) -> Result<()> 
 fn text(m: &PowerMotion) -> String {
     let mut out = format!(
         "constant power P = {} W on m = {} kg from v0 = {} m/s:\n  v = sqrt(v0² + 2Pt/m), a = P/(m v), x = m (v³ - v0³)/(3P)\n",
-        m.power, m.mass, m.v0
+        show(m.power),
+        show(m.mass),
+        show(m.v0)
     );
     for s in &m.at {
         let _ = writeln!(
             out,
             "  t = {} s: v = {} m/s, a = {} m/s², x = {} m, work = {} J",
-            s.t, s.v, s.a, s.x, s.work
+            show(s.t),
+            show(s.v),
+            show(s.a),
+            show(s.x),
+            show(s.work)
         );
     }
     if let Some(r) = m.until_speed {
-        let _ = writeln!(out, "  reaches {} m/s at t = {} s, x = {} m", r.v, r.t, r.x);
+        let _ = writeln!(
+            out,
+            "  reaches {} m/s at t = {} s, x = {} m",
+            show(r.v),
+            show(r.t),
+            show(r.x)
+        );
     }
     out
 }

@@ -39,8 +39,12 @@ pub(super) fn restitution(text: &str) -> Result<f64> {
         .map_err(|e| anyhow!("--restitution: {e}"))
 }
 
-/// The flag of an input of `mechkit rigid-collide`.
-pub(super) fn flag(input: Option<Input>, args: &RigidCollideArgs) -> &'static str {
+/// The flag of an input of `mechkit rigid-collide` (the body file's name for the inertia of a
+/// body given by `--body`).
+pub(super) fn flag(input: Option<Input>, args: &RigidCollideArgs) -> String {
+    if let (Some(Input::Inertia), Some(file)) = (input, &args.body) {
+        return format!("--body {}", file.display());
+    }
     match input {
         Some(Input::Inertia) => "--inertia",
         Some(Input::Normal) => "--normal",
@@ -59,6 +63,7 @@ pub(super) fn flag(input: Option<Input>, args: &RigidCollideArgs) -> &'static st
         Some(Input::Velocity) => "--velocity",
         _ => "--mass",
     }
+    .to_string()
 }
 
 /// The hinged body (at rest), the default contact point (the lower end of a rod), and the
@@ -120,7 +125,7 @@ fn hinged(args: &RigidCollideArgs) -> Result<(PivotedBody, Option<[f64; 2]>, Str
         let body = PivotedBody::from_properties(&loaded.whole, &pivot, 0.0).map_err(err)?;
         let what = format!(
             "{} ({}): I_O = {} kg m² about z through the pivot, M = {} kg",
-            loaded.title,
+            mechkit::expr::span::printable(&loaded.title),
             path.display(),
             show(body.inertia),
             show(body.mass)

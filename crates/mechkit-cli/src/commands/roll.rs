@@ -81,7 +81,7 @@ pub fn roll(args: &RollArgs) -> Result<Outcome> {
     let (motion, t_max) = build(args)?;
     let mut result = match motion.report(t_max, args.rtol) {
         Ok(r) => r,
-        Err(RollingError::Integrate(e)) => {
+        Err(RollingError::Integrate(e)) if !e.is_step_budget() => {
             eprintln!("error: the simulation failed: {e}");
             return Ok(Outcome::ComputationFailed);
         }

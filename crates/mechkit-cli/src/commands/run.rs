@@ -3,7 +3,8 @@
 use std::path::Path;
 
 use anyhow::{Context as _, Result, anyhow, bail};
-use mechkit::ode::Method;
+use mechkit::expr::short_number as show;
+use mechkit::ode::{AdaptiveConfig, Method, Tolerance};
 use mechkit::scenario::{CompareSettings, ConstantOverride, Scenario, parse_size, write_atomic};
 use mechkit::simulate::Cancel;
 use mechkit::units::{Dimension, Quantity};
@@ -154,8 +155,17 @@ fn compare(
         if let Some(v) = v
             && !(v >= 0.0 && v.is_finite() && (flag == "--atol" || v > 0.0))
         {
-            bail!("{flag} must be positive, not {v}");
+            bail!("{flag} must be positive, not {}", show(v));
         }
+    }
+    if let Some(rtol) = args.rtol {
+        // the adaptive integrators' own rule (above double precision), at the flag
+        AdaptiveConfig {
+            rtol: Tolerance::Scalar(rtol),
+            ..AdaptiveConfig::default()
+        }
+        .validate(1)
+        .map_err(|e| anyhow!("--rtol: {e}"))?;
     }
     let settings = CompareSettings {
         dt,

@@ -171,7 +171,7 @@ pub fn spin(args: &SpinArgs) -> Result<Outcome> {
     };
     let mut result = match spinning.report(&start, t_max, &options) {
         Ok(r) => r,
-        Err(Free3dError::Integrate(e)) => {
+        Err(Free3dError::Integrate(e)) if !e.is_step_budget() => {
             eprintln!("error: the simulation failed: {e}");
             return Ok(Outcome::ComputationFailed);
         }

@@ -11,7 +11,7 @@ use mechkit::expr::units::Dimension;
 use mechkit::inputs::Input;
 use mechkit::quad::SampleRule;
 
-use super::input::quantity;
+use super::input::{quantity, show};
 use super::outputs::{create_dir, write_plots, write_table};
 use super::work_field::field_work;
 use super::{Outcome, note, report};
@@ -165,39 +165,44 @@ fn text(w: &DataWork) -> String {
             let _ = writeln!(
                 out,
                 "impulse J = ∫ F d{x} = {} N s over {} s",
-                w.integral, w.span
+                show(w.integral),
+                show(w.span)
             );
-            let _ = writeln!(out, "average force J/Δt = {} N", w.mean_force);
+            let _ = writeln!(out, "average force J/Δt = {} N", show(w.mean_force));
         }
         Abscissa::Position => {
             let _ = writeln!(
                 out,
                 "work W = ∫ F d{x} = {} J over {} m",
-                w.integral, w.span
+                show(w.integral),
+                show(w.span)
             );
-            let _ = writeln!(out, "average force W/Δx = {} N", w.mean_force);
+            let _ = writeln!(out, "average force W/Δx = {} N", show(w.mean_force));
         }
     }
     let _ = writeln!(
         out,
         "largest |F| = {} N (F = {} at {x} = {})",
-        w.peak.magnitude, w.peak.f, w.peak.x
+        show(w.peak.magnitude),
+        show(w.peak.f),
+        show(w.peak.x)
     );
     if let Some(d) = w.delta_v {
         let _ = writeln!(
             out,
-            "Δv = J/m = {d} m/s, so v goes from {} to {} m/s",
-            w.v0,
-            w.v0 + d
+            "Δv = J/m = {} m/s, so v goes from {} to {} m/s",
+            show(d),
+            show(w.v0),
+            show(w.v0 + d)
         );
     }
     if w.mass.is_some() && w.of == Abscissa::Position {
         match (w.turning_point, w.v_end) {
             (Some(t), _) => {
-                let _ = writeln!(out, "the body stops (v² = 0) at {x} = {t}");
+                let _ = writeln!(out, "the body stops (v² = 0) at {x} = {}", show(t));
             }
             (None, Some(v)) => {
-                let _ = writeln!(out, "speed at the end v = {v} m/s");
+                let _ = writeln!(out, "speed at the end v = {} m/s", show(v));
             }
             (None, None) => {}
         }

@@ -31,6 +31,7 @@
 mod adaptive;
 mod animate;
 mod bead;
+mod calculator_limits;
 mod calculus;
 mod collide;
 mod com_image;

@@ -87,7 +87,7 @@ impl Columns for [(String, Vec<Real>)] {
 }
 
 /// Why an animation cannot be made.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum AnimationError {
     /// The run has no time column or no rows.
     #[error("the run has no rows to animate (no `t` column, or it is empty)")]
@@ -98,6 +98,30 @@ pub enum AnimationError {
     /// An option out of range.
     #[error("{0}")]
     Option(String),
+    /// A playback speed that would give the run fewer than two frames or more than
+    /// [`MAX_FRAMES`]: refused with the speeds that fit, not silently changed.
+    #[error(
+        "the speed {} simulated s per s is not one this run of {} s can be shown at with {} frames per second; choose a speed from {} ({MAX_FRAMES} frames) to {} (2 frames)",
+        crate::error::short(*speed),
+        crate::error::short(*duration),
+        crate::error::short(*fps),
+        crate::error::short(*slowest),
+        crate::error::short(*fastest)
+    )]
+    Speed {
+        /// The speed asked for (simulated seconds per second).
+        speed: Real,
+        /// The run's duration (s).
+        duration: Real,
+        /// The frames it would make.
+        frames: Real,
+        /// The frame rate.
+        fps: Real,
+        /// The slowest speed that fits.
+        slowest: Real,
+        /// The fastest speed that fits.
+        fastest: Real,
+    },
 }
 
 /// The run's frame times: from the first row to the last at `fps` frames per second of
@@ -125,7 +149,22 @@ fn frame_times(
         None => 1.0,
     };
     let wanted = (duration / speed * options.fps).ceil();
-    let frames = if wanted.is_finite() {
+    // a speed given is kept (to the rounding of a whole number of frames) or refused
+    let (slowest, fastest) = (
+        duration * options.fps / (MAX_FRAMES - 1) as Real,
+        duration * options.fps,
+    );
+    if options.speed.is_some() && duration > 0.0 && !(slowest..=fastest).contains(&speed) {
+        return Err(AnimationError::Speed {
+            speed,
+            duration,
+            frames: wanted + 1.0,
+            fps: options.fps,
+            slowest,
+            fastest,
+        });
+    }
+    let frames = if wanted.is_finite() && wanted < MAX_FRAMES as Real {
         (wanted as usize + 1).clamp(1, MAX_FRAMES)
     } else {
         MAX_FRAMES
@@ -414,19 +453,53 @@ mod tests {
         let (t, _) = frame_times(0.0, 0.01, &o).unwrap();
         assert_eq!(t.len(), 101);
         assert!(frame_times(0.0, 1.0, &AnimationOptions { fps: 0.0, ..o }).is_err());
-        assert!(
-            frame_times(
+        let with_speed = |speed| AnimationOptions {
+            speed: Some(speed),
+            ..o
+        };
+        let (t, speed) = frame_times(0.0, 5.0, &with_speed(0.5)).unwrap();
+        assert_eq!((t.len(), speed), (251, 0.5));
+    }
+
+    /// `--speed 1e-300` made one frame (an overflow of the frame count, a panic in a debug
+    /// build) and `--speed 1e300` silently became 125 s/s: a speed given is kept or refused.
+    #[test]
+    fn a_speed_that_does_not_fit_the_run_is_refused_with_the_speeds_that_do() {
+        let o = AnimationOptions::default();
+        for speed in [1e-300, 1e300, 0.06, 126.0] {
+            let e = frame_times(
                 0.0,
-                1e300,
+                5.0,
                 &AnimationOptions {
-                    speed: Some(1e-300),
+                    speed: Some(speed),
                     ..o
-                }
+                },
             )
-            .unwrap()
-            .0
-            .len()
-                == MAX_FRAMES
-        );
+            .unwrap_err();
+            assert!(matches!(e, AnimationError::Speed { .. }), "{e}");
+            assert!(e.to_string().contains("from 0.0625"), "{e}");
+            assert!(e.to_string().contains("to 125 (2 frames)"), "{e}");
+        }
+        let (t, _) = frame_times(
+            0.0,
+            5.0,
+            &AnimationOptions {
+                speed: Some(125.0),
+                ..o
+            },
+        )
+        .unwrap();
+        assert_eq!(t.len(), 2);
+        let slowest = 5.0 * 25.0 / (MAX_FRAMES - 1) as Real;
+        let (t, _) = frame_times(
+            0.0,
+            5.0,
+            &AnimationOptions {
+                speed: Some(slowest),
+                ..o
+            },
+        )
+        .unwrap();
+        assert_eq!(t.len(), MAX_FRAMES);
     }
 }

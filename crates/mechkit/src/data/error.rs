@@ -9,6 +9,7 @@ use std::path::PathBuf;
 use thiserror::Error;
 
 use crate::Real;
+use mechkit_expr::span::clip;
 
 /// A data file that cannot be read as a table of numbers, or a column it does not have.
 #[derive(Debug, Error)]
@@ -67,9 +68,10 @@ pub enum DataError {
     },
     /// A cell that reads as NaN or infinity (or overflows, like `1e999`).
     #[error(
-        "{file}:{line}:{column}: column {cell} is `{text}`, which is not a finite number; \
+        "{file}:{line}:{column}: column {cell} is `{}`, which is not a finite number; \
          integrals and derivatives need finite numbers: replace it with a measured value, \
-         or remove the line or mark it as a comment with # or %"
+         or remove the line or mark it as a comment with # or %",
+        clip(.text)
     )]
     NotFinite {
         /// The file name.
@@ -118,7 +120,8 @@ pub enum DataError {
     },
     /// A name that matches several columns equally well.
     #[error(
-        "{file}: `{name}` could mean any of the columns {}; use the full name or the column number",
+        "{file}: `{}` could mean any of the columns {}; use the full name or the column number",
+        clip(.name),
         quote_list(.matches)
     )]
     AmbiguousColumn {
@@ -146,8 +149,10 @@ pub enum DataError {
     ColumnZero,
     /// The same abscissa value on two lines.
     #[error(
-        "{file}:{second_line}: {label} = {value} appears on lines {first_line} and {second_line}; \
-         {what} needs distinct points: remove one or average them"
+        "{file}:{second_line}: {} = {} appears on lines {first_line} and {second_line}; \
+         {what} needs distinct points: remove one or average them",
+        clip(.label),
+        crate::error::short(*.value)
     )]
     DuplicateAbscissa {
         /// The file name.
@@ -165,11 +170,14 @@ pub enum DataError {
     },
     /// An abscissa that turns back: it increased and then decreases, or the other way round.
     #[error(
-        "{file}:{line}: {label} turns back here: it was {}, but goes from {previous} on line \
-         {previous_line} to {value} on line {line}; {what} follows the path in file order, so \
+        "{file}:{line}: {label} turns back here: it was {}, but goes from {} on line \
+         {previous_line} to {} on line {line}; {what} follows the path in file order, so \
          {label} must increase (or decrease) along it; sort the file by {label} if the rows are \
          not in path order",
-        if *.increasing { "increasing" } else { "decreasing" }
+        if *.increasing { "increasing" } else { "decreasing" },
+        crate::error::short(*.previous),
+        crate::error::short(*.value),
+        label = clip(.label)
     )]
     NotMonotone {
         /// The file name.
@@ -195,7 +203,7 @@ fn describe_cell(text: &str, cell: usize) -> String {
     if text.is_empty() {
         format!("column {cell} is empty")
     } else {
-        format!("column {cell} is `{text}`, which is not a number")
+        format!("column {cell} is `{}`, which is not a number", clip(text))
     }
 }
 
@@ -216,15 +224,16 @@ fn count_rows(rows: usize) -> String {
 }
 
 fn quote_list(names: &[String]) -> String {
-    let quoted: Vec<String> = names.iter().map(|n| format!("`{n}`")).collect();
+    let quoted: Vec<String> = names.iter().map(|n| format!("`{}`", clip(n))).collect();
     quoted.join(", ")
 }
 
 fn unknown_column(name: &str, names: Option<&[String]>, width: usize) -> String {
     match names {
         Some(names) => format!(
-            "no column named `{name}`; the columns are {}: use one of these names or a column \
+            "no column named `{}`; the columns are {}: use one of these names or a column \
              number from 1 to {width}",
+            clip(name),
             quote_list(names)
         ),
         None => format!(

@@ -129,7 +129,13 @@ pub fn constant_power_motion(
     times: &[Real],
     until_speed: Option<Real>,
 ) -> Result<PowerMotion, InputError> {
-    let got = format!("(got P = {power} W, m = {mass} kg, v0 = {v0} m/s)");
+    let short = crate::error::short;
+    let got = format!(
+        "(got P = {} W, m = {} kg, v0 = {} m/s)",
+        short(power),
+        short(mass),
+        short(v0)
+    );
     let positive = |v: Real| v.is_finite() && v > 0.0;
     if !positive(power) {
         return Err(InputError::new(
@@ -137,10 +143,13 @@ pub fn constant_power_motion(
             format!("the power must be positive {got}"),
         ));
     }
-    if !positive(mass) {
+    // a = P/(m v) divides by the mass: a subnormal one is refused as a scenario refuses it
+    if !crate::invertible(mass) {
         return Err(InputError::new(
             Input::Mass,
-            format!("the mass must be positive {got}"),
+            format!(
+                "the mass must be positive, finite and at least 2.2e-308 kg (its reciprocal must be finite) {got}"
+            ),
         ));
     }
     let model = ConstantPower::new(power, mass, v0, 0.0).ok_or_else(|| {
@@ -163,7 +172,11 @@ pub fn constant_power_motion(
             let t = model.time_to_speed(v).ok_or_else(|| {
                 InputError::new(
                     Input::TargetSpeed,
-                    format!("{v} m/s is below the start speed {v0} m/s"),
+                    format!(
+                        "{} m/s is below the start speed {} m/s",
+                        short(v),
+                        short(v0)
+                    ),
                 )
             })?;
             Ok(SpeedReached {

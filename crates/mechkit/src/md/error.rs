@@ -176,9 +176,9 @@ pub enum MdError {
     /// A periodic box too small for the minimum-image convention at this cut-off.
     #[error(
         "the periodic box is {} long on the {} axis, shorter than twice the cut-off plus skin ({}); use more unit cells or a shorter cut-off",
-        round6(*.length),
+        crate::error::short(round6(*.length)),
         ["x", "y", "z"].get(*.axis).copied().unwrap_or("last"),
-        round6(*.needed)
+        crate::error::short(round6(*.needed))
     )]
     BoxTooSmall {
         /// The axis (0 = x).

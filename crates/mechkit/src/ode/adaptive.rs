@@ -215,13 +215,23 @@ impl AdaptiveRk {
     }
 
     /// Takes one accepted step from `state` towards `t_bound` (never past it), retrying
-    /// rejected attempts with smaller steps. Returns the accepted step size.
+    /// rejected attempts with smaller steps. Returns the accepted step size, or
+    /// [`AdaptiveError::StepBudget`] once [`AdaptiveConfig::max_steps`] steps were accepted.
     pub fn step<S: OdeSystem + ?Sized>(
         &mut self,
         sys: &S,
         state: &mut State,
         t_bound: Real,
     ) -> Result<Real, AdaptiveError> {
+        if let Some(steps) = self.config.max_steps
+            && self.stats.accepted >= steps
+        {
+            return Err(AdaptiveError::StepBudget {
+                steps,
+                t: state.t,
+                t_end: t_bound,
+            });
+        }
         let n = state.y.len();
         self.stages.resize(self.stage_count(), n);
         if self.y_new.len() != n {

@@ -97,6 +97,11 @@ pub struct AdaptiveConfig {
     pub error_components: Option<usize>,
     /// The step-size controller (`None`: the method's usual one, [`Controller::for_tableau`]).
     pub controller: Option<Controller>,
+    /// The most steps the integrator accepts before it refuses to go on
+    /// ([`AdaptiveError::StepBudget`]); `None`: no bound (a scenario's run has its own,
+    /// `simulate::check_step_bound`). [`AdaptiveConfig::from_rtol`], the models' rule, sets
+    /// [`STEP_BUDGET`].
+    pub max_steps: Option<u64>,
 }
 
 impl Default for AdaptiveConfig {
@@ -110,6 +115,7 @@ impl Default for AdaptiveConfig {
             h0: None,
             error_components: None,
             controller: None,
+            max_steps: None,
         }
     }
 }
@@ -119,6 +125,19 @@ impl Default for AdaptiveConfig {
 /// thousandth of its unit (1 mm in metres, 1 ms in seconds) and absolutely below that.
 pub const ATOL_PER_RTOL: Real = 1e-3;
 
+/// The steps a model's run may take ([`AdaptiveConfig::from_rtol`]; a scenario's adaptive run
+/// gets as many unless `max_steps` says more, `simulate::DEFAULT_MAX_STEPS`). Past it the run
+/// stops with [`AdaptiveError::StepBudget`], which names the time it reached: a bound on the
+/// work of any end time, since adaptive steps cannot be counted before the run. A million
+/// steps of the heaviest model (`mechkit spin`, DOP853) take a few seconds in a release build.
+pub const STEP_BUDGET: u64 = 1_000_000;
+
+/// The smallest relative tolerance an adaptive run accepts: a few units in the last place of a
+/// double (2.2e-16). Below it no step can meet the tolerance, the step size falls towards the
+/// resolution of `t`, and a run takes minutes to fail; [`AdaptiveConfig::validate`] refuses
+/// it, for every model and every front (a scenario's `rtol`, each command's `--rtol`).
+pub const MIN_RTOL: Real = 1e-14;
+
 /// Steps per span in [`AdaptiveConfig::sampled_over`]: `h_max = span / 1000`, so that the
 /// steps (what a model records and plots) follow the motion, even where the method could cross
 /// it in a few steps (a parabola in one).
@@ -126,8 +145,9 @@ pub const STEPS_PER_SPAN: Real = 1000.0;
 
 impl AdaptiveConfig {
     /// The default settings at relative tolerance `rtol`, with `atol = rtol ·`
-    /// [`ATOL_PER_RTOL`]: the one rule of the models' commands (`mechkit rocket`, `friction`,
-    /// `roll`, `bead`, `spin`).
+    /// [`ATOL_PER_RTOL`] and at most [`STEP_BUDGET`] steps: the one rule of the models'
+    /// commands (`mechkit rocket`, `friction`, `roll`, `bead`, `spin`), so that none runs for
+    /// ever, whatever its end time (`spin --t-max 1e300`).
     ///
     /// # Example
     /// ```
@@ -136,11 +156,13 @@ impl AdaptiveConfig {
     /// assert_eq!(config.rtol, Tolerance::Scalar(1e-8));
     /// assert_eq!(config.atol, Tolerance::Scalar(1e-8 * 1e-3));
     /// assert_eq!(config.h_max, 10.0 / 1000.0);
+    /// assert_eq!(config.max_steps, Some(mechkit::ode::STEP_BUDGET));
     /// ```
     pub fn from_rtol(rtol: Real) -> Self {
         Self {
             rtol: Tolerance::Scalar(rtol),
             atol: Tolerance::Scalar(rtol * ATOL_PER_RTOL),
+            max_steps: Some(STEP_BUDGET),
             ..Self::default()
         }
     }
@@ -161,10 +183,18 @@ impl AdaptiveConfig {
 #[non_exhaustive]
 pub enum ConfigError {
     /// `rtol` not positive.
-    #[error("rtol must be positive and finite, not {0}")]
+    #[error("rtol must be positive and finite, not {}", crate::error::short(*.0))]
     Rtol(Real),
+    /// `rtol` below [`MIN_RTOL`]: double precision cannot deliver it, and the steps shrink
+    /// towards the resolution of `t` (`rtol = 1e-300` took minutes to fail).
+    #[error(
+        "rtol = {} is below what double precision can deliver; use {} or more",
+        crate::error::short(*.0),
+        crate::error::short(MIN_RTOL)
+    )]
+    RtolBelowPrecision(Real),
     /// `atol` negative.
-    #[error("atol must be zero or positive and finite, not {0}")]
+    #[error("atol must be zero or positive and finite, not {}", crate::error::short(*.0))]
     Atol(Real),
     /// Per-component tolerance of the wrong length.
     #[error("{what} has {got} components, the system has {want}")]
@@ -212,6 +242,9 @@ impl AdaptiveConfig {
         for r in self.rtol.values() {
             if !(r > 0.0 && r.is_finite()) {
                 return Err(ConfigError::Rtol(r));
+            }
+            if r < MIN_RTOL {
+                return Err(ConfigError::RtolBelowPrecision(r));
             }
         }
         for a in self.atol.values() {
@@ -281,7 +314,10 @@ pub struct AdaptiveStats {
 pub enum AdaptiveError {
     /// The step size fell below its minimum.
     #[error(
-        "the step size fell to {h:e} at t = {t} (minimum {h_min:e}); the error is dominated by component {component}{}",
+        "the step size fell to {} at t = {} (minimum {}); the error is dominated by component {component}{}",
+        crate::error::short(*h),
+        crate::error::short(*t),
+        crate::error::short(*h_min),
         if *non_finite { " whose derivative is not finite" } else { "" }
     )]
     StepTooSmall {
@@ -296,11 +332,48 @@ pub enum AdaptiveError {
         /// Whether a stage produced non-finite values.
         non_finite: bool,
     },
+    /// The run took [`AdaptiveConfig::max_steps`] steps before its end.
+    #[error(
+        "the run took its budget of {steps} steps and reached only t = {} s of {} s; choose an earlier end time, or a larger rtol",
+        crate::error::short(*t),
+        crate::error::short(*t_end)
+    )]
+    StepBudget {
+        /// The budget.
+        steps: u64,
+        /// The time reached.
+        t: Real,
+        /// The end the run was asked to reach.
+        t_end: Real,
+    },
+}
+
+impl AdaptiveError {
+    /// Whether the run stopped at its step budget (the end time asked too much of it), rather
+    /// than failing to take a step.
+    pub fn is_step_budget(&self) -> bool {
+        matches!(self, AdaptiveError::StepBudget { .. })
+    }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{AdaptiveConfig, ConfigError};
+    use super::{AdaptiveConfig, ConfigError, MIN_RTOL, STEP_BUDGET};
+
+    /// `mechkit rocket --rtol 1e-307` ran 115 s (`spin`, `bead`, `roll` at 1e-100 past 370 s)
+    /// before failing: the steps shrank towards the resolution of t. Only a scenario refused
+    /// it; now the one validation of every adaptive run does.
+    #[test]
+    fn a_tolerance_below_double_precision_is_refused() {
+        for rtol in [1e-307, 1e-100, 1e-15] {
+            let e = AdaptiveConfig::from_rtol(rtol).validate(2).unwrap_err();
+            assert_eq!(e, ConfigError::RtolBelowPrecision(rtol));
+            assert!(e.to_string().contains("use 1e-14 or more"), "{e}");
+        }
+        assert_eq!(AdaptiveConfig::from_rtol(MIN_RTOL).validate(2), Ok(()));
+        assert_eq!(AdaptiveConfig::from_rtol(1e-6).max_steps, Some(STEP_BUDGET));
+        assert_eq!(AdaptiveConfig::default().max_steps, None);
+    }
 
     /// Issue 26: `h_min > h_max` (or a first step below `h_min`) failed at the first step of
     /// the run; it is refused by `validate`, before any step.

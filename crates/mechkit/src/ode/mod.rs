@@ -59,8 +59,8 @@ mod weights;
 pub use adaptive::AdaptiveRk;
 pub use bdf::{Bdf, MAX_ORDER as BDF_MAX_ORDER};
 pub use control::{
-    ATOL_PER_RTOL, AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller,
-    STEPS_PER_SPAN, Tolerance,
+    ATOL_PER_RTOL, AdaptiveConfig, AdaptiveError, AdaptiveStats, ConfigError, Controller, MIN_RTOL,
+    STEP_BUDGET, STEPS_PER_SPAN, Tolerance,
 };
 pub use euler::Euler;
 pub use euler_cromer::EulerCromer;

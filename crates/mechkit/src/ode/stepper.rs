@@ -17,7 +17,11 @@ pub struct StepInfo {
 #[non_exhaustive]
 pub enum IntegrateError {
     /// The step size is not a positive finite number.
-    #[error("step size h = {h} at t = {t} is not a positive finite number")]
+    #[error(
+        "step size h = {} at t = {} is not a positive finite number",
+        crate::error::short(*h),
+        crate::error::short(*t)
+    )]
     BadStep {
         /// Time.
         t: Real,
@@ -41,7 +45,7 @@ pub enum IntegrateError {
         method: &'static str,
     },
     /// The state became NaN or infinite.
-    #[error("the state became non-finite at t = {t}")]
+    #[error("the state became non-finite at t = {}", crate::error::short(*t))]
     NonFinite {
         /// Time at the end of the failed step.
         t: Real,

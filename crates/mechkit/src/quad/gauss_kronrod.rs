@@ -104,6 +104,35 @@ pub enum QuadError {
     /// A limit is NaN.
     #[error("the limits of integration must be numbers")]
     BadLimits,
+    /// Towards an infinite limit the integrand does not decay fast enough for the samples
+    /// to stay finite: `∫_1^∞ 1/x dx` grows without bound.
+    #[error(
+        "the integrand does not decay fast enough towards x = {} for the integral to converge (like 1/x, it may diverge there); integrate up to a finite limit",
+        super::short(*.end)
+    )]
+    NoDecay {
+        /// The infinite limit (`inf` or `-inf`).
+        end: Real,
+    },
+}
+
+/// An error of the integral over `t ∈ [0, 1]` told in `x = map(t)`: a sample that is not
+/// finite where `x` is infinite is the integrand's failure to decay towards the limit, not a
+/// singularity at the `t` it was found (`∫_1^∞ 1/x dx` said "NaN at x = 1").
+fn mapped(e: QuadError, map: impl Fn(Real) -> Real) -> QuadError {
+    match e {
+        QuadError::NotFinite { x: t, value } => {
+            let x = map(t);
+            if x.is_finite() {
+                QuadError::NotFinite { x, value }
+            } else {
+                QuadError::NoDecay {
+                    end: if x.is_nan() { Real::INFINITY } else { x },
+                }
+            }
+        }
+        other => other,
+    }
 }
 
 struct Panel {
@@ -207,7 +236,8 @@ fn integrate_dyn(
             0.0,
             1.0,
             tol,
-        ),
+        )
+        .map_err(|e| mapped(e, |t| a + t / (1.0 - t))),
         (false, true) => adaptive(
             &mut |t: Real| {
                 let s = 1.0 - t;
@@ -216,7 +246,8 @@ fn integrate_dyn(
             0.0,
             1.0,
             tol,
-        ),
+        )
+        .map_err(|e| mapped(e, |t| b - t / (1.0 - t))),
         (false, false) => {
             let left = integrate_dyn(f, Real::NEG_INFINITY, 0.0, tol)?;
             let right = integrate_dyn(f, 0.0, Real::INFINITY, tol)?;
@@ -293,6 +324,24 @@ fn adaptive(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `∫_1^∞ 1/x dx` diverges; its quadrature said "the integrand is NaN at x = 1", the
+    /// variable of the mapped interval, not the user's.
+    #[test]
+    fn an_integrand_that_does_not_decay_is_blamed_at_the_infinite_limit() {
+        let t = Tolerance::default();
+        let e = integrate(|x| 1.0 / x, 1.0, f64::INFINITY, t).unwrap_err();
+        assert_eq!(e, QuadError::NoDecay { end: f64::INFINITY }, "{e}");
+        assert!(e.to_string().contains("towards x = inf"), "{e}");
+        let e = integrate(|x| 1.0 / x, f64::NEG_INFINITY, -1.0, t).unwrap_err();
+        assert_eq!(
+            e,
+            QuadError::NoDecay {
+                end: f64::NEG_INFINITY
+            },
+            "{e}"
+        );
+    }
 
     #[test]
     fn smooth_and_singular_integrands() {

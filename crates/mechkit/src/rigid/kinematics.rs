@@ -291,8 +291,21 @@ impl CircularMotion {
     /// assert!((c.centripetal() - 2.0).abs() < 1e-15);
     /// ```
     pub fn from_speed(speed: Real, radius: Real) -> Result<Self, KinematicsError> {
-        let r = positive((Input::Radius, "the radius"), radius)?;
-        Self::new(r, finite((Input::Speed, "the speed"), speed)? / r)
+        // ω = v/R: a radius it divides by must be a normal double (1e-320 m made ω = ∞)
+        let r = check(
+            (Input::Radius, "the radius"),
+            radius,
+            "positive, finite and at least 2.2e-308 m (ω = v/R divides by it)",
+            crate::invertible(radius),
+        )?;
+        let speed = finite((Input::Speed, "the speed"), speed)?;
+        let omega = check(
+            (Input::Speed, "ω = v/R"),
+            speed / r,
+            "finite: the speed is too large for the radius",
+            true,
+        )?;
+        Self::new(r, omega)
     }
 
     /// From the period T = 2π/ω and R.
@@ -314,12 +327,14 @@ impl CircularMotion {
     /// The circle of a point at latitude λ (rad, |λ| ≤ π/2) on a sphere of this radius turning
     /// about its polar axis: radius R cos λ, same ω and α.
     pub fn at_latitude(self, latitude: Real) -> Result<Self, KinematicsError> {
-        let lat = check(
-            (Input::Latitude, "the latitude"),
-            latitude,
+        // shown in degrees, as the latitude is given
+        check(
+            (Input::Latitude, "the latitude (in degrees)"),
+            latitude.to_degrees(),
             "between -90° and 90°",
             latitude.abs() <= std::f64::consts::FRAC_PI_2 * (1.0 + 1e-15),
         )?;
+        let lat = latitude;
         Ok(Self {
             radius: self.radius * lat.cos().max(0.0),
             ..self

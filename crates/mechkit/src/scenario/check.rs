@@ -125,7 +125,7 @@ impl CheckReport {
         let plural =
             |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
         let mut text = String::new();
-        let _ = writeln!(text, "ok: {}", self.title);
+        let _ = writeln!(text, "ok: {}", mechkit_expr::span::printable(&self.title));
         let _ = writeln!(
             text,
             "  {}, {}, {}",

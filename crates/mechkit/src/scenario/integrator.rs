@@ -10,7 +10,7 @@ use super::error::{ErrorKind, ScenarioError};
 use super::values::{ValueEnv, resolve, scalar};
 use crate::Real;
 use crate::error::short;
-use crate::ode::{AdaptiveConfig, Method, MethodKind, SecondOrderSystem, Tolerance};
+use crate::ode::{AdaptiveConfig, MIN_RTOL, Method, MethodKind, SecondOrderSystem, Tolerance};
 use crate::particles::ParticleSystem;
 use crate::simulate::Stepping;
 
@@ -164,15 +164,18 @@ pub(crate) fn read_integrator(
                 )
                 .with_hint("a relative tolerance such as 1e-8"));
         }
-        if r < 1e-14 {
+        if r < MIN_RTOL {
             return Err(t
                 .src
                 .error(
                     ErrorKind::Invalid,
-                    format!("`rtol` = {r:e} is below what double precision can deliver"),
+                    format!(
+                        "`rtol` = {} is below what double precision can deliver",
+                        short(r)
+                    ),
                     v.span(),
                 )
-                .with_hint("use 1e-13 or more"));
+                .with_hint(format!("use {} or more", short(MIN_RTOL))));
         }
         config.rtol = Tolerance::Scalar(r);
     }

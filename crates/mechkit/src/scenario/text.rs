@@ -15,7 +15,7 @@ impl Summary {
         let u = |si: &'static str| if reduced { "" } else { si };
         let sec = u(" s");
         let mut s = String::new();
-        let _ = writeln!(s, "{}", self.title);
+        let _ = writeln!(s, "{}", mechkit_expr::span::printable(&self.title));
         let c = &self.step_control;
         if c.mode == "adaptive" {
             let tol = match (c.rtol, c.atol) {

@@ -2,6 +2,7 @@
 
 use super::report::Divergence;
 use crate::Real;
+use crate::error::short;
 use crate::ode::{SecondOrderSystem, State};
 use crate::particles::{Evaluation, ParticleSystem};
 
@@ -34,8 +35,11 @@ pub(crate) fn diagnose_state(
     let quantity = coordinate_name(sys, i);
     let value = bad.y[i];
     let message = format!(
-        "the step from t = {t_prev} s to t = {} s made {quantity} = {value}, although every force was finite at t = {t_prev} s (where {quantity} = {}): a stage of the step left the region where the forces are defined, or the step is too large for how fast the forces change; try a smaller dt",
-        bad.t, prev_y[i]
+        "the step from t = {t0} s to t = {} s made {quantity} = {}, although every force was finite at t = {t0} s (where {quantity} = {}): a stage of the step left the region where the forces are defined, or the step is too large for how fast the forces change; try a smaller dt",
+        short(bad.t),
+        short(value),
+        short(prev_y[i]),
+        t0 = short(t_prev)
     );
     Divergence {
         t: t_prev,
@@ -94,9 +98,9 @@ pub(crate) fn diagnose_evaluation(
                 value: f[i],
                 message: format!(
                     "at t = {} s the force `{}` on {body} is {} ({axis} component), with {body} at position {pos} and velocity {vel}{others}: a division by zero or a value outside a function's domain (sqrt, log of a negative number) in the force; check its formula at these positions, or end the run before them with an event",
-                    state.t,
+                    short(state.t),
                     force.name(),
-                    f[i]
+                    short(f[i])
                 ),
             });
         }
@@ -107,9 +111,10 @@ pub(crate) fn diagnose_evaluation(
                 quantity: format!("potential energy of `{}`", force.name()),
                 value: u,
                 message: format!(
-                    "at t = {} s the potential energy of `{}` is {u}: the bodies it acts on have reached a singular point (r = 0?)",
-                    state.t,
-                    force.name()
+                    "at t = {} s the potential energy of `{}` is {}: the bodies it acts on have reached a singular point (r = 0?)",
+                    short(state.t),
+                    force.name(),
+                    short(u)
                 ),
             });
         }
@@ -120,16 +125,20 @@ pub(crate) fn diagnose_evaluation(
         step,
         quantity: "kinetic energy".into(),
         value,
-        message: format!("at t = {} s the kinetic energy is {value}", state.t),
+        message: format!(
+            "at t = {} s the kinetic energy is {}",
+            short(state.t),
+            short(value)
+        ),
     })
 }
 
 /// A position or velocity for a message: `0.5 m` in 1-D, `(0.5, 2) m` otherwise.
 fn vector(v: &[Real], unit: &str) -> String {
     if let [x] = v {
-        format!("{x} {unit}")
+        format!("{} {unit}", short(*x))
     } else {
-        let parts: Vec<String> = v.iter().map(ToString::to_string).collect();
+        let parts: Vec<String> = v.iter().map(|x| short(*x)).collect();
         format!("({}) {unit}", parts.join(", "))
     }
 }
@@ -156,7 +165,9 @@ pub(crate) fn step_failure(
             Divergence {
                 t,
                 message: format!(
-                    "the run cannot continue past t = {t} s: every step tried from there (down to {h:e} s) reaches states where a force is not finite; the first: {}",
+                    "the run cannot continue past t = {} s: every step tried from there (down to {} s) reaches states where a force is not finite; the first: {}",
+                    short(t),
+                    short(h),
                     d.message
                 ),
                 ..d
@@ -173,9 +184,9 @@ pub(crate) fn step_failure(
                     value: h,
                     message: format!(
                         "the step size fell to {} s at t = {} s (minimum {} s) without meeting the tolerance; the error is dominated by {quantity}: the solution is not smooth there (a discontinuous force, a collision, a singularity), or the tolerance is below what double precision allows; loosen rtol/atol, or model the discontinuity as an event",
-                        crate::error::short(h),
-                        crate::error::short(t),
-                        crate::error::short(h_min)
+                        short(h),
+                        short(t),
+                        short(h_min)
                     ),
                 },
             )

@@ -11,8 +11,9 @@ use crate::Real;
 use crate::ode::{AdaptiveConfig, IntegrateError, Method, MethodKind, SecondOrderSystem, State};
 use crate::particles::{Evaluation, ParticleSystem, Sample, SampleKind};
 
-/// Step budget of a run with neither `t_max` nor `max_steps`.
-pub const DEFAULT_MAX_STEPS: u64 = 1_000_000;
+/// Step budget of a run with neither `t_max` nor `max_steps` (and of adaptive runs without
+/// `max_steps`): the models' budget, [`crate::ode::STEP_BUDGET`].
+pub const DEFAULT_MAX_STEPS: u64 = crate::ode::STEP_BUDGET;
 
 /// A configured run of a particle system.
 ///

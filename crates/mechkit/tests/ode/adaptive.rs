@@ -161,3 +161,34 @@ fn fuzz_no_tolerance_and_no_end_take_finite_steps() {
         );
     }
 }
+
+/// `mechkit spin --t-max 1e300` ran for ever: adaptive steps cannot be counted before the run,
+/// so a model's run has a budget (`AdaptiveConfig::max_steps`, `STEP_BUDGET` for the models'
+/// commands) and stops at it, naming the time it reached; the same run within its budget is
+/// unchanged.
+#[test]
+fn an_adaptive_run_stops_at_its_step_budget_with_the_time_it_reached() {
+    use mechkit::ode::AdaptiveError;
+    let k = Kepler { e: 0.5 };
+    let config = AdaptiveConfig {
+        max_steps: Some(100),
+        ..AdaptiveConfig::from_rtol(1e-9)
+    };
+    let mut rk = AdaptiveRk::new(Tableau::dop853(), config).unwrap();
+    let mut s = State::new(0.0, k.initial().to_vec());
+    let e = loop {
+        if let Err(e) = rk.step(&k, &mut s, 1e300) {
+            break e;
+        }
+    };
+    assert!(e.is_step_budget(), "{e}");
+    assert_eq!(rk.stats().accepted, 100);
+    match e {
+        AdaptiveError::StepBudget { steps, t, t_end } => {
+            assert_eq!((steps, t_end), (100, 1e300));
+            assert_eq!(t, s.t);
+        }
+        other => panic!("{other}"),
+    }
+    assert!(e.to_string().contains("of 1e300 s"), "{e}");
+}

@@ -101,7 +101,10 @@ pub enum RunError {
     #[error(transparent)]
     Fixed(#[from] IntegrateError),
     /// The state became non-finite.
-    #[error("the state became non-finite at t = {t} s; a smaller step (dt) may keep it finite")]
+    #[error(
+        "the state became non-finite at t = {} s; a smaller step (dt) may keep it finite",
+        crate::error::short(*t)
+    )]
     NonFinite {
         /// Time of the step's end (s).
         t: Real,

@@ -15,7 +15,7 @@ pub enum ConstrainedError {
     #[error("{0}")]
     Formula(#[from] CalculusError),
     /// A value that must be positive (or finite) is not.
-    #[error("{what} is {value}; it must be {must_be}")]
+    #[error("{what} is {}; it must be {must_be}", crate::error::short(*value))]
     Value {
         /// Which input it is.
         input: Input,
@@ -28,8 +28,11 @@ pub enum ConstrainedError {
     },
     /// The graph y(x) or its derivatives are undefined (or the tangent vertical) at `x`.
     #[error(
-        "the curve is undefined or vertical at x = {x} (y = {y}, y' = {slope}); a graph y(x) \
-         cannot carry the body there: use a circle, or start elsewhere"
+        "the curve is undefined or vertical at x = {} (y = {}, y' = {}); a graph y(x) \
+         cannot carry the body there: use a circle, or start elsewhere",
+        crate::error::short(*x),
+        crate::error::short(*y),
+        crate::error::short(*slope)
     )]
     Undefined {
         /// Where.
@@ -51,13 +54,16 @@ pub enum ConstrainedError {
 }
 
 impl ConstrainedError {
-    /// The input the error is about (`None` when the integration failed).
+    /// The input the error is about (`None` when the integration failed; the end time when
+    /// it used up the step budget).
     pub fn input(&self) -> Option<Input> {
         Some(match self {
             ConstrainedError::Formula(_) => Input::Curve,
             ConstrainedError::Value { input, .. } => *input,
             ConstrainedError::Undefined { .. } | ConstrainedError::Start(_) => Input::StartPosition,
             ConstrainedError::Config(_) => Input::Tolerance,
+            // the end time asked for more steps than a run may take
+            ConstrainedError::Integrate(e) if e.is_step_budget() => Input::Duration,
             ConstrainedError::Integrate(_) => return None,
         })
     }

@@ -65,15 +65,22 @@ pub enum Free3dError {
         /// The value.
         value: Real,
     },
-    /// A fixed step that is not positive and finite.
-    #[error("the step dt = {} s must be positive and finite", crate::error::short(*value))]
+    /// A fixed step that is not positive, finite and normal (a subnormal step cannot move the
+    /// time).
+    #[error(
+        "the step dt = {} s must be positive, finite and at least 2.2e-308 s",
+        crate::error::short(*value)
+    )]
     Step {
         /// The value.
         value: Real,
     },
-    /// Too many fixed steps for the duration.
+    /// More fixed steps for the duration than a run may take ([`crate::ode::STEP_BUDGET`]).
     #[error(
-        "{steps:e} fixed steps of {dt} s would be needed; use a larger step or the adaptive method"
+        "{} fixed steps of {} s would be needed, more than the {} a run may take; use a larger step, an earlier end, or the adaptive method",
+        crate::error::short(*steps),
+        crate::error::short(*dt),
+        crate::ode::STEP_BUDGET
     )]
     TooManySteps {
         /// The number of steps.
@@ -103,7 +110,8 @@ pub enum Free3dError {
 }
 
 impl Free3dError {
-    /// The input the error is about (`None` when the integration failed).
+    /// The input the error is about (`None` when the integration failed; the end time when
+    /// it used up the step budget).
     pub fn input(&self) -> Option<Input> {
         Some(match self {
             Free3dError::Moment { .. } | Free3dError::Triangle { .. } => Input::Inertia,
@@ -116,6 +124,8 @@ impl Free3dError {
             Free3dError::SplittingOffAxis { .. } => Input::Method,
             Free3dError::Config(_) => Input::Tolerance,
             Free3dError::Samples(_) => Input::Samples,
+            // the end time asked for more steps than a run may take
+            Free3dError::Integrate(e) if e.is_step_budget() => Input::Duration,
             Free3dError::Integrate(_) => return None,
         })
     }

@@ -14,7 +14,9 @@ use crate::Real;
 use crate::mass::Vec3;
 use crate::ode::events::drive::drive;
 use crate::ode::events::find::{Finder, Side};
-use crate::ode::{AdaptiveConfig, AdaptiveRk, ExplicitRk, State, Tableau, steps_to_cover};
+use crate::ode::{
+    AdaptiveConfig, AdaptiveRk, ExplicitRk, STEP_BUDGET, State, Tableau, steps_to_cover,
+};
 
 /// How the equations are integrated.
 #[derive(Debug, Clone)]
@@ -190,11 +192,12 @@ impl SpinningBody {
         let eq = SpinEquations::new(self, options.formulation);
         let state = State::new(0.0, eq.formulation().to_state(&start));
         let clock = |dt: Real| -> Result<Clock, Free3dError> {
-            if !(dt > 0.0 && dt.is_finite()) {
+            // a subnormal step cannot move the time; past the budget the run would be endless
+            if !(dt >= Real::MIN_POSITIVE && dt.is_finite()) {
                 return Err(Free3dError::Step { value: dt });
             }
-            let steps = t_end / dt;
-            if steps > 1e9 {
+            let steps = (t_end / dt).ceil();
+            if steps > STEP_BUDGET as Real {
                 return Err(Free3dError::TooManySteps { steps, dt });
             }
             Ok(Clock {

@@ -75,7 +75,8 @@ pub enum FrictionError {
 }
 
 impl FrictionError {
-    /// The input the error is about (`None` when the integration failed).
+    /// The input the error is about (`None` when the integration failed; the end time when
+    /// it used up the step budget).
     pub fn input(&self) -> Option<Input> {
         Some(match self {
             FrictionError::Coefficient {
@@ -89,6 +90,8 @@ impl FrictionError {
             FrictionError::NoContact { .. } => Input::NormalLoad,
             FrictionError::TooManyPhases { .. } => Input::Duration,
             FrictionError::Config(_) => Input::Tolerance,
+            // the end time asked for more steps than a run may take
+            FrictionError::Integrate(e) if e.is_step_budget() => Input::Duration,
             FrictionError::Integrate(_) => return None,
         })
     }

@@ -10,7 +10,7 @@ use crate::rigid::Input;
 #[non_exhaustive]
 pub enum ImpactError {
     /// A value that must be positive (or finite) is not.
-    #[error("{what} is {value}; it must be {must_be}")]
+    #[error("{what} is {}; it must be {must_be}", crate::error::short(*value))]
     Value {
         /// Which input it is.
         input: Input,

@@ -153,6 +153,16 @@ impl PivotedBody {
     /// ([`super::release_omega`]).
     pub fn released(self, g: Real, angle: Real) -> Result<Self, ImpactError> {
         let angle = finite((Input::ReleaseAngle, "the release angle"), angle)?;
+        // hanging straight down (0, or a whole turn) it does not swing, and more than half a
+        // turn from the bottom is no release from rest below the pivot
+        if !(angle != 0.0 && angle.abs() <= std::f64::consts::PI) {
+            return Err(ImpactError::Value {
+                input: Input::ReleaseAngle,
+                what: "the release angle (rad)",
+                value: angle,
+                must_be: "between -180° and 180° and not 0: the angle from hanging straight down, where a body released from rest does not swing",
+            });
+        }
         let g = positive((Input::Gravity, "g"), g)?;
         if self.cm_distance() == 0.0 {
             return Err(ImpactError::Value {

@@ -89,7 +89,8 @@ pub enum RollingError {
 }
 
 impl RollingError {
-    /// The input the error is about (`None` when the integration failed).
+    /// The input the error is about (`None` when the integration failed; the end time when
+    /// it used up the step budget).
     pub fn input(&self) -> Option<Input> {
         Some(match self {
             RollingError::NoRadius { .. } => Input::Radius,
@@ -103,6 +104,8 @@ impl RollingError {
             RollingError::Invalid { input, .. } => *input,
             RollingError::Friction(e) => return e.input(),
             RollingError::Config(_) => Input::Tolerance,
+            // the end time asked for more steps than a run may take
+            RollingError::Integrate(e) if e.is_step_budget() => Input::Duration,
             RollingError::Integrate(_) => return None,
         })
     }

@@ -76,3 +76,50 @@ fn bad_input_is_refused_with_the_offending_value() {
             .is_err()
     );
 }
+
+/// `mechkit spin --t-max 1e300` (and `1e6`) ran for ever, and `--dt 1e-320` printed "inf fixed
+/// steps of 0.000…1 s". A subnormal step is refused; fixed steps past the models' budget are
+/// refused before the run; adaptive steps stop at the budget, which names the end time.
+#[test]
+fn a_run_longer_than_the_step_budget_is_refused_at_its_end_time() {
+    use mechkit::ode::{AdaptiveConfig, STEP_BUDGET, Tableau};
+    use mechkit::rigid::Input;
+    let body = SpinningBody::free(FreeBody::new([1.0, 2.0, 3.0], 1.0).unwrap());
+    let a = start(&body, [0.01, 1.0, 0.01]);
+    let fixed = |dt| {
+        options(
+            SpinIntegrator::Fixed {
+                tableau: Tableau::rk4(),
+                dt,
+            },
+            Formulation::World,
+            1,
+        )
+    };
+    let e = body.simulate(&a, 10.0, &fixed(1e-320)).unwrap_err();
+    assert!(matches!(e, Free3dError::Step { .. }), "{e}");
+    assert!(e.to_string().contains("at least 2.2e-308 s"), "{e}");
+    let e = body.simulate(&a, 1e300, &fixed(1e-3)).unwrap_err();
+    assert!(matches!(e, Free3dError::TooManySteps { .. }), "{e}");
+    assert!(
+        e.to_string().starts_with("1e303 fixed steps of 0.001 s"),
+        "{e}"
+    );
+    let steps = 10.0 * STEP_BUDGET as f64;
+    assert!(body.simulate(&a, steps * 1e-3, &fixed(1e-3)).is_err());
+    let adaptive = SpinIntegrator::Adaptive {
+        tableau: Tableau::dop853(),
+        config: AdaptiveConfig {
+            max_steps: Some(200),
+            ..AdaptiveConfig::from_rtol(1e-10)
+        },
+    };
+    let e = body
+        .simulate(&a, 1e300, &options(adaptive, Formulation::World, 10))
+        .unwrap_err();
+    assert!(
+        matches!(&e, Free3dError::Integrate(i) if i.is_step_budget()),
+        "{e}"
+    );
+    assert_eq!(e.input(), Some(Input::Duration));
+}
