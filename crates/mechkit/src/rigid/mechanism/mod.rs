@@ -26,6 +26,7 @@
 
 mod force;
 mod gauss;
+mod impact;
 mod joint;
 mod modes;
 mod rows;
