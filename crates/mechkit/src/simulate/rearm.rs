@@ -135,4 +135,23 @@ mod tests {
         );
         assert_eq!(out, [Side::Pos]);
     }
+
+    #[test]
+    fn a_change_leaving_its_function_at_zero_without_rate_is_armed() {
+        let bounce = [Event::new("g", |_, _| 0.0)
+            .direction(Direction::Falling)
+            .set(|_, _, y| y[1] *= -0.9)];
+        let mut out = [Side::Unknown];
+        let zero = [0.0];
+        // a bounce at rest on the floor: still at zero a moment later, armed above
+        sides_after_change(&bounce, &[0], &[Side::Pos], (&zero, &zero, &zero), &mut out);
+        assert_eq!(out, [Side::Pos]);
+        // the same without a state change (a recording event): at zero
+        let record = [Event::new("g", |_, _| 0.0).direction(Direction::Falling)];
+        sides_after_change(&record, &[0], &[Side::Pos], (&zero, &zero, &zero), &mut out);
+        assert_eq!(out, [Side::Zero]);
+        // a kick along: at zero
+        sides_after_change(&bounce, &[0], &[Side::Pos], (&zero, &zero, &[-1e-20]), &mut out);
+        assert_eq!(out, [Side::Zero]);
+    }
 }
