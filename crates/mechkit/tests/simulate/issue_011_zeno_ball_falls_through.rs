@@ -208,6 +208,7 @@ fn a_ball_released_at_rest_on_the_floor_does_not_fall_through_it() {
             .event(bounce)
             .run(State::from_qv(0.0, &[0.0], &[vy]), &mut [&mut lowest])
             .unwrap();
+        let lowest = lowest.0;
         let label = format!("vy = {vy}, dt = {method:?}");
         assert_eq!(r.stop_reason, StopReason::Zeno, "{label}");
         assert!(lowest > -1e-9, "{label}: the ball went down to {lowest} m");
