@@ -217,3 +217,44 @@ fn a_ball_released_at_rest_on_the_floor_does_not_fall_through_it() {
         }
     }
 }
+
+/// The same ball at rest on a `[[wall]]` (radius 1 cm at 1 cm): its gap stayed zero to
+/// rounding for the first samples of the first step, which counted as having left the start's
+/// zero, so its fall below the wall fired nothing and it fell to −19.6 m. It stops on the Zeno
+/// diagnosis at once, on the wall.
+#[test]
+fn a_ball_released_at_rest_on_a_wall_does_not_fall_through_it() {
+    let toml = r#"
+dimensions = 1
+[[body]]
+name = "ball"
+mass = "1 kg"
+position = "1 cm"
+radius = "1 cm"
+[[force]]
+name = "gravity"
+kind = "uniform-gravity"
+g = "9.81 m/s^2"
+[integrator]
+method = "dopri5"
+[[wall]]
+name = "floor"
+point = 0
+normal = 1
+restitution = 0.5
+[stop]
+t_max = "2 s"
+"#;
+    let out = Scenario::from_str("wall.toml", toml)
+        .unwrap()
+        .run()
+        .unwrap();
+    let r = &out.report;
+    assert_eq!(r.stop_reason, StopReason::Zeno);
+    assert!(r.final_state.t < 1e-6, "{}", r.final_state.t);
+    assert!(
+        (r.final_state.y[0] - 0.01).abs() < 1e-12,
+        "{}",
+        r.final_state.y[0]
+    );
+}
