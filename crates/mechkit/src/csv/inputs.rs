@@ -65,7 +65,10 @@ mod tests {
         fs::create_dir_all(dir.join("sub")).unwrap();
         let part = dir.join("part.csv");
         fs::write(&part, "x\n1\n").unwrap();
-        assert!(same_file(&part, &dir.join("sub").join("..").join("part.csv")));
+        assert!(same_file(
+            &part,
+            &dir.join("sub").join("..").join("part.csv")
+        ));
         #[cfg(unix)]
         {
             let link = dir.join("link.csv");

@@ -29,7 +29,10 @@ impl Body {
         if !parts.iter().any(|p| p.hole) {
             return Ok(());
         }
-        let (mut lo, mut hi) = (Vec3::repeat(Real::INFINITY), Vec3::repeat(Real::NEG_INFINITY));
+        let (mut lo, mut hi) = (
+            Vec3::repeat(Real::INFINITY),
+            Vec3::repeat(Real::NEG_INFINITY),
+        );
         for p in parts.iter().filter(|p| !p.hole) {
             for v in placed(p) {
                 lo = lo.inf(&v);
@@ -39,18 +42,24 @@ impl Body {
         let size = (hi - lo).amax();
         let tol = 1e-9 * if size.is_finite() { size } else { 1.0 };
         for (index, p) in parts.iter().enumerate().filter(|(_, p)| p.hole) {
-            let outside = placed(p).into_iter().find(|v| {
-                (0..3).any(|k| !(v[k] >= lo[k] - tol && v[k] <= hi[k] + tol))
-            });
+            let outside = placed(p)
+                .into_iter()
+                .find(|v| (0..3).any(|k| !(v[k] >= lo[k] - tol && v[k] <= hi[k] + tol)));
             if let Some(v) = outside {
                 return Err(MassError::Hole {
                     index,
                     name: p.name.clone(),
                     reason: format!(
                         "its point ({}, {}, {}) m is outside the solid parts, which span ({}, {}, {}) m to ({}, {}, {}) m",
-                        short(v.x), short(v.y), short(v.z),
-                        short(lo.x), short(lo.y), short(lo.z),
-                        short(hi.x), short(hi.y), short(hi.z)
+                        short(v.x),
+                        short(v.y),
+                        short(v.z),
+                        short(lo.x),
+                        short(lo.y),
+                        short(lo.z),
+                        short(hi.x),
+                        short(hi.y),
+                        short(hi.z)
                     ),
                 });
             }
@@ -64,7 +73,11 @@ impl Body {
         let whole = MassProperties::sum(&props)?;
         let second = second_moment_from_inertia(&whole.inertia);
         let smallest = principal(&second).moments[0];
-        let scale = second.trace().abs() + props.iter().map(|p| second_moment_from_inertia(&p.inertia).trace().abs()).sum::<Real>();
+        let scale = second.trace().abs()
+            + props
+                .iter()
+                .map(|p| second_moment_from_inertia(&p.inertia).trace().abs())
+                .sum::<Real>();
         if smallest < -1e-9 * scale {
             let (index, hole) = parts
                 .iter()

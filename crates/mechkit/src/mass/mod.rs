@@ -89,7 +89,9 @@ pub enum MassError {
         mass: Real,
     },
     /// A hole that does not lie inside the solid parts (part `index`, 0-based, of the body).
-    #[error("the hole `{name}` is not inside the body: {reason}; a hole removes material the other parts have, so it must lie inside them")]
+    #[error(
+        "the hole `{name}` is not inside the body: {reason}; a hole removes material the other parts have, so it must lie inside them"
+    )]
     Hole {
         /// Its index among the body's parts.
         index: usize,

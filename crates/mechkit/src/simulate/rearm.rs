@@ -151,7 +151,13 @@ mod tests {
         sides_after_change(&record, &[0], &[Side::Pos], (&zero, &zero, &zero), &mut out);
         assert_eq!(out, [Side::Zero]);
         // a kick along: at zero
-        sides_after_change(&bounce, &[0], &[Side::Pos], (&zero, &zero, &[-1e-20]), &mut out);
+        sides_after_change(
+            &bounce,
+            &[0],
+            &[Side::Pos],
+            (&zero, &zero, &[-1e-20]),
+            &mut out,
+        );
         assert_eq!(out, [Side::Zero]);
     }
 }

@@ -53,7 +53,11 @@ fn a_block_dropped_onto_a_steep_slope_slides_with_kinetic_friction() {
     // part of its speed along the slope)
     let t_land = (2.0 * 0.05 / G).sqrt();
     let from_rest = 0.5 * G * (slope.sin() - 0.4 * slope.cos()) * (2.0 - t_land).powi(2);
-    assert!(s.observables["distance"] > from_rest, "{}", s.observables["distance"]);
+    assert!(
+        s.observables["distance"] > from_rest,
+        "{}",
+        s.observables["distance"]
+    );
 }
 
 #[test]

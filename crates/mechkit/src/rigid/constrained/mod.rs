@@ -40,5 +40,5 @@ mod smooth;
 pub use curve::{Curve, Side};
 pub use error::ConstrainedError;
 pub use report::{BeadFiles, BeadReport, DepartureReport, Equilibrium, LeavingPoint};
-pub use smooth::Break;
 pub use run::{BeadOnCurve, BeadRun, BeadSample, Departure, Landing, Start, StopReason};
+pub use smooth::Break;

@@ -22,6 +22,26 @@ pub enum Break {
 /// Bisections down to a break: 2⁻⁶⁰ of the step's width.
 const DEPTH: u32 = 60;
 
+/// The first break in `[lo, hi]`: halves where `may_jump` cannot rule one out, down to
+/// `depth` halvings, where `jump` measures it.
+fn search(
+    lo: Real,
+    hi: Real,
+    depth: u32,
+    may_jump: &dyn Fn(Real, Real) -> bool,
+    jump: &dyn Fn(Real, Real) -> Option<Break>,
+) -> Option<(Real, Break)> {
+    if !may_jump(lo, hi) {
+        return None;
+    }
+    let mid = lo.midpoint(hi);
+    if depth == 0 || mid <= lo || mid >= hi {
+        return jump(lo, hi).map(|j| (mid, j));
+    }
+    search(lo, mid, depth - 1, may_jump, jump)
+        .or_else(|| search(mid, hi, depth - 1, may_jump, jump))
+}
+
 impl Curve {
     /// The first point between `a` and `b` where a graph's `y` or `y'` jumps, with the jump;
     /// `None` for a circle, a graph whose formulas do not compile, or a smooth stretch.
@@ -47,30 +67,12 @@ impl Curve {
             }
             if (y1 - y0).abs() > carried + tol(y0, y1) {
                 Some(Break::Jump(y1 - y0))
-            } else if d0.is_finite() && d1.is_finite() && (d1 - d0).abs() > tol(d0, d1).max(1e-6)
-            {
+            } else if d0.is_finite() && d1.is_finite() && (d1 - d0).abs() > tol(d0, d1).max(1e-6) {
                 Some(Break::Kink(d1 - d0))
             } else {
                 None
             }
         };
-        fn search(
-            lo: Real,
-            hi: Real,
-            depth: u32,
-            may_jump: &dyn Fn(Real, Real) -> bool,
-            jump: &dyn Fn(Real, Real) -> Option<Break>,
-        ) -> Option<(Real, Break)> {
-            if !may_jump(lo, hi) {
-                return None;
-            }
-            let mid = lo.midpoint(hi);
-            if depth == 0 || mid <= lo || mid >= hi {
-                return jump(lo, hi).map(|j| (mid, j));
-            }
-            search(lo, mid, depth - 1, may_jump, jump)
-                .or_else(|| search(mid, hi, depth - 1, may_jump, jump))
-        }
         search(lo, hi, DEPTH, &may_jump, &jump)
     }
 }
@@ -86,12 +88,18 @@ mod tests {
     #[test]
     fn steps_and_kinks_are_found_and_smooth_joins_are_not() {
         let (x, j) = graph("-floor(x)").break_between(0.5, 1.7).unwrap();
-        assert!((x - 1.0).abs() < 1e-9 && j == Break::Jump(-1.0), "{x} {j:?}");
+        assert!(
+            (x - 1.0).abs() < 1e-9 && j == Break::Jump(-1.0),
+            "{x} {j:?}"
+        );
         let (x, j) = graph("abs(x - 0.25)").break_between(-1.0, 1.0).unwrap();
         assert!((x - 0.25).abs() < 1e-9 && matches!(j, Break::Kink(k) if (k - 2.0).abs() < 1e-6));
         // smooth, or joined with a continuous slope: nothing
         assert_eq!(graph("x^2/2 - sin(x)").break_between(-3.0, 3.0), None);
-        assert_eq!(graph("if(x < 1, x^2, 2*x - 1)").break_between(0.0, 2.0), None);
+        assert_eq!(
+            graph("if(x < 1, x^2, 2*x - 1)").break_between(0.0, 2.0),
+            None
+        );
         assert_eq!(graph("-floor(x)").break_between(0.2, 0.7), None);
         assert_eq!(Curve::circle(1.0).unwrap().break_between(0.0, 3.0), None);
     }

@@ -145,7 +145,8 @@ impl BodyFile {
         // a hole outside the solid parts, located at its table (its `position`)
         if let Err(e @ MassError::Hole { index, .. }) = body.check_holes() {
             let span = tables.get(index).map_or(0..0, |t| {
-                t.get("position").map_or_else(|| t.span.clone(), Value::span)
+                t.get("position")
+                    .map_or_else(|| t.span.clone(), Value::span)
             });
             return Err(src
                 .error(ErrorKind::Invalid, e.to_string(), span)

@@ -10,7 +10,9 @@ use crate::scenario::error::{ErrorKind, ScenarioError};
 /// The keys of a joint that name what it holds, each with its anchor, in the file's order.
 fn ends(kind: &JointKind) -> Vec<(&'static [&'static str], Anchor)> {
     match *kind {
-        JointKind::Hinge { a, b, .. } | JointKind::Rod { a, b, .. } | JointKind::String { a, b, .. } => {
+        JointKind::Hinge { a, b, .. }
+        | JointKind::Rod { a, b, .. }
+        | JointKind::String { a, b, .. } => {
             vec![(&["a"], a), (&["b"], b)]
         }
         JointKind::Contact { on, point, .. } => vec![(&["on"], on), (&["surface"], point)],
@@ -42,7 +44,9 @@ pub(super) fn refuse_one_body_twice(
             continue;
         };
         let key = keys.iter().find(|k| t.get(k).is_some()).unwrap_or(&keys[0]);
-        let span = t.get(key).map_or_else(|| t.span.clone(), toml::Spanned::span);
+        let span = t
+            .get(key)
+            .map_or_else(|| t.span.clone(), toml::Spanned::span);
         let body = bodies.get(body).map_or("?", String::as_str);
         return Err(t
             .src
