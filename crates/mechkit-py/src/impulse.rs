@@ -65,7 +65,6 @@ pub fn impulse<'py>(
         f,
         rule,
         of: Some(Abscissa::Time),
-        increasing_time: true,
         mass: mass
             .map(|m| quantity(m, "mass", Dimension::MASS))
             .transpose()?,

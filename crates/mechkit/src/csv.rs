@@ -24,6 +24,9 @@ use std::path::{Path, PathBuf};
 
 use crate::Real;
 
+mod inputs;
+pub use inputs::{refuse_input_as_output, same_file};
+
 /// A column: its name and its unit.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]

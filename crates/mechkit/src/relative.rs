@@ -143,7 +143,10 @@ pub fn steer(speed: Real, current: [Real; 2], track: [Real; 2]) -> Result<Steeri
     }
     // the craft's own velocity cancels the current across the track
     let own_across = -across;
-    let own_along = (speed * speed - across * across).max(0.0).sqrt();
+    // √(s² − a²) as s √((1 − r)(1 + r)), r = a/s: the squares overflow from about 1e154
+    // and underflow below 1e-154
+    let r = across / speed;
+    let own_along = speed * ((1.0 - r) * (1.0 + r)).max(0.0).sqrt();
     let ground_speed = own_along + along;
     if ground_speed <= 0.0 {
         return Err(RelativeError::NoProgress { ground_speed });
@@ -268,6 +271,16 @@ pub fn steering_report(
     })
 }
 
+/// The length of `v`, scaled by its largest component before squaring (no overflow or
+/// underflow of the squares: `|(3e200, 4e200)| = 5e200`).
+fn norm(v: &[Real]) -> Real {
+    let big = v.iter().fold(0.0, |m: Real, x| m.max(x.abs()));
+    if big == 0.0 || !big.is_finite() {
+        return big;
+    }
+    big * v.iter().map(|x| (x / big) * (x / big)).sum::<Real>().sqrt()
+}
+
 /// Which frame a transformed velocity is in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Frame {
@@ -327,7 +340,7 @@ pub fn transform(
     Ok(VelocityReport {
         unit: unit.name.clone(),
         velocity: r.iter().map(|x| x / unit.size).collect(),
-        speed: r.iter().map(|x| x * x).sum::<Real>().sqrt() / unit.size,
+        speed: norm(r) / unit.size,
         frame: match frame {
             Frame::Ground => "ground",
             Frame::Observer => "observer",
@@ -428,5 +441,30 @@ mod tests {
             position_in_b([1.0, 0.0, 0.0], [0.0, 2.0, 0.0], u, 2.0),
             [7.0, 0.0, 1.0]
         );
+    }
+
+    #[test]
+    fn steering_and_speeds_hold_at_the_ends_of_the_double_range() {
+        // a current at 45° as fast as the craft, the track east: heading 315°, ground speed
+        // √2 times the speed, at any scale (the squares overflow from 1e154, underflow at 1e-200)
+        for scale in [1.0, 1e155, 1e300, 1e-200, 1e-300] {
+            let r = steering_report(scale, scale, 45f64.to_radians(), 0.0, &SpeedUnit::default())
+                .unwrap();
+            assert!((r.heading_deg - 315.0).abs() < 1e-9, "{scale}: {r:?}");
+            assert!(
+                (r.ground_speed / scale - 2f64.sqrt()).abs() < 1e-12,
+                "{scale}: {r:?}"
+            );
+        }
+        for scale in [1e200, 1e-200] {
+            let v = transform(
+                &[3.0 * scale, 0.0],
+                &[0.0, 4.0 * scale],
+                Frame::Ground,
+                &SpeedUnit::default(),
+            )
+            .unwrap();
+            assert!((v.speed / scale - 5.0).abs() < 1e-12, "{scale}: {v:?}");
+        }
     }
 }

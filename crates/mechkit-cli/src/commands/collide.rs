@@ -161,9 +161,17 @@ fn text(o: &Collided) -> String {
         show(o.approach_speed),
         show(o.separation_speed)
     );
+    // an immovable body: the energies are in its frame (the library's), where it does no work
+    let immovable = [o.m1, o.m2].iter().position(|m| m.is_infinite());
+    let frame = immovable.map_or_else(String::new, |k| {
+        format!(
+            " in the frame of body {} (immovable: the centre-of-mass frame)",
+            k + 1
+        )
+    });
     let _ = writeln!(
         out,
-        "  kinetic energy {} J -> {} J, lost {} J ({:.2} %)",
+        "  kinetic energy{frame} {} J -> {} J, lost {} J ({:.2} %)",
         show(o.kinetic_before),
         show(o.kinetic_after),
         show(o.kinetic_lost),

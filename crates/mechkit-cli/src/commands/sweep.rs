@@ -6,7 +6,7 @@ use std::io::IsTerminal as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use anyhow::{Context as _, Result, bail};
+use anyhow::{Context as _, Result, anyhow, bail};
 use indicatif::{ProgressBar, ProgressStyle};
 use mechkit::scenario::sweep::{
     Parameter, Sampling, Shard, SweepGrid, SweepOptions, SweepPart, manifest_name, merge_parts,
@@ -270,15 +270,33 @@ pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
             files.push(p.clone());
         }
     }
+    let out = args.out.clone().unwrap_or_else(|| {
+        files[0]
+            .parent()
+            .unwrap_or_else(|| Path::new("."))
+            .join("sweep.csv")
+    });
+    let out_name = out
+        .file_name()
+        .map_or_else(|| "sweep.csv".into(), |n| n.to_string_lossy().into_owned());
+    let manifest_path = out.with_file_name(manifest_name(&out_name));
+    // the merged table and its manifest never replace a part or a part's manifest
+    let read: Vec<PathBuf> = files
+        .iter()
+        .flat_map(|f| [f.clone(), f.with_file_name(manifest_name(&file_name(f)))])
+        .collect();
+    let inputs: Vec<&Path> = read.iter().map(PathBuf::as_path).collect();
+    for target in [&out, &manifest_path] {
+        mechkit::csv::refuse_input_as_output(target, &inputs).map_err(|e| {
+            anyhow!("-o: {e}\n  = hint: write the merged table beside the parts under another name, e.g. sweep.csv")
+        })?;
+    }
     let mut parts = Vec::new();
     for f in &files {
         let csv = std::fs::read_to_string(f).with_context(|| {
             format!("cannot read {}\n  = hint: check the file name", f.display())
         })?;
-        let name = f
-            .file_name()
-            .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
-        let sidecar = f.with_file_name(manifest_name(&name));
+        let sidecar = f.with_file_name(manifest_name(&file_name(f)));
         let manifest = std::fs::read_to_string(&sidecar).with_context(|| {
             format!(
                 "cannot read {}, the manifest of {}\n  = hint: keep each part's .manifest.json beside its CSV (mechkit sweep --shard writes both)",
@@ -293,25 +311,11 @@ pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
         });
     }
     let (merged, manifest) = merge_parts(&parts)?;
-    let out = args.out.clone().unwrap_or_else(|| {
-        files[0]
-            .parent()
-            .unwrap_or_else(|| Path::new("."))
-            .join("sweep.csv")
-    });
     write_atomic(&out, merged.as_bytes())
         .with_context(|| format!("cannot write {}", out.display()))?;
-    let out_name = out
-        .file_name()
-        .map_or_else(|| "sweep.csv".into(), |n| n.to_string_lossy().into_owned());
-    let manifest_path = out.with_file_name(manifest_name(&out_name));
     write_atomic(&manifest_path, manifest.as_bytes())
         .with_context(|| format!("cannot write {}", manifest_path.display()))?;
-    let units = files[0].with_file_name(mechkit::csv::units_file_name(
-        &files[0]
-            .file_name()
-            .map_or_else(String::new, |n| n.to_string_lossy().into_owned()),
-    ));
+    let units = files[0].with_file_name(mechkit::csv::units_file_name(&file_name(&files[0])));
     if let Ok(text) = std::fs::read(&units) {
         let target = out.with_file_name(mechkit::csv::units_file_name(&out_name));
         write_atomic(&target, &text)
@@ -355,4 +359,10 @@ struct MergeDone {
     parts: Vec<String>,
     rows: usize,
     csv: String,
+}
+
+/// A path's file name as text (empty for none).
+fn file_name(p: &Path) -> String {
+    p.file_name()
+        .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
 }

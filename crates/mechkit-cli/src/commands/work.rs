@@ -33,7 +33,6 @@ pub fn work(args: &WorkArgs) -> Result<Outcome> {
                     Abscissa::Position
                 }
             }),
-            increasing_time: false,
             mass: args.mass.as_deref(),
             v0: args.v0.as_deref(),
             out: args.out.as_deref(),
@@ -47,7 +46,7 @@ pub fn work(args: &WorkArgs) -> Result<Outcome> {
     }
 }
 
-/// `mechkit impulse FILE`: `mechkit work FILE --of time`, with time required to increase.
+/// `mechkit impulse FILE`: `mechkit work FILE --of time`.
 pub fn impulse(args: &ImpulseArgs) -> Result<Outcome> {
     data(&Data {
         file: &args.file,
@@ -55,7 +54,6 @@ pub fn impulse(args: &ImpulseArgs) -> Result<Outcome> {
         f: args.f.as_deref(),
         method: &args.method,
         of: Some(Abscissa::Time),
-        increasing_time: true,
         mass: args.mass.as_deref(),
         v0: args.v0.as_deref(),
         out: args.out.as_deref(),
@@ -73,7 +71,6 @@ struct Data<'a> {
     f: Option<&'a str>,
     method: &'a str,
     of: Option<Abscissa>,
-    increasing_time: bool,
     mass: Option<&'a str>,
     v0: Option<&'a str>,
     out: Option<&'a Path>,
@@ -101,7 +98,6 @@ fn data(args: &Data<'_>) -> Result<Outcome> {
         f: column(args.f, "2", "--f")?,
         rule,
         of: args.of,
-        increasing_time: args.increasing_time,
         mass: args
             .mass
             .map(|m| quantity(m, "--mass", Dimension::MASS))

@@ -106,9 +106,10 @@ pub struct Collided {
     pub approach_speed: Real,
     /// Separation speed along the normal after, `e` times the approach speed (m/s).
     pub separation_speed: Real,
-    /// Kinetic energy before (J; an immovable body counts for nothing).
+    /// Kinetic energy before (J; an immovable body counts for nothing, and the energies are
+    /// then those in its frame, which is the centre-of-mass frame).
     pub kinetic_before: Real,
-    /// Kinetic energy after (J).
+    /// Kinetic energy after (J; in the immovable body's frame, if there is one).
     pub kinetic_after: Real,
     /// Kinetic energy lost, `K_before − K_after ≥ 0` (J).
     pub kinetic_lost: Real,

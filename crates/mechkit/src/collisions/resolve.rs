@@ -252,8 +252,20 @@ impl Collision {
             &v1.iter().zip(&v2).map(|(a, b)| a - b).collect::<Vec<_>>(),
             &n,
         );
-        let kinetic_before = kinetic(self.m1, &self.v1) + kinetic(self.m2, &self.v2);
-        let kinetic_after = kinetic(self.m1, &v1) + kinetic(self.m2, &v2);
+        // with an immovable body the energies are those in its frame (the centre-of-mass
+        // frame), where it does no work; in another frame it would do work on the other body
+        // (a moving wall speeds a ball up) and the ledger would not balance
+        let (kinetic_before, kinetic_after) = if self.m1.is_infinite() || self.m2.is_infinite() {
+            (
+                kinetic(self.m1, &rel(&self.v1)) + kinetic(self.m2, &rel(&self.v2)),
+                kinetic(self.m1, &rel(&v1)) + kinetic(self.m2, &rel(&v2)),
+            )
+        } else {
+            (
+                kinetic(self.m1, &self.v1) + kinetic(self.m2, &self.v2),
+                kinetic(self.m1, &v1) + kinetic(self.m2, &v2),
+            )
+        };
         Ok(Resolution::Collided(Box::new(Collided {
             collided: true,
             m1: self.m1,
@@ -330,6 +342,31 @@ mod tests {
         assert_eq!(o.v1, vec![3.0, 0.8 * 4.0]);
         assert_eq!(o.v2, vec![0.0, 0.0]);
         assert!((o.separation_speed - 0.8 * o.approach_speed).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_moving_immovable_body_books_the_energy_in_its_own_frame() {
+        // a wall at 15 m/s hits a ball at rest elastically: the ball leaves at 30 m/s; in the
+        // wall's frame it comes at 15 m/s and leaves at 15 m/s, so nothing is lost
+        let o = collided(&Collision::head_on(
+            Real::INFINITY,
+            15.0,
+            1.0,
+            0.0,
+            Restitution::ELASTIC,
+        ));
+        assert_eq!(o.v2, vec![30.0]);
+        assert_eq!((o.kinetic_before, o.kinetic_after), (112.5, 112.5));
+        assert_eq!(o.kinetic_lost, 0.0);
+        // half elastic: 112.5 J -> 28.125 J in the wall's frame
+        let o = collided(&Collision::head_on(
+            1.0,
+            0.0,
+            Real::INFINITY,
+            -15.0,
+            Restitution::new(0.5).unwrap(),
+        ));
+        assert_eq!(o.kinetic_lost, 112.5 - 28.125);
     }
 
     #[test]

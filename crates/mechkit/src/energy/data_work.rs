@@ -53,8 +53,6 @@ pub struct DataWorkQuestion<'a> {
     /// What the abscissa is; `None`: time when its column is named `t` or `time`, else
     /// position.
     pub of: Option<Abscissa>,
-    /// Whether time must increase (an impulse: a file in reverse time order is refused).
-    pub increasing_time: bool,
     /// A mass: the speed `v(x)` for positions, `Δv = J/m` for times.
     pub mass: Option<Real>,
     /// The start speed (for `v(x)` and `Δv`).
@@ -70,7 +68,6 @@ impl<'a> DataWorkQuestion<'a> {
             f: ColumnRef::Index(1),
             rule: SampleRule::Trapezoid,
             of: None,
-            increasing_time: false,
             mass: None,
             v0: 0.0,
         }
@@ -93,7 +90,8 @@ pub enum DataWorkError {
     /// The abscissa is not strictly monotone (the message names the lines).
     #[error("{0}")]
     Data(DataError),
-    /// Time runs backwards where an impulse needs it to increase.
+    /// Time runs backwards: an integral over time (an impulse, whichever command asks it)
+    /// needs it to increase.
     #[error(
         "{file}: the time column `{column}` decreases (negative time steps); an impulse needs increasing time: sort the file by time"
     )]
@@ -240,7 +238,8 @@ pub fn data_work(q: &DataWorkQuestion<'_>) -> Result<DataWork, DataWorkError> {
         "the work integral"
     };
     let (_, order) = table.abscissa(&q.x, what).map_err(DataWorkError::Data)?;
-    if q.increasing_time && order == Order::Decreasing {
+    // a path may be walked backwards (a work over decreasing x), time may not
+    if time && order == Order::Decreasing {
         return Err(DataWorkError::Decreasing {
             file: table.source().to_string(),
             column: table.label(x_index),
@@ -453,12 +452,25 @@ mod tests {
         let back = table("2 1\n1 2\n0 3\n");
         let q = DataWorkQuestion {
             of: Some(Abscissa::Time),
-            increasing_time: true,
             ..DataWorkQuestion::new(&back)
         };
         assert!(matches!(
             data_work(&q),
             Err(DataWorkError::Decreasing { .. })
         ));
+    }
+
+    #[test]
+    fn a_decreasing_time_column_is_refused_whichever_command_asks() {
+        // `work` on a column named `t` integrates over time, as `impulse` does
+        let back = table("t,x\n3,1\n2,2\n1,3\n0,4\n");
+        assert!(matches!(
+            data_work(&DataWorkQuestion::new(&back)),
+            Err(DataWorkError::Decreasing { .. })
+        ));
+        // a path walked backwards is a work, and allowed
+        let path = table("x,F\n3,1\n2,2\n1,3\n0,4\n");
+        let w = data_work(&DataWorkQuestion::new(&path)).unwrap();
+        assert_eq!(w.work, Some(-7.5));
     }
 }

@@ -130,7 +130,26 @@ impl Potential {
         let (lo, hi) = (from.min(to), from.max(to));
         let (mut left, mut right) = (Bound::RangeEnd { x: lo }, Bound::RangeEnd { x: hi });
         if let Some(cut) = &diagram.energy {
-            let here: Option<&Region> = cut.regions.iter().find(|r| (r.from..=r.to).contains(&x0));
+            // the allowed region the body is in; at a boundary between two (released at rest
+            // on a turning point), the one it moves into: the way v0 points, at rest the way
+            // the force pushes
+            let right_first = match v0.partial_cmp(&0.0) {
+                Some(std::cmp::Ordering::Greater) => true,
+                Some(std::cmp::Ordering::Less) => false,
+                _ => self.force(x0) > 0.0,
+            };
+            // a turning point found by root finding may be an ulp or so off x0
+            let tol = 1e-9 * (hi - lo);
+            let contains = |r: &&Region| (r.from - tol..=r.to + tol).contains(&x0);
+            let ahead = |r: &&Region| if right_first { r.to > x0 } else { r.from < x0 };
+            let here: Option<&Region> = cut
+                .regions
+                .iter()
+                .filter(contains)
+                .filter(|r| r.allowed)
+                .find(ahead)
+                .or_else(|| cut.regions.iter().filter(contains).find(|r| r.allowed))
+                .or_else(|| cut.regions.iter().find(contains));
             if let Some(r) = here {
                 let bound = |x: Real| {
                     if cut.turning_points.contains(&x) {
@@ -158,5 +177,29 @@ impl Potential {
             left,
             right,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn released_at_rest_it_goes_the_way_the_force_pushes() {
+        // F = 1 (U = -x) from rest at -0.5: the start is a turning point, and it leaves at 1
+        let p = Potential::from_potential("-x", "x", &[]).unwrap();
+        let m = p.motion(1.0, -0.5, 0.0, -1.0, 1.0, 4000);
+        assert!(matches!(m.left, Bound::TurningPoint { x } if (x + 0.5).abs() < 1e-12));
+        assert_eq!(m.right, Bound::RangeEnd { x: 1.0 });
+        assert!(m.moves_right_first(&p));
+        // F = -1 (U = x) from rest at 0.5: it leaves at -1
+        let p = Potential::from_potential("x", "x", &[]).unwrap();
+        let m = p.motion(1.0, 0.5, 0.0, -1.0, 1.0, 4000);
+        assert_eq!(m.left, Bound::RangeEnd { x: -1.0 });
+        assert!(matches!(m.right, Bound::TurningPoint { x } if (x - 0.5).abs() < 1e-12));
+        // moving against the force: it turns, then leaves the other way
+        let m = p.motion(1.0, 0.0, 1.0, -1.0, 1.0, 4000);
+        assert!(matches!(m.right, Bound::TurningPoint { x } if (x - 0.5).abs() < 1e-9));
+        assert_eq!(m.left, Bound::RangeEnd { x: -1.0 });
     }
 }

@@ -133,8 +133,10 @@ impl Body {
         &self.parts
     }
 
-    /// Each part's mass properties in the body frame.
+    /// Each part's mass properties in the body frame; holes that are not inside the solid
+    /// parts are refused ([`Body::check_holes`]).
     pub fn part_properties(&self) -> Result<Vec<MassProperties>, MassError> {
+        self.check_holes()?;
         self.parts.iter().map(Part::properties).collect()
     }
 

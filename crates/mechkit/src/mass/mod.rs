@@ -7,6 +7,7 @@
 
 mod body_report;
 mod composite;
+mod holes;
 pub mod image;
 mod mesh;
 mod outline;
@@ -86,6 +87,18 @@ pub enum MassError {
     TotalMass {
         /// The value.
         mass: Real,
+    },
+    /// A hole that does not lie inside the solid parts (part `index`, 0-based, of the body).
+    #[error(
+        "the hole `{name}` is not inside the body: {reason}; a hole removes material the other parts have, so it must lie inside them"
+    )]
+    Hole {
+        /// Its index among the body's parts.
+        index: usize,
+        /// Its name.
+        name: String,
+        /// What is wrong.
+        reason: String,
     },
     /// Any other invalid value.
     #[error("{0}")]

@@ -2,6 +2,7 @@ mod bounce;
 mod errors;
 mod examples;
 mod planar;
+mod planar_landing;
 mod rigid;
 mod run;
 mod spatial;

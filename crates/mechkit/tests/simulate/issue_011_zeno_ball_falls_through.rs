@@ -182,3 +182,79 @@ fn issue_011_jumps_are_not_rearmed() {
     assert_eq!(r.stop_reason, StopReason::TMax);
     assert_eq!(r.events.len(), 1);
 }
+
+/// A ball released at rest on the floor (y = 0, vy = 0): `bounce` fires at t = 0 and its
+/// `vy -> -e vy` leaves vy = 0, so it cannot turn the ball back; the ball once fell through to
+/// y = −176 m with exit 0. It must stop on the Zeno diagnosis at t = 0 (the limit of bounces
+/// of zero height), as a ball starting into the floor does, never below it.
+#[test]
+fn a_ball_released_at_rest_on_the_floor_does_not_fall_through_it() {
+    for (vy, method) in [(0.0, None), (0.0, Some(1e-3)), (-1.0, None)] {
+        let sys = ParticleSystem::builder(1)
+            .body("ball", 1.0)
+            .force(UniformGravity::new("gravity", vec![0], G))
+            .build()
+            .unwrap();
+        let bounce = Event::new("bounce", |s, _| s.q[0])
+            .direction(Direction::Falling)
+            .set(|_, _, y| y[1] *= -0.9);
+        let sim = match method {
+            Some(dt) => Simulation::new(&sys, Method::Rk4, dt),
+            None => Simulation::adaptive(&sys, Method::Dopri5, AdaptiveConfig::default()),
+        };
+        let mut lowest = Lowest(f64::INFINITY);
+        let r = sim
+            .t_max(6.0)
+            .event(bounce)
+            .run(State::from_qv(0.0, &[0.0], &[vy]), &mut [&mut lowest])
+            .unwrap();
+        let lowest = lowest.0;
+        let label = format!("vy = {vy}, dt = {method:?}");
+        assert_eq!(r.stop_reason, StopReason::Zeno, "{label}");
+        assert!(lowest > -1e-9, "{label}: the ball went down to {lowest} m");
+        if vy == 0.0 {
+            assert_eq!(r.final_state.t, 0.0, "{label}");
+        }
+    }
+}
+
+/// The same ball at rest on a `[[wall]]` (radius 1 cm at 1 cm): its gap stayed zero to
+/// rounding for the first samples of the first step, which counted as having left the start's
+/// zero, so its fall below the wall fired nothing and it fell to −19.6 m. It stops on the Zeno
+/// diagnosis at once, on the wall.
+#[test]
+fn a_ball_released_at_rest_on_a_wall_does_not_fall_through_it() {
+    let toml = r#"
+dimensions = 1
+[[body]]
+name = "ball"
+mass = "1 kg"
+position = "1 cm"
+radius = "1 cm"
+[[force]]
+name = "gravity"
+kind = "uniform-gravity"
+g = "9.81 m/s^2"
+[integrator]
+method = "dopri5"
+[[wall]]
+name = "floor"
+point = 0
+normal = 1
+restitution = 0.5
+[stop]
+t_max = "2 s"
+"#;
+    let out = Scenario::from_str("wall.toml", toml)
+        .unwrap()
+        .run()
+        .unwrap();
+    let r = &out.report;
+    assert_eq!(r.stop_reason, StopReason::Zeno);
+    assert!(r.final_state.t < 1e-6, "{}", r.final_state.t);
+    assert!(
+        (r.final_state.y[0] - 0.01).abs() < 1e-12,
+        "{}",
+        r.final_state.y[0]
+    );
+}

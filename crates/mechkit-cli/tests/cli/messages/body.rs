@@ -43,6 +43,10 @@ pub static CASES: &[Case] = &[
         "[[part]]\nshape = \"box\"\nsize = [1, 1, 1]\nmass = 1\n[[part]]\nshape = \"box\"\nsize = [1, 1, 1]\nmass = 1\nhole = true\n"
     ),
     com!(
+        "hole_outside_the_body",
+        "[[part]]\nshape = \"box\"\nsize = [\"10 cm\", \"10 cm\", \"10 cm\"]\nmass = 1\n[[part]]\nshape = \"box\"\nsize = [\"5 cm\", \"5 cm\", \"5 cm\"]\nposition = [\"20 cm\", \"20 cm\", \"20 cm\"]\nmass = 1\nhole = true\n"
+    ),
+    com!(
         "self_intersecting_polygon",
         "[[part]]\nshape = \"polygon\"\nvertices = [[0, 0], [1, 1], [1, 0], [0, 1]]\nmass = 1\n"
     ),

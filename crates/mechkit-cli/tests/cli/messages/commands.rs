@@ -44,6 +44,22 @@ pub static CASES: &[Case] = &[
     sweep!("shard_out_of_range", "--set", "v0=0:5:3", "--shard", "3/2"),
     Case {
         area: "sweep",
+        kind: "merge_output_is_a_part",
+        files: &[
+            ("sweep.part1.csv", Text("run\n0\n")),
+            ("sweep.part2.csv", Text("run\n1\n")),
+        ],
+        args: &[
+            "sweep-merge",
+            "sweep.part1.csv",
+            "sweep.part2.csv",
+            "-o",
+            "./sweep.part2.csv",
+        ],
+        code: 2,
+    },
+    Case {
+        area: "sweep",
         kind: "merge_missing_part",
         files: &[],
         args: &["sweep-merge", "sweep.part1.csv"],
@@ -116,6 +132,19 @@ pub static CASES: &[Case] = &[
         "0.1 m/s",
         "--t-max",
         "3 s"
+    ),
+    command!(
+        "bead_curve_with_a_step",
+        "bead",
+        "--curve",
+        "-floor(x)",
+        "--start",
+        "0.5",
+        "--speed",
+        "1 m/s",
+        "--t-max",
+        "3 s",
+        "--no-plots"
     ),
     command!(
         "work_path_and_field_dimensions",

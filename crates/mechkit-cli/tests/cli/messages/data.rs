@@ -50,6 +50,7 @@ pub static CASES: &[Case] = &[
     work!("column_out_of_range", "x F\n0 1\n1 2\n2 3\n", "--f", "7"),
     work!("column_zero", "x F\n0 1\n1 2\n2 3\n", "--f", "0"),
     work!("not_monotone", "x F\n0 1\n1 2\n0.5 3\n"),
+    work!("time_decreasing", "t,x\n3,1\n2,2\n1,3\n0,4\n"),
     work!(
         "unknown_rule",
         "x F\n0 1\n1 2\n2 3\n",

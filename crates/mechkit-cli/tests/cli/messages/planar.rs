@@ -50,6 +50,10 @@ pub static CASES: &[Case] = &[
         rod_and!("[[joint]]\nkind = \"contact\"\non = \"rod.tip\"\nmu_s = 0.2\nmu_k = 0.5\n")
     ),
     check!(
+        "joint_names_one_body_twice",
+        rod_and!("[[joint]]\nkind = \"rod\"\na = \"rod.tip\"\nb = \"rod\"\n")
+    ),
+    check!(
         "joint_name_taken_by_a_body",
         rod_and!("[[joint]]\nname = \"rod\"\nkind = \"hinge\"\na = \"rod.tip\"\n")
     ),

@@ -65,9 +65,16 @@ impl Side {
         }
     }
 
-    /// The side after a value `g`, from the side before (NaN keeps the old side).
+    /// The side after a value `g`, from the side before (NaN keeps the old side; a function
+    /// still exactly zero since the start stays [`Side::StartZero`], so that leaving zero later
+    /// in the event's direction fires: a ball at rest on a wall, whose gap stays zero to
+    /// rounding for the first samples of a step, then falls below it).
     pub(crate) fn after(self, g: Real) -> Side {
-        Side::of(g).unwrap_or(self)
+        match Side::of(g) {
+            Some(Side::Zero) if self == Side::StartZero => Side::StartZero,
+            Some(s) => s,
+            None => self,
+        }
     }
 }
 

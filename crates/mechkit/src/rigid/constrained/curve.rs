@@ -253,6 +253,15 @@ impl Curve {
         ([g.d1[0] / s, g.d1[1] / s], g.normal())
     }
 
+    /// A graph's `y`, `y'`, `y''` compiled (`None` for a circle, or where one does not
+    /// compile).
+    pub(super) fn programs(&self) -> Option<&[Program; 3]> {
+        match &self.kind {
+            Kind::Graph(gr) => gr.programs.as_ref(),
+            Kind::Circle { .. } => None,
+        }
+    }
+
     /// The length scale used for sampling free flights: R, or 1 m for a graph.
     pub(super) fn scale(&self) -> Real {
         self.radius().unwrap_or(1.0)

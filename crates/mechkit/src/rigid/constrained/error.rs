@@ -42,6 +42,21 @@ pub enum ConstrainedError {
         /// y' there.
         slope: Real,
     },
+    /// The graph jumps, or its slope does, at `x` (reached by the run): the equations of
+    /// motion on a curve need `y'` and `y''` there.
+    #[error(
+        "the curve is not smooth at x = {x}: {}; a body on a curve needs y and its slope y' to \
+         be continuous (the derivative of a step is zero, so the body would cross the jump at \
+         constant speed, creating or destroying energy): write a smooth curve (round the corner \
+         or the step), or end the run before x = {x}",
+        match what { super::Break::Jump(j) => format!("y jumps by {j} m"), super::Break::Kink(k) => format!("its slope y' jumps by {k} (a kink)") }
+    )]
+    NotSmooth {
+        /// Where.
+        x: Real,
+        /// What jumps.
+        what: super::Break,
+    },
     /// A start given as an angle on a graph, or as x on a circle.
     #[error("{0}")]
     Start(String),
@@ -58,7 +73,7 @@ impl ConstrainedError {
     /// it used up the step budget).
     pub fn input(&self) -> Option<Input> {
         Some(match self {
-            ConstrainedError::Formula(_) => Input::Curve,
+            ConstrainedError::Formula(_) | ConstrainedError::NotSmooth { .. } => Input::Curve,
             ConstrainedError::Value { input, .. } => *input,
             ConstrainedError::Undefined { .. } | ConstrainedError::Start(_) => Input::StartPosition,
             ConstrainedError::Config(_) => Input::Tolerance,

@@ -35,8 +35,10 @@ mod error;
 mod flight;
 mod report;
 mod run;
+mod smooth;
 
 pub use curve::{Curve, Side};
 pub use error::ConstrainedError;
 pub use report::{BeadFiles, BeadReport, DepartureReport, Equilibrium, LeavingPoint};
 pub use run::{BeadOnCurve, BeadRun, BeadSample, Departure, Landing, Start, StopReason};
+pub use smooth::Break;

@@ -253,6 +253,7 @@ impl BeadOnCurve {
                 events.push(self.leaving());
             }
             let mut undefined = None;
+            let mut last_q = start.coordinate;
             let end = run_to_event(&mut rk, &sys, &mut state, t_max, &events, &mut |p| {
                 match p {
                     Progress::Event(hit) => turning_times.push(hit.t),
@@ -264,6 +265,12 @@ impl BeadOnCurve {
                                 return ControlFlow::Break(());
                             }
                         };
+                        // a step or a kink crossed in this step: no equation of motion there
+                        if let Some((x, what)) = self.curve.break_between(last_q, s.y[0]) {
+                            undefined = Some(ConstrainedError::NotSmooth { x, what });
+                            return ControlFlow::Break(());
+                        }
+                        last_q = s.y[0];
                         drift = drift.max((self.energy(&geo, s.y[1]) - energy).abs());
                         samples.push(self.sample(s.t, &s.y));
                     }

@@ -19,13 +19,16 @@
 //! ledger books its work by name: ideal joints do no work (up to the drift), friction does.
 //!
 //! **Switching** (`events`): a contact or a string lets go when its force reaches zero, and
-//! engages when the gap closes (an inelastic impulse removes the approach speed); a sticking
-//! contact starts to slide when the friction it needs exceeds `μₛ N`, and a sliding one sticks
+//! engages when the gap closes (an inelastic impulse removes the approach speed, its
+//! tangential part bounded by Coulomb friction: `impact`; then, as at the start, a contact
+//! sticks only where static friction holds it, since no event sees a bound broken from the
+//! outset); a sticking contact starts to slide when the friction it needs exceeds `μₛ N`, and a sliding one sticks
 //! when its sliding speed reaches zero, if static friction can then hold it (else it slides
 //! back the other way). Rolling without slipping is a disk's contact that sticks.
 
 mod force;
 mod gauss;
+mod impact;
 mod joint;
 mod modes;
 mod rows;

@@ -93,11 +93,19 @@ impl Mechanism {
                 q[m] = if u.abs() > tol { u.signum() } else { 0.0 };
             }
         }
-        // let go of what pulls the wrong way; decide sticking against static friction
+        self.settle(sys, 0.0, q, v);
+    }
+
+    /// Makes the modes at a state agree with the forces they give: an engaged contact or
+    /// string whose force pulls the wrong way lets go, and a sticking contact whose friction
+    /// would exceed `μₛ N` slides, against that friction (at the start, and after an impact
+    /// or a switch, where no event can see a bound already broken: its function does not
+    /// cross zero, it starts beyond it).
+    pub(crate) fn settle(&self, sys: &ParticleSystem, t: Real, q: &mut [Real], v: &[Real]) {
         for _ in 0..=self.joints.len() {
             let mut changed = false;
             for (ji, joint) in self.joints.iter().enumerate() {
-                let r = self.report_at(sys, ji, 0.0, q, v);
+                let r = self.report_at(sys, ji, t, q, v);
                 match joint.kind {
                     JointKind::Contact { mode, friction, .. } => {
                         if q[mode] > 0.5 && r[2] < 0.0 {
@@ -166,11 +174,11 @@ impl Mechanism {
                     }
                 })
                 .direction(Direction::Falling)
-                .set(move |s, _, y| {
+                .set(move |s, sys, y| {
                     let n = s.q.len();
                     y[mode] = 1.0;
                     let (q, v) = y.split_at_mut(n);
-                    mech2.impulse(q, v);
+                    mech2.engage(sys, s.t, q, v);
                 }),
             );
             if let JointKind::Contact {

@@ -392,8 +392,11 @@ impl Mechanism {
     }
 
     /// The velocity change that makes every engaged constraint's rate zero (an inelastic
-    /// impulse, applied when a contact or a string engages).
-    pub(crate) fn impulse(&self, q: &[Real], v: &mut [Real]) {
+    /// impulse, applied when a contact or a string engages), with the modes as in `q`: a
+    /// sliding contact's impulse carries its kinetic friction, `−μₖ s` times its normal part
+    /// (the rows' force directions `D`, as in [`Mechanism::solve`]). Returns each row's joint
+    /// and multiplier (a contact's normal impulse first, then its tangential ones).
+    pub(crate) fn impulse(&self, q: &[Real], v: &mut [Real]) -> Vec<(usize, Real)> {
         let rows = self.rows(q, v);
         let n = rows.len();
         let blocks = self.blocks(q);
@@ -401,14 +404,14 @@ impl Mechanism {
         let rhs: Vec<Real> = rows.iter().map(|r| -r.dot(v)).collect();
         for (i, ri) in rows.iter().enumerate() {
             for (k, rk) in rows.iter().enumerate() {
-                a[i * n + k] = self.coupling(&blocks, ri, rk, false);
+                a[i * n + k] = self.coupling(&blocks, ri, rk, true);
             }
         }
         let lambda = gauss(&mut a, rhs, n);
         let mut impulse = vec![0.0; v.len()];
         for (r, l) in rows.iter().zip(&lambda) {
             for e in 0..r.n {
-                impulse[r.idx[e]] += r.j[e] * l;
+                impulse[r.idx[e]] += r.d[e] * l;
             }
         }
         for (i, p) in impulse.iter().enumerate() {
@@ -419,5 +422,6 @@ impl Mechanism {
                 v[f + r] += (0..4).map(|c| row[c] * impulse[f + c]).sum::<Real>();
             }
         }
+        rows.iter().map(|r| r.joint).zip(lambda).collect()
     }
 }

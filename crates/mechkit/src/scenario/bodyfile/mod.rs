@@ -40,7 +40,7 @@ use super::doc::{Source, Table, Value};
 use super::error::{ErrorKind, ScenarioError};
 use super::values::{ValueEnv, dim_text, required_scalar, resolve, resolve_any, scalar};
 use crate::Real;
-use crate::mass::{Amount, Body, Extent, Part, Polygon, Shape, Vec3};
+use crate::mass::{Amount, Body, Extent, MassError, Part, Polygon, Shape, Vec3};
 use geometry::{direction, mesh, points};
 
 const TOP_KEYS: &[&str] = &["title", "description", "density", "constants", "part"];
@@ -141,10 +141,18 @@ impl BodyFile {
         for (i, t) in tables.iter().enumerate() {
             parts.push(part(t, i, env, default_density.as_ref(), dir)?);
         }
-        Ok(BodyFile {
-            title,
-            body: Body::new(parts),
-        })
+        let body = Body::new(parts);
+        // a hole outside the solid parts, located at its table (its `position`)
+        if let Err(e @ MassError::Hole { index, .. }) = body.check_holes() {
+            let span = tables.get(index).map_or(0..0, |t| {
+                t.get("position")
+                    .map_or_else(|| t.span.clone(), Value::span)
+            });
+            return Err(src
+                .error(ErrorKind::Invalid, e.to_string(), span)
+                .with_hint("place the hole inside the parts it is cut from (its `position` is its centre in the body frame), or make it smaller"));
+        }
+        Ok(BodyFile { title, body })
     }
 }
 

@@ -440,6 +440,7 @@ pub(super) fn read_joint(
                 .with_hint(hint));
         }
     };
+    super::distinct::refuse_one_body_twice(t, &name, &kind, ctx.bodies)?;
     Ok(Joint { name, kind })
 }
 

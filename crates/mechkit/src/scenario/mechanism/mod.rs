@@ -5,6 +5,7 @@
 //! the joints' modes come last.
 
 mod contact;
+mod distinct;
 mod joints;
 pub(crate) mod points;
 mod rigid2;
