@@ -8,9 +8,9 @@
 //! steps). The direction the function takes after the change is its rate along the new state's
 //! flow, `ġ ≈ (g(t + δ, y + δ ẏ) − g(t, y)) / δ`, with `δ = √ε · max(|t|, typical step)`.
 //! A change that leaves the function at zero with no rate (a bounce of a body at rest on the
-//! floor) is armed on its origin's side too: if the flow then takes it across the way it
-//! fired, it fires again at once, and the run stops on the Zeno diagnosis rather than pass
-//! through the wall.
+//! floor) leaves it as at the start of a run ([`Side::StartZero`]): if the flow then takes it
+//! across the way it fired, it fires again at once, and the run stops on the Zeno diagnosis
+//! rather than pass through the wall; if it stays at zero, nothing fires.
 
 use super::event::{Event, Trigger};
 use super::probe::Probe;
@@ -75,8 +75,9 @@ pub(super) fn sides_after_change(
     find::sides_after_change(fired, &origin, before, values, out);
     // a change that leaves its function at zero with no rate at all (a bounce `vy -> -e vy`
     // of a body at rest on the floor: `vy` stays 0) has not turned it back, and has not sent
-    // it on either; armed on its origin's side, so that leaving zero the way it fired fires
-    // it again at once (the Zeno diagnosis) instead of passing through the wall unseen
+    // it on either; as at the start of a run, leaving zero the way it fired fires it again
+    // (at once: the Zeno diagnosis) instead of passing through the wall unseen, while staying
+    // at zero (two balls at rest in contact after a Newton's cradle's impact) fires nothing
     let (g_pre, g_post, g_ahead) = values;
     for &i in fired {
         let in_place = g_post[i] == g_pre[i] || g_post[i] == 0.0;
@@ -86,7 +87,7 @@ pub(super) fn sides_after_change(
             && g_post[i] == 0.0
             && g_ahead[i] == g_post[i]
         {
-            out[i] = origin(i);
+            out[i] = Side::StartZero;
         }
     }
 }
@@ -137,15 +138,15 @@ mod tests {
     }
 
     #[test]
-    fn a_change_leaving_its_function_at_zero_without_rate_is_armed() {
+    fn a_change_leaving_its_function_at_zero_without_rate_is_as_at_the_start() {
         let bounce = [Event::new("g", |_, _| 0.0)
             .direction(Direction::Falling)
             .set(|_, _, y| y[1] *= -0.9)];
         let mut out = [Side::Unknown];
         let zero = [0.0];
-        // a bounce at rest on the floor: still at zero a moment later, armed above
+        // a bounce at rest on the floor: still at zero a moment later, as at the start
         sides_after_change(&bounce, &[0], &[Side::Pos], (&zero, &zero, &zero), &mut out);
-        assert_eq!(out, [Side::Pos]);
+        assert_eq!(out, [Side::StartZero]);
         // the same without a state change (a recording event): at zero
         let record = [Event::new("g", |_, _| 0.0).direction(Direction::Falling)];
         sides_after_change(&record, &[0], &[Side::Pos], (&zero, &zero, &zero), &mut out);

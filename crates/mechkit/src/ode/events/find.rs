@@ -45,7 +45,8 @@ pub(crate) enum Side {
     /// Positive.
     Pos,
     /// Exactly zero at the start of a run whose rules count leaving it in the event's
-    /// direction (the particles' events): it fires, at the start.
+    /// direction (the particles' events), or after a state change that left it at zero with
+    /// no rate: leaving it in that direction fires.
     StartZero,
     /// Not known yet (NaN so far).
     Unknown,
@@ -65,16 +66,9 @@ impl Side {
         }
     }
 
-    /// The side after a value `g`, from the side before (NaN keeps the old side; a function
-    /// still exactly zero since the start stays [`Side::StartZero`], so that leaving zero later
-    /// in the event's direction fires: a ball at rest on a wall, whose gap stays zero to
-    /// rounding for the first samples of a step, then falls below it).
+    /// The side after a value `g`, from the side before (NaN keeps the old side).
     pub(crate) fn after(self, g: Real) -> Side {
-        match Side::of(g) {
-            Some(Side::Zero) if self == Side::StartZero => Side::StartZero,
-            Some(s) => s,
-            None => self,
-        }
+        Side::of(g).unwrap_or(self)
     }
 }
 
