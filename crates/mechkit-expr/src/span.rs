@@ -62,7 +62,8 @@ pub const SHOWN_LINE: usize = 120;
 /// ```
 /// use mechkit_expr::span::{SHOWN_LINE, clip};
 /// assert_eq!(clip("1.5x"), "1.5x");
-/// let shown = clip(&"1".repeat(100_000));
+/// let long = "1".repeat(100_000);
+/// let shown = clip(&long);
 /// assert!(shown.chars().count() <= SHOWN_LINE + 30, "{shown}");
 /// assert!(shown.contains('…') && shown.ends_with("(100000 characters)"));
 /// ```
