@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use super::{MdError, MdInput};
 use crate::Real;
 
-/// An option of [`MdOptions`], for a front to name in its own spelling (`--rest-length`,
+/// An option of [`MdOptions`](super::MdOptions), for a front to name in its own spelling (`--rest-length`,
 /// `rest_length`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[allow(missing_docs)] // each is the field of the same name

@@ -6,7 +6,7 @@ use super::kinematics::{dot, norm};
 use super::spin::{self, Mat3, Quat};
 use crate::Real;
 
-/// What of a rigid body turning in space ([`StateVar::Spin`]).
+/// What of a rigid body turning in space ([`StateVar::Spin`](super::StateVar::Spin)).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SpinField {
     /// Angular velocity component, world frame (`wx`, `wy`, `wz`).
@@ -103,7 +103,7 @@ impl SpinRef {
 /// A point of a rigid body: body `body`, turned by the angle coordinate `angle` (in a plane)
 /// or by the quaternion from coordinate `angle` on (in space), at `r` from its centre of mass
 /// in the body frame (stored as bits so the type is `Eq`); `r` holds the moment of inertia
-/// in its first component for [`StateVar::RigidKinetic`].
+/// in its first component for [`StateVar::RigidKinetic`](super::StateVar::RigidKinetic).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct PointRef {
     /// Body index.
