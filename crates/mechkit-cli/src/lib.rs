@@ -76,6 +76,10 @@ pub fn main_with_args(args: Vec<OsString>) -> i32 {
             return e.exit_code();
         }
     };
+    // no output of the command replaces a file it read (`-o DIR` holding a fixed name); the
+    // server writes only into its own directories, and would note every file it ever read
+    let _inputs =
+        (!matches!(cli.command, args::Command::Serve(_))).then(mechkit::csv::InputGuard::hold);
     let cancel = Cancel::new();
     // the commands whose loops look at the handle; the others end at Ctrl-C as usual
     let interrupts = if matches!(

@@ -25,7 +25,7 @@ use std::path::{Path, PathBuf};
 use crate::Real;
 
 mod inputs;
-pub use inputs::{refuse_input_as_output, same_file};
+pub use inputs::{InputGuard, note_read, refuse_input_as_output, same_file};
 
 /// A column: its name and its unit.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -236,8 +236,9 @@ pub fn push_number(out: &mut String, x: Real) {
 /// Writes `bytes` to `path` atomically: to `NAME.partial` beside it, synced, then renamed
 /// over it. A symbolic link (or a chain of them) is written through: the file goes beside the
 /// link's final target and replaces that target, so the link stays. A target that exists
-/// and is not a regular file (a directory, a device, a pipe, a socket) is refused, never
-/// replaced or written into. On any failure the partial file is removed.
+/// and is not a regular file (a directory, a device, a pipe, a socket), or that is an input
+/// read under an [`InputGuard`], is refused, never replaced or written into. On any failure
+/// the partial file is removed.
 ///
 /// # Errors
 /// When the file cannot be written, or the target is not a regular file.
@@ -270,10 +271,12 @@ const MAX_LINKS: usize = 40;
 
 /// Where a file meant for `path` goes: `path` itself, or the final target of the symbolic
 /// link (or chain of links) at `path`, which need not exist yet; an error that names the
-/// path and what it is when that exists and is not a regular file.
+/// path and what it is when that exists and is not a regular file, or when it is an input
+/// read under an [`InputGuard`].
 ///
 /// # Errors
-/// When the target exists and is not a regular file, or the links form a loop.
+/// When the target exists and is not a regular file, or is an input read under an
+/// [`InputGuard`], or the links form a loop.
 pub fn writable_target(path: &Path) -> io::Result<PathBuf> {
     let mut target = path.to_path_buf();
     let mut links = 0;
@@ -308,7 +311,10 @@ pub fn writable_target(path: &Path) -> io::Result<PathBuf> {
                     ),
                 ));
             }
-            _ => return Ok(target),
+            _ => {
+                inputs::refuse_read_file(&target)?;
+                return Ok(target);
+            }
         }
     }
 }

@@ -136,6 +136,7 @@ pub fn build(
 /// scenario its summary.json names (points when that file is gone).
 fn from_run_dir(dir: &Path, options: &AnimationOptions) -> Result<Animation> {
     let summary_path = dir.join("summary.json");
+    mechkit::csv::note_read(&summary_path);
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&summary_path).with_context(|| {
             format!(
@@ -180,6 +181,7 @@ fn from_run_dir(dir: &Path, options: &AnimationOptions) -> Result<Animation> {
 
 /// The animation of an extended XYZ file (`mechkit md --xyz-every`'s trajectory.xyz).
 fn from_xyz(path: &Path, options: &AnimationOptions) -> Result<Animation> {
+    mechkit::csv::note_read(path);
     let text =
         std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
     let frames =

@@ -388,3 +388,38 @@ fn issue_026_outputs_are_written_through_symbolic_links() {
     assert_no_partial(dir.path());
     assert_no_partial(&dir.path().join("real"));
 }
+
+#[test]
+fn issue_026_an_output_never_replaces_a_file_the_command_read() {
+    let dir = Dir::new();
+    // `derive FILE -o DIR` writes DIR/derived.csv: here, the data file itself
+    let data = "t,x\n0,0\n0.1,0.01\n0.2,0.04\n0.3,0.09\n0.4,0.16\n";
+    dir.create("derived.csv", data);
+    dir.run(&["derive", "derived.csv", "-o", "."])
+        .assert_code(2)
+        .assert_stderr_contains("is the input");
+    assert_eq!(dir.read("derived.csv"), data);
+    // however it is spelled: through a link to the directory
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::symlink(dir.path(), dir.path().join("here")).expect("a link");
+        dir.run(&["derive", "derived.csv", "-o", "here"])
+            .assert_code(2)
+            .assert_stderr_contains("is the input");
+        assert_eq!(dir.read("derived.csv"), data);
+    }
+    // an image marked onto itself
+    std::fs::copy(image("disk_r150.png"), dir.path().join("disk.png")).expect("copied");
+    let before = std::fs::read(dir.path().join("disk.png")).expect("the image");
+    dir.run(&["com", "disk.png", "--mark", "disk.png"])
+        .assert_code(2)
+        .assert_stderr_contains("is the input");
+    assert_eq!(
+        std::fs::read(dir.path().join("disk.png")).expect("the image"),
+        before
+    );
+    assert_no_partial(dir.path());
+    // another directory is fine
+    dir.run(&["derive", "derived.csv", "-o", "out"])
+        .assert_code(0);
+}

@@ -4,7 +4,76 @@
 
 use std::fs;
 use std::io;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+
+/// The files read while an [`InputGuard`] is held, or `None` when none is: how many guards
+/// are held, and the paths read.
+static READ: Mutex<Option<(usize, Vec<PathBuf>)>> = Mutex::new(None);
+
+/// While held, every input file the library reads (scenarios, their data files and meshes,
+/// data tables, images, atom files) is noted, and [`writable_target`](super::writable_target)
+/// (through which every output goes) refuses to write over one of them, however spelled: a
+/// command's fixed output names (`-o DIR` holding `work.csv`, `trajectory.csv`) can never
+/// replace the file it read. A front that runs one command per process (the CLI) holds one
+/// for the command; a session that reads a file and later means to rewrite it (a notebook)
+/// holds none. Guards nest; the notes are dropped with the last one.
+#[must_use = "inputs are guarded only while the guard is held"]
+pub struct InputGuard(());
+
+impl InputGuard {
+    /// Starts noting the files read (see [`InputGuard`]).
+    pub fn hold() -> Self {
+        let mut read = READ
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        match read.as_mut() {
+            Some((held, _)) => *held += 1,
+            None => *read = Some((1, Vec::new())),
+        }
+        Self(())
+    }
+}
+
+impl Drop for InputGuard {
+    fn drop(&mut self) {
+        let mut read = READ
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if let Some((held, _)) = read.as_mut() {
+            *held -= 1;
+            if *held == 0 {
+                *read = None;
+            }
+        }
+    }
+}
+
+/// Notes `path` as read, while an [`InputGuard`] is held (else does nothing).
+pub fn note_read(path: &Path) {
+    let mut read = READ
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some((_, paths)) = read.as_mut()
+        && !paths.iter().any(|p| same_file(p, path))
+    {
+        paths.push(path.to_path_buf());
+    }
+}
+
+/// Refuses `output` when it is a file noted as read under an [`InputGuard`].
+pub(super) fn refuse_read_file(output: &Path) -> io::Result<()> {
+    let read = READ
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    match read.as_ref() {
+        Some((_, paths)) => {
+            let paths: Vec<&Path> = paths.iter().map(PathBuf::as_path).collect();
+            refuse_input_as_output(output, &paths)
+        }
+        None => Ok(()),
+    }
+}
 
 /// Whether `a` and `b` name the same existing file (the same device and inode on Unix, the
 /// same canonical path elsewhere); `false` when either does not exist.
@@ -46,7 +115,7 @@ pub fn refuse_input_as_output(output: &Path, inputs: &[&Path]) -> io::Result<()>
         Some(input) => Err(io::Error::new(
             io::ErrorKind::InvalidInput,
             format!(
-                "{} is the input {}: writing it would replace what is being read; give another output path",
+                "{} is the input {}: writing it would replace what is being read; give another output path (or `-o` directory)",
                 output.display(),
                 input.display()
             ),

@@ -96,6 +96,7 @@ impl Table {
 
     /// Reads the file at `path` (see [`Table::parse`]); errors name it as given.
     pub fn read(path: &Path) -> Result<Self, DataError> {
+        crate::csv::note_read(path);
         let text = std::fs::read_to_string(path).map_err(|error| DataError::Io {
             path: path.to_path_buf(),
             error,

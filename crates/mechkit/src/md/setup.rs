@@ -125,6 +125,7 @@ impl Atoms {
     /// # Errors
     /// The file cannot be read or is not a list of vectors.
     pub fn read(path: &Path) -> Result<Self, String> {
+        crate::csv::note_read(path);
         let text = std::fs::read_to_string(path)
             .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
         let atoms = AtomsFile::parse(&path.to_string_lossy(), &text).map_err(|e| match e {

@@ -216,6 +216,7 @@ pub fn read_source(path: &Path) -> Result<String, ScenarioError> {
         )
         .with_hint("give the scenario's .toml file; data files are named inside it"));
     }
+    crate::csv::note_read(path);
     std::fs::read_to_string(path).map_err(|e| {
         ScenarioError::new(
             ErrorKind::Io,

@@ -79,4 +79,11 @@ pub static CASES: &[Case] = &[
         ],
         code: 2,
     },
+    Case {
+        area: "data file",
+        kind: "output_is_the_input",
+        files: &[("derived.csv", Text("t,x\n0,1\n1,2\n2,3\n3,5\n"))],
+        args: &["derive", "derived.csv", "--no-plots", "--out", "."],
+        code: 2,
+    },
 ];

@@ -103,6 +103,7 @@ pub(super) fn mesh(
 ) -> Result<TriangleMesh, ScenarioError> {
     if let Some((file, span)) = t.string("file")? {
         let path = dir.map_or_else(|| Path::new(file).to_path_buf(), |d| d.join(file));
+        crate::csv::note_read(&path);
         let text = std::fs::read_to_string(&path).map_err(|e| {
             t.src.error(
                 ErrorKind::Io,
