@@ -28,7 +28,8 @@ pub const MAX_BOUNDS: usize = 2_000;
 /// while a function that is NaN over the whole step would double them at every level.
 const MAX_UNKNOWN: usize = 128;
 
-/// Halvings after which a piece is tested for being at rounding level.
+/// Halvings after which a piece is tested for being at rounding level (the whole step is
+/// tested too).
 const ROUNDING_DEPTH: u32 = 30;
 
 /// What a piece of the step was proven to be.
@@ -98,10 +99,15 @@ impl StepProof {
                 let mid = 0.5 * (a + b);
                 let (ta, tm, tb) = (t0 + a * h, t0 + mid * h, t0 + b * h);
                 let unsplittable = !(ta < tm && tm < tb) || mid <= a || mid >= b;
-                let at_rounding = depth >= ROUNDING_DEPTH && {
+                // tested at once too: a function constant to rounding over the whole step
+                // (two bodies resting in contact, their gap zero) is never sign-definite, and
+                // halving it would spend every bound
+                let at_rounding = (depth == 0 || depth >= ROUNDING_DEPTH) && {
                     bounds += 1;
-                    enclose(Interval::point(mid))
-                        .is_some_and(|point| jet.v.width() <= 4.0 * point.v.width())
+                    enclose(Interval::point(mid)).is_some_and(|point| {
+                        let width = jet.v.width();
+                        width.is_finite() && width <= 4.0 * point.v.width()
+                    })
                 };
                 if unsplittable || at_rounding {
                     Piece::Open
@@ -146,6 +152,28 @@ mod tests {
         let x = Jet::variable(s);
         let f = |r: Real| x - Jet::constant(r);
         f(0.3) * f(0.3 + 1e-9) * f(0.8)
+    }
+
+    /// Two bodies resting in contact: their gap `(x_b - x_a) - (R_a + R_b)` is zero over the
+    /// whole step, enclosed to rounding. It is never sign-definite; it once took every bound
+    /// (`OutOfBounds`, and a warning on every step of Newton's cradle).
+    #[test]
+    fn a_function_constant_to_rounding_is_proven_at_once() {
+        let mut proof = StepProof::default();
+        let mut bounds = 0;
+        let gap = |s: Interval| {
+            let x = Jet::variable(s) * Jet::constant(0.0);
+            (Jet::constant(0.05) + x) - Jet::constant(0.03) - Jet::constant(0.02)
+        };
+        assert_eq!(
+            proof.cut(0.0, 1.0, &mut |s| {
+                bounds += 1;
+                Some(gap(s))
+            }),
+            ProofOutcome::Proven
+        );
+        assert!(bounds <= 2, "{bounds} bounds");
+        assert_eq!(proof.pieces().len(), 1);
     }
 
     #[test]

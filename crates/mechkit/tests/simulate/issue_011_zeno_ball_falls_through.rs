@@ -217,3 +217,43 @@ fn a_ball_released_at_rest_on_the_floor_does_not_fall_through_it() {
         }
     }
 }
+
+/// The same on a `[[wall]]`, in 1-D and 2-D, under an adaptive and a fixed-step method: the
+/// wall's gap is snapped to zero within rounding, so it stayed at zero over the first samples
+/// of the run and lost its "as at the start" side there; the ball then fell through the wall
+/// (to y = −4.9 m in 1 s, exit 0), or, once that side was kept, crawled through bounces of
+/// rounding height every 6 ns. A function that stays at zero since the start of its step
+/// and then leaves it the firing way fires at that start: here at t = 0, twice, and Zeno.
+#[test]
+fn a_ball_at_rest_on_a_wall_does_not_fall_through_it() {
+    for (dimensions, point, normal, position) in [
+        (1, "0", "1", "\"5 cm\""),
+        (2, "[0, 0]", "[0, 1]", "[\"0 m\", \"5 cm\"]"),
+    ] {
+        for integrator in [
+            "method = \"dop853\"\nrtol = 1e-12",
+            "method = \"rk4\"\ndt = \"1 ms\"",
+        ] {
+            let toml = format!(
+                "dimensions = {dimensions}\n[[body]]\nname = \"ball\"\nmass = \"60 g\"\n\
+                 radius = \"5 cm\"\nposition = {position}\n[[force]]\nname = \"gravity\"\n\
+                 kind = \"uniform-gravity\"\n[[wall]]\nname = \"floor\"\npoint = {point}\n\
+                 normal = {normal}\nrestitution = 0.8\n[integrator]\n{integrator}\n\
+                 [stop]\nt_max = \"1 s\"\n"
+            );
+            let out = Scenario::from_str("rest.toml", &toml)
+                .unwrap()
+                .run()
+                .unwrap();
+            let r = &out.report;
+            let label = format!("{dimensions}-D, {integrator}");
+            assert_eq!(r.stop_reason, StopReason::Zeno, "{label}");
+            assert_eq!(r.final_state.t, 0.0, "{label}");
+            let height = r.final_state.y[dimensions - 1];
+            assert!(
+                (height - 0.05).abs() < 1e-12,
+                "{label}: the ball is at {height} m"
+            );
+        }
+    }
+}

@@ -46,7 +46,8 @@ pub(crate) enum Side {
     Pos,
     /// Exactly zero at the start of a run whose rules count leaving it in the event's
     /// direction (the particles' events), or after a state change that left it at zero with
-    /// no rate: leaving it in that direction fires.
+    /// no rate: leaving it in that direction fires, at the start of the step it stayed at
+    /// zero from (values that stay at zero keep this side).
     StartZero,
     /// Not known yet (NaN so far).
     Unknown,
@@ -66,9 +67,15 @@ impl Side {
         }
     }
 
-    /// The side after a value `g`, from the side before (NaN keeps the old side).
+    /// The side after a value `g`, from the side before (NaN keeps the old side; a function
+    /// still at zero since the start is still as at the start: leaving zero later the way
+    /// the event fires fires it, as leaving it at once would).
     pub(crate) fn after(self, g: Real) -> Side {
-        Side::of(g).unwrap_or(self)
+        match Side::of(g) {
+            Some(Side::Zero) if self == Side::StartZero => Side::StartZero,
+            Some(s) => s,
+            None => self,
+        }
     }
 }
 
@@ -275,7 +282,12 @@ impl Finder {
                     })
                 } else if to == Side::Zero {
                     t_j
-                } else if matches!(sides[i], Side::Zero | Side::StartZero) || prev[i] == 0.0 {
+                } else if sides[i] == Side::StartZero {
+                    // at zero since the step began (the run's start, or a change that left
+                    // it there with no rate): it left zero when it could first have, as
+                    // nothing inside the zero band tells when it did
+                    t_a
+                } else if sides[i] == Side::Zero || prev[i] == 0.0 {
                     t_prev
                 } else {
                     let tol = 2.0 * Real::EPSILON * t_prev.abs().max(t_j.abs());
