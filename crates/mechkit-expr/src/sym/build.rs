@@ -26,6 +26,64 @@ pub(crate) fn split_coefficient(t: &Sym) -> (Number, Option<Sym>) {
     }
 }
 
+/// [`split_coefficient`] of a term given away: nothing cloned.
+fn split_coefficient_owned(t: Sym) -> (Number, Option<Sym>) {
+    match t {
+        Sym::Num(n) => (n, None),
+        Sym::Mul(mut xs) => match xs.first() {
+            Some(Sym::Num(n)) => {
+                let n = *n;
+                xs.remove(0);
+                let rest = if xs.len() == 1 {
+                    xs.pop().expect("one factor")
+                } else {
+                    Sym::Mul(xs)
+                };
+                (n, Some(rest))
+            }
+            _ => (Number::ONE, Some(Sym::Mul(xs))),
+        },
+        other => (Number::ONE, Some(other)),
+    }
+}
+
+/// A hash of `s` (equal expressions hash alike), by a fast multiplicative hasher: it only
+/// tells deep expressions apart before they are compared node by node.
+pub(crate) fn hash_of(s: &Sym) -> u64 {
+    use std::hash::{Hash, Hasher};
+    struct Quick(u64);
+    impl Hasher for Quick {
+        fn write(&mut self, bytes: &[u8]) {
+            for chunk in bytes.chunks(8) {
+                let mut word = [0u8; 8];
+                word[..chunk.len()].copy_from_slice(chunk);
+                self.write_u64(u64::from_le_bytes(word));
+            }
+        }
+        fn write_u64(&mut self, n: u64) {
+            self.0 = (self.0.rotate_left(5) ^ n).wrapping_mul(0x517c_c1b7_2722_0a95);
+        }
+        fn finish(&self) -> u64 {
+            self.0
+        }
+    }
+    let mut h = Quick(0);
+    s.hash(&mut h);
+    h.finish()
+}
+
+/// Whether `a` and `b` may be equal, by their kinds and then their hashes, each hash computed
+/// once (`ka`, `kb` keep them): false only when they differ.
+fn may_equal(a: &Sym, ka: &mut Option<u64>, b: &Sym, kb: &mut Option<u64>) -> bool {
+    if std::mem::discriminant(a) != std::mem::discriminant(b) {
+        return false;
+    }
+    if matches!(a, Sym::Num(_) | Sym::Var(_)) {
+        return true;
+    }
+    *ka.get_or_insert_with(|| hash_of(a)) == *kb.get_or_insert_with(|| hash_of(b))
+}
+
 /// Whether `a` and `b` can differ only by their numbers: the numeric coefficients of terms
 /// and factors, and those a product pushed into its sums (`x*(2*y + 2)` and `x*(y + 1)`).
 /// Two sums one number apart must pass; most that are not fail without anything built.
@@ -91,13 +149,25 @@ impl Sym {
         }
         let mut constant = Number::ZERO;
         let mut collected: Vec<(Sym, Number)> = Vec::new();
+        // a hash of each collected term, which tells deep terms apart before they are compared
+        let mut keys: Vec<Option<u64>> = Vec::new();
         for t in flat {
-            match split_coefficient(&t) {
+            match split_coefficient_owned(t) {
                 (c, None) => constant = constant.plus(c),
-                (c, Some(rest)) => match collected.iter_mut().find(|(r, _)| *r == rest) {
-                    Some((_, k)) => *k = k.plus(c),
-                    None => collected.push((rest, c)),
-                },
+                (c, Some(rest)) => {
+                    let mut key = None;
+                    let like = (0..collected.len()).find(|&i| {
+                        may_equal(&rest, &mut key, &collected[i].0, &mut keys[i])
+                            && collected[i].0 == rest
+                    });
+                    match like {
+                        Some(i) => collected[i].1 = collected[i].1.plus(c),
+                        None => {
+                            collected.push((rest, c));
+                            keys.push(key);
+                        }
+                    }
+                }
             }
         }
         collected.retain(|(_, c)| !c.is_zero());
@@ -128,8 +198,9 @@ impl Sym {
         #[cfg(test)]
         tests::PRODUCTS.with(|n| n.set(n.get() + 1));
         let mut coefficient = Number::ONE;
-        // (base, exponent, the numeric content a sum base still holds)
-        let mut bases: Vec<(Sym, Sym, Number)> = Vec::new();
+        // (base, exponent, the numeric content a sum base still holds, a hash of a base that
+        // is not a sum: deep bases are told apart by it before they are compared node by node)
+        let mut bases: Vec<(Sym, Sym, Number, Option<u64>)> = Vec::new();
         let mut pending = factors;
         while let Some(f) = pending.pop() {
             match f {
@@ -148,8 +219,12 @@ impl Sym {
                         x => (x, Sym::one(), Number::ONE),
                     };
                     let is_sum = matches!(base, Sym::Add(_));
+                    let mut key = None;
                     let mut found = None;
-                    for (i, (b, _, h)) in bases.iter_mut().enumerate() {
+                    for (i, (b, _, h, k)) in bases.iter_mut().enumerate() {
+                        if !is_sum && !may_equal(&base, &mut key, b, k) {
+                            continue;
+                        }
                         if is_sum && matches!(b, Sym::Add(_)) {
                             // only sums that may be one number apart are made primitive
                             if !same_but_numbers(b, &base) {
@@ -165,7 +240,7 @@ impl Sym {
                     }
                     match found {
                         Some(i) => bases[i].1 = Sym::sum(vec![bases[i].1.clone(), exp]),
-                        None => bases.push((base, exp, held)),
+                        None => bases.push((base, exp, held, key)),
                     }
                 }
             }
@@ -174,7 +249,7 @@ impl Sym {
             return Sym::zero();
         }
         let mut out: Vec<(Sym, Number)> = Vec::new();
-        for (mut base, exp, mut held) in bases {
+        for (mut base, exp, mut held, _) in bases {
             if exp.is_one() && matches!(base, Sym::Add(_)) {
                 out.push((base, held));
                 continue;

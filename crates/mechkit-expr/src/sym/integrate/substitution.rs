@@ -7,11 +7,24 @@ use crate::ast::Func;
 use crate::number::Number;
 use crate::sym::poly::coefficients;
 
-/// The sub-expressions that depend on `x`: arguments of calls, bases and exponents of powers.
+/// The sub-expressions that depend on `x`: arguments of calls, bases and exponents of powers,
+/// each once.
 fn inner_candidates(f: &Sym, x: &str, out: &mut Vec<Sym>) {
+    let mut keys = Vec::new();
+    collect_candidates(f, x, out, &mut keys);
+}
+
+/// [`inner_candidates`], with the hashes of those found (`keys`): a deep candidate is told
+/// apart from the others by its hash before it is compared with them node by node.
+fn collect_candidates(f: &Sym, x: &str, out: &mut Vec<Sym>, keys: &mut Vec<u64>) {
     let mut push = |s: &Sym| {
-        if !s.free_of(x) && !matches!(s, Sym::Var(v) if v == x) && !out.contains(s) {
+        if s.free_of(x) || matches!(s, Sym::Var(v) if v == x) {
+            return;
+        }
+        let key = crate::sym::build::hash_of(s);
+        if !(0..out.len()).any(|i| keys[i] == key && out[i] == *s) {
             out.push(s.clone());
+            keys.push(key);
         }
     };
     match f {
@@ -30,12 +43,12 @@ fn inner_candidates(f: &Sym, x: &str, out: &mut Vec<Sym>) {
     match f {
         Sym::Add(xs) | Sym::Mul(xs) | Sym::Call(_, xs) => {
             for s in xs {
-                inner_candidates(s, x, out);
+                collect_candidates(s, x, out, keys);
             }
         }
         Sym::Pow(a, b) => {
-            inner_candidates(a, x, out);
-            inner_candidates(b, x, out);
+            collect_candidates(a, x, out, keys);
+            collect_candidates(b, x, out, keys);
         }
         _ => {}
     }
