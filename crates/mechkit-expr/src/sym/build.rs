@@ -160,12 +160,11 @@ impl Sym {
                         may_equal(&rest, &mut key, &collected[i].0, &mut keys[i])
                             && collected[i].0 == rest
                     });
-                    match like {
-                        Some(i) => collected[i].1 = collected[i].1.plus(c),
-                        None => {
-                            collected.push((rest, c));
-                            keys.push(key);
-                        }
+                    if let Some(i) = like {
+                        collected[i].1 = collected[i].1.plus(c);
+                    } else {
+                        collected.push((rest, c));
+                        keys.push(key);
                     }
                 }
             }
