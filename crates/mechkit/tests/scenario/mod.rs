@@ -1,6 +1,7 @@
 mod bounce;
 mod errors;
 mod examples;
+mod friction_threshold;
 mod planar;
 mod planar_landing;
 mod rigid;

@@ -403,3 +403,54 @@ fn a_rockets_mass_and_kinetic_energy_are_the_current_ones() {
     close(s.observables["k_end"], 0.5 * 300.0 * v * v, 1e-6);
     close(s.bodies["rocket"].mass, 300.0, 1e-9);
 }
+
+/// An Atwood machine whose light mass is drawn up to the pulley (a review by an instructor): the
+/// ideal string once carried it over the wheel and flung it off, the string doing +1612 J of
+/// work, with exit 0. The run now ends when an end reaches the rim: m1 (1 kg), 0.5 m below it,
+/// against m2 (3 kg) rises at g/2 and arrives at t = √(2 · 0.5 m / (g/2)).
+#[test]
+fn a_string_end_drawn_up_to_the_pulley_ends_the_run_at_the_rim() {
+    let text = r#"
+dimensions = 2
+[[body]]
+name = "m1"
+mass = "1 kg"
+position = ["-0.2 m", "-0.5 m"]
+[[body]]
+name = "m2"
+mass = "3 kg"
+position = ["0.2 m", "-0.5 m"]
+[[force]]
+name = "gravity"
+kind = "uniform-gravity"
+g = "9.81 m/s^2"
+[[joint]]
+name = "string"
+kind = "pulley"
+a = "m1"
+b = "m2"
+centre = ["0 m", "0 m"]
+radius = "0.2 m"
+[integrator]
+method = "dopri5"
+rtol = 1e-10
+atol = 1e-12
+[stop]
+t_max = "1 s"
+"#;
+    let s = run_text(text);
+    let arrival = (2.0 * 0.5 / (9.81 / 2.0_f64)).sqrt();
+    assert_eq!(s.events.len(), 1, "{:?}", s.events);
+    assert_eq!(s.events[0].name, "string end a reaches the rim");
+    assert!(
+        (s.events[0].t - arrival).abs() < 1e-8,
+        "{} vs {arrival}",
+        s.events[0].t
+    );
+    assert!((s.t_end - arrival).abs() < 1e-8);
+    // energy is kept up to there: the string does no work
+    assert!((s.energy.end - s.energy.start).abs() < 1e-6);
+    // a pulley whose ends never reach it runs to t_max
+    let far = text.replace("\"-0.5 m\"]\n[[body]]", "\"-3 m\"]\n[[body]]");
+    assert!(run_text(&far).events.is_empty());
+}

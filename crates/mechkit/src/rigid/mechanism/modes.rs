@@ -11,6 +11,19 @@ use crate::particles::spin::dot3;
 use crate::particles::{ParticleSystem, Sample};
 use crate::simulate::{Condition, Direction, Event};
 
+/// Static friction holds up to `μₛ N` and this relative margin: the friction a contact at rest
+/// needs is computed with rounding errors (and the drift corrections of the constraints), so
+/// at a load of exactly `μₛ N` (a cylinder at the least `μ` for rolling, a block at the angle
+/// of friction) rounding would decide, at a time that depends on the steps, whether it holds.
+/// At the bound it holds, as `|f| ≤ μₛ N` says; a load 1e-8 above it slips.
+pub const STATIC_MARGIN: Real = 1e-8;
+
+/// Whether static friction `f` exceeds `mu_s` times the normal force `n` (by more than
+/// [`STATIC_MARGIN`]).
+fn beyond_static(f: Real, mu_s: Real, n: Real) -> bool {
+    f.abs() > mu_s * n * (1.0 + STATIC_MARGIN)
+}
+
 impl Mechanism {
     /// A switching joint's gap: how far a contact is from its line, how much slack a string
     /// has (negative when stretched past its length).
@@ -114,7 +127,7 @@ impl Mechanism {
                         } else if let Friction::Coulomb { mu_s, mode: m, .. } = friction
                             && q[mode] > 0.5
                             && q[m] == 0.0
-                            && r[3].abs() > mu_s * r[2]
+                            && beyond_static(r[3], mu_s, r[2])
                         {
                             q[m] = -r[3].signum();
                             changed = true;
@@ -149,6 +162,43 @@ impl Mechanism {
             let (mode, what) = match joint.kind {
                 JointKind::Contact { mode, .. } => (mode, ("lets go", "touches")),
                 JointKind::String { mode, .. } => (mode, ("goes slack", "goes taut")),
+                JointKind::Pulley {
+                    a,
+                    b,
+                    centre,
+                    radius,
+                    length,
+                    ..
+                } => {
+                    // an end drawn up to the wheel: the ideal string over a pulley is not
+                    // modelled past it (it would carry the body round the rim), so the run
+                    // ends there, as at a stop condition. The straight piece's length
+                    // `l = √(d² − R²)` falls to zero at the string's speed and rises again
+                    // past the tangent point; near the rim (within a hundredth of the
+                    // string's length) it is signed by whether the end approaches the wheel,
+                    // so that passing the tangent point is a crossing of zero
+                    for (end, anchor) in [("a", a), ("b", b)] {
+                        let mech = Arc::clone(self);
+                        let near = 0.01 * length;
+                        events.push(
+                            Event::new(format!("{name} end {end} reaches the rim"), move |s, _| {
+                                let (p, c) =
+                                    (mech.point(anchor, s.q, s.v), mech.point(centre, s.q, s.v));
+                                let r = sub3(p.p, c.p);
+                                let d = norm3(r);
+                                let l = ((d - radius) * (d + radius)).max(0.0).sqrt();
+                                if l < near && dot3(r, sub3(p.vel, c.vel)) > 0.0 {
+                                    -l
+                                } else {
+                                    l
+                                }
+                            })
+                            .direction(Direction::Falling)
+                            .stop(),
+                        );
+                    }
+                    continue;
+                }
                 _ => continue,
             };
             // engaged → free when the force reaches zero
@@ -194,7 +244,7 @@ impl Mechanism {
                         true,
                         move |s, _| {
                             if s.q[mode] > 0.5 && s.q[m] == 0.0 {
-                                mu_s * field(s, 2) - field(s, 3).abs()
+                                mu_s * field(s, 2) * (1.0 + STATIC_MARGIN) - field(s, 3).abs()
                             } else {
                                 1.0
                             }
@@ -217,12 +267,14 @@ impl Mechanism {
                     .direction(Direction::Falling)
                     .set(move |s, sys, y| {
                         let n = s.q.len();
-                        let sliding = y[m];
                         y[m] = 0.0;
                         let (q, v) = y.split_at_mut(n);
                         let r = mech2.report_at(sys, ji, s.t, q, v);
-                        if r[3].abs() > mu_s * r[2] {
-                            q[m] = -sliding;
+                        if beyond_static(r[3], mu_s, r[2]) {
+                            // it slides on the way static friction cannot hold it, against
+                            // that friction (the other way than before when the sliding
+                            // reverses, the same way when it only touched zero)
+                            q[m] = -r[3].signum();
                         } else {
                             mech2.impulse(q, v);
                         }
