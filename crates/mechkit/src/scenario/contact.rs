@@ -80,8 +80,10 @@ fn friction(t: &Table<'_, '_>, env: ValueEnv<'_>, default: Real) -> Result<Real,
     }
 }
 
-/// The collision events or contact forces of the scenario (none when no body has a radius and
-/// there is no wall), after checking that nothing overlaps at the start.
+/// The collision events or contact forces of the scenario (none when fewer than two bodies
+/// have a radius and there is no wall), after checking that nothing overlaps at the start.
+/// Two bodies with a radius collide with no `[contact]` (elastic impulses, the defaults), as
+/// `radius` promises.
 pub(crate) fn read_contacts(
     root: &Table<'_, '_>,
     s: &Spheres<'_>,
@@ -91,7 +93,8 @@ pub(crate) fn read_contacts(
     let mut walls = root.tables("wall")?;
     walls.extend(root.tables("plane")?);
     let any_radius = s.radius.iter().any(Option::is_some);
-    if contact.is_none() && walls.is_empty() {
+    let spheres = s.radius.iter().filter(|r| r.is_some()).count();
+    if contact.is_none() && walls.is_empty() && spheres < 2 {
         return Ok(ContactSetup::default());
     }
     if !any_radius {

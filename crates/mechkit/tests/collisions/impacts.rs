@@ -301,3 +301,51 @@ fn fuzz_a_ball_cannot_pass_a_point_on_a_line() {
     assert!((k - 1.05).abs() < 1e-12, "{k}");
     assert!(out.report.steps < 2_100, "{}", out.report.steps);
 }
+
+/// Bodies with a `radius` collide as the scenario reference says, with no `[contact]` table
+/// (elastic impulses): they once passed through each other unless a `[contact]` or a
+/// `[[wall]]` was given. Head on, 2 kg at 3 m/s against 1 kg at −1 m/s: 1/3 and 13/3 m/s.
+#[test]
+fn bodies_with_a_radius_collide_without_a_contact_table() {
+    let text = r#"
+dimensions = 1
+[[body]]
+name = "a"
+mass = "2 kg"
+radius = "5 cm"
+position = "0 m"
+velocity = "3 m/s"
+[[body]]
+name = "b"
+mass = "1 kg"
+radius = "5 cm"
+position = "1 m"
+velocity = "-1 m/s"
+[integrator]
+method = "rk4"
+dt = "1 ms"
+[stop]
+t_max = "1 s"
+"#;
+    let out = Scenario::from_str("two.toml", text).unwrap().run().unwrap();
+    let b = &out.summary.bodies;
+    assert!(
+        (b["a"].velocity[0] - 1.0 / 3.0).abs() < 1e-12,
+        "{:?}",
+        b["a"].velocity
+    );
+    assert!(
+        (b["b"].velocity[0] - 13.0 / 3.0).abs() < 1e-12,
+        "{:?}",
+        b["b"].velocity
+    );
+    assert_eq!(out.summary.events.len(), 1);
+    assert!((out.summary.events[0].t - 0.225).abs() < 1e-12);
+    // one body with a radius and no wall has nothing to collide with: no events, no error
+    let one = text.replace(
+        "radius = \"5 cm\"\nposition = \"1 m\"",
+        "position = \"1 m\"",
+    );
+    let out = Scenario::from_str("one.toml", &one).unwrap().run().unwrap();
+    assert!(out.summary.events.is_empty());
+}
