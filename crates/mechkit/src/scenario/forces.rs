@@ -249,6 +249,20 @@ pub(crate) fn build_force(
         }
         "uniform-gravity" => {
             let g = scalar(t, "g", Dimension::ACCELERATION, ctx.env(None))?.unwrap_or(9.81);
+            if g.is_nan() || g < 0.0 {
+                // "down is negative" written into the strength would turn gravity upwards
+                return Err(t
+                    .src
+                    .error(
+                        ErrorKind::Invalid,
+                        format!(
+                            "`g` is the strength of gravity and must not be negative (it is {} m/s^2)",
+                            crate::expr::short_number(g)
+                        ),
+                        t.key_span("g"),
+                    )
+                    .with_hint("uniform gravity already points down (-y, or -x on a line): write `g = \"9.81 m/s^2\"`"));
+            }
             Box::new(UniformGravity::new(name, targets, g))
         }
         "newtonian-gravity" => ties::newtonian(t, ctx, name, targets)?,

@@ -34,6 +34,30 @@ macro_rules! force_with {
 pub static CASES: &[Case] = &[
     Case {
         area: "scenario value",
+        kind: "negative_gravity",
+        files: &[(
+            "s.toml",
+            Text(
+                "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\n[[force]]\nkind = \"uniform-gravity\"\ng = \"-9.81 m/s^2\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n",
+            ),
+        )],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "scenario value",
+        kind: "negative_spring_constant",
+        files: &[(
+            "s.toml",
+            Text(
+                "dimensions = 1\n[[body]]\nname = \"ball\"\nmass = \"1 kg\"\nposition = \"1 m\"\n[[force]]\nkind = \"spring\"\nk = \"-100 N/m\"\n[integrator]\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n",
+            ),
+        )],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "scenario value",
         kind: "negative_mass",
         files: &[("s.toml", Text(body_with!("mass = \"-2 kg\"")))],
         args: &["check", "s.toml"],

@@ -74,6 +74,19 @@ pub(super) fn spring(
 ) -> Result<Box<dyn Force>, ScenarioError> {
     let env = ctx.env(None);
     let k = required_scalar(t, "k", Dimension::STIFFNESS, env)?;
+    if k.is_nan() || k < 0.0 {
+        return Err(t
+            .src
+            .error(
+                ErrorKind::Invalid,
+                format!(
+                    "the spring constant `k` must not be negative (it is {} N/m)",
+                    crate::expr::short_number(k)
+                ),
+                t.key_span("k"),
+            )
+            .with_hint("a spring pulls its ends back towards `rest_length` with k > 0; a force that pushes away is a `kind = \"expression\"` force"));
+    }
     let rest = scalar(t, "rest_length", Dimension::LENGTH, env)?.unwrap_or(0.0);
     if rest < 0.0 {
         return Err(t.src.error(
