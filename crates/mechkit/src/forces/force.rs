@@ -62,6 +62,10 @@ pub trait Force: Debug + Send + Sync {
         0.0
     }
 
+    /// Momentum per second that is not its force (the momentum an ejected mass carries away),
+    /// added to `net` (one component per dimension); nothing for ordinary forces.
+    fn extra_momentum_rate(&self, _k: &Kinematics<'_>, _net: &mut [Real]) {}
+
     /// Whether it is a constraint force (a joint): it is then evaluated after every other
     /// force, from their sum, by [`Force::add_constraint_forces`].
     fn constraint(&self) -> bool {

@@ -131,6 +131,7 @@ impl ForceSet {
                     }
                     f.add_forces(k, scratch);
                     *p = local_ledger(bodies, d, scratch, k.v, out, n) + f.extra_power(k);
+                    f.extra_momentum_rate(k, n);
                     continue;
                 }
                 dirty = true;
@@ -157,6 +158,7 @@ impl ForceSet {
                         *nk += fk;
                     }
                 }
+                f.extra_momentum_rate(k, n);
             }
         }
     }

@@ -6,7 +6,8 @@
 //! u |ṁ| ê` is the rocket equation. Its kinetic energy then changes by
 //! `d(½ m v²)/dt = (F_ext + thrust)·v + ½ ṁ v²`: the last term, the kinetic energy that leaves
 //! with the ejected mass, is booked as the "work" of [`Exhaust`] so that the energy ledger
-//! closes. The mass itself is a coordinate of the particle system
+//! closes, and the momentum it carries away, `ṁ v` per second, as its impulse, so that the
+//! momentum ledger closes too. The mass itself is a coordinate of the particle system
 //! ([`crate::particles::ParticleSystemBuilder::variable_mass`]) whose rate is `ṁ` while the
 //! engine burns and zero after burnout.
 
@@ -68,7 +69,8 @@ impl Force for Thrust {
 }
 
 /// The kinetic energy the mass ejected by body `body` carries away, `½ ṁ v²` per second
-/// (negative while it burns): a ledger entry with no force.
+/// (negative while it burns), and its momentum, `ṁ v` per second: a ledger entry with no
+/// force.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Exhaust {
     name: String,
@@ -97,6 +99,15 @@ impl Force for Exhaust {
     fn extra_power(&self, k: &Kinematics<'_>) -> Real {
         let v = k.velocity(self.body);
         0.5 * k.v[self.mass] * dot(v, v)
+    }
+
+    /// The momentum the ejected mass carries away at the body's velocity, `ṁ v` per second:
+    /// with it the momentum ledger closes, `d(m v)/dt = F + thrust + ṁ v`.
+    fn extra_momentum_rate(&self, k: &Kinematics<'_>, net: &mut [Real]) {
+        let rate = k.v[self.mass];
+        for (n, vk) in net.iter_mut().zip(k.velocity(self.body)) {
+            *n += rate * vk;
+        }
     }
 
     fn velocity_dependent(&self) -> bool {
