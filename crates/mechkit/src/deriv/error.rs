@@ -72,7 +72,7 @@ pub enum DerivError {
     #[error(
         "the samples are not evenly spaced: t[{}] - t[{index}] = {step}, but the average step \
          is {expected}; Savitzky-Golay filters need a uniform step: resample the data onto a \
-         uniform grid, or use plain differences (Difference::Central)",
+         uniform grid, or use plain differences (method `central`)",
         .index + 1
     )]
     NotUniform {

@@ -11,15 +11,26 @@ use super::polyfit::PolyFit;
 use super::{DerivError, check_samples};
 use crate::Real;
 
-/// Relative tolerance of [`uniform_step`].
+/// Relative tolerance of [`uniform_step`], against the step.
 const UNIFORM_RTOL: Real = 1e-9;
 
+/// Tolerance of [`uniform_step`] against the times themselves: a column printed with 8
+/// significant digits (`9.9900100e-03`, the course's `reentry.txt`) rounds each time by up to
+/// 5e-9 of itself, so its steps differ by up to 1e-8 of the times.
+const PRINTED_RTOL: Real = 1e-7;
+
+/// The largest step error [`uniform_step`] accepts, relative to the step, however large the
+/// times: a filter with a step off by a thousandth differentiates to a thousandth.
+const MAX_STEP_RTOL: Real = 1e-3;
+
 /// The step `h` of an evenly spaced grid: `Some(h)` when every `tᵢ₊₁ − tᵢ` is within a relative
-/// 1e-9 of the average step `(tₙ₋₁ − t₀)/(n − 1)` (negative for a decreasing grid); `None` for
-/// fewer than 2 points, a zero or non-finite step, or uneven spacing.
+/// 1e-9 of the average step `(tₙ₋₁ − t₀)/(n − 1)` (negative for a decreasing grid), or within
+/// the rounding of times printed with 8 digits (1e-7 of the times, at most 1e-3 of the step);
+/// `None` for fewer than 2 points, a zero or non-finite step, or uneven spacing.
 ///
 /// Time columns written with 16 digits (`1.0000000000000020e-03`) are uniform to about 1e-12
-/// relative; a hand-typed column like `0.1 0.2 0.3` is uniform to 1e-16.
+/// relative; a hand-typed column like `0.1 0.2 0.3` is uniform to 1e-16; one written with 8
+/// digits (`9.9900100e-03`) to about 1e-8 of the times.
 ///
 /// # Example
 /// ```
@@ -44,8 +55,10 @@ fn average_step(t: &[Real]) -> Option<Real> {
 
 /// The first `i` where `tᵢ₊₁ − tᵢ` differs from `h` by more than the tolerance.
 fn first_uneven(t: &[Real], h: Real) -> Option<usize> {
-    t.windows(2)
-        .position(|w| ((w[1] - w[0]) - h).abs() > UNIFORM_RTOL * h.abs() || w[1].is_nan())
+    t.windows(2).position(|w| {
+        let printed = (PRINTED_RTOL * w[0].abs().max(w[1].abs())).min(MAX_STEP_RTOL * h.abs());
+        ((w[1] - w[0]) - h).abs() > (UNIFORM_RTOL * h.abs()).max(printed) || w[1].is_nan()
+    })
 }
 
 /// A Savitzky-Golay filter: a window of `window` (odd) points and a polynomial of order
@@ -304,5 +317,19 @@ mod tests {
             .map(|i| Real::from(i) * 1e-3 * (1.0 + 1e-12))
             .collect();
         assert!(uniform_step(&t).is_some());
+        // a column printed with 8 digits (the course's `reentry.txt`: 9.9900100e-03, …) is
+        // uniform to the rounding of its times; once refused by `derive --smooth`
+        let printed: Vec<Real> = (0..1001)
+            .map(|i| {
+                format!("{:.7e}", Real::from(i) * 9.990_009_99e-3)
+                    .parse()
+                    .unwrap()
+            })
+            .collect();
+        assert!(uniform_step(&printed).is_some());
+        // a step a hundredth off is not rounding
+        let mut off = printed.clone();
+        off[500] += 1e-4;
+        assert_eq!(uniform_step(&off), None);
     }
 }
