@@ -10,7 +10,7 @@ use crate::Real;
 use super::{MdError, MdInput, Xoshiro256};
 
 /// `n` velocities in `dim` dimensions for particles of mass `mass` at temperature `kt`
-/// (k_B T in energy units: T itself in reduced LJ units), from `seed`.
+/// (k_B T in energy units: T itself in reduced LJ units), from `seed`; all at rest at `kt = 0`.
 ///
 /// # Example
 /// ```
@@ -34,10 +34,21 @@ pub fn maxwell_boltzmann(
     if n < 2 {
         return Err(MdError::TooFewParticles { n });
     }
-    for (input, value) in [(MdInput::Temperature, kt), (MdInput::Mass, mass)] {
-        if !(value.is_finite() && value > 0.0) {
-            return Err(MdError::NotPositive { input, value });
-        }
+    if !(mass.is_finite() && mass > 0.0) {
+        return Err(MdError::NotPositive {
+            input: MdInput::Mass,
+            value: mass,
+        });
+    }
+    if kt == 0.0 {
+        // a crystal at 0 K: at rest
+        return Ok(vec![[0.0; 3]; n]);
+    }
+    if !(kt.is_finite() && kt > 0.0) {
+        return Err(MdError::NotPositive {
+            input: MdInput::Temperature,
+            value: kt,
+        });
     }
     let mut rng = Xoshiro256::seed(seed);
     let sd = (kt / mass).sqrt();

@@ -60,6 +60,12 @@ fn maxwell_boltzmann_has_zero_momentum_exact_temperature_and_is_seeded() {
         assert_eq!(v, maxwell_boltzmann(2.5, 1.7, dim, 1000, 42).unwrap());
         assert_ne!(v, maxwell_boltzmann(2.5, 1.7, dim, 1000, 43).unwrap());
     }
+    // at 0 K all at rest (a crystal that should stay put); it was refused as not positive
+    assert_eq!(
+        maxwell_boltzmann(0.0, 1.7, 3, 10, 42).unwrap(),
+        vec![[0.0; 3]; 10]
+    );
+    assert!(maxwell_boltzmann(-1.0, 1.7, 3, 10, 42).is_err());
     // The components' distribution: ⟨v⁴⟩ / ⟨v²⟩² = 3 for a Gaussian.
     let v = maxwell_boltzmann(1.0, 1.0, 3, 100_000, 1).unwrap();
     let m2 = v.iter().map(|v| v[0] * v[0]).sum::<f64>() / 1e5;

@@ -372,8 +372,9 @@ pub(crate) fn build_mechanism(
     if let Some((ji, rate)) = mechanism.velocity_violation(&q, &v, 1e-9 * speed) {
         mechanism.project_velocities(&q, &mut v);
         warnings.push(format!(
-            "the initial velocities break the joint `{}` (its constraint changes at {rate} m/s): they were projected onto what the joints allow, as an inelastic impulse at t = 0; give velocities the joints allow (a body turning about a pivot moves its centre at ω × r) to start from your own",
-            mechanism.joints()[ji].name
+            "the initial velocities break the joint `{}` (its constraint changes at a rate of {}, in m/s for a point it holds, rad/s for an axis it keeps): they were projected onto what the joints allow, as an inelastic impulse at t = 0; give velocities the joints allow (a body turning about a pivot moves its centre at ω × r; a hinge lets it turn about its axis only) to start from your own",
+            mechanism.joints()[ji].name,
+            crate::expr::short_number(rate)
         ));
     }
     let events = mechanism.events(first_joint);
