@@ -97,7 +97,7 @@ pub(crate) fn diagnose_evaluation(
                 quantity: format!("force `{}` on {body} ({axis} component)", force.name()),
                 value: f[i],
                 message: format!(
-                    "at t = {} s the force `{}` on {body} is {} ({axis} component), with {body} at position {pos} and velocity {vel}{others}: a division by zero or a value outside a function's domain (sqrt, log of a negative number) in the force; check its formula at these positions, or end the run before them with an event",
+                    "at t = {} s the force `{}` on {body} is {} ({axis} component), with {body} at position {pos} and velocity {vel}{others}: a division by zero or a value outside a function's domain (sqrt, log of a negative number) in the force: a body at its singular point (the centre of an inverse-square force, two bodies at one place) or a formula's; check where the bodies start and the force's formula, or end the run before them with an event",
                     short(state.t),
                     force.name(),
                     short(f[i])
