@@ -53,10 +53,19 @@ impl Conversion {
 /// ```
 pub fn convert(quantity: &str, to: Option<&str>) -> Result<Conversion, CalculusError> {
     let q = Quantity::parse(quantity)?;
+    let angular = names_a_unit(quantity, ANGLES);
     let converted = match to {
         None => None,
         Some(u) => {
             let unit = Unit::parse(u)?;
+            if angular != names_a_unit(u, ANGLES)
+                && (names_a_unit(u, HERTZ) || names_a_unit(quantity, HERTZ))
+            {
+                // rad counts as 1, so `3000 rpm` is 314.159 per second: as rad/s, not Hz
+                return Err(CalculusError::Invalid(format!(
+                    "cannot convert {quantity} to {u}: one is an angular speed (an angle per time) and the other a frequency in Hz (cycles per second), which differ by 2π; convert between rad/s, rev/s, rpm and deg/s, or between Hz and 1/s (a rotation of 50 rev/s has a frequency of 50 Hz and an angular speed of 314.16 rad/s)"
+                )));
+            }
             let v = q.value_in(&unit).ok_or_else(|| {
                 CalculusError::Invalid(format!(
                     "cannot convert {} to {u}: the dimensions differ ({} vs {}); give --to a unit \
@@ -76,14 +85,40 @@ pub fn convert(quantity: &str, to: Option<&str>) -> Result<Conversion, CalculusE
     Ok(Conversion {
         input: quantity.to_string(),
         si: q.value,
-        si_unit: q
-            .dim
-            .derived_symbol()
-            .map_or_else(|| q.dim.to_string(), str::to_string),
+        // an angle per time is in rad/s, never Hz (cycles per second)
+        si_unit: if angular && q.dim == Dimension::FREQUENCY {
+            "rad/s".to_string()
+        } else {
+            q.dim
+                .derived_symbol()
+                .map_or_else(|| q.dim.to_string(), str::to_string)
+        },
         dimension: q.dim,
         quantity: q.dim.quantity_name().unwrap_or("").to_string(),
         converted,
     })
+}
+
+/// Units of angle, alone or in a rate (`rpm`, `rev/s`, `deg/s`, `rad/s`).
+const ANGLES: &[&str] = &[
+    "rad",
+    "deg",
+    "°",
+    "rev",
+    "rpm",
+    "degree",
+    "degrees",
+    "revolution",
+    "revolutions",
+];
+
+/// Units of frequency in cycles per second.
+const HERTZ: &[&str] = &["Hz", "kHz", "MHz", "GHz", "hertz"];
+
+/// Whether the unit part of `text` names one of `units` (as a whole word).
+fn names_a_unit(text: &str, units: &[&str]) -> bool {
+    text.split(|c: char| !(c.is_alphanumeric() || c == '°'))
+        .any(|word| units.contains(&word))
 }
 
 #[cfg(test)]
@@ -100,5 +135,32 @@ mod tests {
         assert!(!au.converted_to_si());
         let e = convert("60 km/h", Some("kg")).unwrap_err().to_string();
         assert!(e.contains("dimensions differ"), "{e}");
+    }
+
+    /// `3000 rpm` was "314.159 Hz" (rad counts as 1, and Hz is 1/s): a rotation of 3000 rpm
+    /// has a frequency of 50 Hz. Angle rates are shown in rad/s, and converting between one
+    /// and Hz is refused with the 2π spelled out.
+    #[test]
+    fn an_angular_speed_is_never_in_hertz() {
+        let c = convert("3000 rpm", None).unwrap();
+        assert_eq!(c.si_unit, "rad/s");
+        assert!((c.si - 100.0 * std::f64::consts::PI).abs() < 1e-9);
+        let rev = convert("3000 rpm", Some("rev/s")).unwrap();
+        assert!((rev.converted.unwrap().value - 50.0).abs() < 1e-12);
+        for (q, to) in [("3000 rpm", "Hz"), ("50 Hz", "rpm"), ("1 kHz", "rad/s")] {
+            let e = convert(q, Some(to)).unwrap_err().to_string();
+            assert!(e.contains("differ by 2π"), "{q} to {to}: {e}");
+        }
+        assert_eq!(convert("50 Hz", None).unwrap().si_unit, "Hz");
+        assert!(
+            (convert("50 Hz", Some("1/s"))
+                .unwrap()
+                .converted
+                .unwrap()
+                .value
+                - 50.0)
+                .abs()
+                < 1e-12
+        );
     }
 }
