@@ -140,6 +140,11 @@ pub fn value(text: &str, what: &str, params: &Params) -> Result<Real, ValueError
 /// Text that does not read as a quantity, or one of another dimension.
 pub fn quantity(text: &str, what: &str, dim: Dimension) -> Result<Real, ValueError> {
     let q = Quantity::parse(text).map_err(|e| fail(what, format!("{what}: {e}")))?;
+    if dim == Dimension::FREQUENCY
+        && let Some(message) = hertz_for_an_angular_speed(what, text)
+    {
+        return Err(fail(what, message));
+    }
     if !q.dim.is_none() && q.dim != dim {
         return Err(fail(
             what,
@@ -153,6 +158,28 @@ pub fn quantity(text: &str, what: &str, dim: Dimension) -> Result<Real, ValueErr
         ));
     }
     Ok(q.value)
+}
+
+/// Units of frequency in cycles per second.
+pub(crate) const HERTZ: &[&str] = &["Hz", "kHz", "MHz", "GHz", "hertz"];
+
+/// Whether `text` names one of `units` as a whole word (`rpm` in `"3000 rpm"`, `Hz` in
+/// `"1/s*Hz"`, not in `"Hzz"`).
+pub(crate) fn names_a_unit(text: &str, units: &[&str]) -> bool {
+    text.split(|c: char| !(c.is_alphanumeric() || c == '°'))
+        .any(|word| units.contains(&word))
+}
+
+/// Every input of dimension 1/s in mechkit is an angular speed (`omega`, `--angular-speed`),
+/// in rad/s: a value written in Hz (cycles per second) would be taken 2π too small, as
+/// `rad` counts as 1. The message that refuses it, or `None` when `text` is not in Hz.
+pub fn hertz_for_an_angular_speed(what: &str, text: &str) -> Option<String> {
+    names_a_unit(text, HERTZ).then(|| {
+        format!(
+            "{what} `{}` is in Hz (cycles per second), but {what} is an angular speed (rad/s), 2π times the rate of turning: write turns per second as `rev/s` (50 Hz is `50 rev/s` = 314.16 rad/s) or the value in rad/s",
+            crate::expr::span::clip(text)
+        )
+    })
 }
 
 /// A vector of 1 to 3 components separated by commas, each a quantity of `dim` or a bare
@@ -426,66 +453,4 @@ pub fn split_top_level(text: &str, sep: char) -> Vec<&str> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn values() {
-        let p = vec![("b".to_string(), 2.0)];
-        assert_eq!(value("3", "--x", &p).unwrap(), 3.0);
-        assert!((value("60 km/h", "--v", &p).unwrap() - 16.666_666_666_666_668).abs() < 1e-12);
-        assert_eq!(value("b/4", "--to", &p).unwrap(), 0.5);
-        assert!((value("2*pi", "--to", &p).unwrap() - std::f64::consts::TAU).abs() < 1e-15);
-        let e = value("c/4", "--to", &p).unwrap_err();
-        assert!(e.message.contains("--set c="), "{e}");
-        assert_eq!(e.input, "--to");
-        assert_eq!(interval("-1:2", "--range", &p).unwrap(), (-1.0, 2.0));
-        assert_eq!(value("-inf", "--from", &p).unwrap(), f64::NEG_INFINITY);
-        assert_eq!(value("∞", "--to", &p).unwrap(), f64::INFINITY);
-        assert!(interval("1", "--range", &p).is_err());
-        assert_eq!(interval("2:1", "--param", &p).unwrap(), (2.0, 1.0));
-        let e = increasing_interval("2:-1", "--range", &p).unwrap_err();
-        assert!(
-            e.message.contains("must be increasing") && e.message.contains("--range -1:2"),
-            "{e}"
-        );
-        assert_eq!(e.input, "--range");
-        assert_eq!(split_top_level("atan2(y, x), 0", ','), ["atan2(y, x)", "0"]);
-    }
-
-    #[test]
-    fn params_take_formulas_units_and_earlier_names() {
-        let p = params("th=pi/6, m = 2 kg, w=m*3, f=atan2(1, 1)").unwrap();
-        let get = |n: &str| p.iter().find(|(k, _)| k == n).unwrap().1;
-        assert!((get("th") - std::f64::consts::FRAC_PI_6).abs() < 1e-15);
-        assert_eq!(get("m"), 2.0);
-        assert_eq!(get("w"), 6.0);
-        assert!((get("f") - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
-        assert!((params("a=30 deg").unwrap()[0].1 - std::f64::consts::FRAC_PI_6).abs() < 1e-15);
-        assert_eq!(params("a=1,a=2").unwrap(), [("a".to_string(), 2.0)]);
-        let e = params("a").unwrap_err();
-        assert!(e.message.contains("name=value"), "{e}");
-        let e = params("2x=1").unwrap_err();
-        assert!(e.message.contains("not a name"), "{e}");
-        let e = params("a=b+1").unwrap_err();
-        assert_eq!(e.input, "a");
-        assert!(e.message.contains("`b`"), "{e}");
-    }
-
-    #[test]
-    fn vectors() {
-        assert_eq!(
-            vector("3 m/s, -1 m/s", "--v", Dimension::VELOCITY).unwrap(),
-            [3.0, -1.0]
-        );
-        assert_eq!(
-            vector("3, -1 km/s", "--v", Dimension::VELOCITY).unwrap(),
-            [3000.0, -1000.0]
-        );
-        assert_eq!(vector("2", "--v", Dimension::VELOCITY).unwrap(), [2.0]);
-        assert!(vector("1,2,3,4", "--v", Dimension::VELOCITY).is_err());
-        assert!(vector("1,,2", "--v", Dimension::VELOCITY).is_err());
-        let e = vector("1 kg", "--v", Dimension::VELOCITY).unwrap_err();
-        assert!(e.message.contains("dimension"), "{e}");
-    }
-}
+mod tests;

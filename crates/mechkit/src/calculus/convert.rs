@@ -112,14 +112,7 @@ const ANGLES: &[&str] = &[
     "revolutions",
 ];
 
-/// Units of frequency in cycles per second.
-const HERTZ: &[&str] = &["Hz", "kHz", "MHz", "GHz", "hertz"];
-
-/// Whether the unit part of `text` names one of `units` (as a whole word).
-fn names_a_unit(text: &str, units: &[&str]) -> bool {
-    text.split(|c: char| !(c.is_alphanumeric() || c == '°'))
-        .any(|word| units.contains(&word))
-}
+use crate::values::{HERTZ, names_a_unit};
 
 #[cfg(test)]
 mod tests {

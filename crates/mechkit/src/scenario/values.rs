@@ -128,6 +128,12 @@ pub(crate) fn resolve(
             e
         }
     })?;
+    if want == Dimension::FREQUENCY
+        && let DeValue::String(s) = v.get_ref()
+        && let Some(message) = crate::values::hertz_for_an_angular_speed(&format!("`{key}`"), s)
+    {
+        return Err(src.error(ErrorKind::Dimension, message, v.span()));
+    }
     match dim {
         Dim::Known(got) if got != want => {
             let text = match v.get_ref() {

@@ -34,6 +34,18 @@ macro_rules! force_with {
 pub static CASES: &[Case] = &[
     Case {
         area: "scenario value",
+        kind: "angular_speed_in_hertz",
+        files: &[(
+            "s.toml",
+            Text(
+                "[[rigid_body]]\nname = \"wheel\"\nomega = \"50 Hz\"\n  [[rigid_body.part]]\n  shape = \"cylinder\"\n  radius = \"25 cm\"\n  height = \"10 cm\"\n  mass = \"40 kg\"\n[stop]\nt_max = \"1 s\"\n",
+            ),
+        )],
+        args: &["check", "s.toml"],
+        code: 2,
+    },
+    Case {
+        area: "scenario value",
         kind: "negative_gravity",
         files: &[(
             "s.toml",
