@@ -249,7 +249,9 @@ impl Attitude {
     pub fn euler_angles(&self) -> (Real, Real, Real) {
         let r = self.q.to_rotation_matrix();
         let r = r.matrix();
-        let theta = r[(2, 2)].clamp(-1.0, 1.0).acos();
+        // θ from both its sine and cosine: acos(cos θ) alone loses half the digits near
+        // upright (a tilt of 1e-8 rad read as 0 to 1.5e-8)
+        let theta = r[(0, 2)].hypot(r[(1, 2)]).atan2(r[(2, 2)]);
         let phi = r[(0, 2)].atan2(-r[(1, 2)]);
         let psi = r[(2, 0)].atan2(r[(2, 1)]);
         (phi, theta, psi)

@@ -109,3 +109,19 @@ fn fast_top_precesses_at_mgl_over_l3() {
         "{nutation:e} vs {swing:e}"
     );
 }
+
+/// The nutation angle of a top tilted by a hair: read from `acos(cos θ)` it had a floor of
+/// about 1.5e-8 rad (a tilt of 1e-8 rad read as 0 or 1.5e-8); from both its sine and cosine it
+/// is exact to rounding at any tilt.
+#[test]
+fn the_nutation_angle_is_exact_near_upright() {
+    let top = top();
+    for theta in [1e-12, 1e-8, 1e-4, 0.5, 3.0] {
+        let a = top.tilted(theta, 50.0, 0.0);
+        let got = a.euler_angles().1;
+        assert!(
+            (got - theta).abs() <= 1e-15 * theta.max(1e-3),
+            "{theta}: {got}"
+        );
+    }
+}
