@@ -160,6 +160,19 @@ pub fn quantity(text: &str, what: &str, dim: Dimension) -> Result<Real, ValueErr
     Ok(q.value)
 }
 
+/// Units of angle, alone or in a rate (`rpm`, `rev/s`, `deg/s`, `rad/s`).
+pub(crate) const ANGLES: &[&str] = &[
+    "rad",
+    "deg",
+    "°",
+    "rev",
+    "rpm",
+    "degree",
+    "degrees",
+    "revolution",
+    "revolutions",
+];
+
 /// Units of frequency in cycles per second.
 pub(crate) const HERTZ: &[&str] = &["Hz", "kHz", "MHz", "GHz", "hertz"];
 

@@ -99,20 +99,7 @@ pub fn convert(quantity: &str, to: Option<&str>) -> Result<Conversion, CalculusE
     })
 }
 
-/// Units of angle, alone or in a rate (`rpm`, `rev/s`, `deg/s`, `rad/s`).
-const ANGLES: &[&str] = &[
-    "rad",
-    "deg",
-    "°",
-    "rev",
-    "rpm",
-    "degree",
-    "degrees",
-    "revolution",
-    "revolutions",
-];
-
-use crate::values::{HERTZ, names_a_unit};
+use crate::values::{ANGLES, HERTZ, names_a_unit};
 
 #[cfg(test)]
 mod tests {
