@@ -255,11 +255,14 @@ fn text(r: &SpinReport) -> String {
     if let Some(t) = &r.top {
         let _ = writeln!(
             out,
-            "top: nutation θ from {}° to {}° (start {}°); mean precession {} rad/s, steady (slow root) {} rad/s, fast-top m g ℓ/(J3 ω3) {} rad/s",
+            "top: nutation θ from {}° to {}° (start {}°); mean precession {}, steady (slow root) {} rad/s, fast-top m g ℓ/(J3 ω3) {} rad/s",
             show(t.nutation_deg.min),
             show(t.nutation_deg.max),
             show(t.nutation_deg.start),
-            show(t.precession_rate.mean),
+            t.precession_rate.mean.map_or_else(
+                || "undefined (the axis is vertical at a sample, where φ has no value)".to_string(),
+                |m| format!("{} rad/s", show(m))
+            ),
             opt(t.precession_rate.steady_slow),
             opt(t.precession_rate.fast_top)
         );

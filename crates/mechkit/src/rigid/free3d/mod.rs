@@ -47,6 +47,6 @@ pub use error::Free3dError;
 pub use poinsot::Poinsot;
 pub use report::{
     AngularMomentum, Flip, FlipPeriod, IntegratorInfo, Nutation, PrecessionRate, SpinEnergy,
-    SpinReport, StepSetting, Top,
+    SpinReport, StepSetting, Top, VERTICAL_SIN,
 };
 pub use run::{Conservation, Crossing, SpinIntegrator, SpinOptions, SpinRun, SpinSample};
