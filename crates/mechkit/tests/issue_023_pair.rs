@@ -346,14 +346,20 @@ t_max = 5.0
 }
 
 #[test]
-fn bodies_at_one_point_stop_the_run_with_a_diagnosis() {
+fn bodies_at_one_point_are_refused_when_the_file_is_read() {
+    // the run stopped at its first evaluation (exit 1, no location); the start is checked
+    // when the file is read, with the run's own diagnosis, located at the body's position
     let text = dimer(1.5, 2).replace("position = [1.5, 0.0]", "position = [0.0, 0.0]");
-    let s = run(&text);
-    assert_eq!(s.stop_reason, "diverged");
-    assert_eq!(s.steps, 0);
-    let d = s.divergence.expect("a diagnosis");
-    assert!(d.message.contains("`lj`"), "{}", d.message);
-    assert!(d.message.contains("b at (0, 0) m"), "{}", d.message);
+    let e = error(&text);
+    assert_eq!(e.kind, ErrorKind::Invalid);
+    assert!(e.message.contains("`lj`"), "{e}");
+    assert!(e.message.contains("b at (0, 0) m"), "{e}");
+    let line = text
+        .lines()
+        .position(|l| l.starts_with("position"))
+        .expect("a position")
+        + 1;
+    assert_eq!(at(&e), (line, 12));
 }
 
 const BASE: &str = r#"

@@ -238,3 +238,40 @@ fn issue_026_an_output_interval_asking_for_1e300_rows_is_refused_at_the_interval
     dir.run(&["check", "s.toml"])
         .assert_bad_input(&[&at, "1e300 output times", "larger interval"]);
 }
+
+/// A body started where a force has no value (an orbit at the attracting centre, two bodies of
+/// a pair force at one place) is refused when the file is read, located at the body's
+/// position: it stopped at the run's first evaluation with exit 1 and no location, and
+/// `check` said ok. A body off the centre by a metre still runs.
+#[test]
+fn issue_026_a_body_started_at_a_singular_point_of_a_force_is_refused_at_its_position() {
+    let dir = Dir::new();
+    let orbit = |x: &str| {
+        format!(
+            "dimensions = 2\n[[body]]\nname = \"probe\"\nmass = \"1 kg\"\nposition = [\"{x}\", \"0 m\"]\nvelocity = [\"0 m/s\", \"1 m/s\"]\n[[force]]\nname = \"sun\"\nkind = \"newtonian-gravity\"\nGM = \"1 m^3/s^2\"\ncenter = [\"0 m\", \"0 m\"]\n[integrator]\nmethod = \"rk4\"\ndt = \"1 ms\"\n[stop]\nt_max = \"0.1 s\"\n"
+        )
+    };
+    dir.create("centre.toml", &orbit("0 m"));
+    for args in [
+        &["check", "centre.toml"][..],
+        &["run", "centre.toml", "--out", "out"],
+    ] {
+        dir.run(args).assert_bad_input(&[
+            "centre.toml:5:12",
+            "at the start (t = 0) the force `sun` on `probe` is NaN",
+            "probe at position (0, 0) m",
+            "hint:",
+            "move the body",
+        ]);
+    }
+    dir.create("off.toml", &orbit("1 m"));
+    dir.run(&["check", "off.toml"]).assert_code(0);
+
+    let pair = "dimensions = 2\n[[body]]\nname = \"a\"\nmass = \"1 kg\"\nposition = [\"0 m\", \"0 m\"]\n[[body]]\nname = \"b\"\nmass = \"1 kg\"\nposition = [\"0 m\", \"0 m\"]\n[[force]]\nname = \"bond\"\nkind = \"pair\"\nbetween = \"all\"\nU = \"-1/r\"\n[integrator]\nmethod = \"rk4\"\ndt = \"1 ms\"\n[stop]\nt_max = \"0.1 s\"\n";
+    dir.create("pair.toml", pair);
+    dir.run(&["check", "pair.toml"]).assert_bad_input(&[
+        "pair.toml:5:12",
+        "the force `bond` on `a`",
+        "the other bodies: b at (0, 0) m",
+    ]);
+}

@@ -178,7 +178,8 @@ pub(crate) fn build_with(
                 .any(|m| (m - value).abs() > 1e-12 * value.abs())
         {
             warnings.push(format!(
-                "the constant `m` = {value} kg hides the body mass `m` in formulas, and some body has a different mass"
+                "the constant `m` = {} kg hides the body mass `m` in formulas, and some body has a different mass",
+                crate::error::short(*value)
             ));
         }
     }
@@ -245,6 +246,8 @@ pub(crate) fn build_with(
     let mut v = v;
     q.extend(&rockets.q);
     v.extend(&rockets.v);
+    let initial = State::from_qv(0.0, &q, &v);
+    super::start::check_start(&root, &system, &initial)?;
 
     let env = ValueEnv {
         constants: &constants,
@@ -268,7 +271,7 @@ pub(crate) fn build_with(
             dim,
             constants,
             system,
-            initial: State::from_qv(0.0, &q, &v),
+            initial,
             stepping,
             bodies,
             forces: force_names,

@@ -61,6 +61,7 @@ mod provenance;
 mod rigid;
 mod rocket;
 mod run;
+mod start;
 mod stop;
 mod summary;
 pub mod sweep;

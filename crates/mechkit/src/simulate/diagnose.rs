@@ -50,6 +50,76 @@ pub(crate) fn diagnose_state(
     }
 }
 
+/// A force with a component that is not a number at a state: which force, on which body, and
+/// where the bodies are.
+pub(crate) struct BadForce {
+    /// The force's name.
+    pub force: String,
+    /// The body (its index) whose component is not finite.
+    pub body: usize,
+    /// `x`, `y` or `z`.
+    pub axis: &'static str,
+    /// The component.
+    pub value: Real,
+    /// `ball at position (0, 0) m and velocity (1, 0) m/s (the other bodies: sun at (0, 0) m)`.
+    pub situation: String,
+}
+
+/// The first force with a component that is not finite at `state` (forces in their order,
+/// components in theirs), with where the bodies are.
+pub(crate) fn non_finite_force(sys: &ParticleSystem, state: &State) -> Option<BadForce> {
+    let (q, v) = state.qv();
+    let k = sys.kinematics(state.t, q, v);
+    let dim = sys.dim();
+    let mut f = vec![0.0; q.len()];
+    for force in sys.forces().iter() {
+        f.fill(0.0);
+        force.add_forces(&k, &mut f);
+        let Some(i) = f.iter().position(|x| !x.is_finite()) else {
+            continue;
+        };
+        let body = i / dim;
+        let name = &sys.bodies()[body].name;
+        let pos = vector(k.position(body), "m");
+        let vel = vector(k.velocity(body), "m/s");
+        // A force on one body may depend on the others (a pair force, `other.x` in a
+        // formula): show where they all are.
+        let others: Vec<String> = sys
+            .bodies()
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| *j != body)
+            .take(6)
+            .map(|(j, b)| format!("{} at {}", b.name, vector(k.position(j), "m")))
+            .collect();
+        let others = if others.is_empty() {
+            String::new()
+        } else {
+            format!(" (the other bodies: {})", others.join(", "))
+        };
+        return Some(BadForce {
+            force: force.name().to_string(),
+            body,
+            axis: ["x", "y", "z"][i % dim],
+            value: f[i],
+            situation: format!("{name} at position {pos} and velocity {vel}{others}"),
+        });
+    }
+    None
+}
+
+/// The first force whose potential energy is not finite at `state`: its name and the value.
+pub(crate) fn non_finite_potential(sys: &ParticleSystem, state: &State) -> Option<(String, Real)> {
+    let (q, v) = state.qv();
+    let k = sys.kinematics(state.t, q, v);
+    sys.forces().iter().find_map(|force| {
+        force
+            .potential(&k)
+            .filter(|u| !u.is_finite())
+            .map(|u| (force.name().to_string(), u))
+    })
+}
+
 /// Checks an evaluation for non-finite values and names the force responsible.
 pub(crate) fn diagnose_evaluation(
     sys: &ParticleSystem,
@@ -64,60 +134,35 @@ pub(crate) fn diagnose_evaluation(
     if finite {
         return None;
     }
-    let (q, v) = state.qv();
-    let k = sys.kinematics(state.t, q, v);
-    let dim = sys.dim();
-    let mut f = vec![0.0; q.len()];
-    for force in sys.forces().iter() {
-        f.fill(0.0);
-        force.add_forces(&k, &mut f);
-        if let Some(i) = f.iter().position(|x| !x.is_finite()) {
-            let body = &sys.bodies()[i / dim].name;
-            let axis = ["x", "y", "z"][i % dim];
-            let pos = vector(k.position(i / dim), "m");
-            let vel = vector(k.velocity(i / dim), "m/s");
-            // A force on one body may depend on the others (a pair force, `other.x` in a
-            // formula): show where they all are.
-            let others: Vec<String> = sys
-                .bodies()
-                .iter()
-                .enumerate()
-                .filter(|(j, _)| *j != i / dim)
-                .take(6)
-                .map(|(j, b)| format!("{} at {}", b.name, vector(k.position(j), "m")))
-                .collect();
-            let others = if others.is_empty() {
-                String::new()
-            } else {
-                format!(" (the other bodies: {})", others.join(", "))
-            };
-            return Some(Divergence {
-                t: state.t,
-                step,
-                quantity: format!("force `{}` on {body} ({axis} component)", force.name()),
-                value: f[i],
-                message: format!(
-                    "at t = {} s the force `{}` on {body} is {} ({axis} component), with {body} at position {pos} and velocity {vel}{others}: a division by zero or a value outside a function's domain (sqrt, log of a negative number) in the force: a body at its singular point (the centre of an inverse-square force, two bodies at one place) or a formula's; check where the bodies start and the force's formula, or end the run before them with an event",
-                    short(state.t),
-                    force.name(),
-                    short(f[i])
-                ),
-            });
-        }
-        if let Some(u) = force.potential(&k).filter(|u| !u.is_finite()) {
-            return Some(Divergence {
-                t: state.t,
-                step,
-                quantity: format!("potential energy of `{}`", force.name()),
-                value: u,
-                message: format!(
-                    "at t = {} s the potential energy of `{}` is {}: the bodies it acts on have reached a singular point (r = 0?)",
-                    short(state.t),
-                    force.name(),
-                    short(u)
-                ),
-            });
-        }
+    if let Some(bad) = non_finite_force(sys, state) {
+        let body = &sys.bodies()[bad.body].name;
+        return Some(Divergence {
+            t: state.t,
+            step,
+            quantity: format!("force `{}` on {body} ({} component)", bad.force, bad.axis),
+            value: bad.value,
+            message: format!(
+                "at t = {} s the force `{}` on {body} is {} ({} component), with {}: a division by zero or a value outside a function's domain (sqrt, log of a negative number) in the force: a body at its singular point (the centre of an inverse-square force, two bodies at one place) or a formula's; check where the bodies start and the force's formula, or end the run before them with an event",
+                short(state.t),
+                bad.force,
+                short(bad.value),
+                bad.axis,
+                bad.situation
+            ),
+        });
+    }
+    if let Some((force, u)) = non_finite_potential(sys, state) {
+        return Some(Divergence {
+            t: state.t,
+            step,
+            quantity: format!("potential energy of `{force}`"),
+            value: u,
+            message: format!(
+                "at t = {} s the potential energy of `{force}` is {}: the bodies it acts on have reached a singular point (r = 0?)",
+                short(state.t),
+                short(u)
+            ),
+        });
     }
     let value = eval.kinetic;
     Some(Divergence {

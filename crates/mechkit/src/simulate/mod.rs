@@ -12,7 +12,7 @@
 mod book;
 mod cancel;
 mod condition;
-mod diagnose;
+pub(crate) mod diagnose;
 mod drive;
 mod event;
 mod fused;

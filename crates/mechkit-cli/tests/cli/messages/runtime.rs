@@ -27,18 +27,6 @@ pub static CASES: &[Case] = &[
     },
     Case {
         area: "run",
-        kind: "pair_bodies_at_one_point",
-        files: &[(
-            "s.toml",
-            Text(
-                "dimensions = 2\n[constants]\nk = \"10 N/m\"\nL = \"1 m\"\n[[body]]\nname = \"a\"\nmass = \"1 kg\"\nposition = [\"0 m\", \"0 m\"]\n[[body]]\nname = \"b\"\nmass = \"1 kg\"\nposition = [\"0 m\", \"0 m\"]\n[[force]]\nname = \"bond\"\nkind = \"pair\"\nbetween = [\"a\", \"b\"]\nU = \"k*(r - L)^2/2\"\n[integrator]\nmethod = \"rk4\"\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n",
-            ),
-        )],
-        args: &["run", "s.toml", "--out", "out", "--no-plots"],
-        code: 1,
-    },
-    Case {
-        area: "run",
         kind: "step_too_small",
         files: &[(
             "s.toml",

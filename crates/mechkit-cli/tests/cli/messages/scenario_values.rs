@@ -46,6 +46,18 @@ pub static CASES: &[Case] = &[
     },
     Case {
         area: "scenario value",
+        kind: "bodies_at_a_pair_forces_singular_point",
+        files: &[(
+            "s.toml",
+            Text(
+                "dimensions = 2\n[constants]\nk = \"10 N/m\"\nL = \"1 m\"\n[[body]]\nname = \"a\"\nmass = \"1 kg\"\nposition = [\"0 m\", \"0 m\"]\n[[body]]\nname = \"b\"\nmass = \"1 kg\"\nposition = [\"0 m\", \"0 m\"]\n[[force]]\nname = \"bond\"\nkind = \"pair\"\nbetween = [\"a\", \"b\"]\nU = \"k*(r - L)^2/2\"\n[integrator]\nmethod = \"rk4\"\ndt = \"1 ms\"\n[stop]\nt_max = \"1 s\"\n",
+            ),
+        )],
+        args: &["run", "s.toml", "--out", "out", "--no-plots"],
+        code: 2,
+    },
+    Case {
+        area: "scenario value",
         kind: "negative_gravity",
         files: &[(
             "s.toml",
