@@ -31,7 +31,7 @@ pub enum Input {
 #[non_exhaustive]
 pub enum RocketError {
     /// A mass that is not positive and finite.
-    #[error("{which} is {value} kg; masses must be positive and finite")]
+    #[error("{which} is {} kg; masses must be positive and finite", crate::error::short(*value))]
     Mass {
         /// Which input: [`Input::IgnitionMass`] or [`Input::BurnoutMass`].
         input: Input,
@@ -42,7 +42,9 @@ pub enum RocketError {
     },
     /// The burnout mass is not below the mass at ignition.
     #[error(
-        "the burnout mass m1 = {m1} kg must be below the mass at ignition m0 = {m0} kg (the difference is the propellant)"
+        "the burnout mass m1 = {} kg must be below the mass at ignition m0 = {} kg (the difference is the propellant)",
+        crate::error::short(*m1),
+        crate::error::short(*m0)
     )]
     Burnout {
         /// Mass at ignition.
@@ -51,27 +53,49 @@ pub enum RocketError {
         m1: Real,
     },
     /// A mass rate that is not positive and finite.
-    #[error("the mass rate is {value} kg/s; it must be positive (the mass ejected per second)")]
+    #[error(
+        "the mass rate is {} kg/s; it must be positive (the mass ejected per second)",
+        crate::error::short(*value)
+    )]
     MassRate {
         /// The value.
         value: Real,
     },
+    /// A burn that lasts longer than any time a double holds: `(m0 − m1)/ṁ` overflows.
+    #[error(
+        "the burn lasts (m0 − m1)/ṁ = {} kg / {} kg/s, longer than any time a double holds; the mass rate must be larger",
+        crate::error::short(*propellant),
+        crate::error::short(*mass_rate)
+    )]
+    BurnTime {
+        /// The propellant, `m0 − m1` (kg).
+        propellant: Real,
+        /// The mass rate (kg/s).
+        mass_rate: Real,
+    },
     /// An exhaust speed that is not positive and finite.
     #[error(
-        "the exhaust speed is {value} m/s; it must be positive (the speed of the exhaust relative to the rocket)"
+        "the exhaust speed is {} m/s; it must be positive (the speed of the exhaust relative to the rocket)",
+        crate::error::short(*value)
     )]
     ExhaustSpeed {
         /// The value.
         value: Real,
     },
     /// A negative or non-finite gravity.
-    #[error("g is {value} m/s²; it must be 0 (free space) or positive (pointing down)")]
+    #[error(
+        "g is {} m/s²; it must be 0 (free space) or positive (pointing down)",
+        crate::error::short(*value)
+    )]
     Gravity {
         /// The value.
         value: Real,
     },
     /// A negative or non-finite drag coefficient.
-    #[error("the drag coefficient D is {value} kg/m; it must be zero or positive (F = −D v|v|)")]
+    #[error(
+        "the drag coefficient D is {} kg/m; it must be zero or positive (F = −D v|v|)",
+        crate::error::short(*value)
+    )]
     Drag {
         /// The value.
         value: Real,
@@ -96,7 +120,7 @@ impl RocketError {
         Some(match self {
             RocketError::Mass { input, .. } => *input,
             RocketError::Burnout { .. } => Input::BurnoutMass,
-            RocketError::MassRate { .. } => Input::MassRate,
+            RocketError::MassRate { .. } | RocketError::BurnTime { .. } => Input::MassRate,
             RocketError::ExhaustSpeed { .. } => Input::ExhaustSpeed,
             RocketError::Gravity { .. } => Input::Gravity,
             RocketError::Drag { .. } => Input::Drag,

@@ -105,6 +105,12 @@ impl Rocket {
                 value: self.mass_rate,
             });
         }
+        if !self.burn_time().is_finite() {
+            return Err(RocketError::BurnTime {
+                propellant: self.m0 - self.m1,
+                mass_rate: self.mass_rate,
+            });
+        }
         if !positive(self.exhaust_speed) {
             return Err(RocketError::ExhaustSpeed {
                 value: self.exhaust_speed,
@@ -291,6 +297,14 @@ mod tests {
         assert!(ok.with_drag(Real::NAN).is_err());
         assert!(Rocket::new(2.0, 1.0, -1.0, 1.0).is_err());
         assert!(Rocket::new(2.0, 1.0, 1.0, 0.0).is_err());
+        // a burn of 1e600 s: the run had failed with "the step size fell to inf at t = 1.1e308"
+        let endless = Rocket::new(1e300, 1.0, 1e-300, 1.0).unwrap_err();
+        assert!(matches!(endless, RocketError::BurnTime { .. }));
+        assert_eq!(endless.input(), Some(Input::MassRate));
+        assert!(
+            endless.to_string().contains("1e300 kg / 1e-300 kg/s"),
+            "{endless}"
+        );
         assert_eq!(ok.apex(), None);
     }
 }
