@@ -50,7 +50,7 @@ impl Tok {
     /// How the token reads in an error message.
     pub fn describe(&self) -> String {
         match self {
-            Tok::Num(x) => format!("number `{x}`"),
+            Tok::Num(x) => format!("number `{}`", crate::short_number(*x)),
             Tok::Ident(s) => format!("name `{s}`"),
             Tok::Plus => "`+`".into(),
             Tok::Minus => "`-`".into(),

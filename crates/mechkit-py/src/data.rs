@@ -67,9 +67,9 @@ fn increasing(values: &[f64], name: &str) -> PyResult<()> {
         Some(i) => Err(error(format!(
             "{name} must increase strictly, but {name}[{i}] = {} follows {name}[{}] = {}; sort \
              the samples by {name} and remove or average repeated values",
-            values[i],
+            mechkit::expr::short_number(values[i]),
             i - 1,
-            values[i - 1]
+            mechkit::expr::short_number(values[i - 1])
         ))),
         None => Ok(()),
     }
@@ -95,7 +95,8 @@ fn with_samples<T: Send>(
     } else {
         if !(dx.is_finite() && dx > 0.0) {
             return Err(error(format!(
-                "dx must be a positive finite number, not {dx}"
+                "dx must be a positive finite number, not {}",
+                mechkit::expr::short_number(dx)
             )));
         }
         grid = (0..ys.len()).map(|i| i as f64 * dx).collect();

@@ -196,7 +196,8 @@ fn raster(obj: &Bound<'_, PyAny>) -> PyResult<Raster> {
             let floats = floats.as_array();
             if let Some(v) = floats.iter().find(|v| !(0.0..=1.0).contains(*v)) {
                 return Err(error(format!(
-                    "image array: a float array holds values from 0 to 1, not {v}; for levels 0 to 255 give a uint8 array (array.astype(numpy.uint8))"
+                    "image array: a float array holds values from 0 to 1, not {}; for levels 0 to 255 give a uint8 array (array.astype(numpy.uint8))",
+                    mechkit::expr::short_number(*v)
                 )));
             }
             floats.iter().map(|&v| Raster::level(v)).collect()

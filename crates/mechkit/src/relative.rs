@@ -27,15 +27,16 @@ use crate::Real;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum RelativeError {
     /// The speed is not positive and finite.
-    #[error("the speed relative to the medium must be positive and finite, not {0}")]
+    #[error("the speed relative to the medium must be positive and finite, not {}", crate::error::short(*.0))]
     Speed(Real),
     /// The track direction has no length (or is not finite).
     #[error("the direction of travel has no length: give a direction such as [0, 1] (north)")]
     Track,
     /// The current across the track is faster than the craft.
     #[error(
-        "the current across the track ({} m/s) is faster than the craft moves through the medium ({speed} m/s): no heading keeps it on the track",
-        across.abs()
+        "the current across the track ({} m/s) is faster than the craft moves through the medium ({} m/s): no heading keeps it on the track",
+        crate::error::short(across.abs()),
+        crate::error::short(*speed)
     )]
     TooMuchCross {
         /// The component of the current across the track.
@@ -53,7 +54,8 @@ pub enum RelativeError {
     },
     /// The craft can hold the track's line but is carried backwards along it.
     #[error(
-        "on the track's line the ground speed would be {ground_speed} m/s: the current against the track is stronger than the craft can make up"
+        "on the track's line the ground speed would be {} m/s: the current against the track is stronger than the craft can make up",
+        crate::error::short(*ground_speed)
     )]
     NoProgress {
         /// The (non-positive) ground speed along the track.

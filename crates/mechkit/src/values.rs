@@ -414,7 +414,10 @@ pub fn pixels_to_length(px: Real, length: Real, what: &str) -> Result<Real, Valu
     } else {
         Err(fail(
             what,
-            format!("{what}: the number of pixels must be positive, not {px}"),
+            format!(
+                "{what}: the number of pixels must be positive, not {}",
+                crate::error::short(px)
+            ),
         ))
     }
 }

@@ -236,7 +236,7 @@ fn push_text(svg: &mut String, text: &Text) {
 /// `t = 1.234 s`, or `t = ? s` when `t` is not finite (as the HTML player writes it).
 fn time_stamp(t: f64) -> String {
     if t.is_finite() {
-        format!("t = {t:.3} s")
+        format!("t = {} s", mechkit::expr::short_fixed(t, 3))
     } else {
         "t = ? s".into()
     }

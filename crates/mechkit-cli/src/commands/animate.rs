@@ -110,8 +110,10 @@ pub fn animate(args: &AnimateArgs) -> Result<Outcome> {
     };
     report(args.report, &written, || {
         let mut text = format!(
-            "{} frames at {} frames/s ({:.3} simulated s per s)\n",
-            written.frames, written.fps, written.speed
+            "{} frames at {} frames/s ({} simulated s per s)\n",
+            written.frames,
+            mechkit::expr::short_number(written.fps),
+            mechkit::expr::short_fixed(written.speed, 3)
         );
         for f in &written.files {
             text.push_str("wrote ");

@@ -299,7 +299,7 @@ fn system_text(s: &SystemSolution) -> String {
             if !s.solution.iter().all(|(_, v)| plain(v)) {
                 wr!(text, "numerically with {given}:\n");
                 for (k, v) in values {
-                    wr!(text, "  {k} = {v}\n");
+                    wr!(text, "  {k} = {}\n", mechkit::expr::short_number(*v));
                 }
             }
         }
@@ -353,6 +353,10 @@ fn equation_text(s: &Solution) -> String {
         }
         None if s.root_bound.is_some() => {
             let (a, b) = s.interval.unwrap_or_default();
+            let (a, b) = (
+                mechkit::expr::short_number(a),
+                mechkit::expr::short_number(b),
+            );
             wr!(
                 out,
                 "real roots of {} = 0 for {x} (all of them: every real root lies in [{a}, {b}], \
@@ -362,6 +366,10 @@ fn equation_text(s: &Solution) -> String {
         }
         _ => {
             let (a, b) = s.interval.unwrap_or_default();
+            let (a, b) = (
+                mechkit::expr::short_number(a),
+                mechkit::expr::short_number(b),
+            );
             if s.numeric.is_empty() {
                 wr!(
                     out,
@@ -389,7 +397,7 @@ fn equation_text(s: &Solution) -> String {
             wr!(out, "numerically{given}:\n");
         }
         for v in &s.numeric {
-            wr!(out, "  {x} = {v}\n");
+            wr!(out, "  {x} = {}\n", mechkit::expr::short_number(*v));
         }
     }
     out

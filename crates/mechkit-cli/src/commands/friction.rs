@@ -14,7 +14,7 @@ use mechkit::rigid::friction::{
     Coulomb, FrictionError, FrictionReport, Incline, SpringBlock, StickSlipReport,
 };
 
-use super::input::{quantity, show};
+use super::input::{fixed, quantity, show};
 use super::outputs::{create_dir, write_plots, write_table};
 use super::{Outcome, note, report};
 use crate::args::FrictionArgs;
@@ -298,7 +298,7 @@ fn stick_slip_text(out: &mut String, r: &StickSlipReport, args: &FrictionArgs) {
     );
     for (i, p) in r.phases.iter().enumerate().take(TABLE_ROWS) {
         let (closed, diff) = match (p.ended_by, p.t_end_closed_form) {
-            ("switch", Some(t)) => (format!("{t:.9}"), format!("{:+.1e}", p.t_end - t)),
+            ("switch", Some(t)) => (fixed(t, 9), format!("{:+.1e}", p.t_end - t)),
             ("t_max", _) => ("(t_max)".to_string(), String::new()),
             _ => ("-".to_string(), String::new()),
         };
@@ -309,11 +309,11 @@ fn stick_slip_text(out: &mut String, r: &StickSlipReport, args: &FrictionArgs) {
         };
         let _ = writeln!(
             out,
-            "  {:<4} {:<6} {:>14.9} {:>14.9} {closed:>14} {diff:>10} {slid:>14}",
+            "  {:<4} {:<6} {:>14} {:>14} {closed:>14} {diff:>10} {slid:>14}",
             i + 1,
             p.regime,
-            p.t_start,
-            p.t_end
+            fixed(p.t_start, 9),
+            fixed(p.t_end, 9)
         );
     }
     if r.phases.len() > TABLE_ROWS {

@@ -186,7 +186,7 @@ fn text(r: &RocketReport, args: &RocketArgs) -> String {
         "simulation: dopri5 at rtol {:e}, steps up to {} s: {} steps ({} rejected), {} evaluations",
         args.rtol,
         if h_max >= 0.01 {
-            format!("{h_max:.3}")
+            mechkit::expr::short_fixed(h_max, 3)
         } else {
             format!("{h_max:.3e}")
         },

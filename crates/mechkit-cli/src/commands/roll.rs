@@ -12,7 +12,7 @@ use mechkit::rigid::Input;
 use mechkit::rigid::rolling::{PhaseMotion, RollReport, RollingBody, RollingError, RollingMotion};
 
 use super::friction::{angle, coefficients, sig};
-use super::input::quantity;
+use super::input::{fixed, quantity};
 use super::outputs::{create_dir, write_plots, write_table};
 use super::{Outcome, note, report};
 use crate::args::RollArgs;
@@ -214,12 +214,16 @@ fn text(r: &RollReport, args: &RollArgs) -> String {
             );
             let _ = writeln!(
                 out,
-                "  time [s]          {t:<22.15} {tc:<22.15} {:+.1e}",
+                "  time [s]          {:<22} {:<22} {:+.1e}",
+                fixed(t, 15),
+                fixed(tc, 15),
                 t - tc
             );
             let _ = writeln!(
                 out,
-                "  speed [m/s]       {v:<22.15} {vc:<22.15} {:+.1e}",
+                "  speed [m/s]       {:<22} {:<22} {:+.1e}",
+                fixed(v, 15),
+                fixed(vc, 15),
                 v - vc
             );
         }

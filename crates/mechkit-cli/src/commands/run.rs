@@ -277,7 +277,11 @@ impl ProgressBar {
                     let frac = (t / t_max).clamp(0.0, 1.0);
                     #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
                     b.set_position((frac * 1000.0) as u64);
-                    b.set_message(format!("{t:.4} s of {t_max} s"));
+                    b.set_message(format!(
+                        "{} s of {} s",
+                        mechkit::expr::short_fixed(t, 4),
+                        show(t_max)
+                    ));
                 }
             }
             if let Some(b) = bar {

@@ -81,9 +81,9 @@ pub fn field_work(args: &WorkArgs, field: &str) -> Result<Outcome> {
 fn text(w: &FieldWork) -> String {
     let mut out = format!(
         "W = ∫F·dr = {} ± {:.1e} along a path of length {}{}\n",
-        w.work,
+        mechkit::expr::short_number(w.work),
         w.error,
-        w.length,
+        mechkit::expr::short_number(w.length),
         if w.closed { " (closed)" } else { "" }
     );
     let curl: Vec<String> = w.curl.iter().map(ToString::to_string).collect();

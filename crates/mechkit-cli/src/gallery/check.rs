@@ -137,7 +137,9 @@ impl Family {
             let nearest = self.offset + n * self.step;
             if (x - nearest).abs() > tol.max(f64::EPSILON * x.abs()) {
                 return Err(format!(
-                    "{x} is not of the pattern (nearest member {nearest})"
+                    "{} is not of the pattern (nearest member {})",
+                    mechkit::expr::short_number(x),
+                    mechkit::expr::short_number(nearest)
                 ));
             }
         }

@@ -224,18 +224,21 @@ fn stopped_early(
     match s.stop_reason.as_str() {
         "interrupted" if ran_for >= limit.mul_f64(0.99) => Some(format!(
             "the run reached the server's time limit of {} s (--max-run-seconds) at t = {} s: {held}",
-            limit.as_secs_f64(),
-            s.t_end
+            mechkit::expr::short_number(limit.as_secs_f64()),
+            mechkit::expr::short_number(s.t_end)
         )),
-        "interrupted" => Some(format!("the run was stopped at t = {} s: {held}", s.t_end)),
+        "interrupted" => Some(format!(
+            "the run was stopped at t = {} s: {held}",
+            mechkit::expr::short_number(s.t_end)
+        )),
         "output_limit" => Some(format!(
             "the run stopped at t = {} s because its output reached the limit ({}): {held}",
-            s.t_end,
+            mechkit::expr::short_number(s.t_end),
             format_size(scenario.max_output)
         )),
         "output_error" => Some(format!(
             "the run stopped at t = {} s because its output could not be written",
-            s.t_end
+            mechkit::expr::short_number(s.t_end)
         )),
         _ if out.failed() => {
             let what = match s.stop_reason.as_str() {

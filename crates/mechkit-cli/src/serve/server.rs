@@ -154,7 +154,7 @@ fn limits(args: &ServeArgs) -> Result<Limits> {
         .ok_or_else(|| {
             anyhow!(
                 "--max-run-seconds must be a positive number of seconds, not {}",
-                args.max_run_seconds
+                mechkit::expr::short_number(args.max_run_seconds)
             )
         })?;
     let output = parse_size(&args.max_output).map_err(|e| anyhow!("--max-output: {e}"))?;

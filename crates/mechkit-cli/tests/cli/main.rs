@@ -57,6 +57,7 @@ mod issue_026_answers;
 mod issue_026_integrity;
 mod issue_026_integrity_signals;
 mod issue_026_messages;
+mod issue_026_numbers;
 mod issue_027_solve;
 mod limits;
 mod mass;

@@ -263,9 +263,15 @@ impl From<f64> for Interval {
 }
 
 impl fmt::Display for Interval {
-    /// `[lo, hi]`, each end printed as `f64`'s `Display` does (shortest round-trip).
+    /// `[lo, hi]`, each end in shortest round-trip digits, in exponent form outside
+    /// `1e-4 ≤ |x| < 1e16` ([`crate::short_number`]).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "[{}, {}]", self.lo, self.hi)
+        write!(
+            f,
+            "[{}, {}]",
+            crate::short_number(self.lo),
+            crate::short_number(self.hi)
+        )
     }
 }
 

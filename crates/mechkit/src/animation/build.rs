@@ -134,7 +134,7 @@ fn frame_times(
     if !(options.fps.is_finite() && (1.0..=120.0).contains(&options.fps)) {
         return Err(AnimationError::Option(format!(
             "the frame rate {} is not from 1 to 120 frames per second",
-            options.fps
+            crate::error::short(options.fps)
         )));
     }
     let duration = (t1 - t0).max(0.0);
@@ -142,7 +142,8 @@ fn frame_times(
         Some(s) if s.is_finite() && s > 0.0 => s,
         Some(s) => {
             return Err(AnimationError::Option(format!(
-                "the speed {s} is not a positive number of simulated seconds per second"
+                "the speed {} is not a positive number of simulated seconds per second",
+                crate::error::short(s)
             )));
         }
         None if duration > 0.0 => duration / duration.clamp(PLAYBACK.0, PLAYBACK.1),

@@ -300,7 +300,8 @@ pub fn rule_estimates(
         .ok_or_else(|| {
             CalculusError::Invalid(format!(
                 "`{text}` could not be integrated from {} to {} to compare the rules with",
-                limits.0, limits.1
+                crate::error::short(limits.0),
+                crate::error::short(limits.1)
             ))
         })?;
     Ok((exact, estimates(&f, limits, exact, rules, ns)?))
@@ -417,7 +418,8 @@ pub fn integration(
             .ok_or_else(|| {
                 CalculusError::Invalid(format!(
                     "`{text}` could not be integrated from {} to {} to compare the rules with",
-                    lim.0, lim.1
+                    crate::error::short(lim.0),
+                    crate::error::short(lim.1)
                 ))
             })?;
         rows = Some(estimates(&f, lim, exact, rules, ns)?);

@@ -31,8 +31,10 @@ pub enum DerivError {
     },
     /// A time that does not exceed the one before (repeated, out of order, or NaN).
     #[error(
-        "t must increase strictly, but t[{index}] = {value} follows t[{previous_index}] = \
-         {previous}; sort the samples by time and remove or average repeated times"
+        "t must increase strictly, but t[{index}] = {} follows t[{previous_index}] = \
+         {}; sort the samples by time and remove or average repeated times",
+        crate::error::short(*value),
+        crate::error::short(*previous)
     )]
     NotIncreasing {
         /// Position of the offending time.
@@ -70,10 +72,12 @@ pub enum DerivError {
     },
     /// Samples that are not evenly spaced, where a method needs them to be.
     #[error(
-        "the samples are not evenly spaced: t[{}] - t[{index}] = {step}, but the average step \
-         is {expected}; Savitzky-Golay filters need a uniform step: resample the data onto a \
+        "the samples are not evenly spaced: t[{}] - t[{index}] = {}, but the average step \
+         is {}; Savitzky-Golay filters need a uniform step: resample the data onto a \
          uniform grid, or use plain differences (method `central`)",
-        .index + 1
+        .index + 1,
+        crate::error::short(*step),
+        crate::error::short(*expected)
     )]
     NotUniform {
         /// Position of the first uneven step's start.

@@ -295,14 +295,22 @@ fn release(
     if r.mass.is_nan() || r.mass <= 0.0 {
         return Err(InputError::new(
             Input::Mass,
-            format!("the mass must be positive, not {}", r.mass),
+            format!(
+                "the mass must be positive, not {}",
+                crate::error::short(r.mass)
+            ),
         )
         .into());
     }
     if !(a..=b).contains(&r.x0) {
         return Err(InputError::new(
             Input::StartPosition,
-            format!("the start {} is outside the range {a}:{b}", r.x0),
+            format!(
+                "the start {} is outside the range {}:{}",
+                crate::error::short(r.x0),
+                crate::error::short(a),
+                crate::error::short(b)
+            ),
         )
         .into());
     }

@@ -48,7 +48,7 @@ impl PotentialAnalysis {
         if let Some(c) = &d.energy {
             plot.series.push(
                 Series::line(
-                    format!("E = {:.6}", c.energy),
+                    format!("E = {}", mechkit_expr::short_fixed(c.energy, 6)),
                     vec![(lo, c.energy), (hi, c.energy)],
                 )
                 .styled(LineStyle::Dashed),
@@ -89,7 +89,10 @@ impl PotentialAnalysis {
         let x = &self.var;
         Some(
             PlotData::new(
-                format!("speed from the work-energy theorem, m = {}", m.mass),
+                format!(
+                    "speed from the work-energy theorem, m = {}",
+                    crate::error::short(m.mass)
+                ),
                 format!("v_{x}"),
                 AxisUnits::label(x, self.units.x.as_deref()),
                 AxisUnits::label("v", self.units.speed().as_deref()),

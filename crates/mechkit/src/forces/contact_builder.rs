@@ -43,7 +43,7 @@ pub enum ContactError {
     #[error("the contact `{0}` has no law (linear or hertz)")]
     NoLaw(String),
     /// Stiffness not positive and finite.
-    #[error("the contact stiffness must be positive and finite, not {0}")]
+    #[error("the contact stiffness must be positive and finite, not {}", crate::error::short(*.0))]
     BadStiffness(Real),
     /// A damping coefficient negative or not finite.
     #[error("the contact damping `{name}` must be non-negative and finite, not {}", crate::error::short(*value))]

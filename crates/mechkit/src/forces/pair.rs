@@ -28,10 +28,13 @@ pub enum PairError {
     #[error("the potential uses `{0}`, which is neither the separation nor a constant")]
     UndefinedName(String),
     /// The cut-off is not a positive finite length.
-    #[error("the cut-off must be positive and finite, not {0}")]
+    #[error("the cut-off must be positive and finite, not {}", crate::error::short(*.0))]
     BadCutoff(Real),
     /// The potential is not finite at the cut-off (it could not be shifted).
-    #[error("the potential is {value} at the cut-off r = {cutoff}, not a finite number")]
+    #[error(
+        "the potential is {value} at the cut-off r = {}, not a finite number",
+        crate::error::short(*cutoff)
+    )]
     NotFiniteAtCutoff {
         /// The cut-off.
         cutoff: Real,

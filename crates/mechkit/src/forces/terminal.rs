@@ -66,7 +66,7 @@ impl DragLaw {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum TerminalError {
     /// The terminal speed is not positive and finite.
-    #[error("the terminal speed must be positive and finite, not {0} m/s")]
+    #[error("the terminal speed must be positive and finite, not {} m/s", crate::error::short(*.0))]
     Speed(Real),
     /// A quantity that must be positive is not.
     #[error("{what} must be positive and finite, not {}", crate::error::short(*value))]
@@ -83,7 +83,11 @@ pub enum TerminalError {
     #[error("the times must increase (sample {0})")]
     Unordered(usize),
     /// No sample at or after the time the fit should start from.
-    #[error("no sample at or after t = {from} s (the data end at t = {last} s)")]
+    #[error(
+        "no sample at or after t = {} s (the data end at t = {} s)",
+        crate::error::short(*from),
+        crate::error::short(*last)
+    )]
     NothingAfter {
         /// The time asked for (s).
         from: Real,

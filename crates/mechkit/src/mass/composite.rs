@@ -94,8 +94,9 @@ impl Part {
                     "density"
                 };
                 return Err(MassError::Invalid(format!(
-                    "part `{}`: the {what} is {x}; it must be positive (use `hole = true` to remove material)",
-                    self.name
+                    "part `{}`: the {what} is {}; it must be positive (use `hole = true` to remove material)",
+                    self.name,
+                    crate::error::short(x)
                 )));
             }
         };

@@ -39,7 +39,9 @@ pub use shapes::{Extent, Shape};
 pub enum MassError {
     /// The parts add up to no mass (holes as large as the body), or there are no parts.
     #[error(
-        "the total mass is {total} kg, though the parts without their signs add up to {gross} kg: the holes cancel the body, or there is nothing; check which parts have `hole = true` and that each hole is smaller than the body it is cut from"
+        "the total mass is {} kg, though the parts without their signs add up to {} kg: the holes cancel the body, or there is nothing; check which parts have `hole = true` and that each hole is smaller than the body it is cut from",
+        crate::error::short(*total),
+        crate::error::short(*gross)
     )]
     ZeroMass {
         /// `Σ m` with holes negative.
@@ -74,16 +76,16 @@ pub enum MassError {
     /// An axis direction of zero length.
     #[error(
         "the axis direction ({}, {}, {}) has no length; give a non-zero direction, e.g. 0, 0, 1 for the z axis",
-        direction[0],
-        direction[1],
-        direction[2]
+        crate::error::short(direction[0]),
+        crate::error::short(direction[1]),
+        crate::error::short(direction[2])
     )]
     ZeroAxis {
         /// The direction given.
         direction: [Real; 3],
     },
     /// A total mass to rescale a body to that is not positive and finite.
-    #[error("the total mass is {mass} kg; it must be a positive mass, e.g. 2 kg")]
+    #[error("the total mass is {} kg; it must be a positive mass, e.g. 2 kg", crate::error::short(*mass))]
     TotalMass {
         /// The value.
         mass: Real,

@@ -37,7 +37,7 @@ pub enum PointMassError {
     #[error("no point masses were given")]
     Empty,
     /// A mass that is not positive and finite.
-    #[error("mass {index} is {mass}; masses must be positive")]
+    #[error("mass {index} is {}; masses must be positive", crate::error::short(*mass))]
     Mass {
         /// 1-based index.
         index: usize,

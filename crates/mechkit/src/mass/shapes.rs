@@ -128,7 +128,10 @@ fn positive(shape: &'static str, what: &str, value: Real) -> Result<(), MassErro
     } else {
         Err(MassError::Degenerate {
             shape,
-            reason: format!("the {what} is {value}; it must be positive"),
+            reason: format!(
+                "the {what} is {}; it must be positive",
+                crate::error::short(value)
+            ),
         })
     }
 }
@@ -140,7 +143,9 @@ fn inner(shape: &'static str, radius: Real, inner_radius: Real) -> Result<(), Ma
         Err(MassError::Degenerate {
             shape,
             reason: format!(
-                "the inner radius {inner_radius} must be at least 0 and less than the radius {radius}"
+                "the inner radius {} must be at least 0 and less than the radius {}",
+                crate::error::short(inner_radius),
+                crate::error::short(radius)
             ),
         })
     }
@@ -317,7 +322,8 @@ impl Shape {
                     return Err(MassError::Degenerate {
                         shape: name,
                         reason: format!(
-                            "the opening angle is {angle} rad; it must be above 0 and at most 2π"
+                            "the opening angle is {} rad; it must be above 0 and at most 2π",
+                            crate::error::short(angle)
                         ),
                     });
                 }

@@ -81,7 +81,7 @@ impl std::fmt::Display for MdInput {
 #[non_exhaustive]
 pub enum MdError {
     /// A parameter that must be positive and finite is not.
-    #[error("{input} is {value}; it must be positive and finite")]
+    #[error("{input} is {}; it must be positive and finite", crate::error::short(*value))]
     NotPositive {
         /// Which parameter.
         input: MdInput,
@@ -117,7 +117,7 @@ pub enum MdError {
     /// Two particles at the same place: the pair force between them is infinite.
     #[error(
         "atoms {first} and {second} (counted from 1) are at the same place, ({}, {}, {}): the force between them is infinite",
-        .at[0], .at[1], .at[2]
+        crate::error::short(.at[0]), crate::error::short(.at[1]), crate::error::short(.at[2])
     )]
     Coincident {
         /// The first atom (1-based, in the order given).

@@ -161,9 +161,9 @@ impl SetupError {
                 name(MdOption::Positions),
                 places.0,
                 places.1,
-                at[0],
-                at[1],
-                at[2]
+                crate::error::short(at[0]),
+                crate::error::short(at[1]),
+                crate::error::short(at[2])
             ),
             Self::Velocities {
                 path,

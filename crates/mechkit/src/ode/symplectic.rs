@@ -178,8 +178,10 @@ impl Composition {
         );
         if (sc - 1.0).abs() > 1e-13 || (sd - 1.0).abs() > 1e-13 {
             return Err(format!(
-                "{}: drifts sum to {sc}, kicks to {sd}; both must be 1",
-                self.name
+                "{}: drifts sum to {}, kicks to {}; both must be 1",
+                self.name,
+                crate::error::short(sc),
+                crate::error::short(sd)
             ));
         }
         Ok(())

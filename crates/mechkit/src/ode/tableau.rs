@@ -95,17 +95,27 @@ impl Tableau {
             }
             let sum: Real = row.iter().sum();
             if (sum - self.c[i]).abs() > 1e-13 {
-                return err(format!("row {i} of a sums to {sum}, but c = {}", self.c[i]));
+                return err(format!(
+                    "row {i} of a sums to {}, but c = {}",
+                    crate::error::short(sum),
+                    crate::error::short(self.c[i])
+                ));
             }
         }
         let sb: Real = self.b.iter().sum();
         if (sb - 1.0).abs() > 1e-13 {
-            return err(format!("the weights sum to {sb}, not 1"));
+            return err(format!(
+                "the weights sum to {}, not 1",
+                crate::error::short(sb)
+            ));
         }
         if self.is_adaptive() {
             let se: Real = self.e.iter().sum();
             if se.abs() > 1e-13 {
-                return err(format!("the error weights sum to {se}, not 0"));
+                return err(format!(
+                    "the error weights sum to {}, not 0",
+                    crate::error::short(se)
+                ));
             }
         }
         Ok(())

@@ -92,7 +92,11 @@ pub enum QuadError {
         value: Real,
     },
     /// The subdivision limit was reached; the best estimate is given.
-    #[error("the tolerance was not reached after {panels} panels: {value} ± {error}")]
+    #[error(
+        "the tolerance was not reached after {panels} panels: {} ± {}",
+        super::short(*value),
+        super::short(*error)
+    )]
     NotConverged {
         /// Best value.
         value: Real,

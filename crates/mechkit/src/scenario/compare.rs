@@ -396,7 +396,11 @@ impl Comparison {
             let _ = writeln!(s);
         }
         if let Some(t) = self.reference_event_t {
-            let _ = writeln!(s, "  reference stop event at t = {t} s");
+            let _ = writeln!(
+                s,
+                "  reference stop event at t = {} s",
+                crate::error::short(t)
+            );
         }
         s
     }

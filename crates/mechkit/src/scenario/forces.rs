@@ -279,7 +279,10 @@ pub(crate) fn build_force(
                 if c.is_nan() || c < 0.0 {
                     return Err(t.src.error(
                         ErrorKind::Invalid,
-                        format!("the drag coefficient `{key}` must not be negative (it is {c})"),
+                        format!(
+                            "the drag coefficient `{key}` must not be negative (it is {})",
+                            crate::error::short(c)
+                        ),
                         t.key_span(key),
                     ));
                 }

@@ -57,7 +57,11 @@ fn output_times(t: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<Option<Vec<Real>
                 .src
                 .error(
                     ErrorKind::Invalid,
-                    format!("the output times must increase: {x} s comes after {prev} s"),
+                    format!(
+                        "the output times must increase: {} s comes after {} s",
+                        crate::error::short(x),
+                        crate::error::short(*prev)
+                    ),
                     item.span(),
                 )
                 .with_hint("list the times in increasing order"));

@@ -152,8 +152,9 @@ fn read_rockets(
                 .error(
                     ErrorKind::Invalid,
                     format!(
-                        "`burnout_mass` = {burnout_mass} kg of `{name}` is not below its starting mass {} kg",
-                        masses[b]
+                        "`burnout_mass` = {} kg of `{name}` is not below its starting mass {} kg",
+                        crate::error::short(burnout_mass),
+                        crate::error::short(masses[b])
                     ),
                     t.key_span("burnout_mass"),
                 )

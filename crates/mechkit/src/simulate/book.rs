@@ -112,13 +112,15 @@ impl EventBook {
             self.zeno[i] = (run, te);
             let why = if at_once {
                 Some(format!(
-                    "the event `{}` fired again at t = {te} s right after its own state change there, within {ZENO_ULPS} units in the last place of t (occurrence {count}): its next occurrence came sooner than the run can resolve in time, so its occurrences accumulate at this instant (Zeno behaviour, like a ball bouncing infinitely often before it comes to rest); {ZENO_ADVICE}",
-                    e.name()
+                    "the event `{}` fired again at t = {} s right after its own state change there, within {ZENO_ULPS} units in the last place of t (occurrence {count}): its next occurrence came sooner than the run can resolve in time, so its occurrences accumulate at this instant (Zeno behaviour, like a ball bouncing infinitely often before it comes to rest); {ZENO_ADVICE}",
+                    e.name(),
+                    crate::error::short(te)
                 ))
             } else if run >= ZENO_LIMIT {
                 Some(format!(
-                    "the event `{}` fired {ZENO_LIMIT} times in a row, each within {gap:.1e} s of the last, up to t = {te} s (occurrence {count}): its occurrences accumulate at one instant (Zeno behaviour, like a ball bouncing infinitely often before coming to rest); {ZENO_ADVICE}",
-                    e.name()
+                    "the event `{}` fired {ZENO_LIMIT} times in a row, each within {gap:.1e} s of the last, up to t = {} s (occurrence {count}): its occurrences accumulate at one instant (Zeno behaviour, like a ball bouncing infinitely often before coming to rest); {ZENO_ADVICE}",
+                    e.name(),
+                    crate::error::short(te)
                 ))
             } else {
                 None
@@ -190,7 +192,7 @@ impl EventBook {
                 message: format!(
                     "the state change of the event `{}` at t = {} s made {name} = {}",
                     events[setters[0]].name(),
-                    pre.t,
+                    crate::error::short(pre.t),
                     y_new[i]
                 ),
             });

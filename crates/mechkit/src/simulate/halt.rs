@@ -20,7 +20,8 @@ pub(crate) fn stop_before_step(
 ) -> Option<StopReason> {
     if sim.cancel.as_ref().is_some_and(super::Cancel::is_cancelled) {
         warnings.push(format!(
-            "interrupted at t = {t} s after {steps} steps; the outputs hold everything up to there"
+            "interrupted at t = {} s after {steps} steps; the outputs hold everything up to there",
+            time(t)
         ));
         return Some(StopReason::Interrupted);
     }
@@ -54,29 +55,29 @@ pub(crate) fn step_limit_warning(
     };
     match (sim.max_steps, sim.t_max) {
         (None, Some(tm)) => Some(format!(
-            "stopped after the default budget of {DEFAULT_MAX_STEPS} adaptive steps at t = {t} s, before t_max = {} s; give [stop] max_steps (at most {}) to allow more",
+            "stopped after the default budget of {DEFAULT_MAX_STEPS} adaptive steps at t = {} s, before t_max = {} s; give [stop] max_steps (at most {}) to allow more",
+            time(t),
             time(tm),
             super::MAX_STEPS
         )),
         (None, None) => Some(format!(
-            "stopped after the default budget of {DEFAULT_MAX_STEPS} steps at t = {t} s: {why}; set [stop] t_max"
+            "stopped after the default budget of {DEFAULT_MAX_STEPS} steps at t = {} s: {why}; set [stop] t_max",
+            time(t)
         )),
         (Some(n), Some(tm)) => Some(format!(
-            "stopped at the step limit of {n} steps at t = {t} s, before t_max = {} s; raise [stop] max_steps to go on",
+            "stopped at the step limit of {n} steps at t = {} s, before t_max = {} s; raise [stop] max_steps to go on",
+            time(t),
             time(tm)
         )),
         (Some(n), None) if has_stop_condition => Some(format!(
-            "stopped at the step limit of {n} steps at t = {t} s: {why}; raise [stop] max_steps to go on"
+            "stopped at the step limit of {n} steps at t = {} s: {why}; raise [stop] max_steps to go on",
+            time(t)
         )),
         (Some(_), None) => None,
     }
 }
 
-/// A time as Rust prints it, or as `1e300` when it would take more than 16 digits.
+/// A time for a message: `2.5`, `1e300`, `3e-7` (`crate::error::short`).
 fn time(t: Real) -> String {
-    if t.abs() < 1e16 {
-        format!("{t}")
-    } else {
-        format!("{t:e}")
-    }
+    crate::error::short(t)
 }

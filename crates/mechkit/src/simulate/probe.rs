@@ -116,15 +116,17 @@ impl Grid {
                     None => {
                         let n = sim.max_outputs.map_or(MAX_UNENDED_OUTPUTS, |m| m.min(MAX_UNENDED_OUTPUTS));
                         warnings.push(format!(
-                            "the output every {dt} s ends after {n} output times (t = {} s), as the run has no t_max; set t_max to choose the end",
-                            t0 + n as Real * dt
+                            "the output every {} s ends after {n} output times (t = {} s), as the run has no t_max; set t_max to choose the end",
+                            short(dt),
+                            short(t0 + n as Real * dt)
                         ));
                         Some(n)
                     }
                     Some(tm) => sim.max_outputs.filter(|&n| (tm - t0) / dt > n as Real).inspect(|&n| {
                         warnings.push(format!(
-                            "the output every {} s up to t_max = {tm} s asks for {:.3e} output times, more than the {n} allowed: the output ends at t = {} s; choose a larger output interval, or raise the output limit (`[output] max_size`, `--max-output`)",
+                            "the output every {} s up to t_max = {} s asks for {:.3e} output times, more than the {n} allowed: the output ends at t = {} s; choose a larger output interval, or raise the output limit (`[output] max_size`, `--max-output`)",
                             short(dt),
+                            short(tm),
                             (tm - t0) / dt,
                             short(t0 + n as Real * dt)
                         ));

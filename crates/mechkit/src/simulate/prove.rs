@@ -25,8 +25,9 @@ use crate::particles::{ParticleSystem, SampleKind, StateJets};
 /// The warning for an event whose proof ran out of enclosures in the step from `t0`.
 pub(crate) fn ran_out_warning(event: &Event, t0: Real) -> String {
     format!(
-        "the event `{}` could not be bounded in the step at t = {t0} s (it needed more than {MAX_BOUNDS} bounds, or its value is not a number there); there it is sampled at {FALLBACK_SAMPLES} points, so a sign change between two samples may be missed; smaller steps (dt, or h_max) make the bounds tighter",
-        event.name()
+        "the event `{}` could not be bounded in the step at t = {} s (it needed more than {MAX_BOUNDS} bounds, or its value is not a number there); there it is sampled at {FALLBACK_SAMPLES} points, so a sign change between two samples may be missed; smaller steps (dt, or h_max) make the bounds tighter",
+        event.name(),
+        crate::error::short(t0)
     )
 }
 

@@ -170,10 +170,10 @@ pub struct RunReport {
 #[non_exhaustive]
 pub enum SimulateError {
     /// The step is not positive.
-    #[error("the time step must be positive and finite, not {0} s")]
+    #[error("the time step must be positive and finite, not {} s", crate::error::short(*.0))]
     BadStep(Real),
     /// `t_max` is before the start.
-    #[error("t_max = {t_max} s is not after the start time {t0} s")]
+    #[error("t_max = {} s is not after the start time {} s", crate::error::short(*t_max), crate::error::short(*t0))]
     BadTMax {
         /// End time asked for.
         t_max: Real,
@@ -198,10 +198,14 @@ pub enum SimulateError {
     #[error(transparent)]
     Config(#[from] crate::ode::ConfigError),
     /// An output interval that is not positive.
-    #[error("the output interval must be positive and finite, not {0} s")]
+    #[error("the output interval must be positive and finite, not {} s", crate::error::short(*.0))]
     BadInterval(Real),
     /// Output times that are not increasing (or not finite).
-    #[error("the output times must be finite and increasing: {0} s is followed by {1} s")]
+    #[error(
+        "the output times must be finite and increasing: {} s is followed by {} s",
+        crate::error::short(*.0),
+        crate::error::short(*.1)
+    )]
     BadOutputTimes(Real, Real),
     /// The run's steps would not be bounded (see [`super::check_step_bound`]).
     #[error("{0}")]

@@ -354,7 +354,13 @@ pub(crate) fn step_budget(
                 "no t_max was given: the run is bounded by {DEFAULT_MAX_STEPS} steps{}; set t_max to choose the end",
                 stepping
                     .dt()
-                    .map(|dt| format!(" (t = {} s with dt = {dt} s)", t0 + DEFAULT_MAX_STEPS as Real * dt))
+                    .map(|dt| {
+                        format!(
+                            " (t = {} s with dt = {} s)",
+                            crate::error::short(t0 + DEFAULT_MAX_STEPS as Real * dt),
+                            crate::error::short(dt)
+                        )
+                    })
                     .unwrap_or_default()
             ));
             DEFAULT_MAX_STEPS

@@ -294,8 +294,8 @@ fn local(
         "it holds near {} = {}, on [{}, {}] where checked",
         ode.var,
         conditions[0].at,
-        (span.0 * 100.0).round() / 100.0,
-        (span.1 * 100.0).round() / 100.0
+        crate::short_number((span.0 * 100.0).round() / 100.0),
+        crate::short_number((span.1 * 100.0).round() / 100.0)
     );
     Some((Verification::Numeric { points }, Some(note)))
 }

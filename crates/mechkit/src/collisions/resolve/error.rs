@@ -11,7 +11,10 @@ use crate::collisions::CollisionInput;
 #[non_exhaustive]
 pub enum CollisionError {
     /// A mass that is not positive (or NaN).
-    #[error("mass {which} is {mass}; masses must be positive (use `inf` for an immovable wall)")]
+    #[error(
+        "mass {which} is {}; masses must be positive (use `inf` for an immovable wall)",
+        crate::error::short(*mass)
+    )]
     Mass {
         /// 1 or 2.
         which: usize,
@@ -23,7 +26,8 @@ pub enum CollisionError {
     BothImmovable,
     /// `e` outside `[0, 1]`.
     #[error(
-        "the coefficient of restitution is {e}; it must be between 0 (perfectly inelastic) and 1 (elastic)"
+        "the coefficient of restitution is {}; it must be between 0 (perfectly inelastic) and 1 (elastic)",
+        crate::error::short(*e)
     )]
     Restitution {
         /// The value.
@@ -38,7 +42,7 @@ pub enum CollisionError {
         text: String,
     },
     /// A negative or NaN friction coefficient.
-    #[error("the friction coefficient is {mu}; it must be zero or positive")]
+    #[error("the friction coefficient is {}; it must be zero or positive", crate::error::short(*mu))]
     Friction {
         /// The value.
         mu: Real,
@@ -88,7 +92,10 @@ pub enum CollisionError {
         r2: usize,
     },
     /// A gravitational acceleration that is not positive.
-    #[error("the gravitational acceleration is {g}; it must be positive, e.g. 9.81 m/s^2")]
+    #[error(
+        "the gravitational acceleration is {}; it must be positive, e.g. 9.81 m/s^2",
+        crate::error::short(*g)
+    )]
     Gravity {
         /// The value.
         g: Real,

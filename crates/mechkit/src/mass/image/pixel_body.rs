@@ -163,7 +163,8 @@ impl PixelBody {
             Some(m) if m.is_finite() && m > 0.0 => m,
             Some(m) => {
                 return Err(ImageError::Invalid(format!(
-                    "the total mass {m} must be positive"
+                    "the total mass {} must be positive",
+                    crate::error::short(m)
                 )));
             }
         };

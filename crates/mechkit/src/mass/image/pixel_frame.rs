@@ -31,13 +31,15 @@ impl PixelFrame {
     pub fn new(pixel_size: Real, origin: [Real; 2]) -> Result<Self, ImageError> {
         if !(pixel_size.is_finite() && pixel_size > 0.0) {
             return Err(ImageError::Invalid(format!(
-                "the pixel size {pixel_size} must be a positive length"
+                "the pixel size {} must be a positive length",
+                crate::error::short(pixel_size)
             )));
         }
         if !origin.iter().all(|c| c.is_finite()) {
             return Err(ImageError::Invalid(format!(
                 "the origin ({}, {}) must be finite pixel coordinates",
-                origin[0], origin[1]
+                crate::error::short(origin[0]),
+                crate::error::short(origin[1])
             )));
         }
         Ok(Self { pixel_size, origin })

@@ -265,7 +265,12 @@ impl fmt::Display for Selection {
     /// The rule as written: `R+G+B < 1.5`, `R ≥ 0.8`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let op = if self.invert { "≥" } else { "<" };
-        write!(f, "{} {op} {}", self.channel.symbol(), self.threshold)
+        write!(
+            f,
+            "{} {op} {}",
+            self.channel.symbol(),
+            crate::error::short(self.threshold)
+        )
     }
 }
 

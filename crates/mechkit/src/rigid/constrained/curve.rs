@@ -146,7 +146,12 @@ impl Curve {
     /// A description: `circle R = 1 m` or `y = x^2/2`.
     pub fn describe(&self) -> String {
         match &self.kind {
-            Kind::Circle { radius } => format!("circle of radius {radius} m about the origin"),
+            Kind::Circle { radius } => {
+                format!(
+                    "circle of radius {} m about the origin",
+                    crate::error::short(*radius)
+                )
+            }
             Kind::Graph(gr) => format!("y = {}", gr.y.sym()),
         }
     }

@@ -45,11 +45,13 @@ pub enum ConstrainedError {
     /// The graph jumps, or its slope does, at `x` (reached by the run): the equations of
     /// motion on a curve need `y'` and `y''` there.
     #[error(
-        "the curve is not smooth at x = {x}: {}; a body on a curve needs y and its slope y' to \
+        "the curve is not smooth at x = {}: {}; a body on a curve needs y and its slope y' to \
          be continuous (the derivative of a step is zero, so the body would cross the jump at \
          constant speed, creating or destroying energy): write a smooth curve (round the corner \
-         or the step), or end the run before x = {x}",
-        match what { super::Break::Jump(j) => format!("y jumps by {j} m"), super::Break::Kink(k) => format!("its slope y' jumps by {k} (a kink)") }
+         or the step), or end the run before x = {}",
+        crate::error::short(*x),
+        match what { super::Break::Jump(j) => format!("y jumps by {} m", crate::error::short(*j)), super::Break::Kink(k) => format!("its slope y' jumps by {} (a kink)", crate::error::short(*k)) },
+        crate::error::short(*x)
     )]
     NotSmooth {
         /// Where.

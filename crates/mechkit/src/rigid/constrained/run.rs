@@ -209,7 +209,8 @@ impl BeadOnCurve {
         if !(start.coordinate.is_finite() && start.speed.is_finite()) {
             return Err(ConstrainedError::Start(format!(
                 "the start ({}, {}) must be finite",
-                start.coordinate, start.speed
+                crate::error::short(start.coordinate),
+                crate::error::short(start.speed)
             )));
         }
         config.validate(2)?;

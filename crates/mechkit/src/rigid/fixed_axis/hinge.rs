@@ -12,7 +12,12 @@ use crate::mass::{MassError, MassProperties, Vec3};
 #[non_exhaustive]
 pub enum FixedAxisError {
     /// The axis direction is zero or not finite.
-    #[error("the axis direction ({0}, {1}, {2}) must be a non-zero vector")]
+    #[error(
+        "the axis direction ({}, {}, {}) must be a non-zero vector",
+        crate::error::short(*.0),
+        crate::error::short(*.1),
+        crate::error::short(*.2)
+    )]
     BadAxis(Real, Real, Real),
     /// The body's mass is not positive.
     #[error("the mass of `{name}` must be positive and finite, not {} kg", crate::error::short(*mass))]
@@ -24,7 +29,8 @@ pub enum FixedAxisError {
     },
     /// The moment of inertia about the axis vanishes (or is negative): the body cannot turn.
     #[error(
-        "the moment of inertia of `{name}` about the axis is {moment} kg m²: a body with no moment of inertia about its axis cannot be given an angular acceleration"
+        "the moment of inertia of `{name}` about the axis is {} kg m²: a body with no moment of inertia about its axis cannot be given an angular acceleration",
+        crate::error::short(*moment)
     )]
     ZeroMoment {
         /// Body.
@@ -33,7 +39,11 @@ pub enum FixedAxisError {
         moment: Real,
     },
     /// A weight hanging from the axle with a non-positive mass or a non-finite radius.
-    #[error("a weight of {} kg on a drum of radius {radius} m: the mass must be positive", crate::error::short(*mass))]
+    #[error(
+        "a weight of {} kg on a drum of radius {} m: the mass must be positive",
+        crate::error::short(*mass),
+        crate::error::short(*radius)
+    )]
     BadWeight {
         /// Mass.
         mass: Real,
@@ -209,10 +219,11 @@ impl HingedBody {
         let d = self.offset.norm();
         (self.inertia_cm_size > 0.0 && d > 10.0 * self.inertia_cm_size).then(|| {
             format!(
-                "the pivot of `{}` is {d:.4} m from its centre of mass, {:.0} times the body's radius of gyration ({:.4} m): is the pivot in the body's own coordinates?",
+                "the pivot of `{}` is {} m from its centre of mass, {} times the body's radius of gyration ({} m): is the pivot in the body's own coordinates?",
                 self.name,
-                d / self.inertia_cm_size,
-                self.inertia_cm_size
+                mechkit_expr::short_fixed(d, 4),
+                mechkit_expr::short_fixed(d / self.inertia_cm_size, 0),
+                mechkit_expr::short_fixed(self.inertia_cm_size, 4)
             )
         })
     }

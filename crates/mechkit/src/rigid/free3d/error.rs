@@ -12,7 +12,8 @@ use crate::rigid::Input;
 pub enum Free3dError {
     /// A principal moment that is not positive and finite.
     #[error(
-        "the principal moment I{index} = {value} kg·m² must be positive and finite (a body of any extent has three positive principal moments)"
+        "the principal moment I{index} = {} kg·m² must be positive and finite (a body of any extent has three positive principal moments)",
+        crate::error::short(*value)
     )]
     Moment {
         /// 1, 2 or 3.
@@ -23,7 +24,7 @@ pub enum Free3dError {
     /// Principal moments that no mass distribution has: one exceeds the sum of the others.
     #[error(
         "the principal moments I1 = {}, I2 = {}, I3 = {} kg·m² violate the triangle inequality: I{largest} exceeds the sum of the other two, which no distribution of positive mass allows (each moment is at most the sum of the others; equality is a flat body)",
-        moments[0], moments[1], moments[2]
+        crate::error::short(moments[0]), crate::error::short(moments[1]), crate::error::short(moments[2])
     )]
     Triangle {
         /// `[I1, I2, I3]`.
@@ -44,7 +45,12 @@ pub enum Free3dError {
         value: Real,
     },
     /// A vector input with a component that is not finite.
-    #[error("{what} has a component that is not finite: ({}, {}, {})", value[0], value[1], value[2])]
+    #[error(
+        "{what} has a component that is not finite: ({}, {}, {})",
+        crate::error::short(value[0]),
+        crate::error::short(value[1]),
+        crate::error::short(value[2])
+    )]
     NonFinite {
         /// Which input it is.
         input: Input,
@@ -54,7 +60,10 @@ pub enum Free3dError {
         value: [Real; 3],
     },
     /// An orientation quaternion of zero or non-finite norm.
-    #[error("the orientation quaternion has norm {norm}; it must be a non-zero finite quaternion")]
+    #[error(
+        "the orientation quaternion has norm {}; it must be a non-zero finite quaternion",
+        crate::error::short(*norm)
+    )]
     Quaternion {
         /// Its norm.
         norm: Real,
@@ -92,7 +101,7 @@ pub enum Free3dError {
     /// body frame.
     #[error(
         "the splitting method needs the pivot on a principal axis through the centre of mass (the offset ({}, {}, {}) m has more than one non-zero component); use an adaptive method",
-        offset[0], offset[1], offset[2]
+        crate::error::short(offset[0]), crate::error::short(offset[1]), crate::error::short(offset[2])
     )]
     SplittingOffAxis {
         /// The pivot offset.

@@ -46,7 +46,8 @@ impl fmt::Display for FrictionWarning {
         write!(
             f,
             "μs = {} is below μd = {}; the models assume μs ≥ μd. A body at rest cannot start to slide while the force on it is below μd N (sliding friction would stop it at once), so μd is used as the static bound too",
-            self.mu_static, self.mu_dynamic
+            crate::error::short(self.mu_static),
+            crate::error::short(self.mu_dynamic)
         )
     }
 }

@@ -12,7 +12,8 @@ use crate::rigid::Input;
 pub enum FrictionError {
     /// A friction coefficient that is negative or not finite.
     #[error(
-        "the {which} friction coefficient is {value}; it must be zero or positive (a ratio of forces, typically 0.05 to 1.5)"
+        "the {which} friction coefficient is {}; it must be zero or positive (a ratio of forces, typically 0.05 to 1.5)",
+        crate::error::short(*value)
     )]
     Coefficient {
         /// `static` or `dynamic`.
@@ -21,7 +22,7 @@ pub enum FrictionError {
         value: Real,
     },
     /// A parameter that must be positive and finite (a mass, a spring constant).
-    #[error("{what} is {value}; it must be positive and finite")]
+    #[error("{what} is {}; it must be positive and finite", crate::error::short(*value))]
     NotPositive {
         /// Which input it is.
         input: Input,
@@ -31,7 +32,7 @@ pub enum FrictionError {
         value: Real,
     },
     /// A parameter that must be finite (a speed, a position) or not negative (gravity).
-    #[error("{what} is {value}; {expected}")]
+    #[error("{what} is {}; {expected}", crate::error::short(*value))]
     Invalid {
         /// Which input it is.
         input: Input,
@@ -43,14 +44,18 @@ pub enum FrictionError {
         expected: &'static str,
     },
     /// An incline angle outside −90° … 90°.
-    #[error("the incline angle is {degrees}°; it must be between -90° and 90° (0 is a flat floor)")]
+    #[error(
+        "the incline angle is {}°; it must be between -90° and 90° (0 is a flat floor)",
+        crate::error::short(*degrees)
+    )]
     Angle {
         /// The angle in degrees.
         degrees: Real,
     },
     /// The loads pull the block off the surface: no contact, no friction.
     #[error(
-        "the normal force is {normal} N: the loads pull the block off the surface (m g cos α + the extra normal load must be at least 0)"
+        "the normal force is {} N: the loads pull the block off the surface (m g cos α + the extra normal load must be at least 0)",
+        crate::error::short(*normal)
     )]
     NoContact {
         /// `N = m g cos α + extra`.
@@ -58,7 +63,8 @@ pub enum FrictionError {
     },
     /// The switches between regimes accumulate (Zeno) or are too many for the time span.
     #[error(
-        "more than {max} stick/slip phases before t = {t} s; shorten the time span or raise the limit"
+        "more than {max} stick/slip phases before t = {} s; shorten the time span or raise the limit",
+        crate::error::short(*t)
     )]
     TooManyPhases {
         /// The limit.

@@ -33,9 +33,11 @@ pub enum ImpactError {
     },
     /// I_O < M d²: impossible by the parallel-axis theorem.
     #[error(
-        "the moment of inertia about the pivot, {inertia} kg m², is below M d² = {minimum} kg m² \
+        "the moment of inertia about the pivot, {} kg m², is below M d² = {} kg m² \
          (parallel-axis theorem: I_O = I_cm + M d² ≥ M d²); check the inertia, the mass and \
-         the distance of the centre of mass from the pivot"
+         the distance of the centre of mass from the pivot",
+        crate::error::short(*inertia),
+        crate::error::short(*minimum)
     )]
     ParallelAxis {
         /// I_O given.
@@ -46,8 +48,8 @@ pub enum ImpactError {
     /// A zero or non-finite normal.
     #[error(
         "the contact normal ({}, {}) has no direction; give a non-zero vector",
-        normal[0],
-        normal[1]
+        crate::error::short(normal[0]),
+        crate::error::short(normal[1])
     )]
     Normal {
         /// The normal given.
@@ -55,7 +57,8 @@ pub enum ImpactError {
     },
     /// A restitution outside [0, 1].
     #[error(
-        "the coefficient of restitution is {value}; it must be between 0 (plastic) and 1 (elastic)"
+        "the coefficient of restitution is {}; it must be between 0 (plastic) and 1 (elastic)",
+        crate::error::short(*value)
     )]
     Restitution {
         /// The value given.
@@ -63,9 +66,10 @@ pub enum ImpactError {
     },
     /// The bodies are not approaching at the contact: no impact.
     #[error(
-        "the bodies are not approaching at the contact (normal relative speed {normal_speed} m/s \
+        "the bodies are not approaching at the contact (normal relative speed {} m/s \
          along the normal from the first into the second): there is no impact; check the \
-         velocities' signs or the normal"
+         velocities' signs or the normal",
+        crate::error::short(*normal_speed)
     )]
     Separating {
         /// (v_B − v_A)·n at the contact (≥ 0).

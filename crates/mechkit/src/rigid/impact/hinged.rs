@@ -182,25 +182,32 @@ impl PivotedBody {
         if let Some((near, far)) = self.reach {
             if near > 0.0 {
                 out.push(format!(
-                        "the pivot is {near} m outside the body (the body swings on a massless arm); is the pivot's position right?"
+                        "the pivot is {} m outside the body (the body swings on a massless arm); is the pivot's position right?",
+                        crate::error::short(near)
                     ));
             }
             if r > far * (1.0 + 1e-9) || r < near * (1.0 - 1e-9) {
                 out.push(format!(
-                        "the contact point is {r} m from the pivot, but the body reaches from {near} m to {far} m: the contact is off the body"
+                        "the contact point is {} m from the pivot, but the body reaches from {} m to {} m: the contact is off the body",
+                        crate::error::short(r),
+                        crate::error::short(near),
+                        crate::error::short(far)
                     ));
             }
         } else {
             let k = self.gyration_radius();
             if d > 3.0 * k {
                 out.push(format!(
-                        "the centre of mass is {d} m from the pivot, more than three radii of gyration ({k} m): the pivot is probably outside the body"
+                        "the centre of mass is {} m from the pivot, more than three radii of gyration ({} m): the pivot is probably outside the body",
+                        crate::error::short(d),
+                        crate::error::short(k)
                     ));
             }
             if r > 3.0 * (d + k) {
                 out.push(format!(
-                        "the contact point is {r} m from the pivot, far beyond the body's size (d + k = {} m)",
-                        d + k
+                        "the contact point is {} m from the pivot, far beyond the body's size (d + k = {} m)",
+                        crate::error::short(r),
+                        crate::error::short(d + k)
                     ));
             }
         }

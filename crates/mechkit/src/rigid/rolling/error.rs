@@ -14,7 +14,8 @@ use crate::rigid::friction::FrictionError;
 pub enum RollingError {
     /// A radius that is not positive and finite: a rolling constraint `v = ω R` needs one.
     #[error(
-        "the radius is {radius} m; rolling needs a body with a circular contact profile of positive radius (give the radius of the sphere, cylinder or hoop)"
+        "the radius is {} m; rolling needs a body with a circular contact profile of positive radius (give the radius of the sphere, cylinder or hoop)",
+        crate::error::short(*radius)
     )]
     NoRadius {
         /// The value.
@@ -29,14 +30,15 @@ pub enum RollingError {
         shape: &'static str,
     },
     /// A mass that is not positive and finite.
-    #[error("the mass is {value} kg; it must be positive and finite")]
+    #[error("the mass is {} kg; it must be positive and finite", crate::error::short(*value))]
     Mass {
         /// The value.
         value: Real,
     },
     /// A moment-of-inertia factor outside `0 < k` (I = k m R²; 2/5 for a solid sphere).
     #[error(
-        "the inertia factor k = I/(m R²) is {value}; it must be positive and finite (2/5 solid sphere, 2/3 hollow sphere, 1/2 cylinder, 1 hoop)"
+        "the inertia factor k = I/(m R²) is {}; it must be positive and finite (2/5 solid sphere, 2/3 hollow sphere, 1/2 cylinder, 1 hoop)",
+        crate::error::short(*value)
     )]
     InertiaFactor {
         /// The value.
@@ -51,19 +53,22 @@ pub enum RollingError {
         name: String,
     },
     /// An incline angle outside −90° … 90°.
-    #[error("the slope is {degrees}°; it must be between -90° and 90° (0 is a flat floor)")]
+    #[error(
+        "the slope is {}°; it must be between -90° and 90° (0 is a flat floor)",
+        crate::error::short(*degrees)
+    )]
     Angle {
         /// The angle in degrees.
         degrees: Real,
     },
     /// A negative or non-finite gravity.
-    #[error("g is {value} m/s²; it must be 0 or positive")]
+    #[error("g is {} m/s²; it must be 0 or positive", crate::error::short(*value))]
     Gravity {
         /// The value.
         value: Real,
     },
     /// An initial value or time span that is not finite (or not positive).
-    #[error("{what} is {value}; it must be {expected}")]
+    #[error("{what} is {}; it must be {expected}", crate::error::short(*value))]
     Invalid {
         /// Which input it is.
         input: Input,

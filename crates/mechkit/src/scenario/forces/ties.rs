@@ -91,7 +91,10 @@ pub(super) fn spring(
     if rest < 0.0 {
         return Err(t.src.error(
             ErrorKind::Invalid,
-            format!("`rest_length` must not be negative (it is {rest} m)"),
+            format!(
+                "`rest_length` must not be negative (it is {} m)",
+                crate::error::short(rest)
+            ),
             t.key_span("rest_length"),
         ));
     }

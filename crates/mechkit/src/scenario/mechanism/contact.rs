@@ -201,7 +201,11 @@ pub(super) fn friction(
             .src
             .error(
                 ErrorKind::Invalid,
-                format!("`mu_k` = {mu_k} is larger than `mu_s` = {mu_s}"),
+                format!(
+                    "`mu_k` = {} is larger than `mu_s` = {}",
+                    crate::error::short(mu_k),
+                    crate::error::short(mu_s)
+                ),
                 t.key_span("mu_k"),
             )
             .with_hint("kinetic friction is at most static friction: swap them?"));

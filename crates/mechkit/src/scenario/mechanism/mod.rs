@@ -358,8 +358,9 @@ pub(crate) fn build_mechanism(
             .error(
                 ErrorKind::Invalid,
                 format!(
-                    "the joint `{}` does not hold at the start: its constraint is off by {c} m",
-                    joint.name
+                    "the joint `{}` does not hold at the start: its constraint is off by {} m",
+                    joint.name,
+                    crate::error::short(c)
                 ),
                 span,
             )

@@ -81,14 +81,18 @@ impl CsvWriter {
                 // a full disk, a quota: stop cleanly, keep the whole rows already on disk
                 let kept = match self.out.records_on_disk() {
                     0 | 1 => "no rows".to_string(),
-                    n => format!("{} rows up to t = {} s", n - 1, self.out.last_tag_on_disk()),
+                    n => format!(
+                        "{} rows up to t = {} s",
+                        n - 1,
+                        crate::error::short(self.out.last_tag_on_disk())
+                    ),
                 };
                 self.halt = Some((
                     StopReason::OutputError,
                     format!(
                         "cannot write {} at t = {} s: {}, so the run stopped there; the file keeps {kept}; free space or choose another --out",
                         self.out.path().display(),
-                        s.t,
+                        crate::error::short(s.t),
                         e,
                     ),
                 ));

@@ -148,7 +148,10 @@ fn non_negative(
     } else {
         Err(t.src.error(
             ErrorKind::Invalid,
-            format!("{what} `{key}` must not be negative (it is {value})"),
+            format!(
+                "{what} `{key}` must not be negative (it is {})",
+                crate::error::short(value)
+            ),
             t.key_span(key),
         ))
     }

@@ -114,7 +114,7 @@ pub fn run_sweep(
                 .params
                 .iter()
                 .zip(&values)
-                .map(|(p, v)| format!("{}={v}", p.name))
+                .map(|(p, v)| format!("{}={}", p.name, crate::error::short(*v)))
                 .collect::<Vec<_>>()
                 .join(", "),
             source,

@@ -274,12 +274,16 @@ impl SweepTable {
 
 /// A value for a legend: 4 significant digits.
 fn short(v: f64) -> String {
-    let s = format!("{v:.4}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s.is_empty() || s == "-" {
+    let s = mechkit_expr::short_fixed(v, 4);
+    // trailing zeros of the decimals go, also before an exponent (`1.5000e20` → `1.5e20`)
+    let (digits, exponent) = s.split_once('e').unwrap_or((s.as_str(), ""));
+    let digits = digits.trim_end_matches('0').trim_end_matches('.');
+    if digits.is_empty() || digits == "-" {
         "0".into()
+    } else if exponent.is_empty() {
+        digits.to_string()
     } else {
-        s.to_string()
+        format!("{digits}e{exponent}")
     }
 }
 

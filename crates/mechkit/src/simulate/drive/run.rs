@@ -239,8 +239,9 @@ impl<'r> Run<'r> {
         if let Some((i, e)) = self.events.iter().enumerate().find(holds) {
             let t0 = self.state.t;
             self.warnings.push(format!(
-                "the stop condition `{}` already holds at the start (t = {t0} s); nothing was simulated",
-                e.name()
+                "the stop condition `{}` already holds at the start (t = {} s); nothing was simulated",
+                e.name(),
+                crate::error::short(t0)
             ));
             self.book.at_start(e, i, t0, &self.state.y);
             self.stop_reason = Some(StopReason::Event);
