@@ -117,6 +117,17 @@ fn diff_text(d: &Differentiation) -> String {
             mechkit::expr::short_number(left),
             mechkit::expr::short_number(right),
         );
+    } else if let Some(c) = d.at
+        && let Some([left, right]) = c.kink
+    {
+        wr!(
+            out,
+            "at {x} = {}: {} has a corner (slope {} from the left, {} from the right): it has no derivative there\n",
+            mechkit::expr::short_number(c.at),
+            d.input,
+            mechkit::expr::short_number(left),
+            mechkit::expr::short_number(right),
+        );
     } else if let Some(c) = d.at {
         wr!(
             out,

@@ -67,6 +67,29 @@ fn derivative_of_the_periodic_force() {
     assert_eq!(at(&j, "/derivative"), &serde_json::json!("k*y"));
 }
 
+/// At a corner there is no derivative: `abs(x)` at 0 printed "symbolic 0, numeric 0, the two
+/// agree", exit 0.
+#[test]
+fn a_corner_has_no_derivative() {
+    let out = run(&["diff", "abs(x)", "--at", "0"]);
+    out.assert_code(1);
+    assert!(
+        out.stdout.contains(
+            "at x = 0: abs(x) has a corner (slope -1 from the left, 1 from the right): it has no derivative there"
+        ),
+        "{}",
+        out.stdout
+    );
+    let j = run(&["diff", "max(x, 0)", "--at", "0", "--json"]);
+    j.assert_code(1);
+    let j: serde_json::Value = serde_json::from_str(&j.stdout).expect("JSON");
+    assert_eq!(at(&j, "/at/agree"), &serde_json::Value::Bool(false));
+    assert!((num(&j, "/at/kink/0") - 0.0).abs() < 1e-6);
+    assert!((num(&j, "/at/kink/1") - 1.0).abs() < 1e-6);
+    assert_eq!(at(&j, "/at/jump"), &serde_json::Value::Null);
+    run(&["diff", "abs(x)", "--at", "0.5"]).assert_code(0);
+}
+
 #[test]
 fn equations_symbolic_numeric_and_systems() {
     let out = run(&["solve", "x^2 - 5*x + 6 = 0", "--for", "x", "--json"]);

@@ -46,6 +46,9 @@ pub struct DerivativeCheck {
     /// Where the formula jumps at the point (no derivative exists there): its values just
     /// left and just right of it, `[left, right]` in JSON.
     pub jump: Option<[Real; 2]>,
+    /// Where the formula is continuous but has a corner or a cusp at the point (no derivative
+    /// exists there): its slopes just left and just right of it, `[left, right]` in JSON.
+    pub kink: Option<[Real; 2]>,
 }
 
 /// `d/dx text` at `at`, symbolically and numerically (initial step `h`, e.g. 0.1 or a tenth
@@ -57,6 +60,9 @@ pub struct DerivativeCheck {
 /// // floor jumps at 1: no derivative there, whatever the rules say (0)
 /// let c = mechkit::calculus::derivative_at("floor(x)", "x", 1.0, &[], 0.1).unwrap();
 /// assert!(!c.agree && c.jump == Some([0.0, 1.0]));
+/// // |x| has a corner at 0: no derivative there either (the rules say sign(0) = 0)
+/// let c = mechkit::calculus::derivative_at("abs(x)", "x", 0.0, &[], 0.1).unwrap();
+/// assert!(!c.agree && c.kink.is_some_and(|[l, r]| (l + 1.0).abs() < 1e-6 && (r - 1.0).abs() < 1e-6));
 /// ```
 pub fn derivative_at(
     text: &str,
@@ -68,9 +74,10 @@ pub fn derivative_at(
     let f = Function::parse(text, &[x], params)?;
     let symbolic = f.diff(x).at1(at);
     let (est, verdict) = crate::deriv::confirm(|v| f.at1(v), at, h, symbolic);
-    let jump = match verdict {
-        Verdict::Jump { left, right } => Some([left, right]),
-        _ => None,
+    let (jump, kink) = match verdict {
+        Verdict::Jump { left, right } => (Some([left, right]), None),
+        Verdict::Kink { left, right } => (None, Some([left, right])),
+        _ => (None, None),
     };
     Ok(DerivativeCheck {
         at,
@@ -79,6 +86,7 @@ pub fn derivative_at(
         numeric_error: est.error,
         agree: verdict == Verdict::Agree,
         jump,
+        kink,
     })
 }
 
@@ -162,6 +170,30 @@ mod tests {
         assert!(!d.agrees() && d.at.unwrap().jump == Some([-1.0, 1.0]));
         let d = differentiate("x^3 - 3*x", "x", Some((1.0, 0.1)), &[]).unwrap();
         assert!(d.agrees() && d.at.unwrap().jump.is_none());
+    }
+
+    /// At a corner there is no derivative: `abs(x)` at 0 was "symbolic 0, numeric 0, the two
+    /// agree", exit 0; `max(x, 0)` at 0 "1 against 0.5, they DISAGREE"; `abs(x - 1)` at 1 a
+    /// "jump" of 1e-9 to 1e-9.
+    #[test]
+    fn a_corner_has_no_derivative_and_never_agrees() {
+        for (f, at, slopes) in [
+            ("abs(x)", 0.0, [-1.0, 1.0]),
+            ("max(x, 0)", 0.0, [0.0, 1.0]),
+            ("abs(x - 1)", 1.0, [-1.0, 1.0]),
+            ("abs(sin(x))", 0.0, [-1.0, 1.0]),
+        ] {
+            let d = differentiate(f, "x", Some((at, 0.1)), &[]).unwrap();
+            let c = d.at.unwrap();
+            assert!(!d.agrees() && c.jump.is_none(), "{f}: {c:?}");
+            let [l, r] = c.kink.unwrap_or_else(|| panic!("{f}: {c:?}"));
+            assert!(
+                (l - slopes[0]).abs() < 1e-6 && (r - slopes[1]).abs() < 1e-6,
+                "{f}: {c:?}"
+            );
+        }
+        let d = differentiate("abs(x)", "x", Some((0.5, 0.1)), &[]).unwrap();
+        assert!(d.agrees() && d.at.unwrap().kink.is_none());
     }
 
     /// Review C-17: the variable cannot be given a value (it would be ignored).

@@ -9,7 +9,14 @@
 //! extrapolation returns `9 ± 4`.
 //!
 //! A jump is told from a steep function by the difference across `x`: `|f(x + d) − f(x − d)|`
-//! shrinks with `d` where `f` is continuous, and stays the size of the jump where it is not.
+//! shrinks with `d` where `f` is continuous, and stays the size of the jump where it is not;
+//! so does the larger difference from `f(x)` itself (else the rounding of `x ± d` in a kink
+//! away from 0, `|x − 1|` at 1, passed for a jump of 1e-16).
+//!
+//! A corner (a kink, a cusp) is told the same way from the one-sided slopes
+//! `(f(x) − f(x − d))/d` and `(f(x + d) − f(x))/d`: their difference shrinks like `f'' d` where
+//! `f` is differentiable, and stays where it is not (`|x|` at 0: −1 and 1). There is no
+//! derivative there, whatever the rules say (`sign(0)` = 0).
 
 use super::richardson::{Estimate, derivative};
 use crate::Real;
@@ -29,6 +36,14 @@ pub enum Verdict {
         /// `f(x⁺)`.
         right: Real,
     },
+    /// The function is continuous at the point but has a corner or a cusp: no derivative
+    /// exists there. Its slopes just left and just right of it.
+    Kink {
+        /// The slope from the left.
+        left: Real,
+        /// The slope from the right.
+        right: Real,
+    },
 }
 
 /// `claimed`, a value of `f'(x)` found otherwise, against Ridders' estimate from the initial
@@ -46,6 +61,9 @@ pub fn confirm(f: impl Fn(Real) -> Real, x: Real, h: Real, claimed: Real) -> (Es
     if let Some((left, right)) = jump(&f, x, h) {
         return (est, Verdict::Jump { left, right });
     }
+    if let Some((left, right)) = kink(&f, x, h) {
+        return (est, Verdict::Kink { left, right });
+    }
     let scale = claimed
         .abs()
         .max(est.value.abs())
@@ -60,19 +78,55 @@ pub fn confirm(f: impl Fn(Real) -> Real, x: Real, h: Real, claimed: Real) -> (Es
     (est, verdict)
 }
 
-/// The values on each side of `x` when `f` jumps there (the difference across `x` does not
-/// shrink from `1e-4 h` to `1e-8 h`, and is more than rounding), else `None`.
+/// `x ± d`, no closer to `x` than a few units in its last place, where `x ± d` is still not
+/// `x`: the steps taken to each side, as they round.
+fn steps(x: Real, d: Real) -> (Real, Real) {
+    let d = d.max(4.0 * Real::EPSILON * x.abs());
+    (x - d, x + d)
+}
+
+/// The values on each side of `x` when `f` jumps there (the difference across `x`, and the
+/// larger difference from `f(x)`, do not shrink from `1e-4 h` to `1e-8 h`, and are more than
+/// rounding), else `None`.
 fn jump(f: &impl Fn(Real) -> Real, x: Real, h: Real) -> Option<(Real, Real)> {
-    // no closer than a few units in the last place of `x`, where `x ± d` is still not `x`
+    let f0 = f(x);
     let sides = |d: Real| {
-        let d = d.max(4.0 * Real::EPSILON * x.abs());
-        (f(x - d), f(x + d))
+        let (a, b) = steps(x, d);
+        (f(a), f(b))
     };
     let (l1, r1) = sides(1e-4 * h);
     let (l2, r2) = sides(1e-8 * h);
     let (far, near) = ((r1 - l1).abs(), (r2 - l2).abs());
     let rounding = 1e3 * Real::EPSILON * (l2.abs() + r2.abs());
-    (near > 0.5 * far && near > rounding).then_some((l2, r2))
+    let from_centre = |l: Real, r: Real| (l - f0).abs().max((r - f0).abs());
+    let stays = from_centre(l2, r2) > 0.5 * from_centre(l1, r1) || !f0.is_finite();
+    (near > 0.5 * far && near > rounding && stays).then_some((l2, r2))
+}
+
+/// The slopes on each side of `x` when `f` has a corner or a cusp there (their difference
+/// does not shrink from `1e-4 h` to `1e-6 h` to `1e-8 h`, and is more than the rounding of
+/// the values over the step), else `None`.
+fn kink(f: &impl Fn(Real) -> Real, x: Real, h: Real) -> Option<(Real, Real)> {
+    let f0 = f(x);
+    if !f0.is_finite() {
+        return None;
+    }
+    let slopes = |d: Real| {
+        let (a, b) = steps(x, d);
+        let (fa, fb) = (f(a), f(b));
+        // divided by the steps as taken, so that the rounding of `x ± d` cancels
+        let (left, right) = ((f0 - fa) / (x - a), (fb - f0) / (b - x));
+        let rounding = 1e3 * Real::EPSILON * (f0.abs() + fa.abs() + fb.abs()) / (b - x).min(x - a);
+        (left, right, rounding)
+    };
+    let (l1, r1, _) = slopes(1e-4 * h);
+    let (l2, r2, _) = slopes(1e-6 * h);
+    let (l3, r3, rounding) = slopes(1e-8 * h);
+    if ![l1, r1, l2, r2, l3, r3].iter().all(|s| s.is_finite()) {
+        return None;
+    }
+    let (g1, g2, g3) = ((r1 - l1).abs(), (r2 - l2).abs(), (r3 - l3).abs());
+    (g2 > 0.5 * g1 && g3 > 0.5 * g2 && g3 > rounding).then_some((l3, r3))
 }
 
 #[cfg(test)]
@@ -99,7 +153,7 @@ mod tests {
         // continuous, even with an infinite slope or a kink: no jump
         assert!(!matches!(
             confirm(Real::cbrt, 0.0, 0.1, 0.0).1,
-            Verdict::Jump { .. }
+            Verdict::Jump { .. } | Verdict::Kink { .. }
         ));
         assert!(!matches!(
             confirm(Real::abs, 0.0, 0.1, 0.0).1,
@@ -115,5 +169,45 @@ mod tests {
             assert_eq!(confirm(f, x, 0.1, d).1, Verdict::Agree, "at {x}");
         }
         assert_eq!(confirm(Real::exp, 1.0, 0.1, 2.0).1, Verdict::Disagree);
+    }
+
+    /// A corner has no derivative, at 0 and away from it (`|x − 1|` at 1 had passed for a
+    /// jump of 1e-16, `|x|` at 0 for a derivative of 0, `sign(0)`); smooth functions, steep
+    /// or large ones included, have none.
+    #[test]
+    fn a_corner_has_no_derivative_and_smooth_functions_have_no_corner() {
+        for (f, x, left, right) in [
+            (Real::abs as fn(Real) -> Real, 0.0, -1.0, 1.0),
+            (|x: Real| (x - 1.0).abs(), 1.0, -1.0, 1.0),
+            (|x: Real| (x - 1e6).abs(), 1e6, -1.0, 1.0),
+            (|x: Real| x.max(0.0), 0.0, 0.0, 1.0),
+            (|x: Real| 3.0 * (x - 2.0).abs() + x * x, 2.0, 1.0, 7.0),
+        ] {
+            match confirm(f, x, 0.1, 0.0).1 {
+                Verdict::Kink { left: l, right: r } => assert!(
+                    (l - left).abs() < 1e-6 && (r - right).abs() < 1e-6,
+                    "at {x}: {l} {r}"
+                ),
+                v => panic!("at {x}: {v:?}"),
+            }
+        }
+        // a cusp: slopes of opposite signs that grow as the step shrinks
+        assert!(matches!(
+            confirm(|x: Real| x.abs().sqrt(), 0.0, 0.1, 0.0).1,
+            Verdict::Kink { .. }
+        ));
+        for (f, x, d) in [
+            (Real::sin as fn(Real) -> Real, 1.0, 1f64.cos()),
+            (|x: Real| (1000.0 * x).exp(), 0.0, 1000.0),
+            (|x: Real| 1e6 + x, 2.0, 1.0),
+            (|x: Real| (x - 1e6).powi(2), 1e6, 0.0),
+            (|x: Real| x * x * x, 0.0, 0.0),
+        ] {
+            let v = confirm(f, x, 0.1, d).1;
+            assert!(
+                !matches!(v, Verdict::Kink { .. } | Verdict::Jump { .. }),
+                "at {x}: {v:?}"
+            );
+        }
     }
 }
