@@ -138,16 +138,17 @@ pub fn build(
 /// scenario its summary.json names (points when that file is gone).
 fn from_run_dir(dir: &Path, options: &AnimationOptions) -> Result<Animation> {
     let summary_path = dir.join("summary.json");
-    mechkit::csv::note_read(&summary_path);
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&summary_path).with_context(|| {
-            format!(
-                "{} is not a run directory: cannot read {}",
-                dir.display(),
-                summary_path.display()
-            )
-        })?)
-        .with_context(|| format!("cannot read {}", summary_path.display()))?;
+    let summary: serde_json::Value = serde_json::from_str(
+        &mechkit::csv::read_bounded_text(&summary_path, mechkit::csv::MAX_DATA_BYTES)
+            .with_context(|| {
+                format!(
+                    "{} is not a run directory: cannot read {}",
+                    dir.display(),
+                    summary_path.display()
+                )
+            })?,
+    )
+    .with_context(|| format!("cannot read {}", summary_path.display()))?;
     let trajectory_path = dir.join("trajectory.csv");
     let table = mechkit::data::Table::read(&trajectory_path)
         .with_context(|| format!("cannot read {}", trajectory_path.display()))?;
@@ -183,9 +184,8 @@ fn from_run_dir(dir: &Path, options: &AnimationOptions) -> Result<Animation> {
 
 /// The animation of an extended XYZ file (`mechkit md --xyz-every`'s trajectory.xyz).
 fn from_xyz(path: &Path, options: &AnimationOptions) -> Result<Animation> {
-    mechkit::csv::note_read(path);
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+    let text = mechkit::csv::read_bounded_text(path, mechkit::csv::MAX_DATA_BYTES)
+        .with_context(|| format!("cannot read {}", path.display()))?;
     let frames =
         mechkit::animation::parse_xyz(&text).map_err(|e| anyhow!("{}: {e}", path.display()))?;
     let title = format!("{} atoms ({})", frames[0].positions.len(), path.display());

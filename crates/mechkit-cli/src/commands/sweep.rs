@@ -293,11 +293,11 @@ pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
     }
     let mut parts = Vec::new();
     for f in &files {
-        let csv = std::fs::read_to_string(f).with_context(|| {
-            format!("cannot read {}\n  = hint: check the file name", f.display())
-        })?;
+        let csv = mechkit::csv::read_bounded_text(f, mechkit::csv::MAX_DATA_BYTES).with_context(
+            || format!("cannot read {}\n  = hint: check the file name", f.display()),
+        )?;
         let sidecar = f.with_file_name(manifest_name(&file_name(f)));
-        let manifest = std::fs::read_to_string(&sidecar).with_context(|| {
+        let manifest = mechkit::csv::read_bounded_text(&sidecar, mechkit::csv::MAX_DATA_BYTES).with_context(|| {
             format!(
                 "cannot read {}, the manifest of {}\n  = hint: keep each part's .manifest.json beside its CSV (mechkit sweep --shard writes both)",
                 sidecar.display(),
@@ -316,7 +316,7 @@ pub fn sweep_merge(args: &SweepMergeArgs) -> Result<Outcome> {
     write_atomic(&manifest_path, manifest.as_bytes())
         .with_context(|| format!("cannot write {}", manifest_path.display()))?;
     let units = files[0].with_file_name(mechkit::csv::units_file_name(&file_name(&files[0])));
-    if let Ok(text) = std::fs::read(&units) {
+    if let Ok(text) = mechkit::csv::read_bounded(&units, mechkit::csv::MAX_DATA_BYTES) {
         let target = out.with_file_name(mechkit::csv::units_file_name(&out_name));
         write_atomic(&target, &text)
             .with_context(|| format!("cannot write {}", target.display()))?;

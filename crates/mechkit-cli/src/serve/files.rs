@@ -125,7 +125,7 @@ pub async fn read(
                 ),
             ));
         }
-        let bytes = std::fs::read(&file)
+        let bytes = mechkit::csv::read_bounded(&file, MAX_SCENARIO_BYTES)
             .map_err(|e| ApiError::internal(format!("cannot read `{path}`: {e}")))?;
         let text = String::from_utf8(bytes).map_err(|_| {
             ApiError::new(

@@ -47,7 +47,7 @@ fn nested_outside(path: &Path, workspace: &Workspace) -> Option<String> {
     if !meta.is_file() || meta.len() > MAX_SCENARIO_BYTES {
         return None;
     }
-    let text = std::fs::read_to_string(path).ok()?;
+    let text = mechkit::csv::read_bounded_text(path, MAX_SCENARIO_BYTES).ok()?;
     let dir = path.parent()?;
     references(&text)
         .into_iter()

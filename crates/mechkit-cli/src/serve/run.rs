@@ -131,10 +131,12 @@ pub async fn file(
         .registry
         .file(id, &name)
         .ok_or_else(|| ApiError::not_found(format!("run {id} has no file `{name}`")))?;
-    let bytes = tokio::task::spawn_blocking(move || std::fs::read(path))
-        .await
-        .map_err(|e| ApiError::internal(format!("reading the file failed: {e}")))?
-        .map_err(|e| ApiError::not_found(format!("cannot read `{name}`: {e}")))?;
+    let bytes = tokio::task::spawn_blocking(move || {
+        mechkit::csv::read_bounded(&path, mechkit::csv::MAX_DATA_BYTES)
+    })
+    .await
+    .map_err(|e| ApiError::internal(format!("reading the file failed: {e}")))?
+    .map_err(|e| ApiError::not_found(format!("cannot read `{name}`: {e}")))?;
     Ok((
         [
             (header::CONTENT_TYPE, content_type(&name)),

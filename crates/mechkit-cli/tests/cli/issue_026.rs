@@ -317,3 +317,21 @@ fn issue_026_sigterm_ends_a_long_run_within_a_second() {
     );
     assert_eq!(status.code(), Some(130));
 }
+
+/// An endless input (`/dev/zero`, `/dev/urandom`) ends at the size bound of its kind of file,
+/// exit 2 with the bound: `check /dev/zero` never ended, `md --positions /dev/zero` filled the
+/// memory until the system killed it. Regular files keep their size check before reading.
+#[test]
+fn issue_026_an_endless_input_ends_at_its_size_bound() {
+    let dir = Dir::new();
+    for args in [
+        &["check", "/dev/zero"][..],
+        &["check", "/dev/urandom"],
+        &["run", "/dev/zero", "--out", "out"],
+    ] {
+        dir.run(args).assert_bad_input(&[
+            "cannot read /dev/",
+            "it goes on past 16 MB, the most mechkit reads from one file",
+        ]);
+    }
+}

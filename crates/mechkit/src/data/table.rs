@@ -96,11 +96,13 @@ impl Table {
 
     /// Reads the file at `path` (see [`Table::parse`]); errors name it as given.
     pub fn read(path: &Path) -> Result<Self, DataError> {
-        crate::csv::note_read(path);
-        let text = std::fs::read_to_string(path).map_err(|error| DataError::Io {
-            path: path.to_path_buf(),
-            error,
-        })?;
+        let text =
+            crate::csv::read_bounded_text(path, crate::csv::MAX_DATA_BYTES).map_err(|error| {
+                DataError::Io {
+                    path: path.to_path_buf(),
+                    error,
+                }
+            })?;
         Self::parse(&text, &path.display().to_string())
     }
 

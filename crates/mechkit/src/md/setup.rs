@@ -125,8 +125,7 @@ impl Atoms {
     /// # Errors
     /// The file cannot be read or is not a list of vectors.
     pub fn read(path: &Path) -> Result<Self, String> {
-        crate::csv::note_read(path);
-        let text = std::fs::read_to_string(path)
+        let text = crate::csv::read_bounded_text(path, crate::csv::MAX_DATA_BYTES)
             .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
         let atoms = AtomsFile::parse(&path.to_string_lossy(), &text).map_err(|e| match e {
             // `file:line:` as compilers and the data files print it
@@ -297,7 +296,7 @@ impl Setup {
 /// The error for particles `i` and `j` (0-based) at the same place `at`: each named by its
 /// line of the file `path`, or its number in an array.
 fn coincident(path: Option<&Path>, (i, j): (usize, usize), at: [Real; 3]) -> SetupError {
-    let text = path.and_then(|p| std::fs::read_to_string(p).ok());
+    let text = path.and_then(|p| crate::csv::read_bounded_text(p, crate::csv::MAX_DATA_BYTES).ok());
     let place = |k: usize| match (path, &text) {
         (Some(p), Some(text)) => match AtomsFile::line_of(&p.to_string_lossy(), text, k) {
             Some(line) => format!("{}:{line}", p.display()),

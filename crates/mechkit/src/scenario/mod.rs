@@ -217,8 +217,7 @@ pub fn read_source(path: &Path) -> Result<String, ScenarioError> {
         )
         .with_hint("give the scenario's .toml file; data files are named inside it"));
     }
-    crate::csv::note_read(path);
-    std::fs::read_to_string(path).map_err(|e| {
+    crate::csv::read_bounded_text(path, limits::MAX_SCENARIO_BYTES).map_err(|e| {
         ScenarioError::new(
             ErrorKind::Io,
             format!("cannot read {}: {e}", path.display()),

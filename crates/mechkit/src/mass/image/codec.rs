@@ -15,16 +15,18 @@ impl Raster {
     /// TIFF, WebP, PDF, text, …), found from its first bytes whatever its name.
     pub fn open(path: impl AsRef<Path>) -> Result<Self, ImageError> {
         let path = path.as_ref();
-        crate::csv::note_read(path);
-        let bytes = std::fs::read(path).map_err(|e| match e.kind() {
-            ErrorKind::NotFound => ImageError::NotFound {
-                path: path.to_path_buf(),
-            },
-            _ => ImageError::Read {
-                path: path.to_path_buf(),
-                message: e.to_string(),
-            },
-        })?;
+        let bytes =
+            crate::csv::read_bounded(path, crate::csv::MAX_DATA_BYTES).map_err(|e| {
+                match e.kind() {
+                    ErrorKind::NotFound => ImageError::NotFound {
+                        path: path.to_path_buf(),
+                    },
+                    _ => ImageError::Read {
+                        path: path.to_path_buf(),
+                        message: e.to_string(),
+                    },
+                }
+            })?;
         Self::decode(&bytes, path)
     }
 

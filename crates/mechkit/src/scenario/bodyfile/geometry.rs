@@ -103,14 +103,14 @@ pub(super) fn mesh(
 ) -> Result<TriangleMesh, ScenarioError> {
     if let Some((file, span)) = t.string("file")? {
         let path = dir.map_or_else(|| Path::new(file).to_path_buf(), |d| d.join(file));
-        crate::csv::note_read(&path);
-        let text = std::fs::read_to_string(&path).map_err(|e| {
-            t.src.error(
-                ErrorKind::Io,
-                format!("cannot read the mesh {}: {e}", path.display()),
-                span.clone(),
-            )
-        })?;
+        let text =
+            crate::csv::read_bounded_text(&path, crate::csv::MAX_DATA_BYTES).map_err(|e| {
+                t.src.error(
+                    ErrorKind::Io,
+                    format!("cannot read the mesh {}: {e}", path.display()),
+                    span.clone(),
+                )
+            })?;
         return TriangleMesh::from_obj(&text).map_err(|e| {
             t.src
                 .error(ErrorKind::Invalid, format!("{}: {e}", path.display()), span)
