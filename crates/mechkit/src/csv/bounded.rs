@@ -24,7 +24,7 @@ pub const MAX_DATA_BYTES: u64 = 2_000_000_000;
 /// use mechkit::csv::read_bounded;
 /// let e = read_bounded(std::path::Path::new("/dev/zero"), 1000).unwrap_err();
 /// assert_eq!(e.kind(), std::io::ErrorKind::FileTooLarge);
-/// assert!(e.to_string().contains("more than 1 kB"), "{e}");
+/// assert!(e.to_string().contains("goes on past 1 kB"), "{e}");
 /// ```
 pub fn read_bounded(path: &Path, limit: u64) -> io::Result<Vec<u8>> {
     super::note_read(path);
