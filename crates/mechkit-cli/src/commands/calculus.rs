@@ -106,35 +106,37 @@ pub fn diff(args: &DiffArgs) -> Result<Outcome> {
 fn diff_text(d: &Differentiation) -> String {
     let x = &d.var;
     let mut out = format!("d/d{x} {} = {}\n", d.input, d.derivative);
-    if let Some(c) = d.at
-        && let Some([left, right]) = c.jump
-    {
+    let short = mechkit::expr::short_number;
+    // where the formula has no derivative: a jump (the values on each side) or a corner (the
+    // slopes on each side)
+    let broken = d.at.and_then(|c| {
+        c.jump
+            .map(|[l, r]| format!("jumps (from {} to {})", short(l), short(r)))
+            .or_else(|| {
+                c.kink.map(|[l, r]| {
+                    format!(
+                        "has a corner (slope {} from the left, {} from the right)",
+                        short(l),
+                        short(r)
+                    )
+                })
+            })
+            .map(|what| (c.at, what))
+    });
+    if let Some((at, what)) = broken {
         wr!(
             out,
-            "at {x} = {}: {} jumps (from {} to {}): it has no derivative there\n",
-            mechkit::expr::short_number(c.at),
-            d.input,
-            mechkit::expr::short_number(left),
-            mechkit::expr::short_number(right),
-        );
-    } else if let Some(c) = d.at
-        && let Some([left, right]) = c.kink
-    {
-        wr!(
-            out,
-            "at {x} = {}: {} has a corner (slope {} from the left, {} from the right): it has no derivative there\n",
-            mechkit::expr::short_number(c.at),
-            d.input,
-            mechkit::expr::short_number(left),
-            mechkit::expr::short_number(right),
+            "at {x} = {}: {} {what}: it has no derivative there\n",
+            short(at),
+            d.input
         );
     } else if let Some(c) = d.at {
         wr!(
             out,
             "at {x} = {}:\n  symbolic  {}\n  numeric   {} ± {:.1e} (central differences, Richardson extrapolation)\n  {}\n",
-            mechkit::expr::short_number(c.at),
-            mechkit::expr::short_number(c.symbolic),
-            mechkit::expr::short_number(c.numeric),
+            short(c.at),
+            short(c.symbolic),
+            short(c.numeric),
             c.numeric_error,
             if c.agree {
                 "the two agree"
