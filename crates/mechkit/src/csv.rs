@@ -26,7 +26,7 @@ use crate::Real;
 
 mod bounded;
 mod inputs;
-pub use bounded::{MAX_DATA_BYTES, read_bounded, read_bounded_text};
+pub use bounded::{MAX_DATA_BYTES, format_size, read_bounded, read_bounded_text};
 pub use inputs::{InputGuard, note_read, refuse_input_as_output, same_file};
 
 /// A column: its name and its unit.

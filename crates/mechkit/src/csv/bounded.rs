@@ -8,8 +8,6 @@ use std::fs;
 use std::io::{self, Read};
 use std::path::Path;
 
-use crate::scenario::format_size;
-
 /// The most bytes mechkit reads from one data file: a table (`derive`, `work`, `impulse`,
 /// `terminal --data`, `sweep-merge`), an atoms file (`md --positions`), a mesh, an image, a run
 /// directory's files (2 GB: a recording of about 50 million rows; reading it takes about 1.5
@@ -63,6 +61,22 @@ pub fn read_bounded_text(path: &Path, limit: u64) -> io::Result<String> {
             "stream did not contain valid UTF-8",
         )
     })
+}
+
+/// A size for people: `1 GB`, `250 MB`, `12.5 kB`, `900 B` (decimal units).
+pub fn format_size(bytes: u64) -> String {
+    let b = bytes as f64;
+    for (unit, f) in [("TB", 1e12), ("GB", 1e9), ("MB", 1e6), ("kB", 1e3)] {
+        if b >= f {
+            let x = b / f;
+            return if (x - x.round()).abs() < 1e-9 {
+                format!("{x:.0} {unit}")
+            } else {
+                format!("{} {unit}", format!("{x:.3}").trim_end_matches('0'))
+            };
+        }
+    }
+    format!("{bytes} B")
 }
 
 #[cfg(test)]

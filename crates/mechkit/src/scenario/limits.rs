@@ -65,21 +65,7 @@ pub fn parse_size(text: &str) -> Result<u64, String> {
     Ok(bytes.round() as u64)
 }
 
-/// A size for people: `1 GB`, `250 MB`, `12.5 kB`, `900 B` (decimal units).
-pub fn format_size(bytes: u64) -> String {
-    let b = bytes as f64;
-    for (unit, f) in [("TB", 1e12), ("GB", 1e9), ("MB", 1e6), ("kB", 1e3)] {
-        if b >= f {
-            let x = b / f;
-            return if (x - x.round()).abs() < 1e-9 {
-                format!("{x:.0} {unit}")
-            } else {
-                format!("{} {unit}", format!("{x:.3}").trim_end_matches('0'))
-            };
-        }
-    }
-    format!("{bytes} B")
-}
+pub use crate::csv::format_size;
 
 /// `[output] max_size`: a string size or an integer number of bytes.
 pub(crate) fn read_max_size(output: Option<&Table<'_, '_>>) -> Result<Option<u64>, ScenarioError> {
