@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 use anyhow::{Result, anyhow, bail};
 use mechkit::expr::units::Dimension;
 use mechkit::mass::Vec3;
+use mechkit::ode::events::FALLBACK_SAMPLES;
 use mechkit::ode::{AdaptiveConfig, Tableau};
 use mechkit::report::Files;
 use mechkit::rigid::Input;
@@ -240,17 +241,34 @@ fn text(r: &SpinReport) -> String {
         e(c.quaternion_norm)
     );
     if let Some(f) = &r.flip {
+        let reference = match (f.period.elliptic, f.parameter_m, f.one_minus_m) {
+            (Some(period), Some(m), Some(m1)) => format!(
+                "4K(m)/λ = {} s ({}), relative difference {}; max |ω - ω_elliptic| = {} rad/s",
+                show(period),
+                if m >= 0.5 {
+                    format!("m = 1 - {}", e(m1))
+                } else {
+                    format!("m = {}", e(m))
+                },
+                opt_e(f.period.relative_difference),
+                opt_e(f.omega_max_deviation)
+            ),
+            _ => "no elliptic reference: ω is constant (three equal moments, or a spin about a principal axis) or the start is on the separatrix".to_string(),
+        };
         let _ = writeln!(
             out,
-            "ω about the intermediate axis I{}: {} zeros; period {} s simulated, 4K(m)/λ = {} s (m = 1 - {}), relative difference {}; max |ω - ω_elliptic| = {} rad/s",
+            "ω about the intermediate axis I{}: {} zeros; period {} s simulated; {reference}",
             f.axis,
             f.zeros,
             opt(f.period.simulated),
-            opt(f.period.elliptic),
-            opt_e(f.one_minus_m),
-            opt_e(f.period.relative_difference),
-            opt_e(f.omega_max_deviation)
         );
+        if f.unproven_steps > 0 {
+            let _ = writeln!(
+                out,
+                "warning: in {} steps the zeros of ω about I{} could not be proven and ω was sampled at {FALLBACK_SAMPLES} points there, so a zero between two samples may be missed; shorter steps (a smaller --rtol or --dt) make the bounds tighter",
+                f.unproven_steps, f.axis
+            );
+        }
     }
     if let Some(t) = &r.top {
         let _ = writeln!(

@@ -68,6 +68,11 @@ impl StepPolynomial {
         self.h
     }
 
+    /// `1/h` (0 for an empty step).
+    pub(crate) fn inv_h(&self) -> Real {
+        self.inv_h
+    }
+
     /// Number of components.
     pub fn len(&self) -> usize {
         self.coeffs.len().checked_div(self.width).unwrap_or(0)
@@ -127,144 +132,186 @@ impl StepPolynomial {
     /// `Σ_{k≥1} |b_k| r^k` of `b_0` and the slope within `Σ_{k≥2} k |b_k| r^(k-1)` of `b_1`:
     /// the mean-value form, whose overestimate shrinks with the square of the width. The
     /// arithmetic is plain floating point; its rounding is bounded a priori (every `b_k` is
-    /// a sum of at most 8 terms each at most `|c_j| (1 + |m|)^j`, formed in at most 16
+    /// a sum of at most `n` terms each at most `|c_j| (1 + |m|)^j`, formed in at most `2n`
     /// roundings) and added to both radii, so the enclosures are rigorous.
     pub fn enclose(&self, i: usize, s: Interval) -> Jet {
-        let c = self.coefficients(i);
-        if s.lo() >= 0.0 && s.hi() <= 1.0 && s.hi() - s.lo() >= POWER_FORM_WIDTH {
-            return self.power_form(c, s);
-        }
-        self.taylor_form(c, s)
+        enclose_coefficients(self.coefficients(i), &[], s, self.inv_h)
     }
+}
 
-    /// The enclosure of a wide range `S ⊂ [0, 1]` in the power form: on non-negative `s`
-    /// every `s^j` lies between `lo^j` and `hi^j`, so each term `c_j s^j` between `c_j lo^j`
-    /// and `c_j hi^j`, and the sum of the terms' ranges holds the value (the slope the same
-    /// way from `j c_j s^(j-1)`). It costs one pass over the coefficients, without the Taylor
-    /// shift, and for the short steps of an integration (`|c_j|` falling fast with `j`) it is
-    /// nearly as tight as the mean-value form over the whole step. The rounding is bounded a
-    /// priori: every partial result is at most `Σ j |c_j|` in size (`|s| ≤ 1`), and each
-    /// is formed in at most `2n + 2` roundings.
-    fn power_form(&self, c: &[Real], s: Interval) -> Jet {
-        if s.lo() == 0.0 && s.hi() == 1.0 {
-            return self.whole_step(c);
-        }
-        let n = c.len();
-        let (mut p_lo, mut p_hi) = (1.0, 1.0); // lo^j, hi^j
-        let (mut q_lo, mut q_hi) = (1.0, 1.0); // lo^(j-1), hi^(j-1)
-        let (mut v_lo, mut v_hi, mut scale) = (0.0, 0.0, 0.0);
-        let (mut d_lo, mut d_hi, mut scale_d) = (0.0, 0.0, 0.0);
-        for (j, &cj) in c.iter().enumerate() {
-            let (a, b) = (cj * p_lo, cj * p_hi);
-            v_lo += a.min(b);
-            v_hi += a.max(b);
-            scale += cj.abs();
-            if j >= 1 {
-                let k = j as Real * cj;
-                let (a, b) = (k * q_lo, k * q_hi);
-                d_lo += a.min(b);
-                d_hi += a.max(b);
-                scale_d += k.abs();
-                q_lo *= s.lo();
-                q_hi *= s.hi();
-            }
-            p_lo *= s.lo();
-            p_hi *= s.hi();
-        }
-        self.power_jet((v_lo, v_hi, scale), (d_lo, d_hi, scale_d), n)
+/// Encloses the polynomial `Σ_j c_j s^j` of the fraction `s` of a step whose reciprocal
+/// length is `inv_h` (0: an empty step), and its time derivative, over the fractions `S`, as
+/// [`StepPolynomial::enclose`] does; `errors` (empty: none) bounds how far each `c_j` may be
+/// from the true coefficient (a polynomial computed in floating point, a
+/// [`Series`](super::Series)), and both radii grow by what those errors can add over `S`. At
+/// most [`MAX_TERMS`] coefficients.
+pub(crate) fn enclose_coefficients(c: &[Real], errors: &[Real], s: Interval, inv_h: Real) -> Jet {
+    let extra = remainder(errors, s);
+    if s.lo() >= 0.0 && s.hi() <= 1.0 && s.hi() - s.lo() >= POWER_FORM_WIDTH {
+        return power_form(c, s, inv_h, extra);
     }
+    taylor_form(c, s, inv_h, extra)
+}
 
-    /// The power form over the whole step, `S = [0, 1]`: each `s^j` (`j ≥ 1`) lies in
-    /// `[0, 1]`, so the value lies in `c_0 + Σ_{j≥1} [min(c_j, 0), max(c_j, 0)]` (the slope
-    /// the same way); the first test of every proof, so a few additions.
-    fn whole_step(&self, c: &[Real]) -> Jet {
-        let n = c.len();
-        let (mut v_lo, mut v_hi, mut scale) = (c[0], c[0], c[0].abs());
-        let (mut d_lo, mut d_hi, mut scale_d) = (0.0, 0.0, 0.0);
-        for (j, &cj) in c.iter().enumerate().skip(1) {
-            v_lo += cj.min(0.0);
-            v_hi += cj.max(0.0);
-            scale += cj.abs();
+/// Most coefficients [`enclose_coefficients`] takes: the product of three interpolants of
+/// [`MAX_COEFFICIENTS`] each.
+pub(crate) const MAX_TERMS: usize = 3 * MAX_COEFFICIENTS - 2;
+
+/// What coefficient errors `e_j` add over `S`: `Σ e_j σ^j` to the value and
+/// `Σ j e_j σ^(j-1)` to the slope per `s`, with `σ = max |s|` (rounded up by a relative
+/// margin).
+fn remainder(errors: &[Real], s: Interval) -> (Real, Real) {
+    if errors.is_empty() {
+        return (0.0, 0.0);
+    }
+    let sigma = s.lo().abs().max(s.hi().abs());
+    let (mut value, mut slope) = (0.0, 0.0);
+    let (mut p, mut q) = (1.0, 1.0); // σ^j, σ^(j-1)
+    for (j, e) in errors.iter().enumerate() {
+        value += e * p;
+        if j >= 1 {
+            slope += j as Real * e * q;
+            q *= sigma;
+        }
+        p *= sigma;
+    }
+    let margin = 1.0 + 4.0 * (errors.len() as Real + 2.0) * Real::EPSILON;
+    (value * margin, slope * margin)
+}
+
+/// The enclosure of a wide range `S ⊂ [0, 1]` in the power form: on non-negative `s`
+/// every `s^j` lies between `lo^j` and `hi^j`, so each term `c_j s^j` between `c_j lo^j`
+/// and `c_j hi^j`, and the sum of the terms' ranges holds the value (the slope the same
+/// way from `j c_j s^(j-1)`). It costs one pass over the coefficients, without the Taylor
+/// shift, and for the short steps of an integration (`|c_j|` falling fast with `j`) it is
+/// nearly as tight as the mean-value form over the whole step. The rounding is bounded a
+/// priori: every partial result is at most `Σ j |c_j|` in size (`|s| ≤ 1`), and each
+/// is formed in at most `2n + 2` roundings.
+fn power_form(c: &[Real], s: Interval, inv_h: Real, extra: (Real, Real)) -> Jet {
+    if s.lo() == 0.0 && s.hi() == 1.0 {
+        return whole_step(c, inv_h, extra);
+    }
+    let n = c.len();
+    let (mut p_lo, mut p_hi) = (1.0, 1.0); // lo^j, hi^j
+    let (mut q_lo, mut q_hi) = (1.0, 1.0); // lo^(j-1), hi^(j-1)
+    let (mut v_lo, mut v_hi, mut scale) = (0.0, 0.0, 0.0);
+    let (mut d_lo, mut d_hi, mut scale_d) = (0.0, 0.0, 0.0);
+    for (j, &cj) in c.iter().enumerate() {
+        let (a, b) = (cj * p_lo, cj * p_hi);
+        v_lo += a.min(b);
+        v_hi += a.max(b);
+        scale += cj.abs();
+        if j >= 1 {
             let k = j as Real * cj;
-            if j == 1 {
-                (d_lo, d_hi) = (k, k);
-            } else {
-                d_lo += k.min(0.0);
-                d_hi += k.max(0.0);
-            }
+            let (a, b) = (k * q_lo, k * q_hi);
+            d_lo += a.min(b);
+            d_hi += a.max(b);
             scale_d += k.abs();
+            q_lo *= s.lo();
+            q_hi *= s.hi();
         }
-        self.power_jet((v_lo, v_hi, scale), (d_lo, d_hi, scale_d), n)
+        p_lo *= s.lo();
+        p_hi *= s.hi();
     }
+    power_jet((v_lo, v_hi, scale), (d_lo, d_hi, scale_d), n, inv_h, extra)
+}
 
-    /// The jet from the power form's sums `(lo, hi, Σ|terms|)` of the value and of the slope
-    /// per `s` of a polynomial of `n` coefficients, widened by the rounding of `n` terms.
-    fn power_jet(&self, value: (Real, Real, Real), slope: (Real, Real, Real), n: usize) -> Jet {
-        let rounding = (2 * n + 2) as Real * Real::EPSILON * 1.01;
-        let (err, err_d) = (rounding * value.2, rounding * slope.2);
-        let v = outward(value.0 - err, value.1 + err);
-        let per_time = if self.h == 0.0 {
-            Interval::point(0.0)
+/// The power form over the whole step, `S = [0, 1]`: each `s^j` (`j ≥ 1`) lies in
+/// `[0, 1]`, so the value lies in `c_0 + Σ_{j≥1} [min(c_j, 0), max(c_j, 0)]` (the slope
+/// the same way); the first test of every proof, so a few additions.
+fn whole_step(c: &[Real], inv_h: Real, extra: (Real, Real)) -> Jet {
+    let n = c.len();
+    let (mut v_lo, mut v_hi, mut scale) = (c[0], c[0], c[0].abs());
+    let (mut d_lo, mut d_hi, mut scale_d) = (0.0, 0.0, 0.0);
+    for (j, &cj) in c.iter().enumerate().skip(1) {
+        v_lo += cj.min(0.0);
+        v_hi += cj.max(0.0);
+        scale += cj.abs();
+        let k = j as Real * cj;
+        if j == 1 {
+            (d_lo, d_hi) = (k, k);
         } else {
-            let inv = self.inv_h;
-            let (a, b) = ((slope.0 - err_d) * inv, (slope.1 + err_d) * inv);
-            // two roundings each (the reciprocal and the product): two ulps outwards
-            outward(a.min(b).next_down(), a.max(b).next_up())
-        };
-        Jet::new(v, per_time)
+            d_lo += k.min(0.0);
+            d_hi += k.max(0.0);
+        }
+        scale_d += k.abs();
     }
+    power_jet((v_lo, v_hi, scale), (d_lo, d_hi, scale_d), n, inv_h, extra)
+}
 
-    /// The enclosure of `S` in the mean-value (Taylor) form.
-    fn taylor_form(&self, c: &[Real], s: Interval) -> Jet {
-        let n = c.len();
-        let m = s.mid();
-        let r = (s.hi() - m).max(m - s.lo()).next_up();
-        let mut b = [0.0; MAX_COEFFICIENTS];
-        b[..n].copy_from_slice(&c[..n]);
-        // Taylor shift to m: repeated synthetic division by (x - m)
-        for k in 0..n {
-            for j in (k..n - 1).rev() {
-                b[j] += m * b[j + 1];
-            }
+/// The jet from the power form's sums `(lo, hi, Σ|terms|)` of the value and of the slope
+/// per `s` of a polynomial of `n` coefficients, widened by the rounding of `n` terms and by
+/// the coefficients' own errors `extra` (value, slope per `s`).
+fn power_jet(
+    value: (Real, Real, Real),
+    slope: (Real, Real, Real),
+    n: usize,
+    inv_h: Real,
+    extra: (Real, Real),
+) -> Jet {
+    let rounding = (2 * n + 2) as Real * Real::EPSILON * 1.01;
+    let (err, err_d) = (rounding * value.2 + extra.0, rounding * slope.2 + extra.1);
+    let v = outward(value.0 - err, value.1 + err);
+    let per_time = if inv_h == 0.0 {
+        Interval::point(0.0)
+    } else {
+        let (a, b) = ((slope.0 - err_d) * inv_h, (slope.1 + err_d) * inv_h);
+        // two roundings each (the reciprocal and the product): two ulps outwards
+        outward(a.min(b).next_down(), a.max(b).next_up())
+    };
+    Jet::new(v, per_time)
+}
+
+/// The enclosure of `S` in the mean-value (Taylor) form, widened by the coefficients' own
+/// errors `extra` (value, slope per `s`).
+fn taylor_form(c: &[Real], s: Interval, inv_h: Real, extra: (Real, Real)) -> Jet {
+    let n = c.len();
+    let m = s.mid();
+    let r = (s.hi() - m).max(m - s.lo()).next_up();
+    let mut b = [0.0; MAX_TERMS];
+    b[..n].copy_from_slice(&c[..n]);
+    // Taylor shift to m: repeated synthetic division by (x - m)
+    for k in 0..n {
+        for j in (k..n - 1).rev() {
+            b[j] += m * b[j + 1];
         }
-        // a priori bound on the rounding of every b_k
-        let grow = 1.0 + m.abs();
-        let mut scale = 0.0;
-        let mut power = 1.0;
-        for cj in c {
-            scale += cj.abs() * power;
-            power *= grow;
-        }
-        let unit = Real::EPSILON * 0.5;
-        let err = 2.0 * (2 * n) as Real * unit * scale * 1.01;
-        // radii of the value and of the slope (d/ds), with the rounding of each b_k
-        let (mut r0, mut r1) = (0.0, 0.0);
-        let mut rpow = 1.0; // r^(k-1) at the top of iteration k
-        for (k, bk) in b.iter().enumerate().take(n).skip(1) {
-            let bk = bk.abs() + err;
-            if k >= 2 {
-                r1 += k as Real * bk * rpow;
-            }
-            rpow *= r;
-            r0 += bk * rpow;
-        }
-        let (e0, e1) = (err, err);
-        // the sums themselves round: a relative margin of n ulps covers them
-        let margin = 1.0 + 4.0 * (n as Real) * Real::EPSILON;
-        let value = widen(b[0], (r0 + e0) * margin);
-        let slope = if n > 1 { b[1] } else { 0.0 };
-        let per_time = if self.h == 0.0 {
-            Interval::point(0.0)
-        } else {
-            // dy/dt = (dy/ds)/h: the quotient rounds once more (the margin's extra ulps)
-            let inv = self.inv_h;
-            widen(
-                slope * inv,
-                (r1 + e1) * margin * inv.abs() * margin + (slope * inv).abs() * 4.0 * Real::EPSILON,
-            )
-        };
-        Jet::new(value, per_time)
     }
+    // a priori bound on the rounding of every b_k
+    let grow = 1.0 + m.abs();
+    let mut scale = 0.0;
+    let mut power = 1.0;
+    for cj in c {
+        scale += cj.abs() * power;
+        power *= grow;
+    }
+    let unit = Real::EPSILON * 0.5;
+    let err = 2.0 * (2 * n) as Real * unit * scale * 1.01;
+    // radii of the value and of the slope (d/ds), with the rounding of each b_k
+    let (mut r0, mut r1) = (0.0, 0.0);
+    let mut rpow = 1.0; // r^(k-1) at the top of iteration k
+    for (k, bk) in b.iter().enumerate().take(n).skip(1) {
+        let bk = bk.abs() + err;
+        if k >= 2 {
+            r1 += k as Real * bk * rpow;
+        }
+        rpow *= r;
+        r0 += bk * rpow;
+    }
+    let (e0, e1) = (err + extra.0, err + extra.1);
+    // the sums themselves round: a relative margin of n ulps covers them
+    let margin = 1.0 + 4.0 * (n as Real) * Real::EPSILON;
+    let value = widen(b[0], (r0 + e0) * margin);
+    let slope = if n > 1 { b[1] } else { 0.0 };
+    let per_time = if inv_h == 0.0 {
+        Interval::point(0.0)
+    } else {
+        // dy/dt = (dy/ds)/h: the quotient rounds once more (the margin's extra ulps)
+        widen(
+            slope * inv_h,
+            (r1 + e1) * margin * inv_h.abs() * margin + (slope * inv_h).abs() * 4.0 * Real::EPSILON,
+        )
+    };
+    Jet::new(value, per_time)
 }
 
 /// `[x - radius, x + radius]`, rounded outwards (unknown when anything is not finite).

@@ -10,7 +10,10 @@
 //! - **monotone**: the enclosure of `dg/dt` excludes 0, so `g` has at most one zero there,
 //!   and it changes sign between the piece's ends exactly when it has one; or
 //! - **at rounding level**: the piece cannot be halved in floating point, or its enclosure is
-//!   no wider than the rounding of `g` at one point.
+//!   no wider than the rounding of `g` at one point; or
+//! - **at noise level**: `G(S)` lies within `±ε`, a level below which the caller counts no
+//!   change of sign (both samples of a change within it: jitter, not a crossing), so that
+//!   cutting the piece further could not show a change the caller would count.
 //!
 //! Sampling `g` at the ends of every piece that is not sign-definite then shows every sign
 //! change of odd multiplicity of `g` along the interpolant as a sign change between two
@@ -37,7 +40,7 @@ const ROUNDING_DEPTH: u32 = 30;
 pub enum Piece {
     /// `g > 0` (`true`) or `g < 0` (`false`) throughout.
     Definite(bool),
-    /// Monotone, or at rounding level: its ends must be sampled.
+    /// Monotone, or at rounding or noise level: its ends must be sampled.
     Open,
 }
 
@@ -63,11 +66,13 @@ pub struct StepProof {
 
 impl StepProof {
     /// Cuts the step from `t0` of length `h` into proven pieces of the function that
-    /// `enclose(S)` bounds over the fractions `S` of the step (`None`: it cannot).
+    /// `enclose(S)` bounds over the fractions `S` of the step (`None`: it cannot); pieces
+    /// enclosed within `±noise` are not cut (0: none but a function exactly zero).
     pub fn cut(
         &mut self,
         t0: Real,
         h: Real,
+        noise: Real,
         enclose: &mut dyn FnMut(Interval) -> Option<Jet>,
     ) -> ProofOutcome {
         self.pieces.clear();
@@ -93,7 +98,10 @@ impl StepProof {
                 Piece::Definite(true)
             } else if jet.v.is_negative() {
                 Piece::Definite(false)
-            } else if jet.is_increasing() || jet.is_decreasing() {
+            } else if jet.is_increasing()
+                || jet.is_decreasing()
+                || (jet.v.lo() >= -noise && jet.v.hi() <= noise)
+            {
                 Piece::Open
             } else {
                 let mid = 0.5 * (a + b);
@@ -166,7 +174,7 @@ mod tests {
             (Jet::constant(0.05) + x) - Jet::constant(0.03) - Jet::constant(0.02)
         };
         assert_eq!(
-            proof.cut(0.0, 1.0, &mut |s| {
+            proof.cut(0.0, 1.0, 0.0, &mut |s| {
                 bounds += 1;
                 Some(gap(s))
             }),
@@ -180,7 +188,7 @@ mod tests {
     fn roots_a_billionth_apart_are_separated() {
         let mut proof = StepProof::default();
         assert_eq!(
-            proof.cut(0.0, 1.0, &mut |s| Some(cubic(s))),
+            proof.cut(0.0, 1.0, 0.0, &mut |s| Some(cubic(s))),
             ProofOutcome::Proven
         );
         let mut s = Vec::new();
@@ -199,9 +207,12 @@ mod tests {
     #[test]
     fn a_function_without_bounds_is_reported() {
         let mut proof = StepProof::default();
-        assert_eq!(proof.cut(0.0, 1.0, &mut |_| None), ProofOutcome::NotBounded);
         assert_eq!(
-            proof.cut(0.0, 1.0, &mut |s| Some(if s.hi() < 0.5 {
+            proof.cut(0.0, 1.0, 0.0, &mut |_| None),
+            ProofOutcome::NotBounded
+        );
+        assert_eq!(
+            proof.cut(0.0, 1.0, 0.0, &mut |s| Some(if s.hi() < 0.5 {
                 Jet::constant(-1.0)
             } else if s.lo() > 0.5 {
                 Jet::constant(1.0)
@@ -213,18 +224,18 @@ mod tests {
         );
         let unknown = |_: Interval| Jet::ENTIRE;
         assert_eq!(
-            proof.cut(0.0, 1.0, &mut |s| Some(unknown(s))),
+            proof.cut(0.0, 1.0, 0.0, &mut |s| Some(unknown(s))),
             ProofOutcome::OutOfBounds
         );
         let pole = |s: Interval| Jet::constant(1.0) / (Jet::variable(s) - Jet::constant(0.3));
         assert_eq!(
-            proof.cut(0.0, 1.0, &mut |s| Some(pole(s))),
+            proof.cut(0.0, 1.0, 0.0, &mut |s| Some(pole(s))),
             ProofOutcome::Proven,
             "a pole is isolated to rounding"
         );
         let wild = |s: Interval| Jet::variable(s * Interval::point(1e5)).sin();
         assert_eq!(
-            proof.cut(0.0, 1.0, &mut |s| Some(wild(s))),
+            proof.cut(0.0, 1.0, 0.0, &mut |s| Some(wild(s))),
             ProofOutcome::OutOfBounds
         );
     }

@@ -130,6 +130,12 @@ pub(crate) trait Bounds {
     /// An enclosure of event `i`'s function and of its time derivative over the fractions `s`
     /// of the step whose interpolant is `poly` (`None`: it cannot be bounded there).
     fn enclose(&mut self, i: usize, poly: &StepPolynomial, s: Interval) -> Option<Jet>;
+    /// A level within which changes of sign of event `i`'s enclosed function are not counted
+    /// (both samples of a change within it: see [`Rules::significant`]): a piece of the step
+    /// enclosed within it need not be cut further (0, the default: no such level).
+    fn noise(&self, _i: usize) -> Real {
+        0.0
+    }
     /// Evenly spaced interior samples event `i` asks for in this step, at least (a contact
     /// between fast bodies asks for more).
     fn samples_asked(&self, _i: usize) -> usize {
@@ -208,7 +214,9 @@ impl Finder {
             let asked = bounds.samples_asked(i).min(MAX_INTERIOR);
             let outcome = if bounds.provable(i) {
                 let poly = &self.poly;
-                self.proof.cut(t0, h, &mut |s| bounds.enclose(i, poly, s))
+                let noise = bounds.noise(i);
+                self.proof
+                    .cut(t0, h, noise, &mut |s| bounds.enclose(i, poly, s))
             } else {
                 ProofOutcome::NotBounded
             };

@@ -18,7 +18,7 @@ use super::body::{Attitude, SpinningBody};
 use crate::Real;
 use crate::interval::Jet;
 use crate::mass::Vec3;
-use crate::ode::OdeSystem;
+use crate::ode::{OdeSystem, Series, StepPolynomial};
 
 /// Which angular momentum the state carries.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -65,64 +65,79 @@ impl Formulation {
 /// slow in unoptimised builds).
 pub(super) type Rows = [[Real; 3]; 3];
 
-/// What [`rotation`] and the matrix products compute with: plain numbers, or [`Jet`]s (the
-/// enclosures of a piece of a step, with the same operations in the same order).
-pub(super) trait Scalar:
-    Copy
-    + std::ops::Add<Output = Self>
-    + std::ops::Sub<Output = Self>
-    + std::ops::Mul<Output = Self>
-    + std::ops::Div<Output = Self>
+/// What the rotation's polynomial parts ([`rotation_parts`]) and the matrix products compute
+/// with: plain numbers, [`Jet`]s (the enclosures of a piece of a step, with the same
+/// operations in the same order), or [`Series`] (polynomials of the step's fraction).
+pub(super) trait Ring:
+    Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self> + std::ops::Mul<Output = Self>
 {
     /// A constant.
     fn c(x: Real) -> Self;
 }
 
-impl Scalar for Real {
+/// A [`Ring`] that divides too: what [`rotation`] computes with.
+pub(super) trait Scalar: Ring + std::ops::Div<Output = Self> {}
+
+impl Ring for Real {
     #[inline]
     fn c(x: Real) -> Self {
         x
     }
 }
 
-impl Scalar for Jet {
+impl Scalar for Real {}
+
+impl Ring for Jet {
     #[inline]
     fn c(x: Real) -> Self {
         Jet::constant(x)
     }
 }
 
-/// `R(q/|q|)` of a quaternion `(w, x, y, z)`, as rows.
-pub(super) fn rotation<T: Scalar>(y: &[T]) -> [[T; 3]; 3] {
+impl Scalar for Jet {}
+
+impl Ring for Series {
+    fn c(x: Real) -> Self {
+        Series::constant(x)
+    }
+}
+
+/// `R(q/|q|) = 1 + (2/N) K` of a quaternion `(w, x, y, z)`, as its polynomial parts: the
+/// squared norm `N = |q|²` and the rows of `K`.
+pub(super) fn rotation_parts<T: Ring>(y: &[T]) -> (T, [[T; 3]; 3]) {
     let (w, x, yy, z) = (y[0], y[1], y[2], y[3]);
+    let zero = T::c(0.0);
+    let n = w * w + x * x + yy * yy + z * z;
+    let k = [
+        [zero - (yy * yy + z * z), x * yy - w * z, x * z + w * yy],
+        [x * yy + w * z, zero - (x * x + z * z), yy * z - w * x],
+        [x * z - w * yy, yy * z + w * x, zero - (x * x + yy * yy)],
+    ];
+    (n, k)
+}
+
+/// `R(q/|q|)` of a quaternion `(w, x, y, z)`, as rows.
+#[inline]
+pub(super) fn rotation<T: Scalar>(y: &[T]) -> [[T; 3]; 3] {
+    let (n, k) = rotation_parts(y);
     let one = T::c(1.0);
-    let s = T::c(2.0) / (w * w + x * x + yy * yy + z * z);
-    [
-        [
-            one - s * (yy * yy + z * z),
-            s * (x * yy - w * z),
-            s * (x * z + w * yy),
-        ],
-        [
-            s * (x * yy + w * z),
-            one - s * (x * x + z * z),
-            s * (yy * z - w * x),
-        ],
-        [
-            s * (x * z - w * yy),
-            s * (yy * z + w * x),
-            one - s * (x * x + yy * yy),
-        ],
-    ]
+    let s = T::c(2.0) / n;
+    let mut r = k;
+    for (i, row) in r.iter_mut().enumerate() {
+        for (j, e) in row.iter_mut().enumerate() {
+            *e = if i == j { one + s * *e } else { s * *e };
+        }
+    }
+    r
 }
 
 /// `M v`.
-pub(super) fn mul<T: Scalar>(m: &[[T; 3]; 3], v: [T; 3]) -> [T; 3] {
+pub(super) fn mul<T: Ring>(m: &[[T; 3]; 3], v: [T; 3]) -> [T; 3] {
     m.map(|r| r[0] * v[0] + r[1] * v[1] + r[2] * v[2])
 }
 
 /// `Mᵀ v`.
-pub(super) fn mul_t<T: Scalar>(m: &[[T; 3]; 3], v: [T; 3]) -> [T; 3] {
+pub(super) fn mul_t<T: Ring>(m: &[[T; 3]; 3], v: [T; 3]) -> [T; 3] {
     [0, 1, 2].map(|c| m[0][c] * v[0] + m[1][c] * v[1] + m[2][c] * v[2])
 }
 
@@ -192,6 +207,27 @@ impl<'a> SpinEquations<'a> {
         };
         let inverse = self.inverse.map(|row| row.map(Jet::constant));
         mul(&inverse, lb)
+    }
+
+    /// `ω` about `axis` (body frame) times `N = |q|²`, and `N`, as polynomials of the step
+    /// whose interpolant is `poly`: `N ω = J⁻¹ (N L + 2 Kᵀ L)` in the world frame (`R = 1 +
+    /// (2/N) K`, see [`rotation_parts`]), `J⁻¹ L` with `N = 1` in the body frame. Where `N >
+    /// 0`, the first has the sign of `ω` about the axis, and it is a polynomial: it keeps the
+    /// cancellations that interval arithmetic on the state loses.
+    pub(super) fn omega_numerator(&self, poly: &StepPolynomial, axis: usize) -> (Series, Series) {
+        let y: [Series; 7] = std::array::from_fn(|i| Series::component(poly, i));
+        let l = [y[4], y[5], y[6]];
+        let (n, lb) = match self.formulation {
+            Formulation::World => {
+                let (n, k) = rotation_parts(&y);
+                let kl = mul_t(&k, l);
+                let two = Series::constant(2.0);
+                (n, [0, 1, 2].map(|j| n * l[j] + two * kl[j]))
+            }
+            Formulation::Body => (Series::constant(1.0), l),
+        };
+        let row = self.inverse[axis].map(Series::constant);
+        (row[0] * lb[0] + row[1] * lb[1] + row[2] * lb[2], n)
     }
 
     /// `ω` in the body frame at the state `y`.

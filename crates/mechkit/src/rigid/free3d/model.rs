@@ -1,8 +1,10 @@
 //! The spinning body on the one event-aware loop ([`crate::ode::events::drive`]): each turn
 //! one step of its integrator, the samples and the conservation record at the step's end, the
 //! zeros of ω about the intermediate axis as events through the one event finder (none
-//! missed: ω is bounded over pieces of the step through the rotation of the enclosed
-//! quaternion), and the quaternion renormalised between steps.
+//! missed: ω is bounded over pieces of the step as one polynomial of the step with the sign
+//! of ω, [`SpinEquations::omega_numerator`], so that a body spinning steadily, whose ω about
+//! the axis is constant, is proven so at once), and the quaternion renormalised between
+//! steps.
 
 use mechkit_expr::interval::{Interval, Jet};
 
@@ -15,7 +17,7 @@ use crate::Real;
 use crate::ode::events::Direction;
 use crate::ode::events::drive::{AfterFiring, Model};
 use crate::ode::events::find::{Bounds, Finder, Fired, Rules, Side};
-use crate::ode::{State, StepPolynomial};
+use crate::ode::{Series, State, StepPolynomial};
 
 /// A run of a spinning body under way.
 pub(super) struct SpinModel<'r, 'a> {
@@ -30,6 +32,12 @@ pub(super) struct SpinModel<'r, 'a> {
     /// The watched axis and the noise level of ω about it (free bodies).
     pub watch: Option<(usize, Real)>,
     pub finder: Finder,
+    /// ω about the watched axis times `|q|²` over the step being scanned, and the noise
+    /// level in its units (`None` when `|q|²` is not proven positive over the step: ω is then
+    /// enclosed from the state's enclosures).
+    pub numerator: Option<(Series, Real)>,
+    /// Steps whose proof ran out of enclosures (ω sampled evenly there).
+    pub unproven_steps: u64,
     /// The side of ω about the watched axis, at its last sample.
     pub side: [Side; 1],
     /// ω about the watched axis at the start and at the end of the step, and where the scan
@@ -63,6 +71,9 @@ struct Omega<'m, 'r, 'a> {
     driver: &'m mut Driver,
     axis: usize,
     noise: Real,
+    /// A polynomial of the step with the sign of ω about the axis, where there is one, and
+    /// the noise level in its units.
+    numerator: Option<&'m (Series, Real)>,
 }
 
 impl Bounds for Omega<'_, '_, '_> {
@@ -78,7 +89,18 @@ impl Bounds for Omega<'_, '_, '_> {
         true
     }
 
+    /// The numerator's enclosure where there is one (it has ω's sign, so its sign-definite
+    /// and monotone pieces are ω's), else ω's from the state's enclosures.
+    /// ω's noise level, in the numerator's units where it is enclosed: `|ω| = |n|/|q|²`, so
+    /// `|n| ≤ noise · min |q|²` keeps ω within the noise.
+    fn noise(&self, _: usize) -> Real {
+        self.numerator.map_or(self.noise, |(_, noise)| *noise)
+    }
+
     fn enclose(&mut self, _: usize, poly: &StepPolynomial, s: Interval) -> Option<Jet> {
+        if let Some((numerator, _)) = self.numerator {
+            return Some(numerator.enclose(poly, s));
+        }
         let y: [Jet; 7] = std::array::from_fn(|i| poly.enclose(i, s));
         Some(self.eq.omega_body_jet(&y)[self.axis])
     }
@@ -142,13 +164,23 @@ impl Model for SpinModel<'_, '_> {
             return;
         };
         self.driver.step_polynomial(self.eq, &mut self.finder.poly);
+        let poly = &self.finder.poly;
+        let (numerator, norm) = self.eq.omega_numerator(poly, axis);
+        let norm = norm.enclose(poly, Interval::new(0.0, 1.0)).v;
+        self.numerator = norm
+            .is_positive()
+            .then(|| (numerator, noise * norm.lo().next_down()));
         let mut omega = Omega {
             eq: self.eq,
             driver: &mut self.driver,
             axis,
             noise,
+            numerator: self.numerator.as_ref(),
         };
-        self.finder.plan(&mut omega, self.state.t, 0, &mut |_| {});
+        let mut ran_out = false;
+        self.finder
+            .plan(&mut omega, self.state.t, 0, &mut |_| ran_out = true);
+        self.unproven_steps += u64::from(ran_out);
     }
 
     fn begin_scan(&mut self) -> Real {
@@ -163,6 +195,7 @@ impl Model for SpinModel<'_, '_> {
             driver: &mut self.driver,
             axis,
             noise,
+            numerator: None,
         };
         self.finder.first_firing(
             &mut omega,

@@ -104,6 +104,8 @@ pub struct Flip {
     pub one_minus_m: Option<Real>,
     /// The largest |ω − ω_exact| over the samples (rad/s).
     pub omega_max_deviation: Option<Real>,
+    /// Steps in which the zeros could not be proven ([`SpinRun::unproven_steps`]).
+    pub unproven_steps: u64,
 }
 
 /// The nutation angle θ (degrees).
@@ -255,6 +257,7 @@ impl SpinReport {
                         .map(|s| (s.omega_body - p.omega(s.t)).norm())
                         .fold(0.0, Real::max)
                 }),
+                unproven_steps: run.unproven_steps,
             }
         });
         let top = body.pivot().map(|(d, g)| {

@@ -149,6 +149,11 @@ pub struct SpinRun {
     pub rejected: u64,
     /// Evaluations of the right-hand side.
     pub evaluations: u64,
+    /// Steps in which the zeros of `ω` about the intermediate axis could not be proven (the
+    /// proof needed more than [`MAX_BOUNDS`](crate::ode::MAX_BOUNDS) enclosures): `ω` was
+    /// sampled at [`FALLBACK_SAMPLES`](crate::ode::events::FALLBACK_SAMPLES) points there, so
+    /// a zero between two samples may be missed.
+    pub unproven_steps: u64,
 }
 
 impl SpinRun {
@@ -245,6 +250,8 @@ impl SpinningBody {
             evaluations,
             watch: None,
             finder: Finder::default(),
+            numerator: None,
+            unproven_steps: 0,
             side: [Side::Unknown],
             g: (0.0, 0.0, 0.0),
             t0: 0.0,
@@ -258,6 +265,7 @@ impl SpinningBody {
             record,
             steps,
             evaluations,
+            unproven_steps,
             ..
         } = model;
         let rejected = match &driver {
@@ -273,6 +281,7 @@ impl SpinningBody {
             steps,
             rejected,
             evaluations,
+            unproven_steps,
         })
     }
 }
