@@ -107,8 +107,9 @@ fn diff_text(d: &Differentiation) -> String {
     let x = &d.var;
     let mut out = format!("d/d{x} {} = {}\n", d.input, d.derivative);
     let short = mechkit::expr::short_number;
-    // where the formula has no derivative: a jump (the values on each side) or a corner (the
-    // slopes on each side)
+    // where the formula has no derivative: a jump (the values on each side), a corner (the
+    // slopes on each side), a vertical tangent or a cusp (slopes without bound), or a point
+    // where the derivative's formula gives no finite value
     let broken = d.at.and_then(|c| {
         c.jump
             .map(|[l, r]| format!("jumps (from {} to {})", short(l), short(r)))
@@ -121,23 +122,41 @@ fn diff_text(d: &Differentiation) -> String {
                     )
                 })
             })
+            .or_else(|| {
+                c.vertical.map(|[l, r]| {
+                    let shape = if l.signum() == r.signum() {
+                        "a vertical tangent"
+                    } else {
+                        "a cusp"
+                    };
+                    format!(
+                        "has {shape} (its slopes grow without bound on both sides: {l:.2e} from the left and {r:.2e} from the right over the shortest steps)"
+                    )
+                })
+            })
+            .map(|what| format!("{} {what}: it has no derivative there", d.input))
+            .or_else(|| {
+                c.symbolic.is_none().then(|| {
+                    format!(
+                        "d/d{x} {} is not a finite number (the point is at the edge of the formula's domain or at a singularity): there is no finite derivative there",
+                        d.input
+                    )
+                })
+            })
             .map(|what| (c.at, what))
     });
     if let Some((at, what)) = broken {
-        wr!(
-            out,
-            "at {x} = {}: {} {what}: it has no derivative there\n",
-            short(at),
-            d.input
-        );
+        wr!(out, "at {x} = {}: {what}\n", short(at));
     } else if let Some(c) = d.at {
+        let opt = |v: Option<f64>| v.map_or_else(|| "-".to_string(), short);
         wr!(
             out,
-            "at {x} = {}:\n  symbolic  {}\n  numeric   {} ± {:.1e} (central differences, Richardson extrapolation)\n  {}\n",
+            "at {x} = {}:\n  symbolic  {}\n  numeric   {} ± {} (central differences, Richardson extrapolation)\n  {}\n",
             short(c.at),
-            short(c.symbolic),
-            short(c.numeric),
-            c.numeric_error,
+            opt(c.symbolic),
+            opt(c.numeric),
+            c.numeric_error
+                .map_or_else(|| "-".to_string(), |e| format!("{e:.1e}")),
             if c.agree {
                 "the two agree"
             } else {

@@ -68,7 +68,7 @@ fn derivative_of_the_periodic_force() {
 }
 
 /// At a corner there is no derivative: `abs(x)` at 0 printed "symbolic 0, numeric 0, the two
-/// agree", exit 0.
+/// agree", exit 0. Nor at a vertical tangent, a cusp, or the edge of the domain.
 #[test]
 fn a_corner_has_no_derivative() {
     let out = run(&["diff", "abs(x)", "--at", "0"]);
@@ -88,6 +88,32 @@ fn a_corner_has_no_derivative() {
     assert!((num(&j, "/at/kink/1") - 1.0).abs() < 1e-6);
     assert_eq!(at(&j, "/at/jump"), &serde_json::Value::Null);
     run(&["diff", "abs(x)", "--at", "0.5"]).assert_code(0);
+    // a corner whose derivative's formula is 0/0 there, a vertical tangent, a cusp, the edge
+    // of a domain: each said in words, exit 1 (they gave the finiteness rule's generic "the
+    // result at.symbolic is NaN")
+    for (f, says) in [
+        (
+            "sqrt(x^2)",
+            "sqrt(x^2) has a corner (slope -1 from the left, 1 from the right)",
+        ),
+        (
+            "cbrt(x)",
+            "cbrt(x) has a vertical tangent (its slopes grow without bound on both sides: 1.00e6 from the left and 1.00e6 from the right",
+        ),
+        ("sqrt(abs(x))", "sqrt(abs(x)) has a cusp"),
+        (
+            "sqrt(x)",
+            "d/dx sqrt(x) is not a finite number (the point is at the edge of the formula's domain or at a singularity)",
+        ),
+    ] {
+        let out = run(&["diff", f, "--at", "0"]);
+        out.assert_code(1);
+        assert!(out.stdout.contains(says), "{f}: {}", out.stdout);
+        let j = run(&["diff", f, "--at", "0", "--json"]);
+        j.assert_code(1);
+        let j: serde_json::Value = serde_json::from_str(&j.stdout).expect("JSON");
+        assert_eq!(at(&j, "/at/agree"), &serde_json::Value::Bool(false), "{f}");
+    }
 }
 
 #[test]

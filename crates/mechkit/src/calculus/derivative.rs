@@ -34,12 +34,13 @@ pub struct DerivativeCheck {
     /// Where.
     #[cfg_attr(feature = "serde", serde(rename = "x"))]
     pub at: Real,
-    /// The symbolic derivative's value.
-    pub symbolic: Real,
-    /// Ridders' estimate.
-    pub numeric: Real,
-    /// Its error estimate.
-    pub numeric_error: Real,
+    /// The symbolic derivative's value (`None` where it is not a finite number: outside the
+    /// formula's domain, at a singularity, a vertical tangent).
+    pub symbolic: Option<Real>,
+    /// Ridders' estimate (`None` where it is not a finite number).
+    pub numeric: Option<Real>,
+    /// Its error estimate (`None` where it is not a finite number).
+    pub numeric_error: Option<Real>,
     /// Whether they agree within the estimate (or 1e-9 relative), and the estimate is sure
     /// enough to say so ([`crate::deriv::confirm`]).
     pub agree: bool,
@@ -49,6 +50,10 @@ pub struct DerivativeCheck {
     /// Where the formula is continuous but has a corner or a cusp at the point (no derivative
     /// exists there): its slopes just left and just right of it, `[left, right]` in JSON.
     pub kink: Option<[Real; 2]>,
+    /// Where the formula's slopes grow without bound on both sides of the point (a vertical
+    /// tangent, or a cusp when they have opposite signs; no finite derivative exists there):
+    /// the slopes over the smallest steps tried, `[left, right]` in JSON.
+    pub vertical: Option<[Real; 2]>,
 }
 
 /// `d/dx text` at `at`, symbolically and numerically (initial step `h`, e.g. 0.1 or a tenth
@@ -56,13 +61,16 @@ pub struct DerivativeCheck {
 ///
 /// ```
 /// let c = mechkit::calculus::derivative_at("x^3*sin(x)", "x", 1.2, &[], 0.1).unwrap();
-/// assert!(c.agree && (c.symbolic - c.numeric).abs() < 1e-10);
+/// assert!(c.agree && (c.symbolic.unwrap() - c.numeric.unwrap()).abs() < 1e-10);
 /// // floor jumps at 1: no derivative there, whatever the rules say (0)
 /// let c = mechkit::calculus::derivative_at("floor(x)", "x", 1.0, &[], 0.1).unwrap();
 /// assert!(!c.agree && c.jump == Some([0.0, 1.0]));
 /// // |x| has a corner at 0: no derivative there either (the rules say sign(0) = 0)
 /// let c = mechkit::calculus::derivative_at("abs(x)", "x", 0.0, &[], 0.1).unwrap();
 /// assert!(!c.agree && c.kink.is_some_and(|[l, r]| (l + 1.0).abs() < 1e-6 && (r - 1.0).abs() < 1e-6));
+/// // cbrt(x) has a vertical tangent at 0: its derivative's formula gives no finite value
+/// let c = mechkit::calculus::derivative_at("cbrt(x)", "x", 0.0, &[], 0.1).unwrap();
+/// assert!(!c.agree && c.symbolic.is_none() && c.vertical.is_some_and(|[l, r]| l > 1e3 && r > 1e3));
 /// ```
 pub fn derivative_at(
     text: &str,
@@ -74,19 +82,23 @@ pub fn derivative_at(
     let f = Function::parse(text, &[x], params)?;
     let symbolic = f.diff(x).at1(at);
     let (est, verdict) = crate::deriv::confirm(|v| f.at1(v), at, h, symbolic);
-    let (jump, kink) = match verdict {
-        Verdict::Jump { left, right } => (Some([left, right]), None),
-        Verdict::Kink { left, right } => (None, Some([left, right])),
-        _ => (None, None),
-    };
+    let (mut jump, mut kink, mut vertical) = (None, None, None);
+    match verdict {
+        Verdict::Jump { left, right } => jump = Some([left, right]),
+        Verdict::Kink { left, right } => kink = Some([left, right]),
+        Verdict::Vertical { left, right } => vertical = Some([left, right]),
+        Verdict::Agree | Verdict::Disagree => {}
+    }
+    let finite = |v: Real| v.is_finite().then_some(v);
     Ok(DerivativeCheck {
         at,
-        symbolic,
-        numeric: est.value,
-        numeric_error: est.error,
+        symbolic: finite(symbolic),
+        numeric: finite(est.value),
+        numeric_error: finite(est.error),
         agree: verdict == Verdict::Agree,
         jump,
         kink,
+        vertical,
     })
 }
 
@@ -122,7 +134,7 @@ impl Differentiation {
 ///     &[("F0".into(), 2.0), ("b".into(), 1.0)]).unwrap();
 /// assert_eq!(d.derivative.to_string(), "-2*pi*F0*cos(2*pi*x/b)/b");
 /// let exact = -2.0 * std::f64::consts::TAU * (std::f64::consts::TAU * 0.1).cos();
-/// assert!((d.at.unwrap().symbolic - exact).abs() < 1e-12 && d.agrees());
+/// assert!((d.at.unwrap().symbolic.unwrap() - exact).abs() < 1e-12 && d.agrees());
 /// ```
 pub fn differentiate(
     text: &str,

@@ -17,6 +17,11 @@
 //! `(f(x) − f(x − d))/d` and `(f(x + d) − f(x))/d`: their difference shrinks like `f'' d` where
 //! `f` is differentiable, and stays where it is not (`|x|` at 0: −1 and 1). There is no
 //! derivative there, whatever the rules say (`sign(0)` = 0).
+//!
+//! A vertical tangent or a cusp (`x^(1/3)`, `sqrt(|x|)` at 0) shows in the same slopes: on
+//! both sides they grow without bound as the step shrinks (by more than 3 times each time the
+//! step is cut 100 times; a slope that tends to a value changes by `f'' d`). There is no finite
+//! derivative there.
 
 use super::richardson::{Estimate, derivative};
 use crate::Real;
@@ -36,8 +41,17 @@ pub enum Verdict {
         /// `f(x⁺)`.
         right: Real,
     },
-    /// The function is continuous at the point but has a corner or a cusp: no derivative
-    /// exists there. Its slopes just left and just right of it.
+    /// The function's slopes grow without bound on both sides of the point (a vertical
+    /// tangent when they have one sign, a cusp when opposite): no finite derivative exists
+    /// there. Its slopes over the smallest steps tried, `1e-8` of the initial step.
+    Vertical {
+        /// The slope from the left.
+        left: Real,
+        /// The slope from the right.
+        right: Real,
+    },
+    /// The function is continuous at the point but has a corner: no derivative exists there.
+    /// Its slopes just left and just right of it.
     Kink {
         /// The slope from the left.
         left: Real,
@@ -61,8 +75,10 @@ pub fn confirm(f: impl Fn(Real) -> Real, x: Real, h: Real, claimed: Real) -> (Es
     if let Some((left, right)) = jump(&f, x, h) {
         return (est, Verdict::Jump { left, right });
     }
-    if let Some((left, right)) = kink(&f, x, h) {
-        return (est, Verdict::Kink { left, right });
+    match kink(&f, x, h) {
+        Some(Corner::Vertical(left, right)) => return (est, Verdict::Vertical { left, right }),
+        Some(Corner::Kink(left, right)) => return (est, Verdict::Kink { left, right }),
+        None => {}
     }
     let scale = claimed
         .abs()
@@ -103,10 +119,19 @@ fn jump(f: &impl Fn(Real) -> Real, x: Real, h: Real) -> Option<(Real, Real)> {
     (near > 0.5 * far && near > rounding && stays).then_some((l2, r2))
 }
 
-/// The slopes on each side of `x` when `f` has a corner or a cusp there (their difference
-/// does not shrink from `1e-4 h` to `1e-6 h` to `1e-8 h`, and is more than the rounding of
-/// the values over the step), else `None`.
-fn kink(f: &impl Fn(Real) -> Real, x: Real, h: Real) -> Option<(Real, Real)> {
+/// How a function breaks at a point, from its one-sided slopes there.
+enum Corner {
+    /// The slopes grow without bound on both sides.
+    Vertical(Real, Real),
+    /// The slopes differ by a difference that does not shrink.
+    Kink(Real, Real),
+}
+
+/// The slopes on each side of `x` over `1e-8 h` when `f` has a corner there (their
+/// difference does not shrink from `1e-4 h` to `1e-6 h` to `1e-8 h`, and is more than the
+/// rounding of the values over the step), or when they grow without bound on both sides (more
+/// than 3 times at each step), else `None`.
+fn kink(f: &impl Fn(Real) -> Real, x: Real, h: Real) -> Option<Corner> {
     let f0 = f(x);
     if !f0.is_finite() {
         return None;
@@ -125,8 +150,12 @@ fn kink(f: &impl Fn(Real) -> Real, x: Real, h: Real) -> Option<(Real, Real)> {
     if ![l1, r1, l2, r2, l3, r3].iter().all(|s| s.is_finite()) {
         return None;
     }
+    let grows = |a: Real, b: Real, c: Real| b.abs() > 3.0 * a.abs() && c.abs() > 3.0 * b.abs();
+    if grows(l1, l2, l3) && grows(r1, r2, r3) && l3.abs().min(r3.abs()) > rounding {
+        return Some(Corner::Vertical(l3, r3));
+    }
     let (g1, g2, g3) = ((r1 - l1).abs(), (r2 - l2).abs(), (r3 - l3).abs());
-    (g2 > 0.5 * g1 && g3 > 0.5 * g2 && g3 > rounding).then_some((l3, r3))
+    (g2 > 0.5 * g1 && g3 > 0.5 * g2 && g3 > rounding).then_some(Corner::Kink(l3, r3))
 }
 
 #[cfg(test)]
@@ -191,11 +220,25 @@ mod tests {
                 v => panic!("at {x}: {v:?}"),
             }
         }
-        // a cusp: slopes of opposite signs that grow as the step shrinks
-        assert!(matches!(
-            confirm(|x: Real| x.abs().sqrt(), 0.0, 0.1, 0.0).1,
-            Verdict::Kink { .. }
-        ));
+        // a cusp (slopes of opposite signs) and a vertical tangent (of one sign), growing as
+        // the step shrinks, on both sides
+        for (f, x, opposite) in [
+            ((|x: Real| x.abs().sqrt()) as fn(Real) -> Real, 0.0, true),
+            (Real::cbrt, 0.0, false),
+            (|x: Real| (x - 3.0).cbrt() + x, 3.0, false),
+            (|x: Real| -(x - 1.0).abs().powf(0.25), 1.0, true),
+        ] {
+            match confirm(f, x, 0.1, 0.0).1 {
+                Verdict::Vertical { left, right } => {
+                    assert!(
+                        left.abs() > 1e3 && right.abs() > 1e3,
+                        "at {x}: {left} {right}"
+                    );
+                    assert_eq!(left.signum() != right.signum(), opposite, "at {x}");
+                }
+                v => panic!("at {x}: {v:?}"),
+            }
+        }
         for (f, x, d) in [
             (Real::sin as fn(Real) -> Real, 1.0, 1f64.cos()),
             (|x: Real| (1000.0 * x).exp(), 0.0, 1000.0),
@@ -205,7 +248,10 @@ mod tests {
         ] {
             let v = confirm(f, x, 0.1, d).1;
             assert!(
-                !matches!(v, Verdict::Kink { .. } | Verdict::Jump { .. }),
+                !matches!(
+                    v,
+                    Verdict::Kink { .. } | Verdict::Jump { .. } | Verdict::Vertical { .. }
+                ),
                 "at {x}: {v:?}"
             );
         }
