@@ -20,6 +20,25 @@ fn integrate_prints_the_antiderivative_with_its_assumption() {
     assert!(out.stdout.contains("a > 0"), "{}", out.stdout);
 }
 
+/// An interval that leaves the integrand's domain is named by where it does, not by the
+/// first quadrature node there ("NaN at x = -0.9957276855604063").
+#[test]
+fn an_interval_outside_the_domain_is_named() {
+    for (f, from, to, says) in [
+        ("1/sqrt(x)", "-1", "1", "NaN) for x from -1 to 0"),
+        ("sqrt(1 - x^2)", "-2", "2", "NaN) for x from -2 to -1"),
+    ] {
+        let out = run(&["integrate", f, "--from", from, "--to", to]);
+        out.assert_code(1);
+        assert!(out.stdout.contains(says), "{f}: {}", out.stdout);
+        assert!(
+            out.stdout.contains("leaves its domain"),
+            "{f}: {}",
+            out.stdout
+        );
+    }
+}
+
 #[test]
 fn definite_integral_by_closed_form_and_quadrature() {
     let out = run(&[

@@ -91,6 +91,19 @@ pub enum QuadError {
         /// What it was.
         value: Real,
     },
+    /// The integrand is NaN over a stretch of the interval, not at an isolated point: the
+    /// interval leaves the integrand's domain (`sqrt(x)` from −1).
+    #[error(
+        "the integrand is not a number (NaN) for x from {} to {}: there the interval leaves its domain (a square root or a logarithm of a negative number, say); integrate over the part where it is defined",
+        super::short(*.from),
+        super::short(*.to)
+    )]
+    Undefined {
+        /// Where the stretch begins.
+        from: Real,
+        /// Where it ends.
+        to: Real,
+    },
     /// The subdivision limit was reached; the best estimate is given.
     #[error(
         "the tolerance was not reached after {panels} panels: {} ± {}",
@@ -231,7 +244,12 @@ fn integrate_dyn(
         });
     }
     match (a.is_finite(), b.is_finite()) {
-        (true, true) => adaptive(f, a, b, tol),
+        (true, true) => match adaptive(f, a, b, tol) {
+            Err(QuadError::NotFinite { x, value }) if value.is_nan() => {
+                Err(undefined_span(f, (a, b), x).unwrap_or(QuadError::NotFinite { x, value }))
+            }
+            other => other,
+        },
         (true, false) => adaptive(
             &mut |t: Real| {
                 let s = 1.0 - t;
@@ -262,6 +280,54 @@ fn integrate_dyn(
             })
         }
     }
+}
+
+/// The stretch of `[a, b]` about `x`, where `f` is NaN, over which `f` is NaN, when it is
+/// more than a point: on each side, the first of 64 even steps from `x` to the interval's end
+/// where `f` is not NaN, and the edge by bisection between it and the step before (the end
+/// given where `f` is a number; the interval's end when every step is NaN). The stretch is
+/// confirmed by 16 samples inside it, all NaN. `None` for an isolated NaN (`0/0` at a point)
+/// or a stretch the samples do not confirm.
+fn undefined_span(
+    f: &mut dyn FnMut(Real) -> Real,
+    (a, b): (Real, Real),
+    x: Real,
+) -> Option<QuadError> {
+    const STEPS: u32 = 64;
+    let mut edge = |end: Real| {
+        let mut nan = x;
+        for k in 1..=STEPS {
+            let p = if k == STEPS {
+                end
+            } else {
+                x + (end - x) * Real::from(k) / Real::from(STEPS)
+            };
+            if f(p).is_nan() {
+                nan = p;
+                continue;
+            }
+            let mut number = p;
+            for _ in 0..1100 {
+                let m = 0.5 * (nan + number);
+                if m == nan || m == number {
+                    break;
+                }
+                if f(m).is_nan() {
+                    nan = m;
+                } else {
+                    number = m;
+                }
+            }
+            return number;
+        }
+        end
+    };
+    let (from, to) = (edge(a), edge(b));
+    if to - from <= 1e-9 * (b - a) || (to - from).is_nan() {
+        return None;
+    }
+    let all_nan = (1..=16).all(|k| f(from + (to - from) * Real::from(k) / 17.0).is_nan());
+    all_nan.then_some(QuadError::Undefined { from, to })
 }
 
 /// Most panels before giving up.
@@ -328,6 +394,38 @@ fn adaptive(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An interval that leaves the integrand's domain is named by the stretch where it is
+    /// NaN, not by the first quadrature node there (`sqrt(x)` from −1 said "NaN at
+    /// x = −0.991"); an isolated NaN keeps the point.
+    #[test]
+    fn a_stretch_outside_the_domain_is_named() {
+        type Case = (fn(Real) -> Real, Real, Real, (Real, Real));
+        let tol = Tolerance::default();
+        let cases: [Case; 4] = [
+            (Real::sqrt, -1.0, 1.0, (-1.0, 0.0)),
+            (Real::sqrt, 1.0, -1.0, (-1.0, 0.0)),
+            (|x| (1.0 - x * x).sqrt(), -2.0, 2.0, (-2.0, -1.0)),
+            (Real::ln, -2.0, 3.0, (-2.0, 0.0)),
+        ];
+        for (f, a, b, (from, to)) in cases {
+            match integrate(f, a, b, tol) {
+                Err(QuadError::Undefined { from: l, to: r }) => {
+                    assert!(
+                        (l - from).abs() < 1e-12 && (r - to).abs() < 1e-12,
+                        "{l} {r}"
+                    );
+                }
+                other => panic!("{a}..{b}: {other:?}"),
+            }
+        }
+        let isolated = |x: Real| if x == 0.5 { Real::NAN } else { x };
+        // 0.5 is the midpoint of [0, 1], a node of the rule
+        assert!(matches!(
+            integrate(isolated, 0.0, 1.0, tol),
+            Err(QuadError::NotFinite { x, .. }) if x == 0.5
+        ));
+    }
 
     /// `∫_1^∞ 1/x dx` diverges; its quadrature said "the integrand is NaN at x = 1", the
     /// variable of the mapped interval, not the user's.
