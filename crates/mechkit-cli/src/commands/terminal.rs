@@ -22,22 +22,26 @@ pub fn terminal(args: &TerminalArgs) -> Result<Outcome> {
         )
     })?;
     let g = positive(&args.g, "--g", Dimension::ACCELERATION)?;
-    let (drag, fit) = if let Some(v) = &args.velocity {
+    let (drag, fit, source) = if let Some(v) = &args.velocity {
         let v = quantity(v, "--velocity", Dimension::VELOCITY)?;
-        (TerminalDrag::new(v, law), None)
+        (TerminalDrag::new(v, law), None, "--velocity")
     } else if let (Some(d), Some(t)) = (&args.distance, &args.time) {
         let d = quantity(d, "--distance", Dimension::LENGTH)?;
         let t = quantity(t, "--time", Dimension::TIME)?;
-        (TerminalDrag::from_fall(d, t, law), None)
+        (
+            TerminalDrag::from_fall(d, t, law),
+            None,
+            "--distance/--time",
+        )
     } else if args.data.is_some() {
         let fit = fit_data(args)?;
-        (TerminalDrag::new(fit.velocity, law), Some(fit))
+        (TerminalDrag::new(fit.velocity, law), Some(fit), "--data")
     } else {
         bail!(
             "give the terminal speed: --velocity, --distance with --time, or --data with a position column"
         );
     };
-    let drag = drag.map_err(|e| anyhow!("{e}"))?;
+    let drag = drag.map_err(|e| anyhow!("{source}: {e}"))?;
     let mass = args
         .mass
         .as_deref()

@@ -136,4 +136,7 @@ fn a_line_through_a_steady_fall_gives_the_drag() {
     assert!((num(&ball.json(), "/drag_coefficient") - want).abs() < 1e-12 * want);
     dir.run(&["terminal", "--velocity", "20 m/s", "--law", "cubic"])
         .assert_bad_input(&["--law", "quadratic", "linear"]);
+    // 1/v_T² of 1e300 m/s underflows: refused at the flag, not printed as 0 with exit 0
+    dir.run(&["terminal", "--velocity=-1e300"])
+        .assert_bad_input(&["--velocity", "D/(m g)", "past what a double holds"]);
 }

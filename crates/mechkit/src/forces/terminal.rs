@@ -76,6 +76,18 @@ pub enum TerminalError {
         /// Its value.
         value: Real,
     },
+    /// A result is too small or too large for a double (`1/v_T²` of a terminal speed of
+    /// 1e300 m/s underflows to 0).
+    #[error(
+        "{what} would be {} for these inputs, past what a double holds: give values nearer to 1 in their units (a terminal speed between 1e-150 and 1e150 m/s)",
+        crate::error::short(*value)
+    )]
+    OutOfRange {
+        /// Which quantity.
+        what: &'static str,
+        /// What it came to (0 when it underflowed, infinite when it overflowed).
+        value: Real,
+    },
     /// Too few samples for a line.
     #[error("{0} samples in the steady part: a line needs at least 3")]
     TooFewSamples(usize),
@@ -114,10 +126,11 @@ impl TerminalDrag {
         if !(v > 0.0 && v.is_finite()) {
             return Err(TerminalError::Speed(terminal_speed));
         }
-        let per_weight = match law {
-            DragLaw::Linear => 1.0 / v,
-            DragLaw::Quadratic => 1.0 / (v * v),
+        let (per_weight, what) = match law {
+            DragLaw::Linear => (1.0 / v, "b/(m g) = 1/v_T"),
+            DragLaw::Quadratic => (1.0 / (v * v), "D/(m g) = 1/v_T^2"),
         };
+        representable(what, per_weight)?;
         Ok(Self {
             law,
             terminal_speed: v,
@@ -136,7 +149,9 @@ impl TerminalDrag {
     pub fn coefficient(&self, mass: Real, g: Real) -> Result<Real, TerminalError> {
         positive("the mass", mass)?;
         positive("g", g)?;
-        Ok(self.per_weight * mass * g)
+        let c = self.per_weight * mass * g;
+        representable("the drag coefficient", c)?;
+        Ok(c)
     }
 
     /// The drag coefficient `C_d = 2 D/(ρ A)` of quadratic drag, for a body of `mass` in
@@ -151,7 +166,22 @@ impl TerminalDrag {
         positive("the density", density)?;
         positive("the area", area)?;
         let d = self.coefficient(mass, g)?;
-        Ok((self.law == DragLaw::Quadratic).then(|| 2.0 * d / (density * area)))
+        if self.law != DragLaw::Quadratic {
+            return Ok(None);
+        }
+        let cd = 2.0 * d / (density * area);
+        representable("C_d = 2 D/(rho A)", cd)?;
+        Ok(Some(cd))
+    }
+}
+
+/// A positive result that neither underflowed nor overflowed (nor lost its precision to the
+/// subnormal range).
+fn representable(what: &'static str, value: Real) -> Result<(), TerminalError> {
+    if value.is_normal() {
+        Ok(())
+    } else {
+        Err(TerminalError::OutOfRange { what, value })
     }
 }
 
@@ -334,6 +364,8 @@ impl TerminalDrag {
         fit: Option<SteadyFit>,
     ) -> Result<TerminalReport, TerminalError> {
         positive("g", g)?;
+        let per_mass = self.per_weight * g;
+        representable("the drag per unit mass", per_mass)?;
         let coefficient = mass.map(|m| self.coefficient(m, g)).transpose()?;
         let drag_coefficient = match (mass, fluid) {
             (Some(m), Some((rho, area))) => self.drag_coefficient(m, g, rho, area.value())?,
@@ -345,7 +377,7 @@ impl TerminalDrag {
             terminal_speed: self.terminal_speed,
             per_weight: self.per_weight,
             per_weight_unit,
-            per_mass: self.per_weight * g,
+            per_mass,
             per_mass_unit,
             g,
             coefficient,
@@ -399,6 +431,29 @@ mod tests {
         assert!((cd - want).abs() < 1e-12 * want);
         assert!(TerminalDrag::new(0.0, DragLaw::Linear).is_err());
         assert!(TerminalDrag::from_fall(1.0, 0.0, DragLaw::Linear).is_err());
+    }
+
+    /// Results past what a double holds are refused, not printed as 0 or inf: a terminal
+    /// speed of 1e300 m/s gave `D/(m g) = 0` with exit 0.
+    #[test]
+    fn results_past_a_double_are_refused() {
+        let out_of_range =
+            |r: Result<Real, TerminalError>| matches!(r, Err(TerminalError::OutOfRange { .. }));
+        for v in [-1e300, 1e-300, 1e160] {
+            let r = TerminalDrag::new(v, DragLaw::Quadratic).map(|d| d.per_weight);
+            assert!(out_of_range(r), "{v}");
+        }
+        assert!(TerminalDrag::new(1e300, DragLaw::Linear).is_ok());
+        let d = TerminalDrag::new(1e150, DragLaw::Quadratic).expect("1e-300 is a double");
+        assert!(out_of_range(d.coefficient(1e-30, 9.81)));
+        let r = d.report(1e-300, None, None, None);
+        assert!(matches!(r, Err(TerminalError::OutOfRange { .. })), "{r:?}");
+        let big = TerminalDrag::new(5.0, DragLaw::Quadratic).expect("valid");
+        let cd = big.drag_coefficient(1e300, 9.81, 1e-300, 1e-10);
+        assert!(
+            matches!(cd, Err(TerminalError::OutOfRange { .. })),
+            "{cd:?}"
+        );
     }
 
     #[test]
