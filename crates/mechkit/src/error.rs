@@ -15,6 +15,12 @@ pub(crate) fn short(x: Real) -> String {
     mechkit_expr::short_number(x)
 }
 
+/// Numbers for a message as a tuple: `(1, 0, 2e-15)`.
+pub(crate) fn short_tuple(xs: &[Real]) -> String {
+    let parts: Vec<String> = xs.iter().map(|x| short(*x)).collect();
+    format!("({})", parts.join(", "))
+}
+
 /// Whether `x` can be divided by: positive, finite and normal, so that `1/x` is finite too.
 ///
 /// The rule for every amount a model inverts (a mass, a moment of inertia): a subnormal mass

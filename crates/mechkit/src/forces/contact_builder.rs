@@ -95,10 +95,10 @@ pub enum ContactError {
         normal: usize,
     },
     /// A wall's point not finite.
-    #[error("a wall's point must be finite, not {0:?}")]
+    #[error("a wall's point must be finite, not {}", crate::error::short_tuple(.0))]
     BadWallPoint(Vec<Real>),
     /// A wall's normal zero or not finite.
-    #[error("a wall's normal must be a finite non-zero vector, not {0:?}")]
+    #[error("a wall's normal must be a finite non-zero vector, not {}", crate::error::short_tuple(.0))]
     BadNormal(Vec<Real>),
 }
 

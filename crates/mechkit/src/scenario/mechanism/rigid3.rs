@@ -92,11 +92,15 @@ pub(super) fn read_rigid3(
     moments.sort_by(Real::total_cmp);
     let problem = if spin::invert_spd(&inertia).is_none() {
         Some(format!(
-            "the inertia of rigid body `{name}` must be a symmetric tensor with positive principal moments, not {inertia:?}"
+            "the inertia of rigid body `{name}` must be a symmetric tensor with positive principal moments, not ({})",
+            inertia
+                .map(|row| crate::error::short_tuple(&row))
+                .join(", ")
         ))
     } else if moments[2] > (moments[0] + moments[1]) * (1.0 + 1e-9) {
         Some(format!(
-            "no body has the principal moments {moments:?} of rigid body `{name}`: the largest must be at most the sum of the other two"
+            "no body has the principal moments {} of rigid body `{name}`: the largest must be at most the sum of the other two",
+            crate::error::short_tuple(&moments)
         ))
     } else {
         None
@@ -189,7 +193,10 @@ fn orientation(t: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<Quat, ScenarioErr
                 .src
                 .error(
                     ErrorKind::Invalid,
-                    format!("the axis {axis:?} has no direction"),
+                    format!(
+                        "the axis {} has no direction",
+                        crate::error::short_tuple(&axis)
+                    ),
                     p.key_span("axis"),
                 )
                 .with_hint(hint));
@@ -208,7 +215,11 @@ fn orientation(t: &Table<'_, '_>, env: ValueEnv<'_>) -> Result<Quat, ScenarioErr
             .src
             .error(
                 ErrorKind::Invalid,
-                format!("the orientation {q:?} is not a rotation (its length is {n})"),
+                format!(
+                    "the orientation {} is not a rotation (its length is {})",
+                    crate::error::short_tuple(&q),
+                    crate::error::short(n)
+                ),
                 span,
             )
             .with_hint(hint));
