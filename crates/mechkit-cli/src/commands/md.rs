@@ -335,6 +335,19 @@ fn text(r: &MdReport) -> String {
         r.list_builds,
         fixed(r.msd, 4)
     );
+    // a cut that the energy jumps across: its drift is not the time step's
+    if r.cutoff_jump != 0.0 {
+        let remedy = if r.potential == "lj" {
+            "--shift makes it continuous, to check conservation"
+        } else {
+            "a cut-off that no pair crosses (between the first and second neighbours of a solid) avoids it"
+        };
+        let _ = writeln!(
+            out,
+            "note: the pair energy is cut at r_c without a shift: it jumps by U(r_c) = {:.3e} each time a pair crosses the cut-off, so the total energy moves ({:.3e} per atom over this run) whatever the time step; {remedy}",
+            r.cutoff_jump, r.energy_change_per_atom
+        );
+    }
     if let Some(dir) = &r.lammps_export {
         let _ = writeln!(
             out,

@@ -33,6 +33,30 @@ fn lj_melt_500_atoms_energy_temperature_and_threads() {
     assert_eq!(one["thermo"], two["thermo"]);
 }
 
+/// An unshifted cut-off is named with the jump it puts in the energy (the drift a user sees
+/// is not the time step's); a shifted one, and a soft sphere, continuous at its cut-off, are
+/// not.
+#[test]
+fn an_unshifted_cut_off_is_named_with_its_jump() {
+    let dir = Dir::new();
+    let j = json(&dir, &[]);
+    let jump = j["cutoff_jump"].as_f64().unwrap();
+    let want = 4.0 * (2.5f64.powi(-12) - 2.5f64.powi(-6));
+    assert!((jump - want).abs() < 1e-12, "{jump}");
+    let small = ["md", "--cells", "4", "--steps", "20"];
+    let text = |extra: &[&str]| dir.run_with(&small, extra).stdout;
+    let unshifted = text(&[]);
+    assert!(
+        unshifted.contains("jumps by U(r_c) = -1.632e-2 each time a pair crosses the cut-off")
+            && unshifted.contains("--shift makes it continuous"),
+        "{unshifted}"
+    );
+    for extra in [&["--shift"][..], &["--potential", "soft-sphere"]] {
+        assert!(!text(extra).contains("note: the pair energy"), "{extra:?}");
+    }
+    assert_eq!(json(&dir, &["--shift"])["cutoff_jump"], 0.0);
+}
+
 #[test]
 fn files_thermo_rdf_and_extended_xyz() {
     let dir = Dir::new();

@@ -16,6 +16,21 @@ pub trait PairPotential: Sync + Send {
     fn cutoff(&self) -> Real;
     /// `(U(r), F(r)/r)` for `r² < r_c²`, where F = −dU/dr (positive = repulsive).
     fn energy_force(&self, r2: Real) -> (Real, Real);
+    /// The pair energy just inside the cut-off, `U(r_c⁻)`: what the energy jumps by each
+    /// time a pair crosses the cut-off; 0 for a law continuous there (a shifted
+    /// Lennard-Jones, a soft sphere), where `U(r_c⁻)` is below 1e-9 of the law's size inside
+    /// (`|U|` at half and three quarters of `r_c`).
+    fn cutoff_jump(&self) -> Real {
+        let rc = self.cutoff();
+        let u = |r: Real| self.energy_force(r * r).0;
+        let jump = self.energy_force(rc * rc * (1.0 - 4.0 * Real::EPSILON)).0;
+        let inside = u(0.5 * rc).abs().max(u(0.75 * rc).abs());
+        if jump.abs() <= 1e-9 * inside {
+            0.0
+        } else {
+            jump
+        }
+    }
     /// The same law as a native LAMMPS pair style, where LAMMPS has one; `None` (the
     /// default): [`Md::lammps_export`](super::Md::lammps_export) tabulates it instead.
     fn lammps_pair(&self) -> Option<LammpsPair> {

@@ -32,6 +32,10 @@ pub struct MdReport {
     pub dangerous_builds: usize,
     /// (E_last − E_first)/N (ε): the energy drift of velocity Verlet.
     pub energy_change_per_atom: Real,
+    /// The pair energy just inside the cut-off, `U(r_c⁻)` (ε): what the energy jumps by each
+    /// time a pair crosses the cut-off, which no time step removes (0 when the law is
+    /// continuous there, as a shifted one is).
+    pub cutoff_jump: Real,
     /// The mean-square displacement ⟨|x(t) − x(0)|²⟩ (σ²).
     pub msd: Real,
     /// The thermo rows, energies per atom.
@@ -66,6 +70,7 @@ impl<P: PairPotential> Md<P> {
             list_builds: self.rebuilds(),
             dangerous_builds: self.dangerous_builds(),
             energy_change_per_atom: energy_change,
+            cutoff_jump: self.potential.cutoff_jump(),
             msd: self.mean_square_displacement(),
             thermo: run.rows.iter().map(|r| r.per_atom(n)).collect(),
             lammps_export: None,
@@ -102,5 +107,8 @@ mod tests {
         assert_eq!(r.thermo[0].temperature, first.temperature);
         assert!((r.thermo[0].temperature - 1.44).abs() < 1e-12);
         assert!(r.msd > 0.0 && r.atom_steps_per_second > 0.0);
+        // U(2.5) of the unshifted law: 4 (2.5^-12 − 2.5^-6)
+        let u = 4.0 * (2.5f64.powi(-12) - 2.5f64.powi(-6));
+        assert!((r.cutoff_jump - u).abs() < 1e-12, "{}", r.cutoff_jump);
     }
 }
