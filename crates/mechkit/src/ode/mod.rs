@@ -73,7 +73,7 @@ pub use explicit_rk::ExplicitRk;
 pub use hermite::{hermite, hermite_derivative};
 pub use method::{Method, MethodInfo, MethodKind};
 pub use pattern::JacobianPattern;
-pub use polynomial::{MAX_COEFFICIENTS, StepPolynomial};
+pub use polynomial::{MAX_COEFFICIENTS, MAX_TERMS, StepPolynomial};
 pub use proof::{MAX_BOUNDS, Piece, ProofOutcome, StepProof};
 pub use radau5::{ImplicitStats, NEWTON_MAX_ITER, Radau5};
 pub use rk4::Rk4;

@@ -153,9 +153,9 @@ pub(crate) fn enclose_coefficients(c: &[Real], errors: &[Real], s: Interval, inv
     taylor_form(c, s, inv_h, extra)
 }
 
-/// Most coefficients [`enclose_coefficients`] takes: the product of three interpolants of
+/// Most coefficients a [`Series`](super::Series) holds and is enclosed with: the product of three interpolants of
 /// [`MAX_COEFFICIENTS`] each.
-pub(crate) const MAX_TERMS: usize = 3 * MAX_COEFFICIENTS - 2;
+pub const MAX_TERMS: usize = 3 * MAX_COEFFICIENTS - 2;
 
 /// What coefficient errors `e_j` add over `S`: `Σ e_j σ^j` to the value and
 /// `Σ j e_j σ^(j-1)` to the slope per `s`, with `σ = max |s|` (rounded up by a relative
