@@ -153,8 +153,8 @@ pub(crate) fn enclose_coefficients(c: &[Real], errors: &[Real], s: Interval, inv
     taylor_form(c, s, inv_h, extra)
 }
 
-/// Most coefficients a [`Series`](super::Series) holds and is enclosed with: the product of three interpolants of
-/// [`MAX_COEFFICIENTS`] each.
+/// Most coefficients a [`Series`](super::Series) holds and is enclosed with: the product of
+/// three interpolants of [`MAX_COEFFICIENTS`] each.
 pub const MAX_TERMS: usize = 3 * MAX_COEFFICIENTS - 2;
 
 /// What coefficient errors `e_j` add over `S`: `Σ e_j σ^j` to the value and
