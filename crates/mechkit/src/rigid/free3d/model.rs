@@ -32,10 +32,6 @@ pub(super) struct SpinModel<'r, 'a> {
     /// The watched axis and the noise level of ω about it (free bodies).
     pub watch: Option<(usize, Real)>,
     pub finder: Finder,
-    /// ω about the watched axis times `|q|²` over the step being scanned, and the noise
-    /// level in its units (`None` when `|q|²` is not proven positive over the step: ω is then
-    /// enclosed from the state's enclosures).
-    pub numerator: Option<(Series, Real)>,
     /// Steps whose proof ran out of enclosures (ω sampled evenly there).
     pub unproven_steps: u64,
     /// The side of ω about the watched axis, at its last sample.
@@ -89,14 +85,14 @@ impl Bounds for Omega<'_, '_, '_> {
         true
     }
 
-    /// The numerator's enclosure where there is one (it has ω's sign, so its sign-definite
-    /// and monotone pieces are ω's), else ω's from the state's enclosures.
     /// ω's noise level, in the numerator's units where it is enclosed: `|ω| = |n|/|q|²`, so
     /// `|n| ≤ noise · min |q|²` keeps ω within the noise.
     fn noise(&self, _: usize) -> Real {
         self.numerator.map_or(self.noise, |(_, noise)| *noise)
     }
 
+    /// The numerator's enclosure where there is one (it has ω's sign, so its sign-definite
+    /// and monotone pieces are ω's), else ω's from the state's enclosures.
     fn enclose(&mut self, _: usize, poly: &StepPolynomial, s: Interval) -> Option<Jet> {
         if let Some((numerator, _)) = self.numerator {
             return Some(numerator.enclose(poly, s));
@@ -164,10 +160,13 @@ impl Model for SpinModel<'_, '_> {
             return;
         };
         self.driver.step_polynomial(self.eq, &mut self.finder.poly);
+        // ω about the axis times |q|² over the step, and the noise level in its units (none
+        // when |q|² is not proven positive over the step: ω is then enclosed from the state's
+        // enclosures)
         let poly = &self.finder.poly;
         let (numerator, norm) = self.eq.omega_numerator(poly, axis);
         let norm = norm.enclose(poly, Interval::new(0.0, 1.0)).v;
-        self.numerator = norm
+        let numerator = norm
             .is_positive()
             .then(|| (numerator, noise * norm.lo().next_down()));
         let mut omega = Omega {
@@ -175,7 +174,7 @@ impl Model for SpinModel<'_, '_> {
             driver: &mut self.driver,
             axis,
             noise,
-            numerator: self.numerator.as_ref(),
+            numerator: numerator.as_ref(),
         };
         let mut ran_out = false;
         self.finder

@@ -250,7 +250,6 @@ impl SpinningBody {
             evaluations,
             watch: None,
             finder: Finder::default(),
-            numerator: None,
             unproven_steps: 0,
             side: [Side::Unknown],
             g: (0.0, 0.0, 0.0),
