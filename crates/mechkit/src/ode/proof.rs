@@ -184,6 +184,32 @@ mod tests {
         assert_eq!(proof.pieces().len(), 1);
     }
 
+    /// A function that wiggles about zero within the caller's noise level (a steady spin's
+    /// ω about an axis it does not turn about) is one open piece at once with that level;
+    /// without it, the proof cuts the step to separate its three zeros.
+    #[test]
+    fn a_function_within_the_noise_level_is_not_cut() {
+        let wiggle = |s: Interval| {
+            let x = Jet::variable(s);
+            let f = |r: Real| x - Jet::constant(r);
+            (f(0.2) * f(0.5) * f(0.7)) * Jet::constant(1e-13)
+        };
+        let mut proof = StepProof::default();
+        let mut bounds = 0;
+        let outcome = proof.cut(0.0, 1.0, 1e-12, &mut |s| {
+            bounds += 1;
+            Some(wiggle(s))
+        });
+        assert_eq!((outcome, bounds), (ProofOutcome::Proven, 1));
+        assert_eq!(proof.pieces(), &[(0.0, 1.0, Piece::Open)]);
+        // without the level, its three zeros are separated
+        assert_eq!(
+            proof.cut(0.0, 1.0, 0.0, &mut |s| Some(wiggle(s))),
+            ProofOutcome::Proven
+        );
+        assert!(proof.pieces().len() > 3);
+    }
+
     #[test]
     fn roots_a_billionth_apart_are_separated() {
         let mut proof = StepProof::default();
