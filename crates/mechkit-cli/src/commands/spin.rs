@@ -247,6 +247,8 @@ fn text(r: &SpinReport) -> String {
                 show(period),
                 if m >= 0.5 {
                     format!("m = 1 - {}", e(m1))
+                } else if m == 0.0 || m >= 1e-3 {
+                    format!("m = {}", show((m * 1e3).round() / 1e3))
                 } else {
                     format!("m = {}", e(m))
                 },
