@@ -136,6 +136,16 @@ fn diff_text(d: &Differentiation) -> String {
             })
             .map(|what| format!("{} {what}: it has no derivative there", d.input))
             .or_else(|| {
+                let numeric = c.numeric.filter(|_| c.estimate_only)?;
+                Some(format!(
+                    "the formula d/d{x} {} = {} has no value there (a removable singularity: 0/0 or the like), but the numerical derivative is sure: {} ± {:.1e} (central differences, Richardson extrapolation), the formula's limit",
+                    d.input,
+                    d.derivative,
+                    short(numeric),
+                    c.numeric_error.unwrap_or(0.0)
+                ))
+            })
+            .or_else(|| {
                 c.symbolic.is_none().then(|| {
                     format!(
                         "d/d{x} {} is not a finite number (the point is at the edge of the formula's domain or at a singularity): there is no finite derivative there",

@@ -44,6 +44,10 @@ pub struct DerivativeCheck {
     /// Whether they agree within the estimate (or 1e-9 relative), and the estimate is sure
     /// enough to say so ([`crate::deriv::confirm`]).
     pub agree: bool,
+    /// Whether the derivative's formula has no value at the point while the numerical
+    /// estimate is sure and nothing breaks the function there: the derivative exists and is
+    /// `numeric` (a removable singularity of the formula: `2*x^3/sqrt(x^4)` at 0).
+    pub estimate_only: bool,
     /// Where the formula jumps at the point (no derivative exists there): its values just
     /// left and just right of it, `[left, right]` in JSON.
     pub jump: Option<[Real; 2]>,
@@ -87,7 +91,7 @@ pub fn derivative_at(
         Verdict::Jump { left, right } => jump = Some([left, right]),
         Verdict::Kink { left, right } => kink = Some([left, right]),
         Verdict::Vertical { left, right } => vertical = Some([left, right]),
-        Verdict::Agree | Verdict::Disagree => {}
+        Verdict::Agree | Verdict::Disagree | Verdict::EstimateOnly => {}
     }
     let finite = |v: Real| v.is_finite().then_some(v);
     Ok(DerivativeCheck {
@@ -96,6 +100,7 @@ pub fn derivative_at(
         numeric: finite(est.value),
         numeric_error: finite(est.error),
         agree: verdict == Verdict::Agree,
+        estimate_only: verdict == Verdict::EstimateOnly,
         jump,
         kink,
         vertical,

@@ -33,6 +33,10 @@ pub enum Verdict {
     Agree,
     /// The two differ, or the estimate is too uncertain to confirm it.
     Disagree,
+    /// The claimed value is not a number, but the estimate is sure and nothing breaks the
+    /// function there: the derivative exists and is the estimate (the claimed formula has a
+    /// removable singularity there: `2x³/√(x⁴)`, the rules' derivative of `√(x⁴)`, at 0).
+    EstimateOnly,
     /// The function jumps at the point: no derivative exists there. Its limits from the left
     /// and from the right.
     Jump {
@@ -88,10 +92,26 @@ pub fn confirm(f: impl Fn(Real) -> Real, x: Real, h: Real, claimed: Real) -> (Es
     let sure = est.error <= 1e-4 * scale;
     let verdict = if close && sure {
         Verdict::Agree
+    } else if !claimed.is_finite()
+        && sure
+        && est.value.is_finite()
+        && one_sided(&f, x, h, est.value, 1e-4 * scale)
+    {
+        Verdict::EstimateOnly
     } else {
         Verdict::Disagree
     };
     (est, verdict)
+}
+
+/// Whether `f` has a value at `x` and its one-sided slopes over `1e-6 h` both lie within
+/// `tolerance` of `slope` (central differences alone would pass `x sin(1/x)` at 0, even and
+/// NaN at 0 itself, for a derivative of 0).
+fn one_sided(f: &impl Fn(Real) -> Real, x: Real, h: Real, slope: Real, tolerance: Real) -> bool {
+    let f0 = f(x);
+    let (a, b) = steps(x, 1e-6 * h);
+    let (left, right) = ((f0 - f(a)) / (x - a), (f(b) - f0) / (b - x));
+    f0.is_finite() && (left - slope).abs() <= tolerance && (right - slope).abs() <= tolerance
 }
 
 /// `x ± d`, no closer to `x` than a few units in its last place, where `x ± d` is still not
@@ -198,6 +218,16 @@ mod tests {
             assert_eq!(confirm(f, x, 0.1, d).1, Verdict::Agree, "at {x}");
         }
         assert_eq!(confirm(Real::exp, 1.0, 0.1, 2.0).1, Verdict::Disagree);
+        // a claim that is not a number where the estimate is sure: the estimate stands
+        assert_eq!(
+            confirm(|x: Real| x.powi(4).sqrt(), 0.0, 0.1, Real::NAN).1,
+            Verdict::EstimateOnly
+        );
+        // and where it is not (x sin(1/x) at 0 oscillates): nothing is confirmed
+        assert_eq!(
+            confirm(|x: Real| x * (1.0 / x).sin(), 0.0, 0.1, Real::NAN).1,
+            Verdict::Disagree
+        );
     }
 
     /// A corner has no derivative, at 0 and away from it (`|x − 1|` at 1 had passed for a
