@@ -62,3 +62,23 @@ fn a_spin_of_many_turns_is_skipped_and_a_slow_one_runs() {
         assert_eq!(CommandLine::from_bytes(&bytes).is_some(), runs, "{omega}");
     }
 }
+
+/// Found by the target (2026-12-06, after 798 k inputs): a stick-slip block of 19 kg on a
+/// spring of 3.2e19 N/m for 8 s used the whole step budget (10⁶ steps: 2 s in a release build,
+/// then the budget's error; 10.7 s in the fuzz build), inside the product's bounds but past
+/// the target's 10 s: the target now skips a `friction` run whose spring turns through more
+/// than 10⁴ rad, and still runs a slower one.
+#[test]
+fn a_stiff_spring_of_many_oscillations_is_skipped_and_a_slower_one_runs() {
+    use mechkit_fuzz::command_line::CommandLine;
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let stiff =
+        fs::read(repo.join("fuzz/regressions/command_line/friction-stiff-spring-step-budget"))
+            .unwrap();
+    assert!(CommandLine::from_bytes(&stiff).is_none());
+    let text = String::from_utf8(stiff).unwrap();
+    for (k, runs) in [("100 N/m", true), ("1 MN/m", true), ("1 GN/m", false)] {
+        let bytes = text.replace("032EN/m", k).into_bytes();
+        assert_eq!(CommandLine::from_bytes(&bytes).is_some(), runs, "{k}");
+    }
+}
