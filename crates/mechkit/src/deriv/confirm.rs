@@ -18,7 +18,7 @@
 //! `f` is differentiable, and stays where it is not (`|x|` at 0: −1 and 1). There is no
 //! derivative there, whatever the rules say (`sign(0)` = 0).
 //!
-//! A vertical tangent or a cusp (`x^(1/3)`, `sqrt(|x|)` at 0) shows in the same slopes: on
+//! A vertical tangent or a cusp (`cbrt(x)`, `sqrt(|x|)` at 0) shows in the same slopes: on
 //! both sides they grow without bound as the step shrinks (by more than 3 times each time the
 //! step is cut 100 times; a slope that tends to a value changes by `f'' d`). There is no finite
 //! derivative there.
@@ -109,9 +109,19 @@ pub fn confirm(f: impl Fn(Real) -> Real, x: Real, h: Real, claimed: Real) -> (Es
 /// NaN at 0 itself, for a derivative of 0).
 fn one_sided(f: &impl Fn(Real) -> Real, x: Real, h: Real, slope: Real, tolerance: Real) -> bool {
     let f0 = f(x);
-    let (a, b) = steps(x, 1e-6 * h);
-    let (left, right) = ((f0 - f(a)) / (x - a), (f(b) - f0) / (b - x));
+    let (left, right, _) = slopes(f, x, f0, 1e-6 * h);
     f0.is_finite() && (left - slope).abs() <= tolerance && (right - slope).abs() <= tolerance
+}
+
+/// The slopes of `f` (valued `f0` at `x`) from the left and from the right over the step
+/// `d`, divided by the steps as taken so that the rounding of `x ± d` cancels, and the
+/// rounding of the values over that step.
+fn slopes(f: &impl Fn(Real) -> Real, x: Real, f0: Real, d: Real) -> (Real, Real, Real) {
+    let (a, b) = steps(x, d);
+    let (fa, fb) = (f(a), f(b));
+    let (left, right) = ((f0 - fa) / (x - a), (fb - f0) / (b - x));
+    let rounding = 1e3 * Real::EPSILON * (f0.abs() + fa.abs() + fb.abs()) / (b - x).min(x - a);
+    (left, right, rounding)
 }
 
 /// `x ± d`, no closer to `x` than a few units in its last place, where `x ± d` is still not
@@ -156,17 +166,9 @@ fn kink(f: &impl Fn(Real) -> Real, x: Real, h: Real) -> Option<Corner> {
     if !f0.is_finite() {
         return None;
     }
-    let slopes = |d: Real| {
-        let (a, b) = steps(x, d);
-        let (fa, fb) = (f(a), f(b));
-        // divided by the steps as taken, so that the rounding of `x ± d` cancels
-        let (left, right) = ((f0 - fa) / (x - a), (fb - f0) / (b - x));
-        let rounding = 1e3 * Real::EPSILON * (f0.abs() + fa.abs() + fb.abs()) / (b - x).min(x - a);
-        (left, right, rounding)
-    };
-    let (l1, r1, _) = slopes(1e-4 * h);
-    let (l2, r2, _) = slopes(1e-6 * h);
-    let (l3, r3, rounding) = slopes(1e-8 * h);
+    let (l1, r1, _) = slopes(f, x, f0, 1e-4 * h);
+    let (l2, r2, _) = slopes(f, x, f0, 1e-6 * h);
+    let (l3, r3, rounding) = slopes(f, x, f0, 1e-8 * h);
     if ![l1, r1, l2, r2, l3, r3].iter().all(|s| s.is_finite()) {
         return None;
     }
